@@ -1,0 +1,47 @@
+#include <toposlam/simulation/PolygonWorld.h>
+
+#include <cmath>
+#include <limits>
+
+namespace toposlam::simulation {
+
+using mrpt::math::TPoint2D;
+
+void PolygonWorld::addSegment(const TPoint2D& a, const TPoint2D& b) {
+    segments_.push_back({a, b});
+}
+
+void PolygonWorld::addPolygon(const std::vector<TPoint2D>& vertices) {
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+        addSegment(vertices[i], vertices[(i + 1) % vertices.size()]);
+    }
+}
+
+void PolygonWorld::addDisc(const Disc& disc) { discs_.push_back(disc); }
+
+double PolygonWorld::castRay(const TPoint2D& origin, double angle, double maxRange) const {
+    const double dx = std::cos(angle), dy = std::sin(angle);
+    double best = std::numeric_limits<double>::infinity();
+
+    // Ray o + t*d against segment a + s*(b-a): solve with 2D cross products.
+    for (const WallSegment& w : segments_) {
+        const double ex = w.b.x - w.a.x, ey = w.b.y - w.a.y;
+        const double denom = dx * ey - dy * ex;
+        if (std::abs(denom) < 1e-15) continue;  // parallel: grazing rays never return
+        const double ox = w.a.x - origin.x, oy = w.a.y - origin.y;
+        const double t = (ox * ey - oy * ex) / denom;
+        const double s = (ox * dy - oy * dx) / denom;
+        if (t > 0 && s >= 0 && s <= 1 && t < best) best = t;
+    }
+    for (const Disc& c : discs_) {
+        const double ox = origin.x - c.centre.x, oy = origin.y - c.centre.y;
+        const double b = ox * dx + oy * dy;
+        const double disc = b * b - (ox * ox + oy * oy - c.radius * c.radius);
+        if (disc < 0) continue;
+        const double t = -b - std::sqrt(disc);  // entry point; origin inside a disc sees nothing
+        if (t > 0 && t < best) best = t;
+    }
+    return best <= maxRange ? best : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace toposlam::simulation

@@ -1,0 +1,99 @@
+#pragma once
+// Step 5 of the virtual-door method (sec. 1.5): filters that remove virtual doors which do not
+// match real doors.
+//
+// The paper's three filters:
+//   distance:  door frames of different doors must be more than N_d cells apart; of a group of
+//              closer doors one is kept;
+//   adjacency: a door must touch two different regions once all doors are cut;
+//   min. area: the regions on both sides of a door must be larger than N_s.
+//
+// Two further tests, TopoSLAM's deviations from the paper (each can be switched off; the
+// paper-exact variant of RoomSegmenter turns all of them off). Both spell out what the paper
+// assumes of a door (sec. 1.1: door frames lie in a wall or perpendicular to one) and are
+// needed where furniture makes door-wide gaps (B4 furnished maps):
+//   wall jambs:   each jamb belongs to a wall: the obstacle it is on is part of the building's
+//                 structure (it reaches the edge of the map, or it carries one of the wall
+//                 segments of step 2), and it extends at least minWallExtent from the jamb along
+//                 or across the door line (rules out chairs, bins, plants and other free-standing
+//                 or small obstacles as door frames);
+//   constriction: a door is a narrow place between two wider spaces: walking away from the door
+//                 line on each side, within one door width the free space along the door line
+//                 becomes wider than the door by openingMargin (rules out the cross-sections
+//                 of door-wide corridors and of gaps along furniture).
+#include <toposlam/rooms/FreeSpaceBinarizer.h>
+#include <toposlam/rooms/LineSegment.h>
+#include <toposlam/rooms/RegionPartition.h>
+#include <toposlam/rooms/VirtualDoorDetector.h>
+
+#include <opencv2/core/mat.hpp>
+
+#include <cstddef>
+#include <vector>
+
+namespace toposlam::rooms {
+
+class DoorFilters {
+  public:
+    struct Options {
+        /// N_d (m). The paper gives it in cells (N_d = 2 at 5 cm, fig. 5b), for SLAM maps whose
+        /// walls are a few cells thick; 0.5 m is more than the thickest wall, so the
+        /// cross-sections found all along one doorway count as one door on any map.
+        double frameDistance = 0.5;
+        double minRoomArea = 1.5;  ///< N_s (m^2)
+        /// Distance filter: of a group of doors closer than N_d, keep the narrowest (the
+        /// waist of the opening; ties: the one nearest the group's middle). Off: the paper's
+        /// greedy reading, keep each door that is more than N_d from every door kept before it.
+        bool keepNarrowestOfGroup = true;
+        /// Minimum-area filter: merge the smallest too-small region first, through its door to
+        /// its smallest neighbour, and re-evaluate. Off: the paper's single pass, remove every
+        /// door with a too-small region on either side.
+        bool mergeSmallestFirst = true;
+        bool requireWallJambs = true;     ///< the wall-jamb test (deviation, see above)
+        double minWallExtent = 0.3;       ///< m
+        bool requireConstriction = true;  ///< the constriction test (deviation, see above)
+        double openingMargin = 0.3;       ///< m
+    };
+
+    DoorFilters() = default;
+    explicit DoorFilters(const Options& options) : options_(options) {}
+
+    /// The wall-jamb test (a no-op when switched off); `walls`: the merged wall segments of
+    /// step 2 (pixels).
+    std::vector<VirtualDoor> wallJambs(const FreeSpace& space, std::vector<VirtualDoor> doors,
+                                       const std::vector<LineSegment>& walls) const;
+    /// The constriction test; `probeDistance` (how far from the door line to look, m) is the
+    /// door width (a no-op when off).
+    std::vector<VirtualDoor> constriction(const FreeSpace& space, std::vector<VirtualDoor> doors,
+                                          double probeDistance) const;
+    /// The distance filter; `resolution` in m per pixel.
+    std::vector<VirtualDoor> distance(std::vector<VirtualDoor> doors, double resolution) const;
+    /// The adjacency filter: indices of the doors of `partition` that touch two regions.
+    static std::vector<std::size_t> adjacency(const RegionPartition& partition);
+
+    /// Result of the minimum-area filter.
+    struct Rooms {
+        /// Partition label -> room id (1..roomCount); [0] = 0.
+        std::vector<int> roomOfRegion;
+        int roomCount = 0;
+        /// The surviving doors (indices into the partition's doors) and the two rooms each joins.
+        struct Link {
+            std::size_t door;
+            int roomA, roomB;
+        };
+        std::vector<Link> doors;
+    };
+    /// The minimum-area filter over the doors `candidates` of `partition`; regions are merged
+    /// through removed doors. `cellArea` in m^2. Doors whose two sides end up in one room are
+    /// dropped too (they no longer separate anything).
+    Rooms minimumArea(const RegionPartition& partition, const std::vector<std::size_t>& candidates,
+                      double cellArea) const;
+
+    const Options& options() const { return options_; }
+
+  private:
+    Options options_;
+    mutable cv::Mat obstacles_, obstacleLabels_;  // scratch, reused across calls
+};
+
+}  // namespace toposlam::rooms

@@ -1,0 +1,68 @@
+#pragma once
+// Step 1 of the virtual-door method (Qi et al. 2020, sec. 1.3): binarise the occupancy grid
+// with free cells as foreground and occupied + unknown cells as background, then keep only the
+// largest 4-connected free region. Smaller free regions are cells the robot cannot reach
+// (sensor noise, pose errors, spaces seen through windows): they are reported separately so
+// that callers can decide what to do with them.
+#include <toposlam/rooms/GridImageFrame.h>
+
+#include <mrpt/maps/COccupancyGridMap2D.h>
+
+#include <opencv2/core/mat.hpp>
+
+#include <cstddef>
+#include <string>
+
+namespace toposlam::rooms {
+
+/// The binarised map, in the image layout of GridImageFrame.
+struct FreeSpace {
+    GridImageFrame frame;
+    /// CV_8U, 255 = free cell of the largest 4-connected free region, 0 = everything else.
+    cv::Mat free;
+    /// CV_8U, 255 = free cell of any other (smaller) free region.
+    cv::Mat otherFree;
+    /// Bounding box of the cells of `free`.
+    cv::Rect bounds;
+    /// Number of cells of `free`.
+    std::size_t freeCells = 0;
+};
+
+class FreeSpaceBinarizer {
+  public:
+    struct Options {
+        /// A cell is free when its p(free) exceeds this (MRPT convention: 0 = occupied,
+        /// 0.5 = unknown, 1 = free). 0.6 separates cells seen free at least once from cells
+        /// never seen (exactly 0.5).
+        double freeThreshold = 0.6;
+    };
+
+    FreeSpaceBinarizer() = default;
+    explicit FreeSpaceBinarizer(const Options& options) : options_(options) {}
+
+    /// Throws toposlam::io::InputError(sourceName, ...) when the grid has no free cell at all
+    /// (empty, unknown-only or fully occupied map).
+    FreeSpace binarize(const mrpt::maps::COccupancyGridMap2D& grid,
+                       const std::string& sourceName = "occupancy grid") const;
+    /// Same, into `out`, whose images are reused when their size fits (no reallocation when the
+    /// same binarizer and `out` are used again on a map of the same size).
+    void binarize(const mrpt::maps::COccupancyGridMap2D& grid, FreeSpace& out,
+                  const std::string& sourceName = "occupancy grid") const;
+
+    /// Same, from an 8-bit image already in the layout of GridImageFrame where non-zero means
+    /// free (frame.cols/rows are taken from the image).
+    FreeSpace binarize(const cv::Mat& freeImage, GridImageFrame frame,
+                       const std::string& sourceName = "free-space image") const;
+
+    const Options& options() const { return options_; }
+
+  private:
+    void keepLargestComponent(const cv::Mat& all, const std::string& sourceName,
+                              FreeSpace& out) const;
+
+    Options options_;
+    // Scratch images, reused across calls (one binarizer per thread).
+    mutable cv::Mat all_, labels_;
+};
+
+}  // namespace toposlam::rooms

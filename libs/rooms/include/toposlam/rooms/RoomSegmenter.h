@@ -1,0 +1,106 @@
+#pragma once
+// Room segmentation of an occupancy grid by virtual-door detection (Qi, Wang et al., "Indoor
+// topological map building with virtual door detection", J. Jilin Univ. 2020): the pipeline of
+// steps 1-6 and its options. Each step lives in the file named after it:
+//   1 FreeSpaceBinarizer       binarise, keep the largest free region
+//   2 HoughLineExtractor,      wall segments (probabilistic Hough) and their merge (eqs. 3-7)
+//     LineMerger
+//   3 MainDirectionVoter       the two main directions (eqs. 8-9)
+//   4 DoorSearchPaths,         door search from the trajectory cells (or the medial axis when
+//     VirtualDoorDetector      there is no trajectory) along the main directions (eq. 10)
+//   5 DoorFilters              distance, adjacency, minimum-area (+ TopoSLAM's two tests)
+//   6 RegionPartition          connected components after cutting the doors -> rooms
+// The result is a TopologicalMap (rooms = nodes, doors = edges).
+#include <toposlam/rooms/DoorFilters.h>
+#include <toposlam/rooms/FreeSpaceBinarizer.h>
+#include <toposlam/rooms/HoughLineExtractor.h>
+#include <toposlam/rooms/LineMerger.h>
+#include <toposlam/rooms/MainDirectionVoter.h>
+#include <toposlam/rooms/TopologicalMap.h>
+#include <toposlam/rooms/VirtualDoorDetector.h>
+
+#include <mrpt/math/TPose2D.h>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace mrpt::config {
+class CConfigFileBase;
+}
+namespace mrpt::maps {
+class COccupancyGridMap2D;
+}
+
+namespace toposlam::rooms {
+
+class RoomSegmenter {
+  public:
+    struct Options {
+        FreeSpaceBinarizer::Options freeSpace;
+        HoughLineExtractor::Options hough;
+        /// maxAngleDeg is the paper's delta_phi, shared by the merge (eq. 5) and the voter's
+        /// bin width (2 delta_phi).
+        LineMerger::Options lineMerge;
+        VirtualDoorDetector::Options door;
+        DoorFilters::Options filters;
+
+        /// The defaults: the paper plus TopoSLAM's documented deviations (DoorFilters.h).
+        static Options improved() { return {}; }
+        /// The paper's method as published: every deviation switched off.
+        static Options paperExact();
+
+        /// Reads the keys of `section` (see config_ini/rooms.ini for names, units and
+        /// defaults); `variant = paper` first resets to paperExact(). Keys not present keep
+        /// their current value. Throws std::invalid_argument for out-of-range values.
+        void loadFromConfigFile(const mrpt::config::CConfigFileBase& ini,
+                                const std::string& section);
+        /// Throws std::invalid_argument naming the first value out of range.
+        void validate() const;
+    };
+
+    /// Everything the pipeline found on the way, for inspection, rendering and tests.
+    struct Result {
+        TopologicalMap map;
+        std::vector<LineSegment> lines;  ///< merged wall segments (pixels)
+        MainDirections directions;
+        bool fromTrajectory = false;             ///< search paths: trajectory or medial axis
+        std::vector<cv::Point> searchCells;      ///< pixels
+        std::vector<VirtualDoor> candidates;     ///< step 4 output (pixels)
+        std::vector<VirtualDoor> afterTests;     ///< after wall-jamb + constriction tests
+        std::vector<VirtualDoor> afterDistance;  ///< after the distance filter
+        std::size_t afterAdjacency = 0;          ///< doors left by the adjacency filter
+        double milliseconds = 0;                 ///< wall time of segment()
+        /// Wall time per pipeline stage, in order (ms).
+        std::vector<std::pair<std::string, double>> stageMilliseconds;
+    };
+
+    RoomSegmenter();
+    explicit RoomSegmenter(const Options& options);
+    ~RoomSegmenter();
+    /// Copies share nothing: each gets its own scratch images.
+    RoomSegmenter(const RoomSegmenter& other);
+    RoomSegmenter& operator=(const RoomSegmenter& other);
+
+    /// Segments `grid`. `trajectory`: the robot's poses while mapping (m, rad, world frame of
+    /// the grid); empty = none, the medial axis is searched instead. `sourceName` names the map
+    /// in error messages. Throws toposlam::io::InputError for a map without free cells.
+    Result segment(const mrpt::maps::COccupancyGridMap2D& grid,
+                   const std::vector<mrpt::math::TPose2D>& trajectory = {},
+                   const std::string& sourceName = "occupancy grid") const;
+    /// Same, on an already binarised map.
+    Result segment(const FreeSpace& space,
+                   const std::vector<mrpt::math::TPose2D>& trajectory = {}) const;
+
+    const Options& options() const { return options_; }
+
+  private:
+    Options options_;
+    // The steps with their scratch images, reused from call to call (no reallocation while the
+    // map size stays the same). A segmenter is therefore not thread-safe: one per thread.
+    struct Workspace;
+    std::unique_ptr<Workspace> workspace_;
+};
+
+}  // namespace toposlam::rooms

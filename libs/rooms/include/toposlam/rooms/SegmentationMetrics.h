@@ -1,0 +1,76 @@
+#pragma once
+// The B4 room-segmentation metrics (shared/BENCHMARKS.md, "B4 metric definitions"), which
+// reproduce ipa_room_segmentation's own evaluation (Bormann et al. 2016):
+//  - Bormann recall / precision (EvaluationSegmentation::computePrecisionRecall): per ground-
+//    truth room the best overlap with a segment over the room's area, per segment the best
+//    overlap with a room over the segment's area, each averaged; rooms and segments of at most
+//    100 pixels are ignored; the "unassigned free space" label 65280 is a segment like any other;
+//  - door precision / recall: a door is a boundary between two labels, after the labels have
+//    been grown 5 steps into unlabelled free space; a virtual door matches a true door when its
+//    representative point is within the tolerance of one of the true door's pixels.
+// Images are in map-image layout; a segmentation is a CV_32S label image, 0 = obstacle.
+#include <opencv2/core/mat.hpp>
+
+#include <cstddef>
+#include <vector>
+
+namespace toposlam::rooms {
+
+/// Label of free pixels that no segment reached, as ipa_room_segmentation writes it.
+constexpr int kUnassignedLabel = 65280;
+/// Rooms and segments with at most this many pixels are ignored.
+constexpr int kMaxIgnoredRegionPixels = 100;
+
+/// Ground-truth rooms: 8-connected components of the pixels > 250 of the grey ground-truth
+/// image, those of more than 100 pixels kept. CV_32S labels 1..count, 0 elsewhere.
+struct GroundTruthRooms {
+    cv::Mat labels;
+    int count = 0;
+};
+GroundTruthRooms groundTruthRooms(const cv::Mat& groundTruthGrey);
+
+struct PrecisionRecall {
+    double recall = 0;  ///< mean over GT rooms of best overlap / room area ("recall_micro")
+    double precision =
+        0;  ///< mean over segments of best overlap / segment area ("precision_micro")
+    double recallPixels = 0;     ///< pixel-weighted recall ("recall_macro")
+    double precisionPixels = 0;  ///< pixel-weighted precision ("precision_macro")
+    int rooms = 0;               ///< GT rooms scored
+    int segments = 0;            ///< segments scored (> 100 px, 65280 included)
+};
+/// `segmentation`: CV_32S, 0 = obstacle, any other value a segment (65280 included).
+PrecisionRecall bormannPrecisionRecall(const GroundTruthRooms& truth, const cv::Mat& segmentation);
+
+/// Segments a method returned: distinct labels other than 0 and 65280, tiny ones included.
+int countSegments(const cv::Mat& segmentation);
+
+/// A door of the door metric: the boundary pixels between two labels.
+struct LabelBoundaryDoor {
+    int labelA = 0, labelB = 0;     ///< labelA < labelB
+    std::vector<cv::Point> pixels;  ///< raster order, each once
+    cv::Point representative;       ///< the pixel nearest to the pixels' mean
+};
+
+/// Steps 1-5 of the door metric on a label image (CV_32S, 0 = unlabelled) and the free-space
+/// mask `free` (CV_8U, non-zero = free): labels grown into unlabelled free pixels by a 4-connected
+/// FIFO breadth-first search of at most `gapSteps` steps, seeded in raster order; then every
+/// label pair with 4-adjacent pixels is one door. Doors sorted by (labelA, labelB).
+std::vector<LabelBoundaryDoor> labelBoundaryDoors(const cv::Mat& labels, const cv::Mat& free,
+                                                  int gapSteps = 5);
+
+/// The segmentation side's labels for the door metric: 65280 and segments of at most 100 px
+/// set to 0.
+cv::Mat doorMetricSegmentLabels(const cv::Mat& segmentation);
+
+struct DoorMatchCounts {
+    std::size_t virtualDoors = 0;    ///< |V|
+    std::size_t matchedVirtual = 0;  ///< virtual doors matching some true door
+    std::size_t trueDoors = 0;       ///< |T|
+    std::size_t matchedTrue = 0;     ///< true doors matched by some virtual door
+};
+/// Step 6-7: v matches t when v's representative point is within `tolerancePixels` of a pixel
+/// of t (no one-to-one constraint).
+DoorMatchCounts matchDoors(const std::vector<LabelBoundaryDoor>& virtualDoors,
+                           const std::vector<LabelBoundaryDoor>& trueDoors, double tolerancePixels);
+
+}  // namespace toposlam::rooms

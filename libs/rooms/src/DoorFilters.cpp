@@ -1,0 +1,345 @@
+#include <toposlam/rooms/DoorFilters.h>
+
+#include "GridRay.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <unordered_map>
+
+namespace toposlam::rooms {
+
+namespace {
+
+struct UnionFind {
+    std::vector<int> parent;
+    explicit UnionFind(int n) : parent(static_cast<std::size_t>(n)) {
+        std::iota(parent.begin(), parent.end(), 0);
+    }
+    int find(int i) {
+        while (parent[static_cast<std::size_t>(i)] != i) {
+            parent[static_cast<std::size_t>(i)] =
+                parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
+            i = parent[static_cast<std::size_t>(i)];
+        }
+        return i;
+    }
+};
+
+// Length (pixels) of the run of non-free cells that starts at `jamb` in direction (ux, uy),
+// capped at `cap`.
+double obstacleRun(const cv::Mat& free, const cv::Point& jamb, double ux, double uy, double cap) {
+    cv::Point hit;
+    if (!detail::walkRay(
+            jamb, ux, uy, cap, [&](int x, int y) { return detail::isSet(free, x, y); }, hit)) {
+        return cap;
+    }
+    return std::hypot(hit.x - jamb.x, hit.y - jamb.y);
+}
+
+// Free width (pixels) across direction (ux, uy) through the cell `at`, capped just above `cap`.
+double freeWidth(const cv::Mat& free, const cv::Point& at, double ux, double uy, double cap) {
+    cv::Point a, b;
+    auto blocked = [&](int x, int y) { return !detail::isSet(free, x, y); };
+    if (!detail::walkRay(at, ux, uy, cap, blocked, a) ||
+        !detail::walkRay(at, -ux, -uy, cap, blocked, b)) {
+        return 2 * cap;
+    }
+    return std::hypot(a.x - b.x, a.y - b.y);
+}
+
+double jambDistance(const VirtualDoor& a, const VirtualDoor& b) {
+    auto d = [](const cv::Point& p, const cv::Point& q) {
+        return std::hypot(p.x - q.x, p.y - q.y);
+    };
+    return std::min(std::max(d(a.jambA, b.jambA), d(a.jambB, b.jambB)),
+                    std::max(d(a.jambA, b.jambB), d(a.jambB, b.jambA)));
+}
+
+}  // namespace
+
+std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
+                                                std::vector<VirtualDoor> doors,
+                                                const std::vector<LineSegment>& walls) const {
+    if (!options_.requireWallJambs || doors.empty())
+        return doors;
+    const double extent = options_.minWallExtent / space.frame.resolution;
+    // Obstacles (8-connected non-free cells) that belong to the building: those that reach the
+    // border of the image (the outer walls and everything joined to them) and those that carry
+    // a wall segment. The others are free-standing things: furniture, bins, plants.
+    cv::bitwise_not(space.free, obstacles_);
+    cv::Mat& obstacleLabels = obstacleLabels_;
+    const int obstacles = cv::connectedComponents(obstacles_, obstacleLabels, 8, CV_32S);
+    std::vector<bool> structure(static_cast<std::size_t>(obstacles), false);
+    for (int c = 0; c < obstacleLabels.cols; ++c) {
+        structure[static_cast<std::size_t>(obstacleLabels.at<int>(0, c))] = true;
+        structure[static_cast<std::size_t>(obstacleLabels.at<int>(obstacleLabels.rows - 1, c))] =
+            true;
+    }
+    for (int r = 0; r < obstacleLabels.rows; ++r) {
+        structure[static_cast<std::size_t>(obstacleLabels.at<int>(r, 0))] = true;
+        structure[static_cast<std::size_t>(obstacleLabels.at<int>(r, obstacleLabels.cols - 1))] =
+            true;
+    }
+    for (const LineSegment& w : walls) {
+        cv::LineIterator it(obstacleLabels, cv::Point(cvRound(w.start.x), cvRound(w.start.y)),
+                            cv::Point(cvRound(w.end.x), cvRound(w.end.y)), 8);
+        for (int k = 0; k < it.count; ++k, ++it) {
+            structure[static_cast<std::size_t>(obstacleLabels.at<int>(it.pos()))] = true;
+        }
+    }
+    structure[0] = false;  // label 0: free cells
+    auto onStructure = [&](const cv::Point& jamb) {
+        const bool inside = jamb.x >= 0 && jamb.y >= 0 && jamb.x < obstacleLabels.cols &&
+                            jamb.y < obstacleLabels.rows;
+        return !inside || structure[static_cast<std::size_t>(obstacleLabels.at<int>(jamb))];
+    };
+    auto onWall = [&](const cv::Point& jamb, double ux, double uy) {
+        // Along the door line (both ways: one leads back into the opening and stops at once)
+        // and across it.
+        return obstacleRun(space.free, jamb, ux, uy, extent) >= extent ||
+               obstacleRun(space.free, jamb, -ux, -uy, extent) >= extent ||
+               obstacleRun(space.free, jamb, -uy, ux, extent) >= extent ||
+               obstacleRun(space.free, jamb, uy, -ux, extent) >= extent;
+    };
+    doors.erase(std::remove_if(doors.begin(), doors.end(),
+                               [&](const VirtualDoor& d) {
+                                   const double ux = (d.jambB.x - d.jambA.x) / d.width;
+                                   const double uy = (d.jambB.y - d.jambA.y) / d.width;
+                                   return !onStructure(d.jambA) || !onStructure(d.jambB) ||
+                                          !onWall(d.jambA, ux, uy) || !onWall(d.jambB, ux, uy);
+                               }),
+                doors.end());
+    return doors;
+}
+
+std::vector<VirtualDoor> DoorFilters::constriction(const FreeSpace& space,
+                                                   std::vector<VirtualDoor> doors,
+                                                   double probeDistance) const {
+    if (!options_.requireConstriction)
+        return doors;
+    const double margin = options_.openingMargin / space.frame.resolution;
+    const int steps =
+        std::max(1, static_cast<int>(std::ceil(probeDistance / space.frame.resolution)));
+    auto opensOnSide = [&](const VirtualDoor& d, double side) {
+        const double ux = (d.jambB.x - d.jambA.x) / d.width;
+        const double uy = (d.jambB.y - d.jambA.y) / d.width;
+        const cv::Point2d centre = 0.5 * (cv::Point2d(d.jambA) + cv::Point2d(d.jambB));
+        const double opened = d.width + margin;
+        for (int k = 1; k <= steps; ++k) {
+            const cv::Point q(cvRound(centre.x - side * k * uy), cvRound(centre.y + side * k * ux));
+            if (!detail::isSet(space.free, q.x, q.y))
+                return false;  // a wall before it opened
+            if (freeWidth(space.free, q, ux, uy, opened) > opened)
+                return true;
+        }
+        return false;
+    };
+    doors.erase(std::remove_if(doors.begin(), doors.end(),
+                               [&](const VirtualDoor& d) {
+                                   return !opensOnSide(d, 1.0) || !opensOnSide(d, -1.0);
+                               }),
+                doors.end());
+    return doors;
+}
+
+std::vector<VirtualDoor> DoorFilters::distance(std::vector<VirtualDoor> doors,
+                                               double resolution) const {
+    const double nd = options_.frameDistance / resolution;
+    // Doors closer than N_d have midpoints closer than N_d: bucket midpoints on a grid of that
+    // size and compare neighbouring buckets only.
+    const double bucket = std::max(1.0, nd);
+    auto keyOf = [&](int bx, int by) {
+        return (static_cast<long long>(bx) << 32) ^ static_cast<unsigned>(by);
+    };
+    auto bucketOf = [&](const VirtualDoor& d) {
+        const cv::Point2d m = 0.5 * (cv::Point2d(d.jambA) + cv::Point2d(d.jambB));
+        return cv::Point(static_cast<int>(std::floor(m.x / bucket)),
+                         static_cast<int>(std::floor(m.y / bucket)));
+    };
+    std::unordered_map<long long, std::vector<std::size_t>> grid;
+    auto forNeighbours = [&](const VirtualDoor& d, auto&& f) {
+        const cv::Point b = bucketOf(d);
+        for (int dy = -1; dy <= 1; ++dy) {
+            for (int dx = -1; dx <= 1; ++dx) {
+                auto it = grid.find(keyOf(b.x + dx, b.y + dy));
+                if (it == grid.end())
+                    continue;
+                for (std::size_t j : it->second)
+                    f(j);
+            }
+        }
+    };
+
+    if (!options_.keepNarrowestOfGroup) {  // the paper: greedy, in search order
+        std::vector<VirtualDoor> kept;
+        for (const VirtualDoor& d : doors) {
+            bool tooClose = false;
+            forNeighbours(
+                d, [&](std::size_t j) { tooClose = tooClose || jambDistance(d, kept[j]) <= nd; });
+            if (tooClose)
+                continue;
+            const cv::Point b = bucketOf(d);
+            grid[keyOf(b.x, b.y)].push_back(kept.size());
+            kept.push_back(d);
+        }
+        return kept;
+    }
+
+    // Groups: connected components of the "closer than N_d" relation.
+    for (std::size_t i = 0; i < doors.size(); ++i) {
+        const cv::Point b = bucketOf(doors[i]);
+        grid[keyOf(b.x, b.y)].push_back(i);
+    }
+    UnionFind groups(static_cast<int>(doors.size()));
+    for (std::size_t i = 0; i < doors.size(); ++i) {
+        forNeighbours(doors[i], [&](std::size_t j) {
+            if (j > i && jambDistance(doors[i], doors[j]) <= nd) {
+                groups.parent[static_cast<std::size_t>(groups.find(static_cast<int>(j)))] =
+                    groups.find(static_cast<int>(i));
+            }
+        });
+    }
+    std::unordered_map<int, std::vector<std::size_t>> members;
+    for (std::size_t i = 0; i < doors.size(); ++i)
+        members[groups.find(static_cast<int>(i))].push_back(i);
+    std::vector<std::size_t> chosen;
+    for (auto& [root, group] : members) {
+        (void)root;
+        double narrowest = 1e18;
+        for (std::size_t i : group)
+            narrowest = std::min(narrowest, doors[i].width);
+        cv::Point2d middle(0, 0);
+        for (std::size_t i : group)
+            middle += 0.5 * (cv::Point2d(doors[i].jambA) + cv::Point2d(doors[i].jambB));
+        middle *= 1.0 / static_cast<double>(group.size());
+        std::size_t best = group.front();
+        double bestOffset = 1e18;
+        for (std::size_t i : group) {
+            if (doors[i].width > narrowest + 0.5)
+                continue;  // half a cell: same width
+            const cv::Point2d m = 0.5 * (cv::Point2d(doors[i].jambA) + cv::Point2d(doors[i].jambB));
+            const double offset = std::hypot(m.x - middle.x, m.y - middle.y);
+            if (offset < bestOffset) {
+                bestOffset = offset;
+                best = i;
+            }
+        }
+        chosen.push_back(best);
+    }
+    std::sort(chosen.begin(), chosen.end());  // keep the search order
+    std::vector<VirtualDoor> kept;
+    kept.reserve(chosen.size());
+    for (std::size_t i : chosen)
+        kept.push_back(doors[i]);
+    return kept;
+}
+
+std::vector<std::size_t> DoorFilters::adjacency(const RegionPartition& partition) {
+    std::vector<std::size_t> kept;
+    for (std::size_t i = 0; i < partition.doorCount(); ++i) {
+        if (partition.regionsAt(i).size() >= 2)
+            kept.push_back(i);
+    }
+    return kept;
+}
+
+DoorFilters::Rooms DoorFilters::minimumArea(const RegionPartition& partition,
+                                            const std::vector<std::size_t>& candidates,
+                                            double cellArea) const {
+    const int regions = partition.regionCount();
+    const double minCells = options_.minRoomArea / cellArea;
+    UnionFind merged(regions + 1);
+    std::vector<double> area(partition.areas().begin(), partition.areas().end());
+    auto join = [&](int a, int b) {
+        a = merged.find(a);
+        b = merged.find(b);
+        if (a == b)
+            return;
+        merged.parent[static_cast<std::size_t>(b)] = a;
+        area[static_cast<std::size_t>(a)] += area[static_cast<std::size_t>(b)];
+    };
+    auto sideA = [&](std::size_t door) { return partition.regionsAt(door)[0].first; };
+    auto sideB = [&](std::size_t door) { return partition.regionsAt(door)[1].first; };
+    std::vector<bool> removed(candidates.size(), false);
+    auto removeDoor = [&](std::size_t k) {
+        removed[k] = true;
+        for (const auto& [region, contacts] : partition.regionsAt(candidates[k])) {
+            (void)contacts;
+            join(sideA(candidates[k]), region);
+        }
+    };
+
+    if (!options_.mergeSmallestFirst) {  // the paper: one pass over all doors
+        std::vector<std::size_t> failing;
+        for (std::size_t k = 0; k < candidates.size(); ++k) {
+            const std::size_t d = candidates[k];
+            if (area[static_cast<std::size_t>(sideA(d))] <= minCells ||
+                area[static_cast<std::size_t>(sideB(d))] <= minCells) {
+                failing.push_back(k);
+            }
+        }
+        for (std::size_t k : failing)
+            removeDoor(k);
+    } else {
+        while (true) {
+            // The smallest too-small region that still has a door to another region...
+            auto liveSides = [&](std::size_t k) {
+                return std::pair{merged.find(sideA(candidates[k])),
+                                 merged.find(sideB(candidates[k]))};
+            };
+            int smallest = -1;
+            double smallestArea = minCells;
+            for (std::size_t k = 0; k < candidates.size(); ++k) {
+                const auto [a, b] = liveSides(k);
+                if (removed[k] || a == b)
+                    continue;
+                for (int r : {a, b}) {
+                    if (area[static_cast<std::size_t>(r)] <= smallestArea) {
+                        smallest = r;
+                        smallestArea = area[static_cast<std::size_t>(r)];
+                    }
+                }
+            }
+            if (smallest < 0)
+                break;
+            // ... is merged through its door to its smallest neighbour.
+            std::size_t through = 0;
+            double neighbourArea = 1e300;
+            for (std::size_t k = 0; k < candidates.size(); ++k) {
+                const auto [a, b] = liveSides(k);
+                if (removed[k] || a == b || (a != smallest && b != smallest))
+                    continue;
+                const double other = area[static_cast<std::size_t>(a == smallest ? b : a)];
+                if (other < neighbourArea) {
+                    neighbourArea = other;
+                    through = k;
+                }
+            }
+            removeDoor(through);
+        }
+    }
+
+    Rooms out;
+    out.roomOfRegion.assign(static_cast<std::size_t>(regions) + 1, 0);
+    std::vector<int> roomOfRoot(static_cast<std::size_t>(regions) + 1, 0);
+    for (int r = 1; r <= regions; ++r) {
+        int& room = roomOfRoot[static_cast<std::size_t>(merged.find(r))];
+        if (room == 0)
+            room = ++out.roomCount;
+        out.roomOfRegion[static_cast<std::size_t>(r)] = room;
+    }
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+        if (removed[k])
+            continue;
+        const int a = out.roomOfRegion[static_cast<std::size_t>(sideA(candidates[k]))];
+        const int b = out.roomOfRegion[static_cast<std::size_t>(sideB(candidates[k]))];
+        if (a != b)
+            out.doors.push_back({candidates[k], std::min(a, b), std::max(a, b)});
+    }
+    return out;
+}
+
+}  // namespace toposlam::rooms

@@ -1,0 +1,92 @@
+#include <toposlam/rooms/DoorSearchPaths.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace toposlam::rooms {
+
+std::vector<cv::Point> DoorSearchPaths::fromTrajectory(
+    const FreeSpace& space, const std::vector<mrpt::math::TPose2D>& poses) {
+    std::vector<cv::Point> cells;
+    cv::Mat seen = cv::Mat::zeros(space.free.size(), CV_8U);
+    const cv::Rect image(0, 0, space.free.cols, space.free.rows);
+    auto visit = [&](const cv::Point& p) {
+        if (!image.contains(p) || space.free.at<std::uint8_t>(p) == 0 ||
+            seen.at<std::uint8_t>(p) != 0) {
+            return;
+        }
+        seen.at<std::uint8_t>(p) = 1;
+        cells.push_back(p);
+    };
+    for (std::size_t i = 0; i < poses.size(); ++i) {
+        const cv::Point a = space.frame.toCell(poses[i].x, poses[i].y);
+        if (i == 0) {
+            visit(a);
+            continue;
+        }
+        const cv::Point b = space.frame.toCell(poses[i - 1].x, poses[i - 1].y);
+        // Walk from the previous pose to this one; LineIterator needs both ends inside.
+        cv::Point pa = a, pb = b;
+        if (!cv::clipLine(image, pb, pa))
+            continue;
+        cv::LineIterator it(pb, pa, 8);
+        for (int k = 0; k < it.count; ++k, ++it)
+            visit(it.pos());
+    }
+    return cells;
+}
+
+void Clearance::compute(const cv::Mat& free) {
+    cv::distanceTransform(free, distance_, cv::DIST_L2, cv::DIST_MASK_5);
+}
+
+double Clearance::acrossRidge(const cv::Point& p) const {
+    auto d = [&](int dx, int dy) {
+        const int x = std::clamp(p.x + dx, 0, distance_.cols - 1);
+        const int y = std::clamp(p.y + dy, 0, distance_.rows - 1);
+        return static_cast<double>(distance_.at<float>(y, x));
+    };
+    const double centre = d(0, 0);
+    const double xx = d(2, 0) - 2 * centre + d(-2, 0);
+    const double yy = d(0, 2) - 2 * centre + d(0, -2);
+    const double xy = 0.25 * (d(2, 2) - d(2, -2) - d(-2, 2) + d(-2, -2));
+    // Eigenvector of the smaller eigenvalue of [[xx, xy], [xy, yy]].
+    double a = 0.5 * std::atan2(2 * xy, xx - yy) + M_PI / 2;
+    while (a >= M_PI)
+        a -= M_PI;
+    while (a < 0)
+        a += M_PI;
+    return a;
+}
+
+std::vector<cv::Point> DoorSearchPaths::fromMedialAxis(const FreeSpace& space,
+                                                       const Clearance& clearance,
+                                                       double minDoorWidth, double maxDoorWidth) {
+    const double res = space.frame.resolution;
+    const float lo = static_cast<float>(0.5 * minDoorWidth / res - 1.0);
+    const float hi = static_cast<float>(0.5 * maxDoorWidth / res + 1.0);
+    const cv::Mat& dist = clearance.distances();
+    std::vector<cv::Point> cells;
+    for (int r = 1; r + 1 < dist.rows; ++r) {
+        const float* up = dist.ptr<float>(r - 1);
+        const float* row = dist.ptr<float>(r);
+        const float* down = dist.ptr<float>(r + 1);
+        for (int c = 1; c + 1 < dist.cols; ++c) {
+            const float d = row[c];
+            if (d < lo || d > hi)
+                continue;
+            // Local maximum across an axis: not below either neighbour, above at least one.
+            auto ridge = [d](float a, float b) { return d >= a && d >= b && (d > a || d > b); };
+            if (ridge(row[c - 1], row[c + 1]) || ridge(up[c], down[c]) ||
+                ridge(up[c - 1], down[c + 1]) || ridge(up[c + 1], down[c - 1])) {
+                cells.emplace_back(c, r);
+            }
+        }
+    }
+    return cells;
+}
+
+}  // namespace toposlam::rooms

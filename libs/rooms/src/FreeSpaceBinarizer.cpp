@@ -1,0 +1,114 @@
+#include <toposlam/io/InputError.h>
+#include <toposlam/rooms/FreeSpaceBinarizer.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace toposlam::rooms {
+
+using mrpt::maps::COccupancyGridMap2D;
+
+// Keeps the largest 4-connected component of `all` (255 = free) in out.free and the rest in
+// out.otherFree.
+void FreeSpaceBinarizer::keepLargestComponent(const cv::Mat& all, const std::string& sourceName,
+                                              FreeSpace& out) const {
+    cv::Mat& labels = labels_;
+    // connectedComponents without stats: much faster on large maps; one pass gets the areas.
+    const int n = cv::connectedComponents(all, labels, 4, CV_32S);
+    std::vector<int> area(static_cast<std::size_t>(n), 0);
+    for (int r = 0; r < labels.rows; ++r) {
+        const int* row = labels.ptr<int>(r);
+        for (int c = 0; c < labels.cols; ++c)
+            ++area[static_cast<std::size_t>(row[c])];
+    }
+    int best = 0;
+    for (int i = 1; i < n; ++i) {
+        if (area[static_cast<std::size_t>(i)] >
+            (best == 0 ? 0 : area[static_cast<std::size_t>(best)]))
+            best = i;
+    }
+    if (best == 0) {
+        throw io::InputError(sourceName,
+                             "the map has no free cell (empty, unknown-only or fully occupied): "
+                             "there are no rooms to segment");
+    }
+    out.free.create(all.size(), CV_8U);
+    out.otherFree.create(all.size(), CV_8U);
+    int minC = labels.cols, minR = labels.rows, maxC = -1, maxR = -1;
+    for (int r = 0; r < labels.rows; ++r) {
+        const int* row = labels.ptr<int>(r);
+        auto* keep = out.free.ptr<std::uint8_t>(r);
+        auto* other = out.otherFree.ptr<std::uint8_t>(r);
+        for (int c = 0; c < labels.cols; ++c) {
+            keep[c] = row[c] == best ? 255 : 0;
+            other[c] = row[c] != best && row[c] != 0 ? 255 : 0;
+            if (row[c] == best) {
+                minC = std::min(minC, c);
+                maxC = std::max(maxC, c);
+                minR = std::min(minR, r);
+                maxR = std::max(maxR, r);
+            }
+        }
+    }
+    out.bounds = cv::Rect(minC, minR, maxC - minC + 1, maxR - minR + 1);
+    out.freeCells = static_cast<std::size_t>(area[static_cast<std::size_t>(best)]);
+}
+
+FreeSpace FreeSpaceBinarizer::binarize(const COccupancyGridMap2D& grid,
+                                       const std::string& sourceName) const {
+    FreeSpace out;
+    binarize(grid, out, sourceName);
+    return out;
+}
+
+void FreeSpaceBinarizer::binarize(const COccupancyGridMap2D& grid, FreeSpace& out,
+                                  const std::string& sourceName) const {
+    out.frame = GridImageFrame{};
+    out.frame.resolution = grid.getResolution();
+    out.frame.xMin = grid.getXMin();
+    out.frame.yMin = grid.getYMin();
+    out.frame.cols = static_cast<int>(grid.getSizeX());
+    out.frame.rows = static_cast<int>(grid.getSizeY());
+    if (out.frame.cols <= 0 || out.frame.rows <= 0) {
+        throw io::InputError(sourceName, "the map has no cells: there are no rooms to segment");
+    }
+    // Cells hold log-odds (int8); one lookup per value instead of one l2p() per cell.
+    std::array<std::uint8_t, 256> isFree{};
+    using Cell = COccupancyGridMap2D::cellType;
+    for (int v = std::numeric_limits<Cell>::min(); v <= std::numeric_limits<Cell>::max(); ++v) {
+        isFree[static_cast<std::uint8_t>(v)] =
+            COccupancyGridMap2D::l2p(static_cast<Cell>(v)) > options_.freeThreshold ? 255 : 0;
+    }
+    const auto& raw = grid.getRawMap();
+    cv::Mat& all = all_;
+    all.create(out.frame.rows, out.frame.cols, CV_8U);
+    for (int r = 0; r < out.frame.rows; ++r) {
+        const Cell* src = raw.data() + static_cast<std::size_t>(out.frame.rows - 1 - r) *
+                                           static_cast<std::size_t>(out.frame.cols);
+        auto* dst = all.ptr<std::uint8_t>(r);
+        for (int c = 0; c < out.frame.cols; ++c)
+            dst[c] = isFree[static_cast<std::uint8_t>(src[c])];
+    }
+    keepLargestComponent(all, sourceName, out);
+}
+
+FreeSpace FreeSpaceBinarizer::binarize(const cv::Mat& freeImage, GridImageFrame frame,
+                                       const std::string& sourceName) const {
+    if (freeImage.empty()) {
+        throw io::InputError(sourceName, "the map has no cells: there are no rooms to segment");
+    }
+    CV_Assert(freeImage.type() == CV_8U);
+    FreeSpace out;
+    frame.cols = freeImage.cols;
+    frame.rows = freeImage.rows;
+    out.frame = frame;
+    keepLargestComponent(freeImage != 0, sourceName, out);
+    return out;
+}
+
+}  // namespace toposlam::rooms

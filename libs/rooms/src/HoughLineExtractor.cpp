@@ -1,0 +1,34 @@
+#include <toposlam/rooms/HoughLineExtractor.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace toposlam::rooms {
+
+std::vector<LineSegment> HoughLineExtractor::extract(const FreeSpace& space) const {
+    const double res = space.frame.resolution;
+    // The free region's bounding box plus the one-cell ring of wall cells around it.
+    const cv::Rect roi = (space.bounds + cv::Size(2, 2) - cv::Point(1, 1)) &
+                         cv::Rect(0, 0, space.free.cols, space.free.rows);
+    const cv::Mat free = space.free(roi);
+    cv::dilate(free, grown_, cv::Mat());       // 3x3: the 8-neighbours of free cells
+    cv::bitwise_xor(grown_, free, boundary_);  // free is inside grown: xor = grown minus free
+    const cv::Mat& boundary = boundary_;
+
+    std::vector<cv::Vec4i> raw;
+    cv::HoughLinesP(boundary, raw, 1.0, options_.angleResolutionDeg * M_PI / 180.0,
+                    std::max(2, static_cast<int>(std::lround(options_.minVotesLength / res))),
+                    options_.minLineLength / res, options_.maxLineGap / res);
+    std::vector<LineSegment> lines;
+    lines.reserve(raw.size());
+    for (const cv::Vec4i& l : raw) {
+        lines.push_back(
+            {cv::Point2f(static_cast<float>(l[0] + roi.x), static_cast<float>(l[1] + roi.y)),
+             cv::Point2f(static_cast<float>(l[2] + roi.x), static_cast<float>(l[3] + roi.y))});
+    }
+    return lines;
+}
+
+}  // namespace toposlam::rooms

@@ -1,0 +1,54 @@
+#include <toposlam/rooms/RegionPartition.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cstdint>
+
+namespace toposlam::rooms {
+
+void RegionPartition::compute(const cv::Mat& free, const std::vector<VirtualDoor>& doors) {
+    free.copyTo(open_);
+    for (const VirtualDoor& d : doors)
+        cv::line(open_, d.jambA, d.jambB, cv::Scalar(0), 1, cv::LINE_8);
+    regionCount_ = cv::connectedComponents(open_, labels_, 4, CV_32S) - 1;
+    areas_.assign(static_cast<std::size_t>(regionCount_) + 1, 0);
+    for (int r = 0; r < labels_.rows; ++r) {
+        const int* row = labels_.ptr<int>(r);
+        for (int c = 0; c < labels_.cols; ++c)
+            ++areas_[static_cast<std::size_t>(row[c])];
+    }
+    areas_[0] = 0;
+
+    touching_.assign(doors.size(), {});
+    const cv::Point around[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    const cv::Rect image(0, 0, labels_.cols, labels_.rows);
+    std::vector<std::pair<int, int>> counts;
+    for (std::size_t i = 0; i < doors.size(); ++i) {
+        counts.clear();
+        cv::LineIterator it(labels_, doors[i].jambA, doors[i].jambB, 8);
+        for (int k = 0; k < it.count; ++k, ++it) {
+            for (const cv::Point& o : around) {
+                const cv::Point q = it.pos() + o;
+                if (!image.contains(q))
+                    continue;
+                const int label = labels_.at<int>(q);
+                if (label == 0)
+                    continue;
+                auto found = std::find_if(counts.begin(), counts.end(),
+                                          [label](const auto& c) { return c.first == label; });
+                if (found == counts.end()) {
+                    counts.emplace_back(label, 1);
+                } else {
+                    ++found->second;
+                }
+            }
+        }
+        std::sort(counts.begin(), counts.end(), [](const auto& a, const auto& b) {
+            return a.second != b.second ? a.second > b.second : a.first < b.first;
+        });
+        touching_[i] = counts;
+    }
+}
+
+}  // namespace toposlam::rooms

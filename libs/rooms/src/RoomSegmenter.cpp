@@ -1,0 +1,304 @@
+#include <toposlam/rooms/DoorSearchPaths.h>
+#include <toposlam/rooms/RegionPartition.h>
+#include <toposlam/rooms/RoomSegmenter.h>
+
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <stdexcept>
+
+namespace toposlam::rooms {
+
+namespace {
+
+// The free region's bounding box plus one ring of background: all later steps work there.
+FreeSpace cropToBounds(const FreeSpace& space, cv::Rect& roi) {
+    roi = (space.bounds + cv::Size(2, 2) - cv::Point(1, 1)) &
+          cv::Rect(0, 0, space.free.cols, space.free.rows);
+    FreeSpace out;
+    out.free = space.free(roi);
+    out.otherFree = space.otherFree.empty() ? cv::Mat() : space.otherFree(roi);
+    out.bounds = space.bounds - roi.tl();
+    out.freeCells = space.freeCells;
+    out.frame = space.frame;
+    out.frame.cols = roi.width;
+    out.frame.rows = roi.height;
+    out.frame.xMin += roi.x * space.frame.resolution;
+    out.frame.yMin += (space.frame.rows - roi.y - roi.height) * space.frame.resolution;
+    return out;
+}
+
+// Gives the free cells left unlabelled (the door cuts) the label of the nearest labelled cell:
+// 4-connected breadth-first growth from the labelled cells next to them, in raster order, never
+// leaving `free`.
+void fillCuts(const cv::Mat& free, cv::Mat& labels) {
+    const cv::Point around[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    auto inside = [&](const cv::Point& q) {
+        return q.x >= 0 && q.y >= 0 && q.x < labels.cols && q.y < labels.rows;
+    };
+    std::deque<cv::Point> queue;
+    for (int r = 0; r < labels.rows; ++r) {
+        const int* row = labels.ptr<int>(r);
+        const auto* f = free.ptr<std::uint8_t>(r);
+        for (int c = 0; c < labels.cols; ++c) {
+            if (row[c] != 0 || f[c] == 0)
+                continue;
+            // An unlabelled free cell: its labelled neighbours seed the growth.
+            for (const cv::Point& o : around) {
+                const cv::Point q(c + o.x, r + o.y);
+                if (inside(q) && labels.at<int>(q) != 0)
+                    queue.push_back(q);
+            }
+        }
+    }
+    while (!queue.empty()) {
+        const cv::Point p = queue.front();
+        queue.pop_front();
+        const int label = labels.at<int>(p);
+        for (const cv::Point& o : around) {
+            const cv::Point q = p + o;
+            if (!inside(q) || labels.at<int>(q) != 0 || free.at<std::uint8_t>(q) == 0)
+                continue;
+            labels.at<int>(q) = label;
+            queue.push_back(q);
+        }
+    }
+}
+
+void require(bool ok, const std::string& what) {
+    if (!ok)
+        throw std::invalid_argument("room segmentation option out of range: " + what);
+}
+
+}  // namespace
+
+RoomSegmenter::Options RoomSegmenter::Options::paperExact() {
+    Options o;
+    o.door.localDirection = false;
+    o.filters.keepNarrowestOfGroup = false;
+    o.filters.mergeSmallestFirst = false;
+    o.filters.requireWallJambs = false;
+    o.filters.requireConstriction = false;
+    return o;
+}
+
+void RoomSegmenter::Options::validate() const {
+    require(freeSpace.freeThreshold >= 0 && freeSpace.freeThreshold < 1,
+            "freeThreshold must be in [0, 1)");
+    require(hough.angleResolutionDeg > 0 && hough.angleResolutionDeg <= 45,
+            "houghAngleResolutionDeg must be in (0, 45]");
+    require(hough.minVotesLength > 0, "houghMinVotesLength must be > 0");
+    require(hough.minLineLength > 0, "houghMinLineLength must be > 0");
+    require(hough.maxLineGap >= 0, "houghMaxLineGap must be >= 0");
+    require(lineMerge.maxAngleDeg > 0 && lineMerge.maxAngleDeg <= 45,
+            "maxAngleDeg must be in (0, 45]");
+    require(lineMerge.maxDistance >= 0, "mergeMaxDistance must be >= 0");
+    require(door.doorWidth > 0, "doorWidth must be > 0");
+    require(door.doorWidthTolerance > 0 && door.doorWidthTolerance < door.doorWidth,
+            "doorWidthTolerance must be in (0, doorWidth)");
+    require(filters.frameDistance >= 0, "frameDistance must be >= 0");
+    require(filters.minRoomArea >= 0, "minRoomArea must be >= 0");
+    require(filters.minWallExtent > 0, "minWallExtent must be > 0");
+    require(filters.openingMargin >= 0, "openingMargin must be >= 0");
+}
+
+void RoomSegmenter::Options::loadFromConfigFile(const mrpt::config::CConfigFileBase& ini,
+                                                const std::string& s) {
+    const std::string variant = ini.read_string(s, "variant", "", false);
+    if (variant == "paper") {
+        *this = paperExact();
+    } else if (variant == "improved") {
+        *this = improved();
+    } else if (!variant.empty()) {
+        throw std::invalid_argument(
+            "room segmentation option out of range: variant must be "
+            "'improved' or 'paper', not '" +
+            variant + "'");
+    }
+    freeSpace.freeThreshold = ini.read_double(s, "freeThreshold", freeSpace.freeThreshold);
+    hough.angleResolutionDeg =
+        ini.read_double(s, "houghAngleResolutionDeg", hough.angleResolutionDeg);
+    hough.minVotesLength = ini.read_double(s, "houghMinVotesLength", hough.minVotesLength);
+    hough.minLineLength = ini.read_double(s, "houghMinLineLength", hough.minLineLength);
+    hough.maxLineGap = ini.read_double(s, "houghMaxLineGap", hough.maxLineGap);
+    lineMerge.maxAngleDeg = ini.read_double(s, "maxAngleDeg", lineMerge.maxAngleDeg);
+    lineMerge.maxDistance = ini.read_double(s, "mergeMaxDistance", lineMerge.maxDistance);
+    door.doorWidth = ini.read_double(s, "doorWidth", door.doorWidth);
+    door.doorWidthTolerance = ini.read_double(s, "doorWidthTolerance", door.doorWidthTolerance);
+    door.localDirection = ini.read_bool(s, "localDirection", door.localDirection);
+    filters.frameDistance = ini.read_double(s, "frameDistance", filters.frameDistance);
+    filters.minRoomArea = ini.read_double(s, "minRoomArea", filters.minRoomArea);
+    filters.keepNarrowestOfGroup =
+        ini.read_bool(s, "keepNarrowestOfGroup", filters.keepNarrowestOfGroup);
+    filters.mergeSmallestFirst = ini.read_bool(s, "mergeSmallestFirst", filters.mergeSmallestFirst);
+    filters.requireWallJambs = ini.read_bool(s, "requireWallJambs", filters.requireWallJambs);
+    filters.minWallExtent = ini.read_double(s, "minWallExtent", filters.minWallExtent);
+    filters.requireConstriction =
+        ini.read_bool(s, "requireConstriction", filters.requireConstriction);
+    filters.openingMargin = ini.read_double(s, "openingMargin", filters.openingMargin);
+    validate();
+}
+
+struct RoomSegmenter::Workspace {
+    explicit Workspace(const Options& o)
+        : binarizer(o.freeSpace),
+          hough(o.hough),
+          merger(o.lineMerge),
+          voter({o.lineMerge.maxAngleDeg}),
+          detector(o.door),
+          filters(o.filters) {}
+    FreeSpaceBinarizer binarizer;
+    HoughLineExtractor hough;
+    LineMerger merger;
+    MainDirectionVoter voter;
+    VirtualDoorDetector detector;
+    DoorFilters filters;
+    FreeSpace space;
+    Clearance clearance;
+    RegionPartition partition;
+};
+
+RoomSegmenter::RoomSegmenter() : RoomSegmenter(Options{}) {}
+
+RoomSegmenter::RoomSegmenter(const Options& options)
+    : options_(options), workspace_(std::make_unique<Workspace>(options_)) {
+    options_.validate();
+}
+
+RoomSegmenter::~RoomSegmenter() = default;
+
+RoomSegmenter::RoomSegmenter(const RoomSegmenter& other) : RoomSegmenter(other.options_) {}
+
+RoomSegmenter& RoomSegmenter::operator=(const RoomSegmenter& other) {
+    if (this != &other) {
+        options_ = other.options_;
+        workspace_ = std::make_unique<Workspace>(options_);
+    }
+    return *this;
+}
+
+RoomSegmenter::Result RoomSegmenter::segment(const mrpt::maps::COccupancyGridMap2D& grid,
+                                             const std::vector<mrpt::math::TPose2D>& trajectory,
+                                             const std::string& sourceName) const {
+    const auto start = std::chrono::steady_clock::now();
+    workspace_->binarizer.binarize(grid, workspace_->space, sourceName);
+    const double binarize =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    Result result = segment(workspace_->space, trajectory);
+    result.stageMilliseconds.insert(result.stageMilliseconds.begin(), {"binarize", binarize});
+    result.milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+RoomSegmenter::Result RoomSegmenter::segment(
+    const FreeSpace& fullSpace, const std::vector<mrpt::math::TPose2D>& trajectory) const {
+    const auto start = std::chrono::steady_clock::now();
+    Workspace& ws = *workspace_;
+    Result result;
+    auto last = start;
+    auto lap = [&](const char* stage) {
+        const auto now = std::chrono::steady_clock::now();
+        result.stageMilliseconds.emplace_back(
+            stage, std::chrono::duration<double, std::milli>(now - last).count());
+        last = now;
+    };
+    cv::Rect roi;
+    const FreeSpace space = cropToBounds(fullSpace, roi);
+    const double res = space.frame.resolution;
+    const auto& door = options_.door;
+
+    // Steps 2-3: wall segments and the main directions.
+    result.lines = ws.merger.merge(ws.hough.extract(space), res);
+    result.directions = ws.voter.vote(result.lines);
+    lap("lines+directions");
+
+    // Step 4: virtual doors along the main directions from the search paths.
+    result.fromTrajectory = !trajectory.empty();
+    ws.clearance.compute(space.free);
+    lap("clearance");
+    result.searchCells = result.fromTrajectory
+                             ? DoorSearchPaths::fromTrajectory(space, trajectory)
+                             : DoorSearchPaths::fromMedialAxis(
+                                   space, ws.clearance, door.doorWidth - door.doorWidthTolerance,
+                                   door.doorWidth + door.doorWidthTolerance);
+    std::vector<double> localDirections;
+    if (door.localDirection) {
+        localDirections.reserve(result.searchCells.size());
+        for (const cv::Point& p : result.searchCells)
+            localDirections.push_back(ws.clearance.acrossRidge(p));
+    }
+    lap("search paths");
+    result.candidates =
+        ws.detector.detect(space, result.searchCells,
+                           {result.directions.phi1, result.directions.phi2}, localDirections);
+    lap("door search");
+
+    // Step 5: filters.
+    result.afterTests = ws.filters.constriction(
+        space, ws.filters.wallJambs(space, result.candidates, result.lines), door.doorWidth);
+    lap("door tests");
+    result.afterDistance = ws.filters.distance(result.afterTests, res);
+    lap("distance filter");
+    ws.partition.compute(space.free, result.afterDistance);
+    const std::vector<std::size_t> adjacent = DoorFilters::adjacency(ws.partition);
+    result.afterAdjacency = adjacent.size();
+    const DoorFilters::Rooms rooms =
+        ws.filters.minimumArea(ws.partition, adjacent, space.frame.cellArea());
+    lap("partition+filters");
+
+    // Step 6: the rooms. Region labels become room ids in place; cut cells join a neighbour.
+    cv::Mat& labels = ws.partition.mutableLabels();
+    for (int r = 0; r < labels.rows; ++r) {
+        int* row = labels.ptr<int>(r);
+        for (int c = 0; c < labels.cols; ++c)
+            row[c] = rooms.roomOfRegion[static_cast<std::size_t>(row[c])];
+    }
+    fillCuts(space.free, labels);
+    lap("labels");
+    // Room geometry on the cropped frame (world coordinates do not depend on the crop), then the
+    // labels are put back on the full frame.
+    result.map = TopologicalMap::fromLabels(space.frame, labels, ws.clearance.distances());
+    result.map.frame = fullSpace.frame;
+    result.map.labels = cv::Mat::zeros(fullSpace.frame.rows, fullSpace.frame.cols, CV_32S);
+    labels.copyTo(result.map.labels(roi));
+    for (const DoorFilters::Rooms::Link& link : rooms.doors) {
+        const VirtualDoor& d = result.afterDistance[link.door];
+        Door out;
+        out.id = static_cast<int>(result.map.doors.size()) + 1;
+        out.jambA = space.frame.toWorld(cv::Point2f(d.jambA));
+        out.jambB = space.frame.toWorld(cv::Point2f(d.jambB));
+        out.width = d.width * res;
+        out.roomA = link.roomA;
+        out.roomB = link.roomB;
+        result.map.doors.push_back(out);
+    }
+    lap("room geometry");
+
+    // Diagnostics in full-frame pixels.
+    auto shift = [&](std::vector<VirtualDoor>& doors) {
+        for (VirtualDoor& d : doors) {
+            d.jambA += roi.tl();
+            d.jambB += roi.tl();
+            d.pathCell += roi.tl();
+        }
+    };
+    shift(result.candidates);
+    shift(result.afterTests);
+    shift(result.afterDistance);
+    for (cv::Point& p : result.searchCells)
+        p += roi.tl();
+    const cv::Point2f offset(static_cast<float>(roi.x), static_cast<float>(roi.y));
+    for (LineSegment& l : result.lines) {
+        l.start += offset;
+        l.end += offset;
+    }
+    result.milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace toposlam::rooms

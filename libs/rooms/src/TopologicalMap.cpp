@@ -1,0 +1,156 @@
+#include <toposlam/rooms/TopologicalMap.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <stdexcept>
+
+namespace toposlam::rooms {
+
+TopologicalMap TopologicalMap::fromLabels(const GridImageFrame& frame, const cv::Mat& labels,
+                                          const cv::Mat& clearance) {
+    CV_Assert(labels.type() == CV_32S && labels.rows == frame.rows && labels.cols == frame.cols);
+    CV_Assert(clearance.empty() ||
+              (clearance.type() == CV_32F && clearance.size() == labels.size()));
+    TopologicalMap map;
+    map.frame = frame;
+    map.labels = labels;
+    struct Accumulator {
+        std::size_t cells = 0;
+        double sumCol = 0, sumRow = 0;
+        int minCol = 1 << 30, minRow = 1 << 30, maxCol = -1, maxRow = -1;
+        float deepest = -1;
+        cv::Point anchor;
+    };
+    std::vector<Accumulator> acc;
+    for (int r = 0; r < labels.rows; ++r) {
+        const int* row = labels.ptr<int>(r);
+        for (int c = 0; c < labels.cols; ++c) {
+            const int id = row[c];
+            if (id <= 0)
+                continue;
+            if (static_cast<std::size_t>(id) > acc.size())
+                acc.resize(static_cast<std::size_t>(id));
+            Accumulator& a = acc[static_cast<std::size_t>(id - 1)];
+            ++a.cells;
+            a.sumCol += c;
+            a.sumRow += r;
+            a.minCol = std::min(a.minCol, c);
+            a.maxCol = std::max(a.maxCol, c);
+            a.minRow = std::min(a.minRow, r);
+            a.maxRow = std::max(a.maxRow, r);
+        }
+    }
+    cv::Mat depth = clearance;
+    if (depth.empty())
+        cv::distanceTransform(labels > 0, depth, cv::DIST_L2, cv::DIST_MASK_5);
+    for (int r = 0; r < labels.rows; ++r) {
+        const int* row = labels.ptr<int>(r);
+        const float* d = depth.ptr<float>(r);
+        for (int c = 0; c < labels.cols; ++c) {
+            if (row[c] <= 0)
+                continue;
+            Accumulator& a = acc[static_cast<std::size_t>(row[c] - 1)];
+            if (d[c] > a.deepest) {
+                a.deepest = d[c];
+                a.anchor = {c, r};
+            }
+        }
+    }
+    for (std::size_t i = 0; i < acc.size(); ++i) {
+        const Accumulator& a = acc[i];
+        if (a.cells == 0) {
+            throw std::invalid_argument(
+                "TopologicalMap::fromLabels: room ids must be 1..N without gaps");
+        }
+        Room room;
+        room.id = static_cast<int>(i) + 1;
+        room.area = static_cast<double>(a.cells) * frame.cellArea();
+        room.centroid = frame.toWorld(a.sumCol / static_cast<double>(a.cells),
+                                      a.sumRow / static_cast<double>(a.cells));
+        room.anchor = frame.toWorld(a.anchor.x, a.anchor.y);
+        // The room's cells in its bounding box plus a ring of zeros.
+        const cv::Rect box(a.minCol, a.minRow, a.maxCol - a.minCol + 1, a.maxRow - a.minRow + 1);
+        cv::Mat mask = cv::Mat::zeros(box.height + 2, box.width + 2, CV_8U);
+        mask(cv::Rect(1, 1, box.width, box.height)).setTo(255, labels(box) == room.id);
+        std::vector<std::vector<cv::Point>> contours;
+        cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
+        std::size_t largest = 0;
+        double largestArea = -1;
+        for (std::size_t k = 0; k < contours.size(); ++k) {
+            const double area = cv::contourArea(contours[k]);
+            if (area > largestArea) {
+                largestArea = area;
+                largest = k;
+            }
+        }
+        if (!contours.empty()) {
+            for (const cv::Point& p : contours[largest]) {
+                room.outline.push_back(frame.toWorld(p.x - 1 + box.x, p.y - 1 + box.y));
+            }
+            double twiceArea = 0;  // shoelace, world frame
+            for (std::size_t k = 0; k < room.outline.size(); ++k) {
+                const auto& p = room.outline[k];
+                const auto& q = room.outline[(k + 1) % room.outline.size()];
+                twiceArea += p.x * q.y - q.x * p.y;
+            }
+            if (twiceArea < 0)
+                std::reverse(room.outline.begin(), room.outline.end());
+        }
+        map.rooms.push_back(std::move(room));
+    }
+    return map;
+}
+
+const Room* TopologicalMap::room(int id) const {
+    return id >= 1 && id <= static_cast<int>(rooms.size())
+               ? &rooms[static_cast<std::size_t>(id - 1)]
+               : nullptr;
+}
+
+Room* TopologicalMap::room(int id) {
+    return id >= 1 && id <= static_cast<int>(rooms.size())
+               ? &rooms[static_cast<std::size_t>(id - 1)]
+               : nullptr;
+}
+
+int TopologicalMap::roomAt(double x, double y) const {
+    const cv::Point p = frame.toCell(x, y);
+    if (labels.empty() || !frame.contains(p))
+        return 0;
+    return labels.at<int>(p);
+}
+
+std::vector<std::pair<int, int>> TopologicalMap::adjacency() const {
+    std::vector<std::pair<int, int>> pairs;
+    for (const Door& d : doors)
+        pairs.emplace_back(std::min(d.roomA, d.roomB), std::max(d.roomA, d.roomB));
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    return pairs;
+}
+
+std::vector<int> TopologicalMap::neighbours(int id) const {
+    std::vector<int> out;
+    for (const Door& d : doors) {
+        if (d.roomA == id)
+            out.push_back(d.roomB);
+        if (d.roomB == id)
+            out.push_back(d.roomA);
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+std::vector<const Door*> TopologicalMap::doorsBetween(int a, int b) const {
+    std::vector<const Door*> out;
+    for (const Door& d : doors) {
+        if ((d.roomA == a && d.roomB == b) || (d.roomA == b && d.roomB == a))
+            out.push_back(&d);
+    }
+    return out;
+}
+
+}  // namespace toposlam::rooms

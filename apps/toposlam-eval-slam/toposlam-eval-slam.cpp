@@ -1,0 +1,227 @@
+// toposlam-eval-slam: scores SLAM trajectories with the relation metric of Kümmerle et al. 2009
+// (benchmark B3), against a .relations file or a ground-truth trajectory, several methods side
+// by side in one table, optionally as JSON.
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <toposlam/evaluation/GroundTruthRelations.h>
+#include <toposlam/evaluation/IcpSlamPath.h>
+#include <toposlam/evaluation/RelationFile.h>
+#include <toposlam/evaluation/SlamEvaluation.h>
+#include <toposlam/io/InputError.h>
+#include <toposlam/io/Trajectory.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace toposlam;
+
+const char* const kDescription =
+    "Scores 2D SLAM trajectories with the relation-based metric of Kuemmerle et al. 2009 (\"On "
+    "measuring the accuracy of SLAM algorithms\"; TopoSLAM benchmark B3). For every relation "
+    "(t1, t2, delta_gt) the error is e = inv(delta_gt) (+) delta_est with delta_est = inv(x_t1) "
+    "(+) x_t2, x_t the trajectory's pose at stamp t. Printed per method: relations matched / "
+    "total, mean +- std (sample std) of |translation(e)| in m and |rotation(e)| in deg, the same "
+    "for the squared errors (m^2, deg^2), and the maxima. Relations whose stamps are not in a "
+    "trajectory (within --stamp-tolerance) are left out and counted as unmatched.\n"
+    "With --ground-truth, relations are derived from the true trajectory (every consecutive "
+    "pose pair + pairs separated by d, 2d, 4d ... metres of travelled path, d = "
+    "--gt-separation, start poses d/2 apart) and the absolute trajectory error after the best "
+    "rigid 2D alignment (ATE RMSE, max) is added.\n"
+    "Trajectory files: one pose per line 'timestamp x y yaw' (s, m, m, rad; '#' comments), the "
+    "timestamps being the scans' stamps as the log prints them. MRPT icp-slam's "
+    "log_estimated_path.txt ('step x y yaw', one line per rawlog entry, no stamps) is accepted "
+    "with --icp-slam-path and --rawlog: the stamps come from the scans of the rawlog icp-slam "
+    "ran on (or from --scan-stamps).\n"
+    "Examples:\n"
+    "  toposlam-eval-slam odometry.txt --relations intel.relations\n"
+    "  toposlam-eval-slam --trajectory odometry=odo.txt --trajectory toposlam=slam.txt "
+    "--icp-slam-path icp-out/log_estimated_path.txt --rawlog intel.rawlog --scan-stamps odo.txt "
+    "--relations intel.relations --json intel-b3.json\n"
+    "  toposlam-eval-slam slam.txt --ground-truth office.gt.txt --json office.json\n"
+    "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input (missing or "
+    "malformed files, non-finite poses). The JSON file is written atomically, and only on "
+    "success.";
+
+struct Method {
+    std::string name;
+    std::string file;
+};
+
+// "label=path" -> {label, path}; a plain path gets `defaultName` (or the file's stem).
+Method parseMethod(const std::string& spec, const std::string& defaultName) {
+    const auto eq = spec.find('=');
+    if (eq != std::string::npos && eq > 0 && spec.substr(0, eq).find('/') == std::string::npos) {
+        return {spec.substr(0, eq), spec.substr(eq + 1)};
+    }
+    return {defaultName.empty() ? std::filesystem::path(spec).stem().string() : defaultName, spec};
+}
+
+int run(int argc, char** argv) {
+    TCLAP::CmdLine cmd(kDescription, ' ', "0.1");
+    TCLAP::UnlabeledMultiArg<std::string> positional(
+        "trajectories",
+        "Trajectory file(s) 'timestamp x y yaw' to score; labelled by --name or "
+        "by the file name",
+        false, "trajectory.txt", cmd);
+    TCLAP::MultiArg<std::string> trajectories(
+        "", "trajectory",
+        "A trajectory to score, labelled: [label=]file (repeatable; the label "
+        "names the table row, default: the file name without extension)",
+        false, "[label=]file", cmd);
+    TCLAP::MultiArg<std::string> icpSlamPaths(
+        "", "icp-slam-path",
+        "MRPT icp-slam's log_estimated_path.txt to score (repeatable; "
+        "needs --rawlog): [label=]file, default label 'icp-slam'",
+        false, "[label=]file", cmd);
+    TCLAP::ValueArg<std::string> rawlog(
+        "", "rawlog",
+        "The rawlog icp-slam ran on: its scan entries give the --icp-slam-path "
+        "lines their stamps (MRPT timestamps as Unix seconds)",
+        false, "", "log.rawlog", cmd);
+    TCLAP::ValueArg<std::string> scanStamps(
+        "", "scan-stamps",
+        "A trajectory file whose timestamps, in file order, replace the stamps "
+        "of the rawlog's scans, one per scan (e.g. the output of toposlam-convert "
+        "--odometry-trajectory on the original CARMEN log, whose stamps are the ones relation "
+        "files use)",
+        false, "", "stamps.txt", cmd);
+    TCLAP::ValueArg<std::string> name("", "name", "Label of the (single) positional trajectory",
+                                      false, "", "label", cmd);
+    TCLAP::ValueArg<std::string> relationsFile(
+        "", "relations",
+        "Ground-truth relations, Kuemmerle benchmark format 't1 t2 x y z roll "
+        "pitch yaw'",
+        true, "", "file.relations");
+    TCLAP::ValueArg<std::string> groundTruthFile(
+        "", "ground-truth",
+        "Ground-truth trajectory 'timestamp x y yaw' (e.g. of a simulated "
+        "log): relations are derived from it, and the ATE is reported",
+        true, "", "gt.txt");
+    cmd.xorAdd(relationsFile, groundTruthFile);
+    TCLAP::ValueArg<double> separation(
+        "", "gt-separation",
+        "With --ground-truth: shortest path separation d (m) of the "
+        "multi-scale relations (d, 2d, 4d, ... up to the path length); 0 keeps only consecutive "
+        "pairs",
+        false, 1.0, "metres", cmd);
+    TCLAP::ValueArg<double> tolerance(
+        "", "stamp-tolerance",
+        "Largest stamp difference (s) at which a relation or ground-truth "
+        "stamp matches a trajectory pose (nearest one wins)",
+        false, evaluation::StampedPoseLookup::kDefaultTolerance, "seconds", cmd);
+    TCLAP::ValueArg<std::string> writeRelations(
+        "", "write-relations",
+        "Also write the relations used (with --ground-truth: the derived "
+        "ones) in .relations format, e.g. to score other tools against the same set",
+        false, "", "out.relations", cmd);
+    TCLAP::ValueArg<std::string> json("", "json",
+                                      "Write the results as JSON to this file "
+                                      "(atomically, only on success)",
+                                      false, "", "out.json", cmd);
+    if (!cmd.parse(argc, argv)) {
+        // TCLAP printed the help, the version or a usage error: only the first two succeed.
+        const std::vector<std::string> args(argv + 1, argv + argc);
+        for (const char* done : {"-h", "--help", "--version"}) {
+            if (std::find(args.begin(), args.end(), done) != args.end())
+                return EXIT_SUCCESS;
+        }
+        return EXIT_FAILURE;
+    }
+
+    // Which trajectories, under which labels.
+    std::vector<Method> methods;
+    if (name.isSet() && positional.getValue().size() != 1) {
+        throw std::invalid_argument("--name labels a single positional trajectory");
+    }
+    for (const auto& f : positional.getValue())
+        methods.push_back(parseMethod(f, name.getValue()));
+    for (const auto& spec : trajectories.getValue())
+        methods.push_back(parseMethod(spec, ""));
+    const std::size_t firstIcpSlam = methods.size();
+    for (const auto& spec : icpSlamPaths.getValue()) {
+        methods.push_back(parseMethod(spec, "icp-slam"));
+    }
+    if (methods.empty()) {
+        throw std::invalid_argument(
+            "no trajectory to score (give a file, --trajectory or "
+            "--icp-slam-path; see --help)");
+    }
+    if (firstIcpSlam < methods.size() && !rawlog.isSet()) {
+        throw std::invalid_argument("--icp-slam-path needs --rawlog (the rawlog icp-slam ran on)");
+    }
+    if (!(tolerance.getValue() >= 0))
+        throw std::invalid_argument("--stamp-tolerance must be >= 0");
+
+    // The reference.
+    evaluation::SlamEvaluation ev;
+    ev.stampTolerance = tolerance.getValue();
+    evaluation::PoseRelations relations;
+    std::optional<io::Trajectory2D> groundTruth;
+    if (relationsFile.isSet()) {
+        ev.referenceFile = relationsFile.getValue();
+        relations = evaluation::loadRelations(ev.referenceFile);
+    } else {
+        ev.referenceFile = groundTruthFile.getValue();
+        ev.referenceIsGroundTruth = true;
+        groundTruth = io::loadTrajectory(ev.referenceFile);
+        ev.groundTruthPoses = groundTruth->size();
+        ev.groundTruthRelations.baseSeparation = separation.getValue();
+        relations = evaluation::relationsFromGroundTruth(*groundTruth, ev.groundTruthRelations);
+        if (relations.empty()) {
+            throw io::InputError(ev.referenceFile, "fewer than 2 poses: no relation to score");
+        }
+    }
+    ev.relationCount = relations.size();
+
+    // Every method, read and scored before anything is written.
+    std::optional<std::vector<double>> stamps;
+    if (scanStamps.isSet()) {
+        stamps.emplace();
+        for (const auto& p : io::loadTrajectory(scanStamps.getValue()))
+            stamps->push_back(p.stamp);
+    }
+    for (std::size_t i = 0; i < methods.size(); ++i) {
+        const Method& m = methods[i];
+        const bool isIcpSlam = i >= firstIcpSlam;
+        const io::Trajectory2D estimate =
+            isIcpSlam ? evaluation::loadIcpSlamPath(m.file, rawlog.getValue(),
+                                                    stamps ? &*stamps : nullptr)
+                      : io::loadTrajectory(m.file);
+        if (estimate.empty())
+            throw io::InputError(m.file, "no pose in the trajectory");
+        const std::string source = isIcpSlam ? m.file + " + " + rawlog.getValue() : m.file;
+        try {
+            ev.methods.push_back(evaluation::evaluateMethod(m.name, source, estimate, relations,
+                                                            groundTruth ? &*groundTruth : nullptr,
+                                                            ev.stampTolerance));
+        } catch (const std::invalid_argument& e) {
+            throw io::InputError(m.file, e.what());
+        }
+    }
+
+    std::cout << evaluation::formatEvaluationTable(ev);
+    if (writeRelations.isSet())
+        evaluation::saveRelations(relations, writeRelations.getValue());
+    if (json.isSet())
+        evaluation::saveEvaluationJson(ev, json.getValue());
+    return EXIT_SUCCESS;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const TCLAP::ArgException& e) {
+        std::cerr << "error: " << e.argId() << ": " << e.error() << "\n";
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+    }
+    return EXIT_FAILURE;
+}

@@ -120,6 +120,11 @@ int run(int argc, char** argv) {
         "Also write the relations used (with --ground-truth: the derived "
         "ones) in .relations format, e.g. to score other tools against the same set",
         false, "", "out.relations", cmd);
+    TCLAP::ValueArg<std::string> plot(
+        "", "plot",
+        "Also draw every trajectory into this PNG, rigidly aligned to the ground truth (drawn "
+        "too) or else to the method with the lowest mean translational error",
+        false, "", "out.png", cmd);
     TCLAP::ValueArg<std::string> json("", "json",
                                       "Write the results as JSON to this file "
                                       "(atomically, only on success)",
@@ -186,6 +191,7 @@ int run(int argc, char** argv) {
         for (const auto& p : io::loadTrajectory(scanStamps.getValue()))
             stamps->push_back(p.stamp);
     }
+    std::vector<io::Trajectory2D> estimates;  // kept for the plot only
     for (std::size_t i = 0; i < methods.size(); ++i) {
         const Method& m = methods[i];
         const bool isIcpSlam = i >= firstIcpSlam;
@@ -203,11 +209,17 @@ int run(int argc, char** argv) {
         } catch (const std::invalid_argument& e) {
             throw io::InputError(m.file, e.what());
         }
+        if (plot.isSet())
+            estimates.push_back(estimate);
     }
 
     std::cout << evaluation::formatEvaluationTable(ev);
     if (writeRelations.isSet())
         evaluation::saveRelations(relations, writeRelations.getValue());
+    if (plot.isSet()) {
+        evaluation::saveEvaluationPlot(ev, estimates, groundTruth ? &*groundTruth : nullptr,
+                                       plot.getValue());
+    }
     if (json.isSet())
         evaluation::saveEvaluationJson(ev, json.getValue());
     return EXIT_SUCCESS;

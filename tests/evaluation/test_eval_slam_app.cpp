@@ -47,7 +47,7 @@ TEST(EvalSlamApp, HelpExplainsEveryOption) {
     EXPECT_EQ(r.exitCode, 0) << r.output;
     for (const char* option : {"--relations", "--ground-truth", "--trajectory", "--icp-slam-path",
                                "--rawlog", "--scan-stamps", "--json", "--name", "--gt-separation",
-                               "--stamp-tolerance", "--write-relations", "Kuemmerle"}) {
+                               "--stamp-tolerance", "--write-relations", "--plot", "Kuemmerle"}) {
         EXPECT_TRUE(contains(r.output, option)) << option;
     }
 }
@@ -94,8 +94,10 @@ TEST(EvalSlamApp, GroundTruthModeAddsAteAndWritesTheRelations) {
     const std::string gt = write(f.dir, "gt.txt", truth);
     const std::string est = write(f.dir, "est.txt", estimate);
     const std::string rel = f.dir.file("derived.relations");
-    const auto r = runApp("toposlam-eval-slam", est + " --ground-truth " + gt + " --json " +
-                                                    f.json + " --write-relations " + rel);
+    const std::string png = f.dir.file("plot.png");
+    const auto r =
+        runApp("toposlam-eval-slam", est + " --ground-truth " + gt + " --json " + f.json +
+                                         " --write-relations " + rel + " --plot " + png);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     // 10 m path, d = 1 m: 20 consecutive + 19 (1 m) + 9 (2 m) + 4 (4 m) + 1 (8 m) relations.
     EXPECT_TRUE(contains(r.output, "| est | 53 / 53 | 0.0000 ± 0.0000 | 0.000 ± 0.000 |"))
@@ -109,6 +111,7 @@ TEST(EvalSlamApp, GroundTruthModeAddsAteAndWritesTheRelations) {
     for (std::string line; std::getline(relationsOut, line);)
         ++lines;
     EXPECT_EQ(lines, 53u);
+    EXPECT_EQ(readFile(png).substr(1, 3), "PNG") << "the plot is a PNG file";
 }
 
 TEST(EvalSlamApp, BadInputExitsNonZeroAndWritesNoJson) {

@@ -1,4 +1,5 @@
 #include <toposlam/evaluation/SlamEvaluation.h>
+#include <toposlam/evaluation/TrajectoryPlot.h>
 #include <toposlam/io/AtomicFile.h>
 
 #include <algorithm>
@@ -206,6 +207,36 @@ void saveEvaluationJson(const SlamEvaluation& evaluation, const std::string& pat
         if (!f)
             throw std::runtime_error(path + ": cannot write the JSON file");
     });
+}
+
+// ---- plot ---------------------------------------------------------------------------------
+
+void saveEvaluationPlot(const SlamEvaluation& ev, const std::vector<io::Trajectory2D>& estimates,
+                        const io::Trajectory2D* groundTruth, const std::string& path) {
+    if (estimates.size() != ev.methods.size()) {
+        throw std::invalid_argument("saveEvaluationPlot: one trajectory per method expected");
+    }
+    std::vector<PlottedTrajectory> plotted;
+    std::size_t best = 0;
+    for (std::size_t i = 0; i < estimates.size(); ++i) {
+        const RelativePoseErrorResult& r = ev.methods[i].relative;
+        plotted.push_back(
+            {ev.methods[i].name + (r.matchedRelations ? ": " + fixed(r.translation.mean, 4) + " m"
+                                                      : std::string(": no relation matched")),
+             estimates[i]});
+        const RelativePoseErrorResult& b = ev.methods[best].relative;
+        if (r.matchedRelations &&
+            (!b.matchedRelations || r.translation.mean < b.translation.mean)) {
+            best = i;
+        }
+    }
+    if (groundTruth) {
+        plotted = alignedTo(*groundTruth, std::move(plotted), ev.stampTolerance);
+        plotted.insert(plotted.begin(), {"ground truth", *groundTruth});
+    } else if (!estimates.empty()) {
+        plotted = alignedTo(estimates[best], std::move(plotted), ev.stampTolerance);
+    }
+    saveTrajectoryPlot(plotted, path);
 }
 
 }  // namespace toposlam::evaluation

@@ -50,4 +50,12 @@ std::string formatEvaluationJson(const SlamEvaluation& evaluation);
 /// Writes formatEvaluationJson() to `path` atomically (no partial file on failure).
 void saveEvaluationJson(const SlamEvaluation& evaluation, const std::string& path);
 
+/// A PNG of every method's trajectory (`estimates[i]` belongs to `evaluation.methods[i]`),
+/// each rigidly aligned into one frame: the ground truth's, drawn too, when `groundTruth` is
+/// given; otherwise the frame of the method with the lowest mean translational error. Legend:
+/// name and mean translational error. Written atomically.
+void saveEvaluationPlot(const SlamEvaluation& evaluation,
+                        const std::vector<io::Trajectory2D>& estimates,
+                        const io::Trajectory2D* groundTruth, const std::string& path);
+
 }  // namespace toposlam::evaluation

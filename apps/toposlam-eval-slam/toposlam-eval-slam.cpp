@@ -1,9 +1,10 @@
 // toposlam-eval-slam: scores SLAM trajectories with the relation metric of Kümmerle et al. 2009
 // (benchmark B3), against a .relations file or a ground-truth trajectory, several methods side
-// by side in one table, optionally as JSON.
+// by side in one table, optionally as JSON and as a picture.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <toposlam/evaluation/GroundTruthRelations.h>
 #include <toposlam/evaluation/IcpSlamPath.h>
+#include <toposlam/evaluation/LogOdometry.h>
 #include <toposlam/evaluation/RelationFile.h>
 #include <toposlam/evaluation/SlamEvaluation.h>
 #include <toposlam/io/InputError.h>
@@ -33,102 +34,111 @@ const char* const kDescription =
     "pose pair + pairs separated by d, 2d, 4d ... metres of travelled path, d = "
     "--gt-separation, start poses d/2 apart) and the absolute trajectory error after the best "
     "rigid 2D alignment (ATE RMSE, max) is added.\n"
-    "Trajectory files: one pose per line 'timestamp x y yaw' (s, m, m, rad; '#' comments), the "
-    "timestamps being the scans' stamps as the log prints them. MRPT icp-slam's "
-    "log_estimated_path.txt ('step x y yaw', one line per rawlog entry, no stamps) is accepted "
-    "with --icp-slam-path and --rawlog: the stamps come from the scans of the rawlog icp-slam "
-    "ran on (or from --scan-stamps).\n"
+    "Methods (table rows, in this order): --odometry-of (a log's raw odometry at each scan), "
+    "trajectory files (positional or --trajectory), --icp-slam-path. Trajectory files: one "
+    "pose per line 'timestamp x y yaw' (s, m, m, rad; '#' comments), the timestamps being the "
+    "scans' stamps as the log prints them. MRPT icp-slam's log_estimated_path.txt ('step x y "
+    "yaw', one line per rawlog entry, no stamps) needs --rawlog: the scans of the rawlog "
+    "icp-slam ran on give the lines their stamps, or, with --scan-stamps, the scans of the log "
+    "that rawlog was converted from.\n"
     "Examples:\n"
-    "  toposlam-eval-slam odometry.txt --relations intel.relations\n"
-    "  toposlam-eval-slam --trajectory odometry=odo.txt --trajectory toposlam=slam.txt "
-    "--icp-slam-path icp-out/log_estimated_path.txt --rawlog intel.rawlog --scan-stamps odo.txt "
-    "--relations intel.relations --json intel-b3.json\n"
-    "  toposlam-eval-slam slam.txt --ground-truth office.gt.txt --json office.json\n"
+    "  toposlam-eval-slam --odometry-of intel.clf --relations intel.relations\n"
+    "  toposlam-eval-slam --odometry-of intel.clf --trajectory toposlam=slam.txt "
+    "--icp-slam-path icp-out/log_estimated_path.txt --rawlog intel.rawlog --scan-stamps "
+    "intel.clf --relations intel.relations --json intel-b3.json --plot intel-b3.png\n"
+    "  toposlam-eval-slam slam.txt --ground-truth office_gt.txt --json office.json\n"
     "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input (missing or "
-    "malformed files, non-finite poses). The JSON file is written atomically, and only on "
+    "malformed files, non-finite poses). Output files are written atomically, and only on "
     "success.";
 
+enum class Kind { LogOdometry, TrajectoryFile, IcpSlamPath };
+
 struct Method {
+    Kind kind;
     std::string name;
     std::string file;
 };
 
-// "label=path" -> {label, path}; a plain path gets `defaultName` (or the file's stem).
-Method parseMethod(const std::string& spec, const std::string& defaultName) {
+// "label=path" -> {label, path}; a plain path gets `defaultName` (or else the file's stem).
+Method parseMethod(Kind kind, const std::string& spec, const std::string& defaultName) {
     const auto eq = spec.find('=');
     if (eq != std::string::npos && eq > 0 && spec.substr(0, eq).find('/') == std::string::npos) {
-        return {spec.substr(0, eq), spec.substr(eq + 1)};
+        return {kind, spec.substr(0, eq), spec.substr(eq + 1)};
     }
-    return {defaultName.empty() ? std::filesystem::path(spec).stem().string() : defaultName, spec};
+    return {kind, defaultName.empty() ? std::filesystem::path(spec).stem().string() : defaultName,
+            spec};
 }
 
 int run(int argc, char** argv) {
     TCLAP::CmdLine cmd(kDescription, ' ', "0.1");
     TCLAP::UnlabeledMultiArg<std::string> positional(
         "trajectories",
-        "Trajectory file(s) 'timestamp x y yaw' to score; labelled by --name or "
-        "by the file name",
+        "Trajectory file(s) 'timestamp x y yaw' to score; labelled by --name or by the file "
+        "name",
         false, "trajectory.txt", cmd);
     TCLAP::MultiArg<std::string> trajectories(
         "", "trajectory",
-        "A trajectory to score, labelled: [label=]file (repeatable; the label "
-        "names the table row, default: the file name without extension)",
+        "A trajectory file to score, labelled: [label=]file (repeatable; the label names the "
+        "table row, default: the file name without extension)",
         false, "[label=]file", cmd);
+    TCLAP::MultiArg<std::string> odometryOf(
+        "", "odometry-of",
+        "Score the raw wheel odometry of this laser log (CARMEN .clf/.log or rawlog) at each "
+        "scan, stamped with the scans' file stamps: the odometry-only baseline. [label=]log, "
+        "default label 'odometry' (repeatable)",
+        false, "[label=]log", cmd);
     TCLAP::MultiArg<std::string> icpSlamPaths(
         "", "icp-slam-path",
-        "MRPT icp-slam's log_estimated_path.txt to score (repeatable; "
-        "needs --rawlog): [label=]file, default label 'icp-slam'",
+        "MRPT icp-slam's log_estimated_path.txt to score (needs --rawlog): [label=]file, "
+        "default label 'icp-slam' (repeatable, e.g. for several configurations on one rawlog)",
         false, "[label=]file", cmd);
     TCLAP::ValueArg<std::string> rawlog(
         "", "rawlog",
-        "The rawlog icp-slam ran on: its scan entries give the --icp-slam-path "
-        "lines their stamps (MRPT timestamps as Unix seconds)",
+        "The rawlog icp-slam ran on: its scan entries give the --icp-slam-path lines their "
+        "stamps (MRPT timestamps as Unix seconds)",
         false, "", "log.rawlog", cmd);
     TCLAP::ValueArg<std::string> scanStamps(
         "", "scan-stamps",
-        "A trajectory file whose timestamps, in file order, replace the stamps "
-        "of the rawlog's scans, one per scan (e.g. the output of toposlam-convert "
-        "--odometry-trajectory on the original CARMEN log, whose stamps are the ones relation "
-        "files use)",
-        false, "", "stamps.txt", cmd);
+        "The log --rawlog was converted from (e.g. the CARMEN .clf): the file stamps of its "
+        "scans, in order, replace the rawlog's scan stamps, one per scan. Needed where a "
+        "converter made the stamps increasing (intel), since relation files use the stamps as "
+        "printed",
+        false, "", "log", cmd);
     TCLAP::ValueArg<std::string> name("", "name", "Label of the (single) positional trajectory",
                                       false, "", "label", cmd);
     TCLAP::ValueArg<std::string> relationsFile(
         "", "relations",
-        "Ground-truth relations, Kuemmerle benchmark format 't1 t2 x y z roll "
-        "pitch yaw'",
-        true, "", "file.relations");
+        "Ground-truth relations, Kuemmerle benchmark format 't1 t2 x y z roll pitch yaw'", true, "",
+        "file.relations");
     TCLAP::ValueArg<std::string> groundTruthFile(
         "", "ground-truth",
-        "Ground-truth trajectory 'timestamp x y yaw' (e.g. of a simulated "
-        "log): relations are derived from it, and the ATE is reported",
+        "Ground-truth trajectory 'timestamp x y yaw' (e.g. of a simulated log): relations are "
+        "derived from it, and the ATE is reported",
         true, "", "gt.txt");
     cmd.xorAdd(relationsFile, groundTruthFile);
     TCLAP::ValueArg<double> separation(
         "", "gt-separation",
-        "With --ground-truth: shortest path separation d (m) of the "
-        "multi-scale relations (d, 2d, 4d, ... up to the path length); 0 keeps only consecutive "
-        "pairs",
+        "With --ground-truth: shortest path separation d (m) of the multi-scale relations (d, "
+        "2d, 4d, ... up to the path length); 0 keeps only consecutive pairs. Default 1 m",
         false, 1.0, "metres", cmd);
     TCLAP::ValueArg<double> tolerance(
         "", "stamp-tolerance",
-        "Largest stamp difference (s) at which a relation or ground-truth "
-        "stamp matches a trajectory pose (nearest one wins)",
+        "Largest stamp difference (s) at which a relation or ground-truth stamp matches a "
+        "trajectory pose (nearest one wins). Default 1e-5 s",
         false, evaluation::StampedPoseLookup::kDefaultTolerance, "seconds", cmd);
     TCLAP::ValueArg<std::string> writeRelations(
         "", "write-relations",
-        "Also write the relations used (with --ground-truth: the derived "
-        "ones) in .relations format, e.g. to score other tools against the same set",
+        "Also write the relations used (with --ground-truth: the derived ones) in .relations "
+        "format, e.g. to score other tools against the same set",
         false, "", "out.relations", cmd);
     TCLAP::ValueArg<std::string> plot(
         "", "plot",
         "Also draw every trajectory into this PNG, rigidly aligned to the ground truth (drawn "
         "too) or else to the method with the lowest mean translational error",
         false, "", "out.png", cmd);
-    TCLAP::ValueArg<std::string> json("", "json",
-                                      "Write the results as JSON to this file "
-                                      "(atomically, only on success)",
-                                      false, "", "out.json", cmd);
+    TCLAP::ValueArg<std::string> json(
+        "", "json", "Write the results as JSON to this file (keys: see the README)", false, "",
+        "out.json", cmd);
     if (!cmd.parse(argc, argv)) {
         // TCLAP printed the help, the version or a usage error: only the first two succeed.
         const std::vector<std::string> args(argv + 1, argv + argc);
@@ -139,29 +149,37 @@ int run(int argc, char** argv) {
         return EXIT_FAILURE;
     }
 
-    // Which trajectories, under which labels.
-    std::vector<Method> methods;
+    // Which trajectories, under which labels, in table order.
     if (name.isSet() && positional.getValue().size() != 1) {
         throw std::invalid_argument("--name labels a single positional trajectory");
     }
-    for (const auto& f : positional.getValue())
-        methods.push_back(parseMethod(f, name.getValue()));
-    for (const auto& spec : trajectories.getValue())
-        methods.push_back(parseMethod(spec, ""));
-    const std::size_t firstIcpSlam = methods.size();
+    std::vector<Method> methods;
+    for (const auto& spec : odometryOf.getValue()) {
+        methods.push_back(parseMethod(Kind::LogOdometry, spec, "odometry"));
+    }
+    for (const auto& file : positional.getValue()) {
+        methods.push_back(parseMethod(Kind::TrajectoryFile, file, name.getValue()));
+    }
+    for (const auto& spec : trajectories.getValue()) {
+        methods.push_back(parseMethod(Kind::TrajectoryFile, spec, ""));
+    }
     for (const auto& spec : icpSlamPaths.getValue()) {
-        methods.push_back(parseMethod(spec, "icp-slam"));
+        methods.push_back(parseMethod(Kind::IcpSlamPath, spec, "icp-slam"));
     }
     if (methods.empty()) {
         throw std::invalid_argument(
-            "no trajectory to score (give a file, --trajectory or "
+            "no trajectory to score (give a file, --trajectory, --odometry-of or "
             "--icp-slam-path; see --help)");
     }
-    if (firstIcpSlam < methods.size() && !rawlog.isSet()) {
+    if (!icpSlamPaths.getValue().empty() && !rawlog.isSet()) {
         throw std::invalid_argument("--icp-slam-path needs --rawlog (the rawlog icp-slam ran on)");
     }
-    if (!(tolerance.getValue() >= 0))
+    if (scanStamps.isSet() && !rawlog.isSet()) {
+        throw std::invalid_argument("--scan-stamps replaces the stamps of --rawlog's scans");
+    }
+    if (!(tolerance.getValue() >= 0)) {
         throw std::invalid_argument("--stamp-tolerance must be >= 0");
+    }
 
     // The reference.
     evaluation::SlamEvaluation ev;
@@ -186,22 +204,28 @@ int run(int argc, char** argv) {
 
     // Every method, read and scored before anything is written.
     std::optional<std::vector<double>> stamps;
-    if (scanStamps.isSet()) {
-        stamps.emplace();
-        for (const auto& p : io::loadTrajectory(scanStamps.getValue()))
-            stamps->push_back(p.stamp);
-    }
+    if (scanStamps.isSet())
+        stamps = evaluation::scanFileStamps(scanStamps.getValue());
     std::vector<io::Trajectory2D> estimates;  // kept for the plot only
-    for (std::size_t i = 0; i < methods.size(); ++i) {
-        const Method& m = methods[i];
-        const bool isIcpSlam = i >= firstIcpSlam;
-        const io::Trajectory2D estimate =
-            isIcpSlam ? evaluation::loadIcpSlamPath(m.file, rawlog.getValue(),
-                                                    stamps ? &*stamps : nullptr)
-                      : io::loadTrajectory(m.file);
+    for (const Method& m : methods) {
+        io::Trajectory2D estimate;
+        std::string source = m.file;
+        switch (m.kind) {
+            case Kind::LogOdometry:
+                estimate = evaluation::odometryAtScans(m.file);
+                source = "odometry of " + m.file;
+                break;
+            case Kind::TrajectoryFile:
+                estimate = io::loadTrajectory(m.file);
+                break;
+            case Kind::IcpSlamPath:
+                estimate = evaluation::loadIcpSlamPath(m.file, rawlog.getValue(),
+                                                       stamps ? &*stamps : nullptr);
+                source = m.file + " + " + rawlog.getValue();
+                break;
+        }
         if (estimate.empty())
             throw io::InputError(m.file, "no pose in the trajectory");
-        const std::string source = isIcpSlam ? m.file + " + " + rawlog.getValue() : m.file;
         try {
             ev.methods.push_back(evaluation::evaluateMethod(m.name, source, estimate, relations,
                                                             groundTruth ? &*groundTruth : nullptr,
@@ -210,7 +234,7 @@ int run(int argc, char** argv) {
             throw io::InputError(m.file, e.what());
         }
         if (plot.isSet())
-            estimates.push_back(estimate);
+            estimates.push_back(std::move(estimate));
     }
 
     std::cout << evaluation::formatEvaluationTable(ev);

@@ -1,6 +1,9 @@
 // End-to-end tests of the toposlam-eval-slam app on small files made here.
 #include <gtest/gtest.h>
 
+#include <toposlam/io/LaserLogReader.h>
+#include <toposlam/io/RawlogWriter.h>
+
 #include <TestSupport.h>
 
 #include <cmath>
@@ -149,4 +152,50 @@ TEST(EvalSlamApp, BadInputExitsNonZeroAndWritesNoJson) {
                                                " --ground-truth " + f.trajectory)
                   .exitCode,
               0);
+}
+
+TEST(EvalSlamApp, OdometryOfALogAndIcpSlamPathWithTheLogsStamps) {
+    TempDir dir;
+    // A 3-scan CARMEN log moving 0.5 m per scan along x. Its second stamp was printed the old
+    // CARMEN way, without zero padding ("101.45670" = 101.045670 s): it goes backwards, as 631
+    // of intel's do. Relation files use the printed stamps.
+    std::string clf;
+    const char* stamps[] = {"100.900000", "101.45670", "101.100000"};
+    for (int i = 0; i < 3; ++i) {
+        clf += "FLASER 180";
+        for (int b = 0; b < 180; ++b)
+            clf += " 2.0";
+        const std::string x = std::to_string(0.5 * i);
+        clf += " " + x + " 0 0 " + x + " 0 0 " + stamps[i] + " nohost " + stamps[i] + "\n";
+    }
+    const std::string log = write(dir, "tiny.clf", clf);
+    const std::string relations = write(dir, "tiny.relations",
+                                        "100.9 101.4567 0.5 0 0 0 0 0\n"
+                                        "101.4567 101.1 0.5 0 0 0 0 0\n");
+
+    // The rawlog icp-slam would run on (odometry + scan per record: 6 entries), and an
+    // icp-slam path with the true poses on the scan lines 1, 3, 5.
+    const std::string rawlog = dir.file("tiny.rawlog");
+    {
+        toposlam::io::RawlogWriter writer(rawlog, toposlam::io::RawlogFormat::Observations);
+        for (const auto& record : toposlam::io::LaserLogReader::readAll(log))
+            writer.write(record);
+        writer.commit();
+    }
+    const std::string path = write(dir, "log_estimated_path.txt",
+                                   "0 0 0 0\n1 0 0 0\n2 0.5 0 0\n3 0.5 0 0\n4 1 0 0\n5 1 0 0\n");
+
+    const std::string common = " --relations " + relations + " --icp-slam-path " + path +
+                               " --rawlog " + rawlog + " --odometry-of " + log;
+    const auto withStamps = runApp("toposlam-eval-slam", common + " --scan-stamps " + log);
+    ASSERT_EQ(withStamps.exitCode, 0) << withStamps.output;
+    EXPECT_TRUE(contains(withStamps.output, "| odometry | 2 / 2 | 0.0000 ± 0.0000 |"))
+        << withStamps.output;
+    EXPECT_TRUE(contains(withStamps.output, "| icp-slam | 2 / 2 | 0.0000 ± 0.0000 |"))
+        << withStamps.output;
+    // Without --scan-stamps the rawlog's stamps are used: the converter made them increasing
+    // (101.045670 s), so the relations that name the printed stamp do not match.
+    const auto rawlogStamps = runApp("toposlam-eval-slam", common);
+    ASSERT_EQ(rawlogStamps.exitCode, 0) << rawlogStamps.output;
+    EXPECT_TRUE(contains(rawlogStamps.output, "| icp-slam | 0 / 2 |")) << rawlogStamps.output;
 }

@@ -39,6 +39,21 @@ double obstacleRun(const cv::Mat& free, const cv::Point& jamb, double ux, double
     return std::hypot(hit.x - jamb.x, hit.y - jamb.y);
 }
 
+// Like obstacleRun, but a free cell stops the walk only when its two neighbours across the
+// walking direction are free too: a thin wall drawn as a digital line at an angle is followed to
+// its end instead of being left through the gaps of its staircase.
+double wallRun(const cv::Mat& free, const cv::Point& jamb, double ux, double uy, double cap) {
+    const cv::Point side(cvRound(-uy), cvRound(ux));
+    cv::Point hit;
+    auto open = [&](int x, int y) {
+        return detail::isSet(free, x, y) && detail::isSet(free, x + side.x, y + side.y) &&
+               detail::isSet(free, x - side.x, y - side.y);
+    };
+    if (!detail::walkRay(jamb, ux, uy, cap, open, hit))
+        return cap;
+    return std::hypot(hit.x - jamb.x, hit.y - jamb.y);
+}
+
 // Free width (pixels) across direction (ux, uy) through the cell `at`, capped just above `cap`.
 double freeWidth(const cv::Mat& free, const cv::Point& at, double ux, double uy, double cap) {
     cv::Point a, b;
@@ -65,24 +80,12 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
                                                 const std::vector<LineSegment>& walls) const {
     if (!options_.requireWallJambs || doors.empty())
         return doors;
-    const double extent = options_.minWallExtent / space.frame.resolution;
+    const double extent = detail::toCells(options_.minWallExtent, space.frame.resolution);
     // Obstacles (8-connected non-free cells) that belong to the building: those that reach the
-    // border of the image (the outer walls and everything joined to them) and those that carry
+    // border of the map (the outer walls and everything joined to them) and those that carry
     // a wall segment. The others are free-standing things: furniture, bins, plants.
-    cv::bitwise_not(space.free, obstacles_);
-    cv::Mat& obstacleLabels = obstacleLabels_;
-    const int obstacles = cv::connectedComponents(obstacles_, obstacleLabels, 8, CV_32S);
-    std::vector<bool> structure(static_cast<std::size_t>(obstacles), false);
-    for (int c = 0; c < obstacleLabels.cols; ++c) {
-        structure[static_cast<std::size_t>(obstacleLabels.at<int>(0, c))] = true;
-        structure[static_cast<std::size_t>(obstacleLabels.at<int>(obstacleLabels.rows - 1, c))] =
-            true;
-    }
-    for (int r = 0; r < obstacleLabels.rows; ++r) {
-        structure[static_cast<std::size_t>(obstacleLabels.at<int>(r, 0))] = true;
-        structure[static_cast<std::size_t>(obstacleLabels.at<int>(r, obstacleLabels.cols - 1))] =
-            true;
-    }
+    const cv::Mat& obstacleLabels = space.obstacles;
+    std::vector<bool> structure(space.obstacleOnBorder.begin(), space.obstacleOnBorder.end());
     for (const LineSegment& w : walls) {
         cv::LineIterator it(obstacleLabels, cv::Point(cvRound(w.start.x), cvRound(w.start.y)),
                             cv::Point(cvRound(w.end.x), cvRound(w.end.y)), 8);
@@ -104,14 +107,40 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
                obstacleRun(space.free, jamb, -uy, ux, extent) >= extent ||
                obstacleRun(space.free, jamb, uy, -ux, extent) >= extent;
     };
-    doors.erase(std::remove_if(doors.begin(), doors.end(),
-                               [&](const VirtualDoor& d) {
-                                   const double ux = (d.jambB.x - d.jambA.x) / d.width;
-                                   const double uy = (d.jambB.y - d.jambA.y) / d.width;
-                                   return !onStructure(d.jambA) || !onStructure(d.jambB) ||
-                                          !onWall(d.jambA, ux, uy) || !onWall(d.jambB, ux, uy);
-                               }),
-                doors.end());
+    // The wall the door is in: from the jamb, away from the opening, the obstacle goes on for
+    // longer than any wall is thick (so this is not a walk through the thickness of a wall
+    // across the door line), and there it is a wall: free space on both sides of it at most
+    // maxWallThickness apart (an inner wall; not a desk), or on one side only with nothing free
+    // within twice that on the other (the edge of the mapped space).
+    const double thickness = detail::toCells(options_.maxWallThickness, space.frame.resolution);
+    const double length = std::max(extent, thickness + 1.0);
+    auto isFree = [&](int x, int y) { return detail::isSet(space.free, x, y); };
+    auto toFree = [&](const cv::Point& from, double ux, double uy) {
+        cv::Point hit;
+        return detail::walkRay(from, ux, uy, 2 * thickness, isFree, hit)
+                   ? std::hypot(hit.x - from.x, hit.y - from.y)
+                   : 1e9;
+    };
+    auto wallEnd = [&](const cv::Point& jamb, double ux, double uy) {
+        if (wallRun(space.free, jamb, ux, uy, length) < length)
+            return false;
+        const cv::Point inside(cvRound(jamb.x + ux * length), cvRound(jamb.y + uy * length));
+        const double a = toFree(inside, -uy, ux), b = toFree(inside, uy, -ux);
+        if (a <= thickness && b <= thickness)
+            return a + b <= thickness + 1.0;
+        return std::min(a, b) <= thickness && std::max(a, b) > 2 * thickness;
+    };
+    doors.erase(
+        std::remove_if(doors.begin(), doors.end(),
+                       [&](const VirtualDoor& d) {
+                           const double ux = (d.jambB.x - d.jambA.x) / d.width;
+                           const double uy = (d.jambB.y - d.jambA.y) / d.width;
+                           return !onStructure(d.jambA) || !onStructure(d.jambB) ||
+                                  !onWall(d.jambA, ux, uy) || !onWall(d.jambB, ux, uy) ||
+                                  (options_.requireWallEnd &&
+                                   !(wallEnd(d.jambA, -ux, -uy) || wallEnd(d.jambB, ux, uy)));
+                       }),
+        doors.end());
     return doors;
 }
 
@@ -120,9 +149,9 @@ std::vector<VirtualDoor> DoorFilters::constriction(const FreeSpace& space,
                                                    double probeDistance) const {
     if (!options_.requireConstriction)
         return doors;
-    const double margin = options_.openingMargin / space.frame.resolution;
-    const int steps =
-        std::max(1, static_cast<int>(std::ceil(probeDistance / space.frame.resolution)));
+    const double margin = detail::toCells(options_.openingMargin, space.frame.resolution);
+    const int steps = std::max(
+        1, static_cast<int>(std::ceil(detail::toCells(probeDistance, space.frame.resolution))));
     auto opensOnSide = [&](const VirtualDoor& d, double side) {
         const double ux = (d.jambB.x - d.jambA.x) / d.width;
         const double uy = (d.jambB.y - d.jambA.y) / d.width;
@@ -147,7 +176,7 @@ std::vector<VirtualDoor> DoorFilters::constriction(const FreeSpace& space,
 
 std::vector<VirtualDoor> DoorFilters::distance(std::vector<VirtualDoor> doors,
                                                double resolution) const {
-    const double nd = options_.frameDistance / resolution;
+    const double nd = detail::toCells(options_.frameDistance, resolution);
     // Doors closer than N_d have midpoints closer than N_d: bucket midpoints on a grid of that
     // size and compare neighbouring buckets only.
     const double bucket = std::max(1.0, nd);
@@ -250,7 +279,7 @@ DoorFilters::Rooms DoorFilters::minimumArea(const RegionPartition& partition,
                                             const std::vector<std::size_t>& candidates,
                                             double cellArea) const {
     const int regions = partition.regionCount();
-    const double minCells = options_.minRoomArea / cellArea;
+    const double minCells = detail::toCells(options_.minRoomArea, cellArea);
     UnionFind merged(regions + 1);
     std::vector<double> area(partition.areas().begin(), partition.areas().end());
     auto join = [&](int a, int b) {

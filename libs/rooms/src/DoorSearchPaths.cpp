@@ -1,5 +1,7 @@
 #include <toposlam/rooms/DoorSearchPaths.h>
 
+#include "GridRay.h"
+
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -66,8 +68,8 @@ std::vector<cv::Point> DoorSearchPaths::fromMedialAxis(const FreeSpace& space,
                                                        const Clearance& clearance,
                                                        double minDoorWidth, double maxDoorWidth) {
     const double res = space.frame.resolution;
-    const float lo = static_cast<float>(0.5 * minDoorWidth / res - 1.0);
-    const float hi = static_cast<float>(0.5 * maxDoorWidth / res + 1.0);
+    const float lo = static_cast<float>(0.5 * detail::toCells(minDoorWidth, res) - 1.0);
+    const float hi = static_cast<float>(0.5 * detail::toCells(maxDoorWidth, res) + 1.0);
     const cv::Mat& dist = clearance.distances();
     std::vector<cv::Point> cells;
     for (int r = 1; r + 1 < dist.rows; ++r) {

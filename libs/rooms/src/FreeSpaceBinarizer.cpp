@@ -1,10 +1,13 @@
 #include <toposlam/io/InputError.h>
 #include <toposlam/rooms/FreeSpaceBinarizer.h>
 
+#include "GridRay.h"
+
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -12,6 +15,49 @@
 namespace toposlam::rooms {
 
 using mrpt::maps::COccupancyGridMap2D;
+
+void FreeSpaceBinarizer::removeSpecksAndLabelObstacles(cv::Mat& all, FreeSpace& out) const {
+    cv::bitwise_not(all, notFree_);
+    const int n = cv::connectedComponents(notFree_, out.obstacles, 8, CV_32S);
+    std::vector<int> area(static_cast<std::size_t>(n), 0);
+    out.obstacleOnBorder.assign(static_cast<std::size_t>(n), 0);
+    const int rows = out.obstacles.rows, cols = out.obstacles.cols;
+    for (int r = 0; r < rows; ++r) {
+        const int* row = out.obstacles.ptr<int>(r);
+        for (int c = 0; c < cols; ++c)
+            ++area[static_cast<std::size_t>(row[c])];
+        out.obstacleOnBorder[static_cast<std::size_t>(row[0])] = 1;
+        out.obstacleOnBorder[static_cast<std::size_t>(row[cols - 1])] = 1;
+    }
+    for (int c = 0; c < cols; ++c) {
+        out.obstacleOnBorder[static_cast<std::size_t>(out.obstacles.at<int>(0, c))] = 1;
+        out.obstacleOnBorder[static_cast<std::size_t>(out.obstacles.at<int>(rows - 1, c))] = 1;
+    }
+    out.obstacleOnBorder[0] = 0;
+    const int maxSpeck = static_cast<int>(std::floor(
+        detail::toCells(options_.maxSpeckArea, out.frame.resolution * out.frame.resolution)));
+    std::vector<std::uint8_t> speck(static_cast<std::size_t>(n), 0);
+    out.specksRemoved = 0;
+    for (int i = 1; i < n; ++i) {
+        if (area[static_cast<std::size_t>(i)] <= maxSpeck &&
+            !out.obstacleOnBorder[static_cast<std::size_t>(i)]) {
+            speck[static_cast<std::size_t>(i)] = 1;
+            ++out.specksRemoved;
+        }
+    }
+    if (out.specksRemoved == 0)
+        return;
+    for (int r = 0; r < rows; ++r) {
+        int* row = out.obstacles.ptr<int>(r);
+        auto* a = all.ptr<std::uint8_t>(r);
+        for (int c = 0; c < cols; ++c) {
+            if (speck[static_cast<std::size_t>(row[c])]) {
+                row[c] = 0;
+                a[c] = 255;
+            }
+        }
+    }
+}
 
 // Keeps the largest 4-connected component of `all` (255 = free) in out.free and the rest in
 // out.otherFree.
@@ -94,6 +140,7 @@ void FreeSpaceBinarizer::binarize(const COccupancyGridMap2D& grid, FreeSpace& ou
         for (int c = 0; c < out.frame.cols; ++c)
             dst[c] = isFree[static_cast<std::uint8_t>(src[c])];
     }
+    removeSpecksAndLabelObstacles(all, out);
     keepLargestComponent(all, sourceName, out);
 }
 
@@ -107,7 +154,9 @@ FreeSpace FreeSpaceBinarizer::binarize(const cv::Mat& freeImage, GridImageFrame 
     frame.cols = freeImage.cols;
     frame.rows = freeImage.rows;
     out.frame = frame;
-    keepLargestComponent(freeImage != 0, sourceName, out);
+    cv::compare(freeImage, 0, all_, cv::CMP_NE);
+    removeSpecksAndLabelObstacles(all_, out);
+    keepLargestComponent(all_, sourceName, out);
     return out;
 }
 

@@ -2,11 +2,21 @@
 // Walking a ray over the cells of a binary image (internal to libs/rooms).
 #include <opencv2/core/mat.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 
 namespace toposlam::rooms::detail {
+
+/// Metres as a number of cells. Grids store their resolution as a float (0.05 becomes
+/// 0.0500000007), so a length that is a whole number of cells is snapped to it: 0.6 m at 5 cm
+/// is 12 cells, not 11.99999983, and comparisons against integer cell distances stay exact.
+inline double toCells(double metres, double resolution) {
+    const double cells = metres / resolution;
+    const double whole = std::round(cells);
+    return std::abs(cells - whole) < 1e-6 * std::max(1.0, std::abs(cells)) ? whole : cells;
+}
 
 /// True when (x, y) is inside `mask` and non-zero.
 inline bool isSet(const cv::Mat& mask, int x, int y) {

@@ -1,5 +1,7 @@
 #include <toposlam/rooms/HoughLineExtractor.h>
 
+#include "GridRay.h"
+
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -18,9 +20,10 @@ std::vector<LineSegment> HoughLineExtractor::extract(const FreeSpace& space) con
     const cv::Mat& boundary = boundary_;
 
     std::vector<cv::Vec4i> raw;
-    cv::HoughLinesP(boundary, raw, 1.0, options_.angleResolutionDeg * M_PI / 180.0,
-                    std::max(2, static_cast<int>(std::lround(options_.minVotesLength / res))),
-                    options_.minLineLength / res, options_.maxLineGap / res);
+    cv::HoughLinesP(
+        boundary, raw, 1.0, options_.angleResolutionDeg * M_PI / 180.0,
+        std::max(2, static_cast<int>(std::lround(detail::toCells(options_.minVotesLength, res)))),
+        detail::toCells(options_.minLineLength, res), detail::toCells(options_.maxLineGap, res));
     std::vector<LineSegment> lines;
     lines.reserve(raw.size());
     for (const cv::Vec4i& l : raw) {

@@ -21,6 +21,9 @@ FreeSpace cropToBounds(const FreeSpace& space, cv::Rect& roi) {
     FreeSpace out;
     out.free = space.free(roi);
     out.otherFree = space.otherFree.empty() ? cv::Mat() : space.otherFree(roi);
+    out.obstacles = space.obstacles.empty() ? cv::Mat() : space.obstacles(roi);
+    out.obstacleOnBorder = space.obstacleOnBorder;
+    out.specksRemoved = space.specksRemoved;
     out.bounds = space.bounds - roi.tl();
     out.freeCells = space.freeCells;
     out.frame = space.frame;
@@ -77,10 +80,12 @@ void require(bool ok, const std::string& what) {
 
 RoomSegmenter::Options RoomSegmenter::Options::paperExact() {
     Options o;
+    o.freeSpace.maxSpeckArea = 0;
     o.door.localDirection = false;
     o.filters.keepNarrowestOfGroup = false;
     o.filters.mergeSmallestFirst = false;
     o.filters.requireWallJambs = false;
+    o.filters.requireWallEnd = false;
     o.filters.requireConstriction = false;
     return o;
 }
@@ -88,6 +93,7 @@ RoomSegmenter::Options RoomSegmenter::Options::paperExact() {
 void RoomSegmenter::Options::validate() const {
     require(freeSpace.freeThreshold >= 0 && freeSpace.freeThreshold < 1,
             "freeThreshold must be in [0, 1)");
+    require(freeSpace.maxSpeckArea >= 0, "maxSpeckArea must be >= 0");
     require(hough.angleResolutionDeg > 0 && hough.angleResolutionDeg <= 45,
             "houghAngleResolutionDeg must be in (0, 45]");
     require(hough.minVotesLength > 0, "houghMinVotesLength must be > 0");
@@ -102,6 +108,7 @@ void RoomSegmenter::Options::validate() const {
     require(filters.frameDistance >= 0, "frameDistance must be >= 0");
     require(filters.minRoomArea >= 0, "minRoomArea must be >= 0");
     require(filters.minWallExtent > 0, "minWallExtent must be > 0");
+    require(filters.maxWallThickness > 0, "maxWallThickness must be > 0");
     require(filters.openingMargin >= 0, "openingMargin must be >= 0");
 }
 
@@ -119,6 +126,7 @@ void RoomSegmenter::Options::loadFromConfigFile(const mrpt::config::CConfigFileB
             variant + "'");
     }
     freeSpace.freeThreshold = ini.read_double(s, "freeThreshold", freeSpace.freeThreshold);
+    freeSpace.maxSpeckArea = ini.read_double(s, "maxSpeckArea", freeSpace.maxSpeckArea);
     hough.angleResolutionDeg =
         ini.read_double(s, "houghAngleResolutionDeg", hough.angleResolutionDeg);
     hough.minVotesLength = ini.read_double(s, "houghMinVotesLength", hough.minVotesLength);
@@ -136,6 +144,8 @@ void RoomSegmenter::Options::loadFromConfigFile(const mrpt::config::CConfigFileB
     filters.mergeSmallestFirst = ini.read_bool(s, "mergeSmallestFirst", filters.mergeSmallestFirst);
     filters.requireWallJambs = ini.read_bool(s, "requireWallJambs", filters.requireWallJambs);
     filters.minWallExtent = ini.read_double(s, "minWallExtent", filters.minWallExtent);
+    filters.requireWallEnd = ini.read_bool(s, "requireWallEnd", filters.requireWallEnd);
+    filters.maxWallThickness = ini.read_double(s, "maxWallThickness", filters.maxWallThickness);
     filters.requireConstriction =
         ini.read_bool(s, "requireConstriction", filters.requireConstriction);
     filters.openingMargin = ini.read_double(s, "openingMargin", filters.openingMargin);

@@ -16,8 +16,8 @@ std::vector<VirtualDoor> VirtualDoorDetector::detect(
     const FreeSpace& space, const std::vector<cv::Point>& pathCells,
     const std::vector<double>& directions, const std::vector<double>& localDirections) const {
     const double res = space.frame.resolution;
-    const double target = options_.doorWidth / res;
-    const double tolerance = options_.doorWidthTolerance / res;
+    const double target = detail::toCells(options_.doorWidth, res);
+    const double tolerance = detail::toCells(options_.doorWidthTolerance, res);
     // A jamb farther than the widest door cannot belong to a door through this cell.
     const double reach = target + tolerance + 1.0;
     const bool local = options_.localDirection && localDirections.size() == pathCells.size();
@@ -35,27 +35,27 @@ std::vector<VirtualDoor> VirtualDoorDetector::detect(
         return true;
     };
     std::vector<VirtualDoor> doors;
+    VirtualDoor found;
     for (std::size_t i = 0; i < pathCells.size(); ++i) {
         const cv::Point& p = pathCells[i];
-        VirtualDoor best, found;
-        bool any = false;
+        if (!local) {  // the paper: the first main direction that gives a door
+            for (std::size_t k = 0; k < directions.size(); ++k) {
+                if (crossSection(p, directions[k], static_cast<int>(k), found)) {
+                    doors.push_back(found);
+                    break;
+                }
+            }
+            continue;
+        }
+        // Every direction that passes eq. 10: a narrower cross-section through an obstacle that
+        // is no jamb (a chair, a speck) must not hide the real one; the filters choose.
         for (std::size_t k = 0; k < directions.size(); ++k) {
-            if (!crossSection(p, directions[k], static_cast<int>(k), found))
-                continue;
-            if (!any || found.width < best.width)
-                best = found;
-            any = true;
-            if (!local)
-                break;  // the paper: the first main direction that gives a door
+            if (crossSection(p, directions[k], static_cast<int>(k), found))
+                doors.push_back(found);
         }
-        if (local &&
-            crossSection(p, localDirections[i], static_cast<int>(directions.size()), found) &&
-            (!any || found.width < best.width)) {
-            best = found;
-            any = true;
+        if (crossSection(p, localDirections[i], static_cast<int>(directions.size()), found)) {
+            doors.push_back(found);
         }
-        if (any)
-            doors.push_back(best);
     }
     return doors;
 }

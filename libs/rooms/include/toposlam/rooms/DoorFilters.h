@@ -12,11 +12,17 @@
 // paper-exact variant of RoomSegmenter turns all of them off). Both spell out what the paper
 // assumes of a door (sec. 1.1: door frames lie in a wall or perpendicular to one) and are
 // needed where furniture makes door-wide gaps (B4 furnished maps):
-//   wall jambs:   each jamb belongs to a wall: the obstacle it is on is part of the building's
-//                 structure (it reaches the edge of the map, or it carries one of the wall
-//                 segments of step 2), and it extends at least minWallExtent from the jamb along
-//                 or across the door line (rules out chairs, bins, plants and other free-standing
-//                 or small obstacles as door frames);
+//   wall jambs:   the door lies in a wall (sec. 1.1: door frames are in a wall or
+//                 perpendicular to one). Each jamb belongs to a wall: the obstacle it is on is
+//                 part of the building's structure (it reaches the edge of the map, or it
+//                 carries one of the wall segments of step 2) and extends at least
+//                 minWallExtent from the jamb along or across the door line; and at least one
+//                 jamb is the end of the wall the door is in: from it, away from the opening, the
+//                 obstacle goes on along the door line for longer than maxWallThickness and is
+//                 no thicker than that there (or is the edge of the mapped space, free on one
+//                 side only). Rules out chairs, bins
+//                 and plants as door frames, gaps between desks (too deep to be walls) and the
+//                 cross-sections of corridors between doors (both jambs on side walls);
 //   constriction: a door is a narrow place between two wider spaces: walking away from the door
 //                 line on each side, within one door width the free space along the door line
 //                 becomes wider than the door by openingMargin (rules out the cross-sections
@@ -25,8 +31,6 @@
 #include <toposlam/rooms/LineSegment.h>
 #include <toposlam/rooms/RegionPartition.h>
 #include <toposlam/rooms/VirtualDoorDetector.h>
-
-#include <opencv2/core/mat.hpp>
 
 #include <cstddef>
 #include <vector>
@@ -49,8 +53,11 @@ class DoorFilters {
         /// its smallest neighbour, and re-evaluate. Off: the paper's single pass, remove every
         /// door with a too-small region on either side.
         bool mergeSmallestFirst = true;
-        bool requireWallJambs = true;     ///< the wall-jamb test (deviation, see above)
-        double minWallExtent = 0.3;       ///< m
+        bool requireWallJambs = true;  ///< the wall-jamb test (deviation, see above)
+        double minWallExtent = 0.3;    ///< m
+        /// Part of the wall-jamb test: at least one jamb must end the wall the door is in.
+        bool requireWallEnd = true;
+        double maxWallThickness = 0.5;    ///< m
         bool requireConstriction = true;  ///< the constriction test (deviation, see above)
         double openingMargin = 0.3;       ///< m
     };
@@ -93,7 +100,6 @@ class DoorFilters {
 
   private:
     Options options_;
-    mutable cv::Mat obstacles_, obstacleLabels_;  // scratch, reused across calls
 };
 
 }  // namespace toposlam::rooms

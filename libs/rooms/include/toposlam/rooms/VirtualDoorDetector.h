@@ -12,7 +12,8 @@
 // angles. TopoSLAM also searches, from every cell, across the ridge of the clearance (the
 // direction in which the distance to the walls falls off fastest, Clearance::acrossRidge): in
 // a doorway the clearance peaks between the jambs, so this is the door line whatever its
-// orientation. Of all directions that pass eq. 10 the narrowest cross-section is kept.
+// orientation. Every direction that passes eq. 10 gives a candidate (the paper: only the first);
+// the filters keep the narrowest of each group.
 #include <toposlam/rooms/FreeSpaceBinarizer.h>
 
 #include <opencv2/core/mat.hpp>
@@ -39,8 +40,8 @@ class VirtualDoorDetector {
         /// leaf width.
         double doorWidth = 1.1;
         double doorWidthTolerance = 0.5;
-        /// Also search across the clearance ridge at each cell and keep the narrowest passing
-        /// cross-section (deviation, see above). Off: the paper's phi1-then-phi2.
+        /// Also search across the clearance ridge at each cell, and keep every passing
+        /// direction (deviation, see above). Off: the paper's phi1-then-phi2.
         bool localDirection = true;
     };
 
@@ -48,9 +49,9 @@ class VirtualDoorDetector {
     explicit VirtualDoorDetector(const Options& options) : options_(options) {}
 
     /// `directions`: search directions in image radians (the paper: phi1, phi2), tried in
-    /// order, the first that yields a door wins; with localDirection, `localDirections[i]` is
-    /// tried too for pathCells[i] and the narrowest passing cross-section wins. At most one
-    /// door per path cell.
+    /// order, the first that yields a door wins (at most one door per path cell). With
+    /// localDirection, every direction that yields a door gives one, `localDirections[i]`
+    /// included for pathCells[i].
     std::vector<VirtualDoor> detect(const FreeSpace& space, const std::vector<cv::Point>& pathCells,
                                     const std::vector<double>& directions,
                                     const std::vector<double>& localDirections = {}) const;

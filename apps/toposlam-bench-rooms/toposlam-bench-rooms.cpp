@@ -14,6 +14,15 @@
 
 namespace {
 
+class ParseErrorOutput : public TCLAP::StdOutput {
+  public:
+    bool failed = false;
+    void failure(TCLAP::CmdLineInterface&, TCLAP::ArgException& e) override {
+        failed = true;
+        std::cerr << "error: " << e.argId() << ": " << e.error() << " (see --help)\n";
+    }
+};
+
 std::vector<std::string> splitList(const std::string& s) {
     std::vector<std::string> out;
     std::stringstream in(s);
@@ -35,7 +44,10 @@ int main(int argc, char** argv) {
             "default; vdoor-paper: the paper's method as published) and by the morphological "
             "(morph) and distance-transform (dist) baselines of ipa_room_segmentation. Prints "
             "one table per map and method, then the averages (unfurnished / furnished / all), "
-            "and writes them as JSON. Metrics: shared/BENCHMARKS.md (B4).",
+            "and writes them as JSON. Metrics: shared/BENCHMARKS.md (B4). Every method runs "
+            "single-threaded; times are wall-clock medians over --repeats runs of the "
+            "segmentation call alone (map loading excluded).\nExample:\n"
+            "  toposlam-bench-rooms -o b4.json --images b4-png > b4.md",
             ' ', "0.1");
         TCLAP::ValueArg<std::string> data(
             "d", "data",
@@ -65,7 +77,10 @@ int main(int argc, char** argv) {
             "config_ini/rooms.ini; default: the built-in defaults); vdoor-paper always runs the "
             "paper-exact variant with that file's door width, area and Hough values",
             false, "", "file.ini", cmd);
-        cmd.parse(argc, argv);
+        ParseErrorOutput parseErrors;
+        cmd.setOutput(&parseErrors);
+        if (!cmd.parse(argc, argv))
+            return parseErrors.failed ? 1 : 0;
 
         toposlam::rooms::RoomBenchmarkOptions options;
         options.dataDir = data.getValue();
@@ -81,6 +96,7 @@ int main(int argc, char** argv) {
             options.virtualDoor.loadFromConfigFile(ini, "RoomSegmenter");
             options.virtualDoorPaper = options.virtualDoor;
             const auto paper = toposlam::rooms::RoomSegmenter::Options::paperExact();
+            options.virtualDoorPaper.door.localDirection = paper.door.localDirection;
             options.virtualDoorPaper.filters.keepNarrowestOfGroup =
                 paper.filters.keepNarrowestOfGroup;
             options.virtualDoorPaper.filters.mergeSmallestFirst = paper.filters.mergeSmallestFirst;

@@ -1,0 +1,207 @@
+#include "DrawnMaps.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <cmath>
+#include <random>
+
+namespace toposlam::rooms::test {
+
+namespace {
+
+// Pixel rectangle of the world box [x0, x1] x [y0, y1] (m) in an image `rows` high.
+cv::Rect box(const cv::Mat& img, double x0, double y0, double x1, double y1) {
+    const int c0 = static_cast<int>(std::lround(x0 / kResolution));
+    const int c1 = static_cast<int>(std::lround(x1 / kResolution));
+    const int r0 = img.rows - static_cast<int>(std::lround(y1 / kResolution));
+    const int r1 = img.rows - static_cast<int>(std::lround(y0 / kResolution));
+    return {c0, r0, c1 - c0, r1 - r0};
+}
+
+void fill(cv::Mat& img, double x0, double y0, double x1, double y1, int value) {
+    img(box(img, x0, y0, x1, y1)) = value;
+}
+
+cv::Point pixel(const cv::Mat& img, double x, double y) {
+    return {static_cast<int>(std::lround(x / kResolution)),
+            img.rows - static_cast<int>(std::lround(y / kResolution))};
+}
+
+}  // namespace
+
+GridImageFrame frameOf(const cv::Mat& image) {
+    GridImageFrame f;
+    f.resolution = kResolution;
+    f.cols = image.cols;
+    f.rows = image.rows;
+    return f;
+}
+
+mrpt::maps::COccupancyGridMap2D gridOf(const cv::Mat& image) {
+    mrpt::maps::COccupancyGridMap2D grid;
+    grid.setSize(0, static_cast<float>(image.cols * kResolution), 0,
+                 static_cast<float>(image.rows * kResolution), static_cast<float>(kResolution),
+                 0.5f);
+    for (int r = 0; r < image.rows; ++r) {
+        for (int c = 0; c < image.cols; ++c) {
+            const int v = image.at<std::uint8_t>(r, c);
+            if (v == 255)
+                grid.setCell(c, image.rows - 1 - r, 1.0f);
+            if (v == 0)
+                grid.setCell(c, image.rows - 1 - r, 0.0f);
+        }
+    }
+    return grid;
+}
+
+DrawnMap office() {
+    // 22 x 14 m image, the building from (1, 1) to (21, 13).
+    DrawnMap m;
+    m.image = cv::Mat(280, 440, CV_8U, cv::Scalar(128));
+    cv::Mat& img = m.image;
+    fill(img, 1, 1, 21, 13, 0);            // building block
+    fill(img, 1.2, 1.2, 20.8, 12.8, 255);  // inside
+    // Corridor walls at y = 6 and y = 8 (0.2 m thick): corridor y in [6.2, 7.8].
+    fill(img, 1, 6, 21, 6.2, 0);
+    fill(img, 1, 7.8, 21, 8, 0);
+    // Upper rooms: x in [1.2, 7.8], [8, 14.4], [14.6, 20.8] (walls at x = 7.8 and 14.4).
+    fill(img, 7.8, 8, 8, 13, 0);
+    fill(img, 14.4, 8, 14.6, 13, 0);
+    // Lower rooms: x in [1.2, 10.9], [11.1, 20.8].
+    fill(img, 10.9, 1, 11.1, 6, 0);
+    // Doors (clear openings cut into the walls).
+    auto door = [&](double x0, double y0, double x1, double y1) {
+        fill(img, x0, y0, x1, y1, 255);
+        m.doors.push_back({{0.5 * (x0 + x1), 0.5 * (y0 + y1)}, std::max(x1 - x0, y1 - y0)});
+    };
+    door(3.0, 7.8, 3.9, 8.0);    // corridor - upper left
+    door(10.5, 7.8, 11.4, 8.0);  // corridor - upper middle
+    door(17.0, 7.8, 18.0, 8.0);  // corridor - upper right
+    door(5.0, 6.0, 5.9, 6.2);    // corridor - lower left
+    door(15.0, 6.0, 16.0, 6.2);  // corridor - lower right
+    door(7.8, 11.0, 8.0, 11.9);  // upper left - upper middle
+    m.rooms = {{10, 7}, {4, 10.5}, {11, 10.5}, {17.5, 10.5}, {5, 3.5}, {16, 3.5}};
+    m.tour = {{2, 7},      {3.45, 7},  {3.45, 10}, {7, 11.45}, {9, 11.45},
+              {10.95, 10}, {10.95, 7}, {17.5, 7},  {17.5, 10}, {17.5, 7},
+              {15.5, 7},   {15.5, 3},  {15.5, 7},  {5.45, 7},  {5.45, 3}};
+    return m;
+}
+
+DrawnMap furnishedOffice() {
+    DrawnMap m = office();
+    cv::Mat& img = m.image;
+    auto chair = [&](double x, double y) {
+        cv::circle(img, pixel(img, x, y), 4, cv::Scalar(0), cv::FILLED);
+    };
+    auto table = [&](double x0, double y0, double x1, double y1) { fill(img, x0, y0, x1, y1, 0); };
+    // Upper left room: a meeting table with chairs around it, a cabinet against the wall.
+    table(3, 9.8, 6, 11.2);
+    for (double x = 3.3; x < 6; x += 0.9) {
+        chair(x, 9.4);
+        chair(x, 11.6);
+    }
+    table(1.2, 12.2, 3.2, 12.8);  // cabinet in the corner
+    // Upper middle: two desks, 1 m from the back wall and from each other.
+    table(9, 11.0, 10.6, 11.8);
+    table(11.6, 11.0, 13.2, 11.8);
+    chair(9.8, 10.6);
+    chair(12.4, 10.6);
+    // Upper right: a bin 1 m from a wall, a plant, a sofa along the wall.
+    cv::circle(img, pixel(img, 20.0, 9.0), 5, cv::Scalar(0), cv::FILLED);
+    cv::circle(img, pixel(img, 15.6, 12.0), 6, cv::Scalar(0), cv::FILLED);
+    table(16.5, 12.2, 19.5, 12.8);
+    // Lower left: a row of desks with a 1 m aisle to the wall.
+    for (double x = 2; x < 10; x += 2.2)
+        table(x, 2.2, x + 1.6, 3.0);
+    for (double x = 2.8; x < 10; x += 2.2)
+        chair(x, 3.4);
+    // Lower right: a big table in the middle, shelves along the bottom wall.
+    table(13, 2.5, 18, 4.0);
+    table(11.5, 1.2, 20.5, 1.6);
+    // Room points clear of the furniture.
+    m.rooms = {{10, 7}, {2, 9}, {11, 9.5}, {17.5, 10.5}, {5, 4.5}, {16, 5}};
+    return m;
+}
+
+DrawnMap noisyOffice(unsigned seed) {
+    DrawnMap m = office();
+    cv::Mat& img = m.image;
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<int> col(0, img.cols - 1), row(0, img.rows - 1);
+    std::uniform_real_distribution<double> u(0, 1);
+    const cv::Mat clean = img.clone();
+    for (int k = 0; k < 1500; ++k) {  // specks: occupied in free space, free in the unknown
+        const int c = col(rng), r = row(rng);
+        if (clean.at<std::uint8_t>(r, c) == 255)
+            img.at<std::uint8_t>(r, c) = 0;
+        if (clean.at<std::uint8_t>(r, c) == 128)
+            img.at<std::uint8_t>(r, c) = 255;
+    }
+    for (int r = 1; r + 1 < img.rows;
+         ++r) {  // ragged walls: free cells next to walls turn occupied
+        for (int c = 1; c + 1 < img.cols; ++c) {
+            if (clean.at<std::uint8_t>(r, c) != 255)
+                continue;
+            const bool byWall =
+                clean.at<std::uint8_t>(r - 1, c) == 0 || clean.at<std::uint8_t>(r + 1, c) == 0 ||
+                clean.at<std::uint8_t>(r, c - 1) == 0 || clean.at<std::uint8_t>(r, c + 1) == 0;
+            if (byWall && u(rng) < 0.3)
+                img.at<std::uint8_t>(r, c) = 0;
+        }
+    }
+    return m;
+}
+
+DrawnMap rotated(const DrawnMap& map, double degrees) {
+    DrawnMap m = map;
+    const cv::Point2f centre(0.5f * (map.image.cols - 1), 0.5f * (map.image.rows - 1));
+    cv::Mat rot = cv::getRotationMatrix2D(centre, degrees, 1.0);
+    const cv::Rect2f bounds =
+        cv::RotatedRect(centre, map.image.size(), static_cast<float>(degrees)).boundingRect2f();
+    rot.at<double>(0, 2) += 0.5 * bounds.width - centre.x;
+    rot.at<double>(1, 2) += 0.5 * bounds.height - centre.y;
+    cv::warpAffine(map.image, m.image, rot, bounds.size(), cv::INTER_NEAREST, cv::BORDER_CONSTANT,
+                   cv::Scalar(128));
+    auto move = [&](const mrpt::math::TPoint2D& p) {
+        const double c = p.x / kResolution, r = map.image.rows - p.y / kResolution;
+        const double c2 =
+            rot.at<double>(0, 0) * c + rot.at<double>(0, 1) * r + rot.at<double>(0, 2);
+        const double r2 =
+            rot.at<double>(1, 0) * c + rot.at<double>(1, 1) * r + rot.at<double>(1, 2);
+        return mrpt::math::TPoint2D(c2 * kResolution, (m.image.rows - r2) * kResolution);
+    };
+    for (auto& p : m.rooms)
+        p = move(p);
+    for (auto& d : m.doors)
+        d.middle = move(d.middle);
+    for (auto& p : m.tour)
+        p = move(p);
+    return m;
+}
+
+DrawnMap singleRoom() {
+    DrawnMap m;
+    m.image = cv::Mat(120, 160, CV_8U, cv::Scalar(128));
+    fill(m.image, 1, 1, 7.2, 5.2, 0);
+    fill(m.image, 1.2, 1.2, 7, 5, 255);
+    m.rooms = {{4, 3}};
+    return m;
+}
+
+DrawnMap openPlan() {
+    DrawnMap m;
+    m.image = cv::Mat(240, 360, CV_8U, cv::Scalar(128));
+    cv::Mat& img = m.image;
+    fill(img, 1, 1, 17.2, 11.2, 0);
+    fill(img, 1.2, 1.2, 17, 11, 255);
+    for (double x : {6.0, 12.0}) {  // pillars 0.4 m, 1 m apart from desks
+        for (double y : {4.0, 8.0})
+            fill(img, x - 0.2, y - 0.2, x + 0.2, y + 0.2, 0);
+    }
+    for (double x = 2.0; x < 16; x += 3.0)
+        fill(img, x, 5.6, x + 1.6, 6.4, 0);  // desks, 1.4 m apart
+    m.rooms = {{9, 2}};
+    return m;
+}
+
+}  // namespace toposlam::rooms::test

@@ -1,0 +1,51 @@
+#pragma once
+// Floor plans drawn with OpenCV for the rooms tests, with their exact ground truth: where the
+// rooms and doors are. Images are 8-bit map images (row 0 = top, 0.05 m per pixel):
+// 255 = free, 0 = occupied, 128 = unknown.
+#include <toposlam/rooms/GridImageFrame.h>
+
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/math/TPoint2D.h>
+
+#include <opencv2/core/mat.hpp>
+
+#include <vector>
+
+namespace toposlam::rooms::test {
+
+constexpr double kResolution = 0.05;  // m per pixel
+
+struct DrawnDoor {
+    mrpt::math::TPoint2D middle;  // m, world frame
+    double width = 0;             // m, clear opening
+};
+
+struct DrawnMap {
+    cv::Mat image;                            // 255 free, 0 occupied, 128 unknown
+    std::vector<mrpt::math::TPoint2D> rooms;  // one point inside each room (m)
+    std::vector<DrawnDoor> doors;
+    std::vector<mrpt::math::TPoint2D> tour;  // a robot path through every door (m)
+};
+
+/// The world frame of a drawn image: origin (0, 0) at the lower-left corner.
+GridImageFrame frameOf(const cv::Mat& image);
+/// p(free) = 1 for 255, 0 for 0, 0.5 for anything else.
+mrpt::maps::COccupancyGridMap2D gridOf(const cv::Mat& image);
+
+/// A 20 x 12 m office: a 2 m corridor across the middle, three rooms above it, two below, a
+/// door between the two left upper rooms. 6 rooms, 6 doors (0.9-1.0 m). Walls 0.2 m.
+DrawnMap office();
+/// The office with furniture: tables, chairs, cabinets against walls, bins and plants, some of
+/// them a door width away from walls or from each other.
+DrawnMap furnishedOffice();
+/// The office with sensor noise: isolated occupied specks in free space, free specks in the
+/// unknown outside, ragged walls. `seed` for the random generator.
+DrawnMap noisyOffice(unsigned seed);
+/// `map` rotated by `degrees` about the image centre (the image grows to hold it all).
+DrawnMap rotated(const DrawnMap& map, double degrees);
+/// One 6 x 4 m room.
+DrawnMap singleRoom();
+/// A 16 x 10 m open-plan hall: no walls inside, four pillars, desks; one room, no door.
+DrawnMap openPlan();
+
+}  // namespace toposlam::rooms::test

@@ -1,0 +1,195 @@
+// The steps of the virtual-door pipeline one by one, on tiny hand-made inputs.
+#include <toposlam/rooms/DoorFilters.h>
+#include <toposlam/rooms/DoorSearchPaths.h>
+#include <toposlam/rooms/FreeSpaceBinarizer.h>
+#include <toposlam/rooms/LineMerger.h>
+#include <toposlam/rooms/MainDirectionVoter.h>
+#include <toposlam/rooms/VirtualDoorDetector.h>
+
+#include "DrawnMaps.h"
+
+#include <gtest/gtest.h>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <cmath>
+
+using namespace toposlam::rooms;
+
+namespace {
+
+constexpr double kRes = 0.05;
+
+FreeSpace spaceOf(const cv::Mat& free) {
+    return FreeSpaceBinarizer().binarize(free, toposlam::rooms::test::frameOf(free));
+}
+
+// A 6 x 4 m room split by a wall at x = 3 m with a gap of `gap` m centred at y = 2 m.
+cv::Mat twoRooms(double gap) {
+    cv::Mat img(80, 120, CV_8U, cv::Scalar(0));
+    img(cv::Rect(2, 2, 116, 76)) = 255;
+    img(cv::Rect(58, 0, 4, 80)) = 0;
+    const int half = static_cast<int>(std::lround(gap / kRes / 2));
+    img(cv::Rect(58, 40 - half, 4, 2 * half)) = 255;
+    return img;
+}
+
+}  // namespace
+
+TEST(LineMerger, MergesOverlappingPiecesOfOneWall) {
+    const LineSegment a{{0, 0}, {10, 0}}, b{{8, 0.5f}, {20, 0.5f}};
+    EXPECT_TRUE(LineMerger::canMerge(a, b, 5 * M_PI / 180, 2.0));
+    const auto merged = LineMerger().merge({a, b}, kRes);
+    ASSERT_EQ(merged.size(), 1u);
+    // The base (the longer, b) is extended over a's projection: from x = 0 to 20.
+    EXPECT_NEAR(std::min(merged[0].start.x, merged[0].end.x), 0.0, 1e-4);
+    EXPECT_NEAR(std::max(merged[0].start.x, merged[0].end.x), 20.0, 1e-4);
+}
+
+TEST(LineMerger, KeepsParallelWallsPerpendicularWallsAndDistantPieces) {
+    const LineSegment base{{0, 0}, {10, 0}};
+    EXPECT_FALSE(LineMerger::canMerge(base, {{0, 20}, {10, 20}}, 5 * M_PI / 180, 2.0));  // eq. 6
+    EXPECT_FALSE(LineMerger::canMerge(base, {{5, -5}, {5, 5}}, 5 * M_PI / 180, 2.0));    // eq. 5
+    EXPECT_FALSE(LineMerger::canMerge(base, {{30, 0}, {40, 0}}, 5 * M_PI / 180, 2.0));   // eq. 7
+    // Reversed endpoints are the same direction (undirected segments).
+    EXPECT_TRUE(LineMerger::canMerge(base, {{12, 0.5f}, {5, 0.5f}}, 5 * M_PI / 180, 2.0));
+}
+
+TEST(MainDirectionVoter, PicksTheLongestDirectionAndItsPerpendicular) {
+    auto at = [](double deg, double length) {
+        const double a = deg * M_PI / 180;
+        return LineSegment{
+            {0, 0},
+            {static_cast<float>(length * std::cos(a)), static_cast<float>(length * std::sin(a))}};
+    };
+    const auto d = MainDirectionVoter().vote({at(20, 100), at(21, 80), at(112, 50), at(65, 60)});
+    EXPECT_NEAR(d.phi1 * 180 / M_PI, 20.4, 0.5);   // length-weighted mean of the 20/21 deg bin
+    EXPECT_NEAR(d.phi2 * 180 / M_PI, 112.0, 0.5);  // closest to perpendicular, not the 65 deg one
+    // 1 deg and 179 deg are one direction: together they outvote 90 deg.
+    const auto e = MainDirectionVoter().vote({at(1, 60), at(179, 60), at(90, 100)});
+    EXPECT_LT(std::min(e.phi1, M_PI - e.phi1), 2 * M_PI / 180);
+}
+
+TEST(VirtualDoorDetector, RayStopsAtADiagonalWall) {
+    cv::Mat free(40, 40, CV_8U, cv::Scalar(255));
+    for (int k = 0; k < 40; ++k)
+        free.at<std::uint8_t>(k, 39 - k) = 0;  // 8-connected anti-diagonal
+    cv::Point hit;
+    ASSERT_TRUE(
+        VirtualDoorDetector::castRay(free, {5, 5}, std::sqrt(0.5), std::sqrt(0.5), 100, hit));
+    EXPECT_LE(std::abs(hit.x + hit.y - 39), 1);  // on the wall, not beyond it
+}
+
+TEST(VirtualDoorDetector, FindsDoorWideGapsOnly) {
+    const std::vector<double> axes{0.0, M_PI / 2};
+    for (const double gap : {0.7, 0.9, 1.2, 1.5}) {
+        const FreeSpace space = spaceOf(twoRooms(gap));
+        const auto doors = VirtualDoorDetector().detect(space, {{60, 40}}, axes);
+        ASSERT_EQ(doors.size(), 1u) << gap;
+        EXPECT_EQ(doors[0].direction, 1);  // found across (along y), not along x
+        EXPECT_NEAR(doors[0].width * kRes, gap + kRes, kRes);  // jamb cell centres: one cell more
+    }
+    for (const double gap : {0.4, 2.0}) {  // outside 1.1 +- 0.5 m
+        const FreeSpace space = spaceOf(twoRooms(gap));
+        EXPECT_TRUE(VirtualDoorDetector().detect(space, {{60, 40}}, axes).empty()) << gap;
+    }
+}
+
+TEST(Clearance, RidgeDirectionIsTheDoorLine) {
+    const FreeSpace space = spaceOf(twoRooms(0.9));
+    const Clearance clearance(space.free);
+    // The door line of a gap in a vertical wall is vertical (pi/2 in the image).
+    EXPECT_NEAR(clearance.acrossRidge({60, 40}), M_PI / 2, 0.15);
+    cv::Mat t;
+    cv::transpose(twoRooms(0.9), t);
+    const Clearance transposed(spaceOf(t).free);
+    const double a = transposed.acrossRidge({40, 60});
+    EXPECT_LT(std::min(a, M_PI - a), 0.15);
+}
+
+TEST(DoorSearchPaths, MedialAxisCrossesTheDoor) {
+    const FreeSpace space = spaceOf(twoRooms(0.9));
+    const auto cells = DoorSearchPaths::fromMedialAxis(space, Clearance(space.free), 0.6, 1.6);
+    bool throughDoor = false;
+    for (const auto& c : cells)
+        throughDoor = throughDoor || (c.x >= 58 && c.x <= 61 && std::abs(c.y - 40) <= 1);
+    EXPECT_TRUE(throughDoor);
+}
+
+TEST(DoorSearchPaths, TrajectoryCellsJoinConsecutivePoses) {
+    const FreeSpace space = spaceOf(twoRooms(0.9));
+    // Two poses 4 m apart through the door: every cell between them is on the path.
+    const auto cells = DoorSearchPaths::fromTrajectory(space, {{1.0, 2.0, 0}, {5.0, 2.0, 0}});
+    EXPECT_GE(cells.size(), 79u);
+    for (const auto& c : cells)
+        EXPECT_NE(space.free.at<std::uint8_t>(c), 0);
+}
+
+TEST(DoorFilters, DistanceFilterKeepsTheNarrowestOfAGroup) {
+    std::vector<VirtualDoor> doors;
+    for (int k = 0; k < 5; ++k) {  // parallel cuts 1 cell apart, the middle one narrowest
+        const double w = 20 - (k == 2 ? 2 : 0);
+        doors.push_back({{10 + k, 10}, {10 + k, static_cast<int>(10 + w)}, w, 0, {10 + k, 15}});
+    }
+    doors.push_back({{50, 10}, {50, 30}, 20, 0, {50, 20}});  // far away: its own group
+    const auto kept = DoorFilters().distance(doors, kRes);
+    ASSERT_EQ(kept.size(), 2u);
+    EXPECT_EQ(kept[0].jambA.x, 12);
+    DoorFilters::Options paper;
+    paper.keepNarrowestOfGroup = false;
+    const auto greedy = DoorFilters(paper).distance(doors, kRes);
+    ASSERT_EQ(greedy.size(), 2u);
+    EXPECT_EQ(greedy[0].jambA.x, 10);  // the paper: first come, first kept
+}
+
+TEST(DoorFilters, ConstrictionRejectsCorridorCrossSections) {
+    // A 1 m corridor, 6 m long, between two rooms: its cross-sections are door-wide but the
+    // corridor does not widen within a door width of them; the doorway at its end does.
+    cv::Mat img(100, 260, CV_8U, cv::Scalar(0));
+    img(cv::Rect(2, 2, 76, 96)) = 255;     // room A
+    img(cv::Rect(182, 2, 76, 96)) = 255;   // room B
+    img(cv::Rect(78, 40, 104, 20)) = 255;  // corridor, 1 m wide
+    const FreeSpace space = spaceOf(img);
+    const VirtualDoor middle{{130, 39}, {130, 60}, 21, 1, {130, 50}};
+    EXPECT_TRUE(DoorFilters().constriction(space, {middle}, 1.1).empty());
+    DoorFilters::Options off;
+    off.requireConstriction = false;
+    EXPECT_EQ(DoorFilters(off).constriction(space, {middle}, 1.1).size(), 1u);
+
+    const FreeSpace gap = spaceOf(twoRooms(0.9));
+    const VirtualDoor door{{60, 30}, {60, 49}, 19, 1, {60, 40}};
+    EXPECT_EQ(DoorFilters().constriction(gap, {door}, 1.1).size(), 1u);
+}
+
+TEST(DoorFilters, WallJambTestRejectsFreeStandingObstacles) {
+    cv::Mat img(100, 100, CV_8U, cv::Scalar(0));
+    img(cv::Rect(2, 2, 96, 96)) = 255;
+    cv::circle(img, {40, 50}, 4, cv::Scalar(0), cv::FILLED);  // two chairs 1 m apart
+    cv::circle(img, {64, 50}, 4, cv::Scalar(0), cv::FILLED);
+    const FreeSpace space = spaceOf(img);
+    const VirtualDoor between{{44, 50}, {60, 50}, 16, 0, {52, 50}};
+    EXPECT_TRUE(DoorFilters().wallJambs(space, {between}, {}).empty());
+    // A jamb on the outer wall passes, one on the chair does not.
+    const VirtualDoor wallToChair{{1, 50}, {36, 50}, 35, 0, {20, 50}};
+    EXPECT_TRUE(DoorFilters().wallJambs(space, {wallToChair}, {}).empty());
+    DoorFilters::Options off;
+    off.requireWallJambs = false;
+    EXPECT_EQ(DoorFilters(off).wallJambs(space, {between}, {}).size(), 1u);
+}
+
+TEST(FreeSpaceBinarizer, KeepsTheLargestFreeRegionAboveTheThreshold) {
+    cv::Mat img(30, 40, CV_8U, cv::Scalar(128));
+    img(cv::Rect(2, 2, 20, 20)) = 255;  // 400 cells
+    img(cv::Rect(30, 2, 5, 5)) = 255;   // 25 cells, unreachable
+    const auto grid = toposlam::rooms::test::gridOf(img);
+    const FreeSpace space = FreeSpaceBinarizer().binarize(grid);
+    EXPECT_EQ(space.freeCells, 400u);
+    EXPECT_EQ(space.bounds, cv::Rect(2, 2, 20, 20));
+    EXPECT_EQ(cv::countNonZero(space.otherFree), 25);
+    EXPECT_NE(space.free.at<std::uint8_t>(10, 10), 0);  // image layout: row 0 = top
+    // Unknown (0.5) is never free; a cell at p(free) 0.7 is free at 0.6, not at 0.8.
+    auto g = grid;
+    g.setCell(30, 0, 0.7f);
+    EXPECT_EQ(cv::countNonZero(FreeSpaceBinarizer({0.6}).binarize(g).otherFree), 26);
+    EXPECT_EQ(cv::countNonZero(FreeSpaceBinarizer({0.8}).binarize(g).otherFree), 25);
+}

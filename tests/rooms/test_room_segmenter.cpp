@@ -1,0 +1,196 @@
+// RoomSegmenter on drawn floor plans with exact ground truth (DrawnMaps.h): room count, doors
+// and which room each ground-truth room point falls in; maps without doors, one room, an
+// open-plan hall, furniture, noise, a rotated building, with and without trajectory; bad maps.
+#include <toposlam/io/InputError.h>
+#include <toposlam/rooms/RoomSegmenter.h>
+
+#include "DrawnMaps.h"
+
+#include <gtest/gtest.h>
+#include <opencv2/core.hpp>
+
+#include <cmath>
+#include <set>
+
+using namespace toposlam::rooms;
+using toposlam::rooms::test::DrawnMap;
+
+namespace {
+
+std::vector<mrpt::math::TPose2D> posesOf(const std::vector<mrpt::math::TPoint2D>& points) {
+    std::vector<mrpt::math::TPose2D> poses;
+    for (const auto& p : points)
+        poses.emplace_back(p.x, p.y, 0.0);
+    return poses;
+}
+
+// Every drawn room lands in its own segment, there are no other segments, and every drawn door
+// is a found door (middle within `doorTolerance` m) joining the rooms on its two sides, with
+// no other doors.
+void expectMatchesDrawing(const TopologicalMap& map, const DrawnMap& drawn, double doorTolerance) {
+    std::set<int> ids;
+    for (const auto& p : drawn.rooms) {
+        const int id = map.roomAt(p.x, p.y);
+        EXPECT_GT(id, 0) << "room point (" << p.x << ", " << p.y << ") is in no room";
+        EXPECT_TRUE(ids.insert(id).second) << "two drawn rooms share segment " << id;
+    }
+    EXPECT_EQ(map.rooms.size(), drawn.rooms.size());
+    ASSERT_EQ(map.doors.size(), drawn.doors.size());
+    for (const auto& truth : drawn.doors) {
+        const Door* best = nullptr;
+        double bestDistance = 1e9;
+        for (const auto& d : map.doors) {
+            const double dist =
+                std::hypot(d.middle().x - truth.middle.x, d.middle().y - truth.middle.y);
+            if (dist < bestDistance) {
+                bestDistance = dist;
+                best = &d;
+            }
+        }
+        ASSERT_NE(best, nullptr);
+        EXPECT_LT(bestDistance, doorTolerance)
+            << "drawn door at (" << truth.middle.x << ", " << truth.middle.y << ")";
+        // Width: the clear opening plus one cell (jamb cell centres), within a cell either way.
+        EXPECT_NEAR(best->width, truth.width + toposlam::rooms::test::kResolution, 2 * 0.05);
+        EXPECT_NE(best->roomA, best->roomB);
+    }
+}
+
+}  // namespace
+
+// Door middles: the cut lies inside the wall opening, whose depth is the wall thickness (0.2 m);
+// the middle of the cut is within half the thickness plus a cell of the drawn middle.
+constexpr double kDoorTolerance = 0.1 + 0.05 + 0.05;
+
+TEST(RoomSegmenter, OfficeWithoutTrajectoryHasExactRoomsAndDoors) {
+    const DrawnMap drawn = toposlam::rooms::test::office();
+    const auto result = RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image));
+    EXPECT_FALSE(result.fromTrajectory);
+    expectMatchesDrawing(result.map, drawn, kDoorTolerance);
+    // The corridor joins all five rooms; the two left upper rooms are joined directly too.
+    const int corridor = result.map.roomAt(10, 7);
+    EXPECT_EQ(result.map.neighbours(corridor).size(), 5u);
+    EXPECT_EQ(
+        result.map.doorsBetween(result.map.roomAt(4, 10.5), result.map.roomAt(11, 10.5)).size(),
+        1u);
+    EXPECT_EQ(result.map.adjacency().size(), 6u);
+}
+
+TEST(RoomSegmenter, OfficeWithTrajectoryHasExactRoomsAndDoors) {
+    const DrawnMap drawn = toposlam::rooms::test::office();
+    const auto result =
+        RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image), posesOf(drawn.tour));
+    EXPECT_TRUE(result.fromTrajectory);
+    expectMatchesDrawing(result.map, drawn, kDoorTolerance);
+}
+
+TEST(RoomSegmenter, DoorsOffTheTrajectoryAreNotFound) {
+    // The paper's assumption (2): the robot went through every door. A tour that stays in the
+    // corridor crosses no door, so no door is found and everything is one room.
+    const DrawnMap drawn = toposlam::rooms::test::office();
+    const auto result = RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image),
+                                                posesOf({{2, 7}, {20, 7}}));
+    EXPECT_EQ(result.map.doors.size(), 0u);
+    EXPECT_EQ(result.map.rooms.size(), 1u);
+}
+
+TEST(RoomSegmenter, PaperExactVariantFindsTheOfficeToo) {
+    const DrawnMap drawn = toposlam::rooms::test::office();
+    const auto result =
+        RoomSegmenter(RoomSegmenter::Options::paperExact())
+            .segment(toposlam::rooms::test::gridOf(drawn.image), posesOf(drawn.tour));
+    expectMatchesDrawing(result.map, drawn, kDoorTolerance);
+}
+
+TEST(RoomSegmenter, FurnitureMakesNoFalseDoors) {
+    const DrawnMap drawn = toposlam::rooms::test::furnishedOffice();
+    const auto result = RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image));
+    expectMatchesDrawing(result.map, drawn, kDoorTolerance);
+}
+
+TEST(RoomSegmenter, NoisyMapKeepsRoomsAndDoors) {
+    for (unsigned seed : {1u, 2u, 3u}) {
+        SCOPED_TRACE(seed);
+        const DrawnMap drawn = toposlam::rooms::test::noisyOffice(seed);
+        const auto result = RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image));
+        // Ragged walls move jambs by a cell: one cell more slack for the door middles.
+        expectMatchesDrawing(result.map, drawn, kDoorTolerance + 0.05);
+    }
+}
+
+TEST(RoomSegmenter, RotatedBuildingKeepsRoomsAndDoors) {
+    // Walls at 30 deg: the main directions follow the walls (steps 2-3).
+    const DrawnMap drawn = toposlam::rooms::test::rotated(toposlam::rooms::test::office(), 30);
+    const auto result = RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image));
+    expectMatchesDrawing(result.map, drawn, kDoorTolerance + 0.05);
+    EXPECT_NEAR(std::fmod(result.directions.phi1 * 180 / M_PI, 90.0), 60.0, 2.0);
+}
+
+TEST(RoomSegmenter, SingleRoomIsOneRoomWithoutDoors) {
+    const DrawnMap drawn = toposlam::rooms::test::singleRoom();
+    const auto result = RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image));
+    ASSERT_EQ(result.map.rooms.size(), 1u);
+    EXPECT_TRUE(result.map.doors.empty());
+    // 5.8 x 3.8 m of free cells.
+    EXPECT_NEAR(result.map.rooms[0].area, 5.8 * 3.8, 0.05 * (5.8 + 3.8) * 2);
+    EXPECT_NEAR(result.map.rooms[0].centroid.x, 4.1, 0.05);
+    EXPECT_NEAR(result.map.rooms[0].centroid.y, 3.1, 0.05);
+}
+
+TEST(RoomSegmenter, OpenPlanHallIsOneRoom) {
+    const DrawnMap drawn = toposlam::rooms::test::openPlan();
+    const auto result = RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image));
+    EXPECT_EQ(result.map.rooms.size(), 1u);
+    EXPECT_TRUE(result.map.doors.empty());
+}
+
+TEST(RoomSegmenter, UnreachableFreeCellsBelongToNoRoom) {
+    DrawnMap drawn = toposlam::rooms::test::singleRoom();
+    drawn.image(cv::Rect(150, 5, 5, 5)) = 255;  // a free island outside the building
+    const auto result = RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image));
+    EXPECT_EQ(result.map.rooms.size(), 1u);
+    EXPECT_EQ(result.map.labels.at<int>(7, 152), 0);
+}
+
+TEST(RoomSegmenter, MapWithoutFreeCellsIsAnInputError) {
+    for (const int value : {128, 0}) {  // unknown only, fully occupied
+        const cv::Mat image(50, 60, CV_8U, cv::Scalar(value));
+        try {
+            RoomSegmenter().segment(toposlam::rooms::test::gridOf(image), {}, "blank.gridmap");
+            FAIL() << "no exception for a map of value " << value;
+        } catch (const toposlam::io::InputError& e) {
+            EXPECT_EQ(e.file(), "blank.gridmap");
+            EXPECT_NE(std::string(e.what()).find("no free cell"), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(RoomSegmenter, OptionsOutOfRangeAreRejected) {
+    RoomSegmenter::Options o;
+    o.door.doorWidthTolerance = o.door.doorWidth + 0.1;
+    EXPECT_THROW(RoomSegmenter{o}, std::invalid_argument);
+    o = RoomSegmenter::Options();
+    o.filters.minRoomArea = -1;
+    EXPECT_THROW(RoomSegmenter{o}, std::invalid_argument);
+}
+
+TEST(RoomSegmenter, LabelsRoomsAndDoorsAreConsistent) {
+    const DrawnMap drawn = toposlam::rooms::test::furnishedOffice();
+    const auto map = RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image)).map;
+    std::vector<int> cells(map.rooms.size() + 1, 0);
+    for (int r = 0; r < map.labels.rows; ++r) {
+        for (int c = 0; c < map.labels.cols; ++c)
+            ++cells[static_cast<std::size_t>(map.labels.at<int>(r, c))];
+    }
+    for (const Room& room : map.rooms) {
+        // The grid stores its resolution as a float: the cell area is the frame's, not 0.05^2.
+        EXPECT_NEAR(room.area, cells[static_cast<std::size_t>(room.id)] * map.frame.cellArea(), 1e-9);
+        EXPECT_EQ(map.roomAt(room.anchor.x, room.anchor.y), room.id);  // the anchor is inside
+        EXPECT_GE(room.outline.size(), 4u);
+    }
+    for (const Door& d : map.doors) {
+        // The door's middle cell belongs to one of the two rooms it joins.
+        const int at = map.roomAt(d.middle().x, d.middle().y);
+        EXPECT_TRUE(at == d.roomA || at == d.roomB) << "door " << d.id;
+    }
+}

@@ -1,0 +1,106 @@
+// toposlam-rooms and toposlam-bench-rooms as a user runs them.
+#include <toposlam/rooms/TopologicalMapIO.h>
+
+#include "DrawnMaps.h"
+#include "TestSupport.h"
+
+#include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+using toposlam::test::runApp;
+using toposlam::test::TempDir;
+
+TEST(ToposlamRooms, SegmentsADrawnOfficeAndWritesEveryOutput) {
+    const TempDir dir;
+    const auto drawn = toposlam::rooms::test::office();
+    ASSERT_TRUE(cv::imwrite(dir.file("office.png"), drawn.image));  // bare PNG: p(free) = grey/255
+    const auto r =
+        runApp("toposlam-rooms", "'" + dir.file("office.png") + "' -o '" + dir.file("out") + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("6 rooms, 6 doors"), std::string::npos) << r.output;
+    for (const char* f :
+         {"rooms.json", "rooms.graphml", "rooms.png", "rooms-steps.png", "rooms.topomap.gz"}) {
+        EXPECT_TRUE(std::filesystem::is_regular_file(dir.file(std::string("out/") + f))) << f;
+    }
+    const auto map = toposlam::rooms::loadTopologicalMap(dir.file("out/rooms.json"));
+    EXPECT_EQ(map.rooms.size(), 6u);
+    EXPECT_EQ(map.doors.size(), 6u);
+    EXPECT_EQ(toposlam::rooms::loadTopologicalMap(dir.file("out/rooms.graphml")).doors.size(), 6u);
+}
+
+TEST(ToposlamRooms, UsesTheTrajectory) {
+    const TempDir dir;
+    const auto drawn = toposlam::rooms::test::office();
+    ASSERT_TRUE(cv::imwrite(dir.file("office.png"), drawn.image));
+    {
+        std::ofstream traj(dir.file("tour.txt"));
+        traj << "# timestamp x y yaw\n";
+        for (std::size_t i = 0; i < drawn.tour.size(); ++i)
+            traj << i << " " << drawn.tour[i].x << " " << drawn.tour[i].y << " 0\n";
+    }
+    const auto r =
+        runApp("toposlam-rooms", "'" + dir.file("office.png") + "' -t '" + dir.file("tour.txt") +
+                                     "' --paper -o '" + dir.file("out") + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("6 rooms, 6 doors (trajectory search"), std::string::npos) << r.output;
+}
+
+TEST(ToposlamRooms, BadInputGivesAClearErrorAndNoOutput) {
+    const TempDir dir;
+    auto r =
+        runApp("toposlam-rooms", "'" + dir.file("missing.png") + "' -o '" + dir.file("out") + "'");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("error: "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("missing.png"), std::string::npos) << r.output;
+
+    ASSERT_TRUE(cv::imwrite(dir.file("black.png"), cv::Mat(40, 40, CV_8U, cv::Scalar(0))));
+    r = runApp("toposlam-rooms", "'" + dir.file("black.png") + "' -o '" + dir.file("out") + "'");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("no free cell"), std::string::npos) << r.output;
+
+    const auto drawn = toposlam::rooms::test::office();
+    ASSERT_TRUE(cv::imwrite(dir.file("office.png"), drawn.image));
+    {
+        std::ofstream traj(dir.file("bad.txt"));
+        traj << "0 1 2\n";
+    }
+    r = runApp("toposlam-rooms", "'" + dir.file("office.png") + "' -t '" + dir.file("bad.txt") +
+                                     "' -o '" + dir.file("out") + "'");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("bad.txt"), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("out/rooms.json")));
+
+    r = runApp("toposlam-rooms",
+               "'" + dir.file("office.png") + "' --door-width -1 -o '" + dir.file("out") + "'");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("doorWidth"), std::string::npos) << r.output;
+}
+
+TEST(ToposlamBenchRooms, RunsOneMapAndWritesJson) {
+    TOPOSLAM_SHARED_DATA_OR_SKIP(map, "rooms/Freiburg52_scan.png");
+    const TempDir dir;
+    const std::string data = std::filesystem::path(map).parent_path().string();
+    const auto r =
+        runApp("toposlam-bench-rooms", "--data '" + data + "' --maps Freiburg52_scan -r 1 -o '" +
+                                           dir.file("b4.json") + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    // Freiburg52: 10 ground-truth rooms; every method appears for both variants.
+    for (const char* method : {"vdoor", "vdoor-paper", "morph", "dist"}) {
+        EXPECT_NE(r.output.find("| Freiburg52_scan_furnitures | " + std::string(method) + " |"),
+                  std::string::npos)
+            << method;
+    }
+    EXPECT_NE(r.output.find("/ 10 |"), std::string::npos) << r.output;
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir.file("b4.json")));
+}
+
+TEST(ToposlamBenchRooms, SkipsWithAMessageWithoutData) {
+    const TempDir dir;
+    const auto r = runApp("toposlam-bench-rooms",
+                          "--data '" + dir.file("nothing") + "' -o '" + dir.file("b4.json") + "'");
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.output.find("B4 skipped"), std::string::npos) << r.output;
+}

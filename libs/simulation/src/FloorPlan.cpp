@@ -213,8 +213,16 @@ std::string FloorPlan::toJson(const mrpt::maps::COccupancyGridMap2D& grid,
     o << "{\n";
     o << "  \"frame\": \"map world frame, metres; yaw in radians\",\n";
     o << "  \"map\": " << jsonString(mapFile) << ",\n";
+    // The grid's geometry is stored in floats: print it at float precision (0.05, not
+    // 0.05000000075).
+    const auto f = [](double v) {
+        std::ostringstream s;
+        s << std::setprecision(7) << v;
+        return s.str();
+    };
     o << "  \"room_labels\": {\"image\": " << jsonString(labelFile)
-      << ", \"resolution\": " << g.resolution << ", \"origin\": " << point({g.xMin, g.yMin})
+      << ", \"resolution\": " << f(g.resolution) << ", \"origin\": [" << f(g.xMin) << ", "
+      << f(g.yMin) << "]"
       << ", \"width\": " << g.sizeX << ", \"height\": " << g.sizeY
       << ", \"pixel\": \"room id, 0 = no room (walls, doorways, outside); top row = highest "
          "y\"},\n";

@@ -75,11 +75,34 @@ void MovingObstacles::startWalk(std::size_t i) {
     w.pause = std::uniform_real_distribution<double>(0, options_.maxPause)(rng_);
 }
 
+bool MovingObstacles::stepAside(std::size_t i, double dt, const TPoint2D& robot) {
+    TPoint2D& p = discs_[i].centre;
+    const double d = dist(p, robot);
+    if (d >= options_.robotKeepOut)
+        return false;
+    // The robot came too close: walk straight away from it (or sideways if a wall is behind),
+    // then choose a new destination.
+    const double step = std::min(walkers_[i].speed * dt, options_.robotKeepOut - d);
+    const double away = d > 1e-9 ? std::atan2(p.y - robot.y, p.x - robot.x) : 0.0;
+    for (double turn : {0.0, M_PI / 4, -M_PI / 4, M_PI / 2, -M_PI / 2}) {
+        const TPoint2D q(p.x + step * std::cos(away + turn), p.y + step * std::sin(away + turn));
+        if (planner_.traversable(q) && planner_.traversable({(p.x + q.x) / 2, (p.y + q.y) / 2})) {
+            p = q;
+            break;
+        }
+    }
+    walkers_[i].path.clear();
+    walkers_[i].pause = 0;
+    return true;
+}
+
 void MovingObstacles::advance(double dt, const TPoint2D& robot) {
     for (std::size_t i = 0; i < walkers_.size(); ++i) {
         Walker& w = walkers_[i];
         TPoint2D& p = discs_[i].centre;
         double left = dt;
+        if (stepAside(i, dt, robot))
+            continue;
         while (left > 1e-9) {
             if (w.next >= w.path.size()) {  // at a destination: wait, then pick the next one
                 if (w.pause > left) {

@@ -9,12 +9,13 @@ FloorPlan makeOfficeFloorPlan() {
     constexpr double hi = inner / 2;            // half an inner wall
     FloorPlan plan;
 
-    // Outer walls (centre lines half a thickness outside the inner faces).
+    // Outer walls: centre lines half a thickness outside the inner faces; every wall extends
+    // half its thickness past its end points, so the corners close.
     const double o = outer / 2;
-    plan.addWall({-outer, -o}, {W + outer, -o}, outer);
-    plan.addWall({-outer, H + o}, {W + outer, H + o}, outer);
-    plan.addWall({-o, -outer}, {-o, H + outer}, outer);
-    plan.addWall({W + o, -outer}, {W + o, H + outer}, outer);
+    plan.addWall({-o, -o}, {W + o, -o}, outer);
+    plan.addWall({-o, H + o}, {W + o, H + o}, outer);
+    plan.addWall({-o, -o}, {-o, H + o}, outer);
+    plan.addWall({W + o, -o}, {W + o, H + o}, outer);
     // Corridor walls and the partitions between rooms.
     plan.addWall({0, corrS}, {W, corrS}, inner);
     plan.addWall({0, corrN}, {W, corrN}, inner);

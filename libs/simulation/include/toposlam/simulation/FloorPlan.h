@@ -38,7 +38,8 @@ struct FloorDoor {
 
 class FloorPlan {
   public:
-    /// A wall of `thickness` (m) centred on the axis-aligned segment a-b.
+    /// A wall of `thickness` (m) centred on the axis-aligned segment a-b, extending half its
+    /// thickness past both ends (so walls meeting at a corner close it).
     void addWall(const mrpt::math::TPoint2D& a, const mrpt::math::TPoint2D& b, double thickness);
     /// Returns the new room's id.
     int addRoom(const std::string& name, const std::string& kind, const Box& floor);

@@ -7,6 +7,7 @@
 #include <mrpt/math/TPoint2D.h>
 #include <toposlam/io/Trajectory.h>
 
+#include <cmath>
 #include <vector>
 
 namespace mrpt::config {
@@ -17,7 +18,7 @@ namespace toposlam::simulation {
 
 struct MotionOptions {
     double maxSpeed = 0.4;            ///< m/s
-    double maxTurnRate = 0.5;         ///< rad/s (29 deg/s)
+    double maxTurnRate = M_PI / 6;    ///< rad/s (30 deg/s)
     double scanDistance = 0.3;        ///< m driven between recorded scans
     double scanAngle = 0.2618;        ///< rad turned between recorded scans (15 deg)
     double startTime = 1700000000.0;  ///< s (Unix time) of the first scan

@@ -2,9 +2,9 @@
 // People walking through the map while the robot records: discs that go from one random free
 // place to another along clearance-keeping grid paths (GridPathPlanner), at walking speed,
 // pausing a little at each place. A person's outline never overlaps an obstacle cell. People
-// stop rather than walk into the robot, but the robot (whose path is fixed) may drive up to a
-// standing person; a sensor inside a disc does not see that disc. A person kept waiting by the
-// robot for two seconds walks somewhere else.
+// keep out of the robot's way: they stop rather than walk into it, walk elsewhere when it blocks
+// them for two seconds, and step aside when it drives up to them (a person cornered by the
+// robot may still end up within the keep-out distance).
 #include <mrpt/math/TPoint2D.h>
 #include <toposlam/simulation/ClearanceMap.h>
 #include <toposlam/simulation/GridPathPlanner.h>
@@ -27,7 +27,8 @@ struct PeopleOptions {
     double maxSpeed = 1.3;        ///< m/s
     double maxPause = 3.0;        ///< s; pause at each destination, uniform in [0, maxPause]
     double maxTripLength = 12.0;  ///< m; destinations are at most this far (straight line)
-    double robotKeepOut = 0.5;    ///< m between a person's centre and the robot's centre
+    /// m between a person's centre and the robot's centre (robot radius + person radius + 0.1)
+    double robotKeepOut = 0.6;
 
     /// Reads count, radius, min_speed, max_speed, max_pause, max_trip_length, robot_keep_out.
     void loadFromConfig(const mrpt::config::CConfigFileBase& config, const std::string& section);
@@ -55,6 +56,9 @@ class MovingObstacles {
     };
     mrpt::math::TPoint2D randomFreePlace();
     void startWalk(std::size_t i);
+    /// Moves person i away from a robot that came within the keep-out distance; false if the
+    /// robot is not that close.
+    bool stepAside(std::size_t i, double dt, const mrpt::math::TPoint2D& robot);
 
     const ClearanceMap& map_;
     PeopleOptions options_;

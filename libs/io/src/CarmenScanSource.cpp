@@ -114,6 +114,15 @@ mrpt::poses::CPose2D laserMount(const mrpt::poses::CPose2D& laser,
                                 get("angular_offset") + (front ? 0.0 : kPi));
 }
 
+// A pose exactly as the log prints it: CPose2D's constructor wraps the angle with arithmetic
+// that changes its last bits even when it is already in (-pi, pi].
+mrpt::poses::CPose2D printedPose(double x, double y, double theta) {
+    mrpt::poses::CPose2D pose(x, y, theta);
+    if (theta > -kPi && theta <= kPi)
+        pose.phi(theta);
+    return pose;
+}
+
 }  // namespace
 
 CarmenScanSource::CarmenScanSource(const std::string& path, const LaserLogOptions& options)
@@ -223,9 +232,9 @@ void CarmenScanSource::parseFlaser(LaserLogRecord& out, bool front) {
     const BeamLayout layout = oldFormatLayout(n, resolution);
 
     const std::size_t p = 2 + n;
-    const mrpt::poses::CPose2D laser(number(p, "x"), number(p + 1, "y"), number(p + 2, "theta"));
-    const mrpt::poses::CPose2D robot(number(p + 3, "odom_x"), number(p + 4, "odom_y"),
-                                     number(p + 5, "odom_theta"));
+    const auto laser = printedPose(number(p, "x"), number(p + 1, "y"), number(p + 2, "theta"));
+    const auto robot =
+        printedPose(number(p + 3, "odom_x"), number(p + 4, "odom_y"), number(p + 5, "odom_theta"));
     auto scan = std::make_shared<mrpt::obs::CObservation2DRangeScan>();
     scan->sensorLabel = std::string(tokens_[0]);
     fillRanges(*scan, 2, n, maxRange);
@@ -262,10 +271,10 @@ void CarmenScanSource::parseRobotLaser(LaserLogRecord& out) {
         fail("maximum_range must be > 0");
 
     const std::size_t p = 10 + n + m;
-    const mrpt::poses::CPose2D laser(number(p, "laser_x"), number(p + 1, "laser_y"),
-                                     number(p + 2, "laser_theta"));
-    const mrpt::poses::CPose2D robot(number(p + 3, "robot_x"), number(p + 4, "robot_y"),
-                                     number(p + 5, "robot_theta"));
+    const auto laser =
+        printedPose(number(p, "laser_x"), number(p + 1, "laser_y"), number(p + 2, "laser_theta"));
+    const auto robot = printedPose(number(p + 3, "robot_x"), number(p + 4, "robot_y"),
+                                   number(p + 5, "robot_theta"));
     auto scan = std::make_shared<mrpt::obs::CObservation2DRangeScan>();
     scan->sensorLabel = std::string(tokens_[0]);
     fillRanges(*scan, 9, n, static_cast<float>(maxRange));

@@ -24,25 +24,31 @@ double translationError(const CPose2D& a, const CPose2D& b) {
 }
 }  // namespace
 
-// Noise-free scans and exact segment lines: ICP converges to the truth up to its step
-// tolerances (1e-4 m, 1e-5 rad), so the pose is recovered to ~1e-4.
+// Noise-free scans and exact segment lines. The paper's pipeline (segment-mode ICP on the
+// matched lines) recovers the pose up to the ICP's step tolerances (1e-4 m, 1e-5 rad); the
+// default pipeline's last polish fits local lines to the reference points, which are a
+// fraction of a millimetre off next to corners, so it is held to 1 mm / 1 mrad.
 TEST(GraphScanMatcher, RecoversKnownTransformsWithoutGuess) {
     const auto world = toposlam::test::asymmetricRoom();
     const auto laser = toposlam::test::fullCircleLaser();
     const CPose2D reference(3.0, 2.0, 0.4);
     const SyntheticScan ref = simulateWithSegments(world, laser, reference);
-    GraphScanMatcher matcher;
+    GraphScanMatcher paper, polished;
+    paper.options().scanRefinement = false;
     const std::vector<CPose2D> motions = {{0.05, 0.0, 0.0}, {0.15, -0.1, 0.3}, {0.5, 0.3, -1.2},
                                           {1.0, 0.4, 3.1},  {-0.7, 1.2, 1.6},  {1.5, 2.5, -2.4}};
     for (const CPose2D& motion : motions) {
         const SyntheticScan cur = simulateWithSegments(world, laser, reference + motion);
-        const MatchResult& r = matcher.match(ref.polar, ref.features, cur.polar, cur.features);
         SCOPED_TRACE(motion.asString());
-        EXPECT_EQ(r.status, MatchStatus::Matched) << toString(r.status);
-        EXPECT_LT(translationError(r.pose, motion), 1e-4);
-        EXPECT_LT(angleError(r.pose, motion), 1e-4);
-        EXPECT_GT(r.score.inlierFraction(), 0.99);
-        EXPECT_GE(r.matches.size(), 4u);
+        for (GraphScanMatcher* m : {&paper, &polished}) {
+            const MatchResult& r = m->match(ref.polar, ref.features, cur.polar, cur.features);
+            const double tolerance = m == &paper ? 1e-4 : 1e-3;
+            EXPECT_EQ(r.status, MatchStatus::Matched) << toString(r.status);
+            EXPECT_LT(translationError(r.pose, motion), tolerance);
+            EXPECT_LT(angleError(r.pose, motion), tolerance);
+            EXPECT_GT(r.score.inlierFraction(), 0.99);
+            EXPECT_GE(r.matches.size(), 4u);
+        }
     }
 }
 
@@ -141,6 +147,6 @@ TEST(GraphScanMatcher, GuidedMatchingToleratesAPoorGuess) {
     const CPose2D guess = motion + CPose2D(0.7, -0.7, -30.0 * M_PI / 180);
     const MatchResult& r = matcher.match(a.polar, a.features, b.polar, b.features, guess);
     EXPECT_EQ(r.status, MatchStatus::Matched) << toString(r.status);
-    EXPECT_LT(translationError(r.pose, motion), 1e-4);
-    EXPECT_LT(angleError(r.pose, motion), 1e-4);
+    EXPECT_LT(translationError(r.pose, motion), 1e-3);  // as in RecoversKnownTransforms...
+    EXPECT_LT(angleError(r.pose, motion), 1e-3);
 }

@@ -118,6 +118,11 @@ GraphScanMatcher::Refined GraphScanMatcher::refine(const PolarScan& referenceSca
         out.icp = icp_.refine(currentScan, current_, reference_, consensus_, pose, options_.icp);
         pose = out.icp.pose;
     }
+    if (options_.scanRefinement && !consensus_.empty()) {
+        out.icp = icp_.refineOnScan(referenceScan, currentScan, pose, options_.scanIcp,
+                                    options_.score.searchBeams + 1);
+        pose = out.icp.pose;
+    }
     out.pose = pose;
     out.score = scoreAlignment(referenceScan, currentScan, pose, options_.score);
     out.value = double(out.score.inliers) - double(out.score.violations);
@@ -172,6 +177,8 @@ const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
     if (hyps.empty())
         return r;
 
+    if (options_.scanRefinement)
+        icp_.prepareReference(referenceScan, options_.score.maxJoinDistance);
     refined_.clear();
     for (std::size_t h = 0; h < hyps.size() && h < options_.refineTop; ++h) {
         refined_.push_back(refine(referenceScan, currentScan, hyps[h]));
@@ -264,6 +271,14 @@ void GraphMatcherOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
     read(c, s, "icp_rotationTolerance", icp.rotationTolerance);
     read(c, s, "icp_stride", icp.stride);
     read(c, s, "icp_minNoiseStd", icp.minNoiseStd);
+    int scan = scanRefinement ? 1 : 0;
+    read(c, s, "scanRefinement", scan);
+    scanRefinement = scan != 0;
+    read(c, s, "scanIcp_maxIterations", scanIcp.maxIterations);
+    read(c, s, "scanIcp_maxDistance", scanIcp.maxDistance);
+    read(c, s, "scanIcp_robustScale", scanIcp.robustScale);
+    read(c, s, "scanIcp_stride", scanIcp.stride);
+    read(c, s, "scanIcp_minNoiseStd", scanIcp.minNoiseStd);
     read(c, s, "score_inlierDistance", score.inlierDistance);
     long searchBeams = score.searchBeams;
     searchBeams = c.read_int(s, "score_searchBeams", int(searchBeams));

@@ -11,7 +11,8 @@
 //   5. GreedyAssignment  P -> one-to-one matches;
 //   6. RansacMatcher     transforms from pairs of matched segments (lines, not midpoints),
 //                        ranked by how many segments agree;
-//   7. PointToLineIcp    refinement of the best few on the points of their agreeing segments;
+//   7. PointToLineIcp    refinement of the best few on the points of their agreeing segments,
+//                        then on all points against the reference scan's local lines;
 //   8. AlignmentScorer   free-space consistency of each refined pose against the whole
 //                        reference scan, and the decision below.
 // The result is the pose of the CURRENT scan's sensor in the REFERENCE scan's sensor frame
@@ -61,7 +62,9 @@ struct GraphMatcherOptions {
     SimilarityOptions similarity;
     SpgmOptions spgm;
     RansacOptions ransac;
-    IcpOptions icp;
+    IcpOptions icp;              ///< segment-mode ICP
+    bool scanRefinement = true;  ///< polish with scan-mode ICP on all points
+    IcpOptions scanIcp{15, 0.20, 0.05, 1e-4, 1e-5, 1, 0.01};
     AlignmentScoreOptions score;
     std::size_t refineTop = 4;  ///< hypotheses refined by ICP and scored on points
     // Decision

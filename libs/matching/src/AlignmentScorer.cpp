@@ -49,7 +49,7 @@ AlignmentScore scoreAlignment(const PolarScan& reference, const PolarScan& curre
             continue;
         const mrpt::math::TPoint2D& p = current.point(i);
         const double qx = pose.x() + c * p.x - sn * p.y, qy = pose.y() + sn * p.x + c * p.y;
-        const long b = reference.beamAt(std::atan2(qy, qx));
+        const long b = reference.beamAtPoint(qx, qy);
         if (b < 0) {
             ++s.unverifiable;
             continue;

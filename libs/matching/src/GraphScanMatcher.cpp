@@ -92,10 +92,8 @@ void GraphScanMatcher::buildPool() {
     }
 }
 
-GraphScanMatcher::Refined GraphScanMatcher::refine(const PolarScan& referenceScan,
-                                                   const PolarScan& currentScan,
-                                                   const Hypothesis& h) {
-    Refined out;
+bool GraphScanMatcher::refine(const PolarScan& referenceScan, const PolarScan& currentScan,
+                              const Hypothesis& h, Refined& out) {
     CPose2D pose = h.pose;
     // Least squares on the lines of every agreeing pair (the paper's 2-3 segments and more).
     lines_.clear();
@@ -108,6 +106,26 @@ GraphScanMatcher::Refined GraphScanMatcher::refine(const PolarScan& referenceSca
     const TransformEstimate fit = rigidTransformFromLines(lines_);
     if (fit.valid && fit.conditioning > 0.01)
         pose = fit.pose;
+    const bool alongLine = fit.valid && fit.conditioning < options_.alongLineConditioning;
+    if (alongLine) {
+        // A hypothesis on the same lines as one already searched along them (same rotation,
+        // same position across them) would end where that one did.
+        const CPose2D base = fit.valid ? fit.pose : pose;
+        for (const Refined& r : refined_) {
+            if (!r.searchedAlongLine)
+                continue;
+            const double dx = r.lineBase.x() - base.x(), dy = r.lineBase.y() - base.y();
+            const double across = std::abs(-dy * r.lineDirection.x + dx * r.lineDirection.y);
+            if (std::abs(wrapAngle(r.lineBase.phi() - base.phi())) <
+                    options_.ransac.distinctRotation &&
+                across < options_.ransac.distinctTranslation &&
+                std::abs(fit.weakDirection.x * r.lineDirection.x +
+                         fit.weakDirection.y * r.lineDirection.y) > 0.95)
+                return false;
+        }
+        out.lineBase = base;
+        out.lineDirection = fit.weakDirection;
+    }
 
     // Point-to-line ICP on the agreeing segments; a second round picks up segments that
     // agree only once the pose is refined.
@@ -118,6 +136,17 @@ GraphScanMatcher::Refined GraphScanMatcher::refine(const PolarScan& referenceSca
         out.icp = icp_.refine(currentScan, current_, reference_, consensus_, pose, options_.icp);
         pose = out.icp.pose;
     }
+    // Matched lines all (nearly) parallel: the position along them is still open.
+    if (alongLine && !consensus_.empty()) {
+        AlongLineSearchOptions search = options_.alongLine;
+        double longest = 0;
+        for (const SegmentMatch& m : consensus_)
+            longest = std::max(longest, current_.node(m.current).length);
+        search.range = std::min(search.range, longest);
+        pose = searchAlongLine(referenceScan, currentScan, pose, fit.weakDirection, search,
+                               options_.score);
+        out.searchedAlongLine = true;
+    }
     if (options_.scanRefinement && !consensus_.empty()) {
         out.icp = icp_.refineOnScan(referenceScan, currentScan, pose, options_.scanIcp,
                                     options_.score.searchBeams + 1);
@@ -126,7 +155,7 @@ GraphScanMatcher::Refined GraphScanMatcher::refine(const PolarScan& referenceSca
     out.pose = pose;
     out.score = scoreAlignment(referenceScan, currentScan, pose, options_.score);
     out.value = double(out.score.inliers) - double(out.score.violations);
-    return out;
+    return true;
 }
 
 const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
@@ -181,11 +210,25 @@ const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
         icp_.prepareReference(referenceScan, options_.score.maxJoinDistance);
     refined_.clear();
     for (std::size_t h = 0; h < hyps.size() && h < options_.refineTop; ++h) {
-        refined_.push_back(refine(referenceScan, currentScan, hyps[h]));
-        refined_.back().hypothesis = h;
+        Refined refined;
+        refined.hypothesis = h;
+        if (!refine(referenceScan, currentScan, hyps[h], refined))
+            continue;
+        // Converged onto an earlier (better supported) hypothesis's pose: the same solution.
+        bool duplicate = false;
+        for (const Refined& r : refined_)
+            duplicate = duplicate ||
+                        !posesDistinct(r.pose, refined.pose, options_.ransac.distinctTranslation,
+                                       options_.ransac.distinctRotation);
+        if (!duplicate)
+            refined_.push_back(refined);
     }
-    std::stable_sort(refined_.begin(), refined_.end(),
-                     [](const Refined& a, const Refined& b) { return a.value > b.value; });
+    // Best explained first; equal evidence: the tighter fit.
+    std::stable_sort(refined_.begin(), refined_.end(), [](const Refined& a, const Refined& b) {
+        if (a.value != b.value)
+            return a.value > b.value;
+        return a.score.inlierRms() < b.score.inlierRms();
+    });
     const Refined& best = refined_.front();
     r.pose = best.pose;
     r.covariance = best.icp.covariance;
@@ -254,11 +297,13 @@ void GraphMatcherOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
     read(c, s, "spgm_projectionCycles", spgm.projectionCycles);
     read(c, s, "spgm_projectionTolerance", spgm.projectionTolerance);
     read(c, s, "ransac_maxHypotheses", ransac.maxHypotheses);
+    read(c, s, "ransac_maxSingleHypotheses", ransac.maxSingleHypotheses);
     read(c, s, "ransac_alternativesPerSegment", ransac.alternativesPerSegment);
     read(c, s, "ransac_probabilityFloor", ransac.probabilityFloor);
     read(c, s, "ransac_minSampleAngle", ransac.minSampleAngle);
     read(c, s, "ransac_sampleAngleTolerance", ransac.sampleAngleTolerance);
     read(c, s, "ransac_consensusAngle", ransac.consensusAngle);
+    read(c, s, "ransac_shortSegmentAngleSlack", ransac.shortSegmentAngleSlack);
     read(c, s, "ransac_consensusDistance", ransac.consensusDistance);
     read(c, s, "ransac_overlapMargin", ransac.overlapMargin);
     read(c, s, "ransac_maxKept", ransac.maxKept);
@@ -271,6 +316,8 @@ void GraphMatcherOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
     read(c, s, "icp_rotationTolerance", icp.rotationTolerance);
     read(c, s, "icp_stride", icp.stride);
     read(c, s, "icp_minNoiseStd", icp.minNoiseStd);
+    read(c, s, "icp_minEigenRatio", icp.minEigenRatio);
+    read(c, s, "scanIcp_minEigenRatio", scanIcp.minEigenRatio);
     int scan = scanRefinement ? 1 : 0;
     read(c, s, "scanRefinement", scan);
     scanRefinement = scan != 0;
@@ -285,6 +332,11 @@ void GraphMatcherOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
     score.searchBeams = searchBeams;
     read(c, s, "score_stride", score.stride);
     read(c, s, "score_maxJoinDistance", score.maxJoinDistance);
+    read(c, s, "alongLineConditioning", alongLineConditioning);
+    read(c, s, "alongLine_range", alongLine.range);
+    read(c, s, "alongLine_coarseStep", alongLine.coarseStep);
+    read(c, s, "alongLine_fineStep", alongLine.fineStep);
+    read(c, s, "alongLine_stride", alongLine.stride);
     read(c, s, "refineTop", refineTop);
     read(c, s, "minInliers", minInliers);
     read(c, s, "minInlierRatio", minInlierRatio);

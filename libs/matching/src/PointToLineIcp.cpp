@@ -26,9 +26,17 @@ struct PointToLineIcp::Accumulator {
     }
     /// Applies the step to the pose; true when it was below the tolerances.
     bool step(double& x, double& y, double& phi, const IcpOptions& o) const {
-        // Levenberg damping keeps the step finite along undetermined directions.
-        const Eigen::Vector3d d =
-            -(H + 1e-9 * (1.0 + H.trace()) * Eigen::Matrix3d::Identity()).ldlt().solve(g);
+        // Solve only along well-determined eigen-directions of H.
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(H);
+        const double largest = eig.eigenvalues().maxCoeff();
+        Eigen::Vector3d d = Eigen::Vector3d::Zero();
+        for (int k = 0; k < 3; ++k) {
+            const double lambda = eig.eigenvalues()[k];
+            if (!(lambda > o.minEigenRatio * largest) || !(lambda > 0))
+                continue;
+            const Eigen::Vector3d v = eig.eigenvectors().col(k);
+            d -= (v.dot(g) / lambda) * v;
+        }
         x += d[0], y += d[1], phi += d[2];
         return std::hypot(d[0], d[1]) < o.translationTolerance &&
                std::abs(d[2]) < o.rotationTolerance;
@@ -172,7 +180,7 @@ IcpResult PointToLineIcp::refineOnScan(const PolarScan& reference, const PolarSc
             const mrpt::math::TPoint2D& p = current.point(i);
             const double rx = c * p.x - s * p.y, ry = s * p.x + c * p.y;
             const double qx = rx + x, qy = ry + y;
-            const long b = reference.beamAt(std::atan2(qy, qx));
+            const long b = reference.beamAtPoint(qx, qy);
             if (b < 0)
                 continue;
             long best = -1;

@@ -59,24 +59,44 @@ long PolarScan::beamAt(double bearing) const {
     const long n = static_cast<long>(range_.size());
     if (n == 0 || bearingStep_ == 0)
         return -1;
-    double rel = (bearing - firstBearing_) / bearingStep_;  // in beam steps
-    if (fullCircle_) {
-        const double turn = 2 * M_PI / std::abs(bearingStep_);
-        rel = std::fmod(rel, turn);
-        if (rel < 0)
-            rel += turn;
-        long b = std::lround(rel);
-        return b >= n ? b - n : b;
-    }
-    // Angles are periodic: bring `rel` into [-0.5, n-0.5] when some turn does.
+    // In beam steps from the first beam, brought into [-0.5, turn - 0.5): angles are periodic.
     const double turn = 2 * M_PI / std::abs(bearingStep_);
-    rel = std::fmod(rel + 0.5, turn);
-    if (rel < 0)
+    double rel = (bearing - firstBearing_) / bearingStep_;
+    if (std::abs(rel) > 2 * turn)
+        rel = std::fmod(rel, turn);  // far outside: rare, so the slow path is fine
+    while (rel < -0.5)
         rel += turn;
-    rel -= 0.5;
-    if (rel > static_cast<double>(n) - 0.5)
-        return -1;
-    return std::lround(rel);
+    while (rel >= turn - 0.5)
+        rel -= turn;
+    const long b = std::lround(rel);
+    if (fullCircle_)
+        return b >= n ? b - n : (b < 0 ? b + n : b);
+    return rel > static_cast<double>(n) - 0.5 ? -1 : b;
+}
+
+namespace {
+/// atan2 with a max error of ~1e-5 rad: octant reduction and a minimax polynomial for atan
+/// on [0, 1].
+double fastAtan2(double y, double x) {
+    const double ax = std::abs(x), ay = std::abs(y);
+    const double hi = std::max(ax, ay), lo = std::min(ax, ay);
+    if (hi == 0)
+        return 0.0;
+    const double t = lo / hi, t2 = t * t;
+    double a =
+        t * (0.99997726 +
+             t2 * (-0.33262347 +
+                   t2 * (0.19354346 + t2 * (-0.11643287 + t2 * (0.05265332 + t2 * -0.01172120)))));
+    if (ay > ax)
+        a = M_PI_2 - a;
+    if (x < 0)
+        a = M_PI - a;
+    return y < 0 ? -a : a;
+}
+}  // namespace
+
+long PolarScan::beamAtPoint(double x, double y) const {
+    return beamAt(fastAtan2(y, x));
 }
 
 long PolarScan::neighbour(long beam, long offset) const {

@@ -28,7 +28,9 @@ double RansacMatcher::consensus(const AttributedGraph& current, const Attributed
         bool agrees = false;
         for (std::uint32_t a = 0; a < reference.size(); ++a) {
             const SegmentNode& r = reference.node(a);
-            if (std::abs(wrapAngle(heading - r.heading)) > options.consensusAngle)
+            if (std::abs(wrapAngle(heading - r.heading)) >
+                options.consensusAngle +
+                    options.shortSegmentAngleSlack / std::min(n.length, r.length))
                 continue;
             const double da = r.normal.x * ax + r.normal.y * ay - r.offset;
             const double db = r.normal.x * bx + r.normal.y * by - r.offset;
@@ -125,10 +127,12 @@ const std::vector<Hypothesis>& RansacMatcher::run(
                 continue;
             const double angleRef =
                 reference.edge(A.reference, B.reference)[AttributedGraph::Angle];
-            if (std::abs(wrapAngle(angleCur - angleRef)) > options.sampleAngleTolerance)
-                continue;
             const SegmentNode& cj = current.node(B.current);
             const SegmentNode& rb = reference.node(B.reference);
+            const double shortest = std::min({ci.length, ra.length, cj.length, rb.length});
+            if (std::abs(wrapAngle(angleCur - angleRef)) >
+                options.sampleAngleTolerance + options.shortSegmentAngleSlack / shortest)
+                continue;
             const double wv =
                 (B.probability + options.probabilityFloor) * std::min(cj.length, rb.length);
             samples_.push_back({u, v, wu * wv});
@@ -155,6 +159,42 @@ const std::vector<Hypothesis>& RansacMatcher::run(
             continue;
         offer(current, reference, t.pose, options);
     }
+
+    // Single matches: one segment fixes the rotation and the across-line translation; the
+    // along-line one is taken from the midpoints and from either end (one end of a partly
+    // occluded wall is usually its true corner). Weaker than pairs, but the only hypotheses
+    // where every long segment is parallel (corridors), where clutter the graph does not
+    // hold fixes the position.
+    singles_.clear();
+    for (std::uint32_t u = 0; u < pool_.size(); ++u) {
+        const SegmentNode& cn = current.node(pool_[u].current);
+        const SegmentNode& rn = reference.node(pool_[u].reference);
+        singles_.push_back(
+            {u, u,
+             (pool_[u].probability + options.probabilityFloor) * std::min(cn.length, rn.length)});
+    }
+    std::sort(singles_.begin(), singles_.end(), [&](const Sample& a, const Sample& b) {
+        if (a.weight != b.weight)
+            return a.weight > b.weight;
+        return a.u < b.u;
+    });
+    if (singles_.size() > options.maxSingleHypotheses)
+        singles_.resize(options.maxSingleHypotheses);
+    for (const Sample& sm : singles_) {
+        const SegmentNode& cn = current.node(pool_[sm.u].current);
+        const SegmentNode& rn = reference.node(pool_[sm.u].reference);
+        const double phi = wrapAngle(rn.heading - cn.heading);
+        const double c = std::cos(phi), s = std::sin(phi);
+        const std::pair<const mrpt::math::TPoint2D*, const mrpt::math::TPoint2D*> anchors[] = {
+            {&cn.midpoint, &rn.midpoint}, {&cn.start, &rn.start}, {&cn.end, &rn.end}};
+        for (const auto& [p, q] : anchors) {
+            offer(current, reference,
+                  mrpt::poses::CPose2D(q->x - (c * p->x - s * p->y), q->y - (s * p->x + c * p->y),
+                                       phi),
+                  options);
+        }
+    }
+
     if (guess)
         offer(current, reference, *guess, options);
 

@@ -13,6 +13,17 @@ double conditioning(double a, double b, double c) {
     const double hi = mean + radius, lo = mean - radius;
     return hi > 0 ? std::max(0.0, lo) / hi : 0.0;
 }
+/// Unit eigenvector of the smaller eigenvalue of the symmetric 2x2 [a b; b c].
+mrpt::math::TPoint2D weakestDirection(double a, double b, double c) {
+    const double lo = 0.5 * (a + c) - std::hypot(0.5 * (a - c), b);
+    double x = b, y = lo - a;  // (A - lo I) v = 0 from the first row
+    if (std::hypot(x, y) < 1e-12 * (1 + std::abs(a) + std::abs(c)))
+        x = lo - c, y = b;  // from the second row
+    const double n = std::hypot(x, y);
+    if (!(n > 0))
+        return a <= c ? mrpt::math::TPoint2D(1, 0) : mrpt::math::TPoint2D(0, 1);
+    return {x / n, y / n};
+}
 }  // namespace
 
 TransformEstimate rigidTransformFromPoints(const std::vector<PointPair>& pairs) {
@@ -45,6 +56,8 @@ TransformEstimate rigidTransformFromPoints(const std::vector<PointPair>& pairs) 
     out.pose = mrpt::poses::CPose2D(rx - (c * cx - s * cy), ry - (s * cx + c * cy), phi);
     out.valid = true;
     out.conditioning = conditioning(sxx, sxy, syy);
+    const mrpt::math::TPoint2D w = weakestDirection(sxx, sxy, syy);  // current frame
+    out.weakDirection = {c * w.x - s * w.y, s * w.x + c * w.y};
     return out;
 }
 
@@ -87,6 +100,7 @@ TransformEstimate rigidTransformFromLines(const std::vector<LinePair>& pairs) {
         b2 += w * (ny * across + kAlong * uy * along);
     }
     out.conditioning = conditioning(n11, n12, n22);
+    out.weakDirection = weakestDirection(n11, n12, n22);
     if (out.conditioning > 1e-9) {  // the lines alone fix t: no midpoint bias at all
         a11 = n11, a12 = n12, a22 = n22, b1 = bn1, b2 = bn2;
     }

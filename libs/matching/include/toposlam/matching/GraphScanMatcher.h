@@ -12,6 +12,7 @@
 //   6. RansacMatcher     transforms from pairs of matched segments (lines, not midpoints),
 //                        ranked by how many segments agree;
 //   7. PointToLineIcp    refinement of the best few on the points of their agreeing segments,
+//                        (AlongLineSearch where those are all parallel, e.g. a corridor),
 //                        then on all points against the reference scan's local lines;
 //   8. AlignmentScorer   free-space consistency of each refined pose against the whole
 //                        reference scan, and the decision below.
@@ -32,6 +33,7 @@
 #include <mrpt/poses/CPose2D.h>
 #include <toposlam/features/ScanFeatures.h>
 #include <toposlam/matching/AlignmentScorer.h>
+#include <toposlam/matching/AlongLineSearch.h>
 #include <toposlam/matching/AttributedGraph.h>
 #include <toposlam/matching/GreedyAssignment.h>
 #include <toposlam/matching/PointToLineIcp.h>
@@ -64,8 +66,12 @@ struct GraphMatcherOptions {
     RansacOptions ransac;
     IcpOptions icp;              ///< segment-mode ICP
     bool scanRefinement = true;  ///< polish with scan-mode ICP on all points
-    IcpOptions scanIcp{15, 0.20, 0.05, 1e-4, 1e-5, 1, 0.01};
+    IcpOptions scanIcp{15, 0.20, 0.05, 1e-4, 1e-5, 1, 0.01, 1e-4};
     AlignmentScoreOptions score;
+    /// Consensus lines this close to parallel (smallest / largest eigenvalue of their normal
+    /// matrix; 0.03 = all within ~10 deg) leave the position along them to AlongLineSearch.
+    double alongLineConditioning = 0.03;
+    AlongLineSearchOptions alongLine;
     std::size_t refineTop = 4;  ///< hypotheses refined by ICP and scored on points
     // Decision
     std::size_t minInliers = 30;
@@ -136,6 +142,8 @@ class GraphScanMatcher {
     /// The graphs of the last call (for visualisation and tests).
     const AttributedGraph& currentGraph() const { return current_; }
     const AttributedGraph& referenceGraph() const { return reference_; }
+    /// The RANSAC hypotheses of the last call, best supported first (diagnostics).
+    const std::vector<Hypothesis>& hypotheses() const { return ransac_.hypotheses(); }
 
   private:
     void buildCandidates(const std::optional<mrpt::poses::CPose2D>& guess);
@@ -146,9 +154,13 @@ class GraphScanMatcher {
         AlignmentScore score;
         double value = 0;
         std::size_t hypothesis = 0;
+        bool searchedAlongLine = false;
+        mrpt::poses::CPose2D lineBase;       // pose the along-line search started from
+        mrpt::math::TPoint2D lineDirection;  // and its direction
     };
-    Refined refine(const PolarScan& referenceScan, const PolarScan& currentScan,
-                   const Hypothesis& h);
+    /// Refines hypothesis `h` into `out`; false when it duplicates an earlier one.
+    bool refine(const PolarScan& referenceScan, const PolarScan& currentScan, const Hypothesis& h,
+                Refined& out);
 
     GraphMatcherOptions options_;
     AttributedGraph current_, reference_;

@@ -16,8 +16,10 @@
 //    accurate on cluttered real scans; it never runs from a pose the segments did not give.
 // Each iteration takes one Gauss-Newton step of the Cauchy-weighted least squares
 //     min_{x,y,phi} sum_p rho( n . (R(phi) p + t) - offset ),   rho: Cauchy, scale c,
-// dropping points farther than maxDistance from their line; it stops when a step moves the
-// pose by less than the tolerances, or after maxIterations.
+// dropping points farther than maxDistance from their line, and restricted to the directions
+// the data determine (eigenvalues of H above minEigenRatio x the largest; "degeneracy-aware"
+// solving), so a pose is never moved along a direction nothing constrains; it stops when a
+// step moves the pose by less than the tolerances, or after maxIterations.
 // Covariance: sigma^2 H^-1 with H = sum w J J' at the solution and sigma^2 the weighted
 // residual variance (at least minNoiseStd^2). When the lines do not fix the pose (all
 // parallel: a corridor), H is singular in that direction and the covariance says so.
@@ -46,6 +48,10 @@ struct IcpOptions {
     double rotationTolerance = 1e-5;     ///< rad
     std::size_t stride = 1;              ///< use every stride-th beam
     double minNoiseStd = 0.01;           ///< m; floor of sigma in the covariance
+    /// Steps are taken only along directions whose eigenvalue of H is at least this fraction
+    /// of the largest: nearly parallel lines fix nothing along themselves, and a plain
+    /// Gauss-Newton step there is noise amplified, sliding the pose down a corridor.
+    double minEigenRatio = 1e-2;
 };
 
 struct IcpResult {

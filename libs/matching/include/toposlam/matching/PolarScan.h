@@ -42,6 +42,10 @@ class PolarScan {
     /// Beam whose bearing is nearest to `bearing` (rad, any value), or -1 when `bearing`
     /// lies outside the field of view (more than half a step beyond the first/last beam).
     long beamAt(double bearing) const;
+    /// Beam whose bearing is nearest to the direction of the point (x, y) (sensor frame, m),
+    /// or -1 outside the field of view. Uses a fast arctangent (error < 1e-5 rad, far below
+    /// any beam step): this lookup runs for every point of every ICP iteration.
+    long beamAtPoint(double x, double y) const;
     /// Index `beam + offset`, wrapped on full-circle scans; -1 when out of range otherwise.
     long neighbour(long beam, long offset) const;
 

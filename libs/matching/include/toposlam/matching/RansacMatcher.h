@@ -13,9 +13,13 @@
 // result is reproducible and independent of the order of the segments; at most
 // maxHypotheses samples are evaluated.
 // Model. The transform through the two line pairs (RigidTransform2D fromLines: exact for
-// two non-parallel lines).
+// two non-parallel lines). After the pairs, the most probable single matches are tried too,
+// each anchored three ways along its line (midpoints, start points, end points): where all
+// long segments are parallel (a corridor) they are the only hypotheses, and the point-level
+// refinement and scoring decide whether the rest of the scan fixes the position.
 // Consensus. Under a transform, observed segment i agrees with reference segment a when
-// their directions differ by < consensusAngle, both transformed end points of i lie within
+// their directions differ by < consensusAngle (+ the short-segment slack), both transformed
+// end points of i lie within
 // consensusDistance of a's line and the two overlap along it (gaps < overlapMargin). The
 // support of a transform is the summed length of the observed segments that agree with some
 // reference segment; the third and further agreeing segments are what makes it the paper's
@@ -35,6 +39,8 @@ namespace toposlam::matching {
 
 struct RansacOptions {
     std::size_t maxHypotheses = 120;
+    /// Single-match hypotheses (after the pairs): the most probable matches, 3 each.
+    std::size_t maxSingleHypotheses = 12;
     std::size_t alternativesPerSegment = 3;  ///< reference candidates per observed segment
     /// Added to every probability in the sample weights, so that alternatives SPGM drove to
     /// 0 (it converges to one vertex, i.e. one of several look-alike matchings) are still
@@ -43,8 +49,11 @@ struct RansacOptions {
     double minSampleAngle = 0.35;        ///< rad; sampled segments at least this far from parallel
     double sampleAngleTolerance = 0.10;  ///< rad; relative angles of the pairs must agree
     double consensusAngle = 0.10;        ///< rad
-    double consensusDistance = 0.20;     ///< m
-    double overlapMargin = 0.50;         ///< m
+    /// rad x m: both angle tolerances grow by this over the shorter segment's length, as the
+    /// direction of a short segment is noisier (1 cm of noise on a 0.25 m wall is 2-5 deg).
+    double shortSegmentAngleSlack = 0.03;
+    double consensusDistance = 0.20;  ///< m
+    double overlapMargin = 0.50;      ///< m
     std::size_t maxKept = 6;
     double distinctTranslation = 0.30;  ///< m
     double distinctRotation = 0.15;     ///< rad
@@ -90,7 +99,7 @@ class RansacMatcher {
         double weight;
     };
     std::vector<ScoredAssignment> pool_;
-    std::vector<Sample> samples_;
+    std::vector<Sample> samples_, singles_;
     std::vector<LinePair> lines_;
     std::vector<Hypothesis> kept_;
     std::size_t evaluated_ = 0;

@@ -39,6 +39,8 @@ struct TransformEstimate {
     /// Smallest / largest eigenvalue of the translation's normal matrix: ~0 when the data
     /// fix the translation in one direction only (parallel lines, coincident points).
     double conditioning = 0;
+    /// Unit direction (reference frame) the data fix worst: for parallel lines, along them.
+    mrpt::math::TPoint2D weakDirection{1, 0};
 };
 
 TransformEstimate rigidTransformFromPoints(const std::vector<PointPair>& pairs);

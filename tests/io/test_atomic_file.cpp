@@ -48,3 +48,19 @@ TEST(AtomicFile, FailureKeepsPreviousVersion) {
     in >> s;
     EXPECT_EQ(s, "old");
 }
+
+TEST(AtomicFile, TemporaryOutputFileCommitsOrCleansUp) {
+    toposlam::test::TempDir dir;
+    {
+        toposlam::io::TemporaryOutputFile out(dir.file("log.rawlog.gz"));
+        EXPECT_NE(out.temporaryPath().find(".rawlog.gz"), std::string::npos);
+        std::ofstream(out.temporaryPath()) << "partial";
+    }  // no commit(): removed
+    EXPECT_TRUE(fs::is_empty(dir.path()));
+    toposlam::io::TemporaryOutputFile out(dir.file("log.rawlog"));
+    std::ofstream(out.temporaryPath()) << "complete";
+    out.commit();
+    EXPECT_TRUE(out.committed());
+    EXPECT_TRUE(fs::exists(dir.file("log.rawlog")));
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator{}), 1);
+}

@@ -3,7 +3,6 @@
 #include <unistd.h>
 
 #include <atomic>
-#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 #include <system_error>
@@ -23,29 +22,39 @@ std::string temporaryNameFor(const std::string& path) {
     const auto dot = name.find('.', 1);
     const std::string stem = name.substr(0, dot);
     const std::string ext = dot == std::string::npos ? "" : name.substr(dot);
-    const std::string tmp = stem + ".tmp-" + std::to_string(::getpid()) + "-" +
-                            std::to_string(counter++) + ext;
+    const std::string tmp =
+        stem + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ext;
     return (p.parent_path() / tmp).string();
 }
 
 }  // namespace
 
+TemporaryOutputFile::TemporaryOutputFile(std::string path)
+    : path_(std::move(path)), tmpPath_(temporaryNameFor(path_)) {}
+
+TemporaryOutputFile::~TemporaryOutputFile() {
+    if (committed_)
+        return;
+    std::error_code ignored;
+    fs::remove(tmpPath_, ignored);
+}
+
+void TemporaryOutputFile::commit() {
+    std::error_code ec;
+    fs::rename(tmpPath_, path_, ec);
+    if (ec) {
+        std::error_code ignored;
+        fs::remove(tmpPath_, ignored);
+        throw std::runtime_error(path_ + ": cannot write the output file (" + ec.message() + ")");
+    }
+    committed_ = true;
+}
+
 void writeFileAtomically(const std::string& path,
                          const std::function<void(const std::string& tmpPath)>& writeTo) {
-    const std::string tmp = temporaryNameFor(path);
-    try {
-        writeTo(tmp);
-    } catch (...) {
-        std::error_code ignored;
-        fs::remove(tmp, ignored);
-        throw;
-    }
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        throw std::runtime_error(path + ": cannot write the output file (" + ec.message() + ")");
-    }
+    TemporaryOutputFile out(path);
+    writeTo(out.temporaryPath());
+    out.commit();
 }
 
 }  // namespace toposlam::io

@@ -32,14 +32,17 @@ ProgressDisplay::ProgressDisplay(std::string what, std::string unit, bool enable
       lastDraw_(start_) {}
 
 ProgressDisplay::~ProgressDisplay() {
-    if (enabled_ && !finished_) std::fputc('\n', stderr);
+    if (enabled_ && !finished_)
+        std::fputc('\n', stderr);
 }
 
 void ProgressDisplay::update(double fraction, std::size_t itemsDone) {
     lastItems_ = itemsDone;
-    if (!enabled_) return;
+    if (!enabled_)
+        return;
     const auto now = std::chrono::steady_clock::now();
-    if (now - lastDraw_ < std::chrono::milliseconds(100)) return;
+    if (now - lastDraw_ < std::chrono::milliseconds(100))
+        return;
     lastDraw_ = now;
     const double elapsed = std::chrono::duration<double>(now - start_).count();
     fraction = std::clamp(fraction, 0.0, 1.0);
@@ -52,15 +55,16 @@ void ProgressDisplay::update(double fraction, std::size_t itemsDone) {
 }
 
 void ProgressDisplay::finish() {
-    if (finished_) return;
+    if (finished_)
+        return;
     finished_ = true;
-    if (!enabled_) return;
+    if (!enabled_)
+        return;
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     const double rate = elapsed > 0 ? static_cast<double>(lastItems_) / elapsed : 0.0;
     std::fprintf(stderr, "\r%s: done, %zu %s in %s (%.0f %s/s)            \n", what_.c_str(),
-                 lastItems_, unit_.c_str(), formatDuration(elapsed).c_str(), rate,
-                 unit_.c_str());
+                 lastItems_, unit_.c_str(), formatDuration(elapsed).c_str(), rate, unit_.c_str());
 }
 
 }  // namespace toposlam::io

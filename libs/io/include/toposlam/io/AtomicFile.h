@@ -14,4 +14,27 @@ namespace toposlam::io {
 void writeFileAtomically(const std::string& path,
                          const std::function<void(const std::string& tmpPath)>& writeTo);
 
+/// The same guarantee for output written incrementally (streams that stay open while a log
+/// is converted): write to temporaryPath(), then commit(). Destroyed without commit() (an
+/// exception, an early return), it removes the temporary file and leaves `path` untouched.
+class TemporaryOutputFile {
+  public:
+    explicit TemporaryOutputFile(std::string path);
+    ~TemporaryOutputFile();
+    TemporaryOutputFile(const TemporaryOutputFile&) = delete;
+    TemporaryOutputFile& operator=(const TemporaryOutputFile&) = delete;
+
+    /// Where to write: same directory and extension as the destination.
+    const std::string& temporaryPath() const { return tmpPath_; }
+    const std::string& path() const { return path_; }
+    /// Renames the temporary file to path(). Throws std::runtime_error naming path() if the
+    /// rename fails (the temporary file is then removed).
+    void commit();
+    bool committed() const { return committed_; }
+
+  private:
+    std::string path_, tmpPath_;
+    bool committed_ = false;
+};
+
 }  // namespace toposlam::io

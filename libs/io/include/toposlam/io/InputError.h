@@ -8,7 +8,7 @@
 namespace toposlam::io {
 
 class InputError : public std::runtime_error {
-public:
+  public:
     /// `file`: the offending path; `problem`: what is wrong, e.g. "line 12: FLASER has 183
     /// fields, expected 188". what() is "<file>: <problem>".
     InputError(const std::string& file, const std::string& problem);
@@ -16,7 +16,7 @@ public:
     const std::string& file() const { return file_; }
     const std::string& problem() const { return problem_; }
 
-private:
+  private:
     std::string file_;
     std::string problem_;
 };

@@ -1,18 +1,59 @@
 #pragma once
 // One reader for every laser + odometry log TopoSLAM accepts, yielding a uniform stream of
-// (odometry, CObservation2DRangeScan) records:
+// (odometry, CObservation2DRangeScan) records in file order:
 //  - MRPT rawlogs in both formats (actions/sensory frames, observations only), plain or gz;
-//  - CARMEN logs: old FLASER/RLASER (no FOV field), ROBOTLASER1, PARAM; ODOM lines are read but
-//    odometry comes from the pose stored in each laser line, as MRPT's importer does.
-// Unlike MRPT 2.5.8's own CARMEN import it keeps exact per-scan timestamps, the right aperture
-// (180 beams span 180 deg; 360/361 beams span 180 deg), max range / invalid readings and the
-// laser's offset from the robot; and a rawlog stream that stops at an unregistered class is an
-// error, not a silent truncation.
+//  - CARMEN logs (plain or gz): FLASER/RLASER (old format, no FOV field), ROBOTLASER1/2,
+//    PARAM; ODOM lines are checked but odometry comes from the robot pose stored in each
+//    laser line, as MRPT's importer and CARMEN's own tools do.
+// The format is detected from the content: text is CARMEN, binary is a rawlog.
+//
+// CARMEN, what MRPT 2.5.8's importer (carmen2rawlog) gets wrong and this reader gets right:
+//  - Timestamps: scan->timestamp is the real acquisition time, strictly increasing; stamps
+//    that old loggers printed without zero padding are recovered (CarmenTimestamps.h).
+//    fileStamp keeps the ipc_timestamp exactly as printed (relation files refer to it).
+//    (MRPT gives every scan the same time.)
+//  - Beam directions, following CARMEN's readlog.c: old-format lines start at -90 deg with
+//    1 deg steps for 180/181 readings, 0.5 deg for 360/361, 0.25 deg for 400/401 (PARAM
+//    laser_front_laser_resolution, in degrees, overrides); so 180 readings span -90..+89 deg,
+//    360 span -90..+89.5, 361 span -90..+90. Layouts that do not cover ~180 deg are centred.
+//    ROBOTLASER lines: reading i points at start_angle + i * angular_resolution.
+//    MRPT represents a scan as `aperture` = angle from the first to the last beam,
+//    symmetric about the sensor's x axis; an asymmetric layout is represented exactly as
+//    aperture = (n-1) * step plus a yaw in sensorPose: for 180 readings aperture = 179 deg
+//    and sensor yaw -0.5 deg, so getScanAngle(i) + yaw = -90 + i deg. (MRPT: 90 deg.)
+//  - Max range and invalid readings: maximum range from ROBOTLASER's field, else PARAM
+//    robot_front_laser_max / robot_rear_laser_max, else LaserLogOptions (81 m: intel's
+//    no-return value is 81.83, mit-csail's and fr079's 81.91). A reading >= the maximum range
+//    or == 0 is kept with validity 0. A NaN, infinite or negative reading is corrupt input
+//    (InputError with the line number), not an invalid beam.
+//  - Laser pose on the robot: the laser pose relative to the robot pose stated in the line
+//    (FLASER x y theta vs odom_x odom_y odom_theta; ROBOTLASER laser vs robot pose, e.g.
+//    0.22 m forward). Where the line states none (both poses equal, as in raw FLASER logs) or
+//    an implausible one (> 1 m: a corrected pose estimate, not a mounting offset), PARAM
+//    robot_frontlaser_offset / _side_offset / _angular_offset (m, m, rad; rear lasers:
+//    robot_rearlaser_*, facing backwards) apply; LaserLogOptions can override it.
+//  - Wrong field counts, non-numeric fields: InputError naming the line.
+//
+// Rawlogs:
+//  - Read object by object: a clean end of file ends the stream; a truncated or corrupt
+//    object, damaged gzip data, or an object of a class not registered with MRPT (MRPT's
+//    readers stop there silently) is an InputError naming the object index (0-based, as
+//    RawLogViewer counts) and the class.
+//  - Actions/sensory-frame format: odometry is the composition, from (0,0,0), of the
+//    CActionRobotMovement2D increments read before the scan (the odometry change of each
+//    action; MRPT's own tools integrate them the same way).
+//  - Observations format: odometry at the scan's time is interpolated linearly (in the
+//    earlier sample's frame) between the bracketing CObservationOdometry samples; at or
+//    after the last sample that sample is held; before the first one hasOdometry is false.
+//  - fileStamp is the scan's own timestamp (Unix seconds); scan->timestamp is the same,
+//    except that non-increasing times are moved 1 us after their predecessor.
+#include <mrpt/math/TPose2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,10 +65,14 @@ enum class LaserLogFormat { RawlogSensoryFrames, RawlogObservations, Carmen };
 const char* toString(LaserLogFormat f);
 
 struct LaserLogOptions {
-    /// Keep only scans with this sensor label (empty: every CObservation2DRangeScan).
+    /// Keep only scans with this sensor label (empty: every CObservation2DRangeScan). CARMEN
+    /// scans are labelled with their message name: FLASER, RLASER, ROBOTLASER1, ROBOTLASER2.
     std::string scanLabel;
     /// CARMEN: max range (m) when no PARAM line gives one; readings >= it are invalid.
     float carmenDefaultMaxRange = 81.0f;
+    /// CARMEN: the laser's pose on the robot (x, y in m, phi in rad), replacing whatever the
+    /// log states.
+    std::optional<mrpt::math::TPose2D> laserPoseOnRobot;
 };
 
 /// One laser scan and the robot's wheel odometry at the same instant.
@@ -44,14 +89,14 @@ struct LaserLogRecord {
     mrpt::obs::CObservation2DRangeScan::Ptr scan;
     /// Cumulative odometry of the robot (odometry frame, m, rad) at the scan's time.
     mrpt::poses::CPose2D odometry;
-    /// False when the log has no odometry before this scan (odometry is then 0,0,0).
+    /// False when the log has no odometry for this scan (odometry is then 0,0,0).
     bool hasOdometry = false;
 };
 
 class LaserLogReader {
-public:
+  public:
     /// Opens `path` and detects its format from the content (not the file name).
-    /// Throws InputError when the file is missing, unreadable, or of no known format.
+    /// Throws InputError when the file is missing, unreadable, empty, or of no known format.
     explicit LaserLogReader(const std::string& path, const LaserLogOptions& options = {});
     ~LaserLogReader();
     LaserLogReader(const LaserLogReader&) = delete;
@@ -67,12 +112,15 @@ public:
     const std::string& path() const;
     /// Fraction of the file consumed so far, in [0,1] (for progress display).
     double fractionRead() const;
+    /// Scans so far whose scan->timestamp differs from their fileStamp by more than 1 us
+    /// (recovered CARMEN stamps, times made strictly increasing).
+    std::size_t adjustedTimestamps() const;
 
     /// Reads the whole log. Throws like next().
     static std::vector<LaserLogRecord> readAll(const std::string& path,
                                                const LaserLogOptions& options = {});
 
-private:
+  private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

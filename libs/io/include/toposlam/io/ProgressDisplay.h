@@ -8,7 +8,7 @@
 namespace toposlam::io {
 
 class ProgressDisplay {
-public:
+  public:
     /// `what`: short label ("reading intel.clf"); `unit`: plural item name ("scans").
     /// `enabled`: defaults to whether stderr is a terminal.
     ProgressDisplay(std::string what, std::string unit);
@@ -22,7 +22,7 @@ public:
 
     bool enabled() const { return enabled_; }
 
-private:
+  private:
     std::string what_, unit_;
     bool enabled_;
     bool finished_ = false;

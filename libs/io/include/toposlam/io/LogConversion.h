@@ -1,0 +1,44 @@
+#pragma once
+// A laser log (CARMEN or rawlog, any format LaserLogReader reads) converted into an MRPT
+// rawlog in either format and/or the odometry trajectory at each scan: what toposlam-convert
+// does with logs. All outputs are atomic and written only if the whole log reads cleanly.
+#include <toposlam/io/LaserLogReader.h>
+#include <toposlam/io/RawlogWriter.h>
+
+#include <cstddef>
+#include <functional>
+#include <string>
+
+namespace toposlam::io {
+
+struct LogConversionOptions {
+    LaserLogOptions read;
+    /// Output rawlog ("" = none); gzip-compressed if it ends in ".gz".
+    std::string rawlogPath;
+    RawlogFormat rawlogFormat = RawlogFormat::Observations;
+    /// Output trajectory ("" = none): the odometry at each scan as "fileStamp x y yaw"
+    /// (Trajectory.h). The stamps are the scans' fileStamps, so relation files match them.
+    /// Scans without odometry are left out.
+    std::string odometryTrajectoryPath;
+    /// Convert only the first this many scans (0 = all).
+    std::size_t maxScans = 0;
+    /// Called after each scan with (fraction of the input read, scans so far).
+    std::function<void(double, std::size_t)> progress;
+};
+
+struct LogConversionSummary {
+    LaserLogFormat inputFormat = LaserLogFormat::Carmen;
+    std::size_t scans = 0;
+    std::size_t scansWithoutOdometry = 0;
+    std::size_t beamsPerScan = 0;        ///< of the first scan
+    std::size_t adjustedTimestamps = 0;  ///< see LaserLogReader::adjustedTimestamps()
+    std::size_t rawlogObjects = 0;
+    double firstStamp = 0, lastStamp = 0;  ///< fileStamps, s
+};
+
+/// Throws InputError for bad input, including a log without any (matching) laser scan, and
+/// std::runtime_error when an output cannot be written; no output file is left then.
+LogConversionSummary convertLaserLog(const std::string& inputPath,
+                                     const LogConversionOptions& options);
+
+}  // namespace toposlam::io

@@ -1,0 +1,109 @@
+#include <mrpt/core/Clock.h>
+#include <toposlam/io/InputError.h>
+#include <toposlam/io/LaserLogReader.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "CarmenScanSource.h"
+#include "GzipInputStream.h"
+#include "RawlogScanSource.h"
+
+namespace toposlam::io {
+
+namespace {
+
+// CARMEN logs are text; rawlogs are binary (every object starts with a byte >= 0x80, or
+// with a NUL-padded header in pre-2007 files). Look at the first decompressed bytes.
+bool looksLikeText(const std::string& path) {
+    GzipInputStream in(path);
+    unsigned char head[512];
+    const std::size_t n = in.Read(head, sizeof head);
+    if (n == 0)
+        throw InputError(path, "file is empty");
+    for (std::size_t i = 0; i < n; ++i) {
+        const unsigned char c = head[i];
+        if (!(c == '\n' || c == '\r' || c == '\t' || (c >= 0x20 && c < 0x7f)))
+            return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+const char* toString(LaserLogFormat f) {
+    switch (f) {
+        case LaserLogFormat::RawlogSensoryFrames:
+            return "rawlog (actions/sensory frames)";
+        case LaserLogFormat::RawlogObservations:
+            return "rawlog (observations)";
+        case LaserLogFormat::Carmen:
+            return "CARMEN";
+    }
+    return "?";
+}
+
+struct LaserLogReader::Impl {
+    std::string path;
+    std::unique_ptr<ScanSource> source;
+    std::size_t count = 0;
+    std::size_t adjusted = 0;
+    double lastTime = -INFINITY;
+};
+
+LaserLogReader::LaserLogReader(const std::string& path, const LaserLogOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+    impl_->path = path;
+    if (looksLikeText(path)) {
+        impl_->source = std::make_unique<CarmenScanSource>(path, options);
+    } else {
+        impl_->source = std::make_unique<RawlogScanSource>(path, options);
+    }
+}
+
+LaserLogReader::~LaserLogReader() = default;
+
+bool LaserLogReader::next(LaserLogRecord& out) {
+    if (!impl_->source->next(out))
+        return false;
+    out.index = impl_->count++;
+    // Strictly increasing acquisition times (CARMEN times are already repaired).
+    double t = mrpt::Clock::toDouble(out.scan->timestamp);
+    if (!(t > impl_->lastTime)) {
+        t = impl_->lastTime + 1e-6;
+        out.scan->timestamp = mrpt::Clock::fromDouble(t);
+    }
+    impl_->lastTime = t;
+    if (std::abs(t - out.fileStamp) > 1e-6)
+        ++impl_->adjusted;
+    return true;
+}
+
+LaserLogFormat LaserLogReader::format() const {
+    return impl_->source->format();
+}
+
+const std::string& LaserLogReader::path() const {
+    return impl_->path;
+}
+
+double LaserLogReader::fractionRead() const {
+    return impl_->source->fractionRead();
+}
+
+std::size_t LaserLogReader::adjustedTimestamps() const {
+    return impl_->adjusted;
+}
+
+std::vector<LaserLogRecord> LaserLogReader::readAll(const std::string& path,
+                                                    const LaserLogOptions& options) {
+    LaserLogReader reader(path, options);
+    std::vector<LaserLogRecord> records;
+    LaserLogRecord record;
+    while (reader.next(record))
+        records.push_back(std::move(record));
+    return records;
+}
+
+}  // namespace toposlam::io

@@ -1,0 +1,177 @@
+#include "RawlogScanSource.h"
+
+#include <mrpt/core/Clock.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <toposlam/io/InputError.h>
+
+#include <regex>
+
+#include "MrptErrorText.h"
+
+namespace toposlam::io {
+
+namespace {
+
+// Observations format: a scan waits for an odometry sample at or after its time so that
+// odometry can be interpolated; after this many waiting scans the last earlier sample is
+// used instead (a log whose odometry stops).
+constexpr std::size_t kMaxScansAwaitingOdometry = 100;
+
+// A quoted C++ class name after `prefix` in an MRPT error message, or "".
+std::string quotedClassAfter(const std::string& text, const std::string& prefix) {
+    const std::regex pattern(prefix + "'([A-Za-z_][A-Za-z0-9_:]*)'");
+    std::smatch match;
+    return std::regex_search(text, match, pattern) ? match[1].str() : std::string();
+}
+
+}  // namespace
+
+RawlogScanSource::RawlogScanSource(const std::string& path, const LaserLogOptions& options)
+    : path_(path), options_(options), in_(path), archive_(in_) {
+    firstObject_ = readObject();
+    if (!firstObject_)
+        throw InputError(path, "empty rawlog (no objects)");
+    using namespace mrpt::obs;
+    if (std::dynamic_pointer_cast<CActionCollection>(firstObject_) ||
+        std::dynamic_pointer_cast<CSensoryFrame>(firstObject_)) {
+        format_ = LaserLogFormat::RawlogSensoryFrames;
+    }
+}
+
+mrpt::serialization::CSerializable::Ptr RawlogScanSource::readObject() {
+    const std::size_t index = objectsRead_;  // 0-based, as RawLogViewer numbers them
+    const auto where = [&] {
+        return "object #" + std::to_string(index) +
+               (lastClass_.empty() ? std::string() : " (after a " + lastClass_ + ")");
+    };
+    try {
+        auto object = archive_.ReadObject();
+        ++objectsRead_;
+        lastClass_ = object ? object->GetRuntimeClass()->className : "nullptr";
+        return object;
+    } catch (const mrpt::serialization::CExceptionEOF&) {
+        // No byte left where an object would start: the regular end, unless the gzip data
+        // stopped early.
+        if (const std::string damage = in_.streamError(); !damage.empty()) {
+            throw InputError(path_, where() + ": truncated or corrupt gzip data (" + damage + ")");
+        }
+        return nullptr;
+    } catch (const std::exception& e) {
+        const std::string what = e.what();
+        const std::string unregistered = quotedClassAfter(what, "Stored object has class ");
+        if (!unregistered.empty()) {
+            throw InputError(path_, where() + ": class '" + unregistered +
+                                        "' is not registered with MRPT (it is defined by a "
+                                        "library or plugin this program does not load); the "
+                                        "rest of the rawlog cannot be read");
+        }
+        const std::string damage = in_.streamError();
+        const std::string cause = damage.empty() ? mrptErrorSummary(e) : damage;
+        if (index == 0) {
+            throw InputError(path_,
+                             "neither a CARMEN log nor an MRPT rawlog (cannot read the "
+                             "first object: " +
+                                 cause + ")");
+        }
+        const std::string cls = quotedClassAfter(what, "parsing typed object ");
+        throw InputError(path_, where() + (cls.empty() ? "" : ", a " + cls) +
+                                    ": truncated or corrupt data (" + cause + ")");
+    }
+}
+
+void RawlogScanSource::addScan(const mrpt::obs::CObservation2DRangeScan::Ptr& scan) {
+    if (!options_.scanLabel.empty() && scan->sensorLabel != options_.scanLabel)
+        return;
+    pending_.push_back({scan, accumulatedActions_});
+}
+
+void RawlogScanSource::consume(const mrpt::serialization::CSerializable::Ptr& object) {
+    using namespace mrpt::obs;
+    if (!object)
+        return;
+    if (const auto actions = std::dynamic_pointer_cast<CActionCollection>(object)) {
+        // SF format: odometry is the composition of the robot-movement increments.
+        const auto movement = actions->getBestMovementEstimation();
+        if (!movement)
+            return;
+        const mrpt::poses::CPose2D increment =
+            movement->estimationMethod == CActionRobotMovement2D::emOdometry
+                ? movement->rawOdometryIncrementReading
+                : movement->poseChange->getMeanVal();
+        accumulatedActions_ = accumulatedActions_ ? *accumulatedActions_ + increment : increment;
+    } else if (const auto frame = std::dynamic_pointer_cast<CSensoryFrame>(object)) {
+        for (const auto& observation : *frame) {
+            if (auto scan = std::dynamic_pointer_cast<CObservation2DRangeScan>(observation)) {
+                addScan(scan);
+            }
+        }
+    } else if (auto scan = std::dynamic_pointer_cast<CObservation2DRangeScan>(object)) {
+        addScan(scan);
+    } else if (const auto odometry = std::dynamic_pointer_cast<CObservationOdometry>(object)) {
+        if (format_ == LaserLogFormat::RawlogObservations) {
+            odometry_.push_back({mrpt::Clock::toDouble(odometry->timestamp), odometry->odometry});
+        }
+    }
+    // Any other object (images, IMU, features, ...) is not part of the laser stream.
+}
+
+bool RawlogScanSource::readyToEmit() const {
+    if (pending_.empty())
+        return false;
+    if (end_ || format_ == LaserLogFormat::RawlogSensoryFrames)
+        return true;
+    if (pending_.size() > kMaxScansAwaitingOdometry)
+        return true;
+    const double t = mrpt::Clock::toDouble(pending_.front().scan->timestamp);
+    return !odometry_.empty() && odometry_.back().time >= t;
+}
+
+std::optional<mrpt::poses::CPose2D> RawlogScanSource::odometryAt(double time) {
+    // Keep only the last sample at or before `time` and everything after it.
+    while (odometry_.size() >= 2 && odometry_[1].time <= time)
+        odometry_.pop_front();
+    if (odometry_.empty() || odometry_.front().time > time)
+        return std::nullopt;
+    const OdometrySample& a = odometry_.front();
+    if (odometry_.size() == 1 || a.time == time)
+        return a.pose;
+    // Linear interpolation of the motion between the bracketing samples, in a's frame.
+    const OdometrySample& b = odometry_[1];
+    const double s = (time - a.time) / (b.time - a.time);
+    const mrpt::poses::CPose2D motion = b.pose - a.pose;
+    return a.pose + mrpt::poses::CPose2D(s * motion.x(), s * motion.y(), s * motion.phi());
+}
+
+void RawlogScanSource::emit(LaserLogRecord& out) {
+    PendingScan p = std::move(pending_.front());
+    pending_.pop_front();
+    out.fileStamp = mrpt::Clock::toDouble(p.scan->timestamp);
+    std::optional<mrpt::poses::CPose2D> odometry =
+        format_ == LaserLogFormat::RawlogSensoryFrames ? p.odometry : odometryAt(out.fileStamp);
+    out.hasOdometry = odometry.has_value();
+    out.odometry = odometry.value_or(mrpt::poses::CPose2D());
+    out.scan = std::move(p.scan);
+}
+
+bool RawlogScanSource::next(LaserLogRecord& out) {
+    if (firstObject_)
+        consume(std::move(firstObject_));
+    firstObject_.reset();
+    while (!readyToEmit()) {
+        if (end_)
+            return false;
+        const auto object = readObject();
+        if (object) {
+            consume(object);
+        } else {
+            end_ = true;
+        }
+    }
+    emit(out);
+    return true;
+}
+
+}  // namespace toposlam::io

@@ -1,0 +1,34 @@
+#pragma once
+// Incremental laser SLAM front end on MRPT's CMetricMapBuilderICP (the engine of MRPT's
+// icp-slam): every scan is aligned by ICP against the map accumulated so far, starting from
+// the odometry prediction, and inserted as a keyframe when the robot moved far enough.
+// Configured with the same .ini keys as icp-slam ([MappingApplication] and [ICP]), so
+// existing icp-slam configurations work unchanged.
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/slam/CMetricMapBuilderICP.h>
+#include <toposlam/io/LaserLogReader.h>
+
+#include <string>
+
+namespace toposlam::mapping {
+
+class IcpSlam {
+  public:
+    /// Reads CMetricMapBuilderICP::TConfigParams (incl. the map definitions) from
+    /// `mappingSection` and CICP::TConfigParams from `icpSection` of `ini`.
+    explicit IcpSlam(const mrpt::config::CConfigFileBase& ini,
+                     const std::string& mappingSection = "MappingApplication",
+                     const std::string& icpSection = "ICP");
+
+    /// Feeds one scan with its odometry; returns the robot pose estimate at the scan
+    /// (map frame = the odometry frame at the first scan; m, rad).
+    mrpt::poses::CPose2D process(const io::LaserLogRecord& record);
+
+    const mrpt::slam::CMetricMapBuilderICP& builder() const { return builder_; }
+
+  private:
+    mrpt::slam::CMetricMapBuilderICP builder_;
+};
+
+}  // namespace toposlam::mapping

@@ -1,0 +1,29 @@
+#pragma once
+// SLAM over a whole laser log: read every scan (any format io::LaserLogReader accepts), track
+// it with the front end, and produce the trajectory and the occupancy grid.
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <toposlam/io/Trajectory.h>
+
+#include <cstddef>
+#include <string>
+
+namespace toposlam::mapping {
+
+struct MappingResult {
+    /// Robot pose at every scan: stamp = the scan's fileStamp (as in the log, so relation
+    /// files match), pose in the map frame (m, rad).
+    io::Trajectory2D trajectory;
+    mrpt::maps::COccupancyGridMap2D grid;
+    std::size_t scans = 0;
+    double logDuration = 0;  ///< s, last minus first scan time
+    double wallSeconds = 0;  ///< s spent mapping (reading included)
+};
+
+/// Runs SLAM on `logPath` with the settings in `ini`: sections [MappingApplication] and
+/// [ICP] (icp-slam's keys, see IcpSlam) and [OccupancyGrid] (OccupancyGridOptions).
+/// Shows progress on a terminal. Throws io::InputError for unreadable or malformed logs,
+/// and for a log without scans.
+MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFileBase& ini);
+
+}  // namespace toposlam::mapping

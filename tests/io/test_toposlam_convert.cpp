@@ -1,0 +1,272 @@
+// toposlam-convert end to end: logs to rawlogs (both formats) and odometry trajectories, grid
+// map conversions, bad input (message, exit code, no partial output), and MRPT's own tools
+// (rawlog-edit, icp-slam) on the converted mit-csail log.
+#include <gtest/gtest.h>
+#include <toposlam/io/GridMapIO.h>
+#include <toposlam/io/LaserLogReader.h>
+#include <toposlam/io/Trajectory.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "TestSupport.h"
+
+namespace fs = std::filesystem;
+using toposlam::test::runApp;
+using toposlam::test::runCommand;
+using toposlam::test::TempDir;
+
+namespace {
+
+void writeText(const std::string& path, const std::string& text) {
+    std::ofstream(path) << text;
+}
+
+std::string readText(const std::string& path) {
+    std::ifstream in(path);
+    return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
+// A CARMEN log of `n` FLASER lines (181 readings) with a robot moving along x, one scan every
+// 0.07 s from 9.9 s; scan 2 (10.04 s) is printed as old loggers did, with unpadded
+// microseconds: "10.40000", a step backwards before 10.11.
+std::string carmenLog(std::size_t n) {
+    std::ostringstream s;
+    s << "# test log\nPARAM robot_front_laser_max 30.0 nohost 0\n";
+    for (std::size_t i = 0; i < n; ++i) {
+        const double x = 0.1 * static_cast<double>(i);
+        const std::string stamp =
+            i == 2 ? "10.40000" : std::to_string(9.9 + 0.07 * static_cast<double>(i));
+        s << "ODOM " << x << " 0 0 0.1 0 0 " << stamp << " nohost " << stamp << "\n";
+        s << "FLASER 181";
+        for (int b = 0; b < 181; ++b)
+            s << ' ' << (b == 90 ? 35.0 : 2.0 + 0.01 * b);
+        s << ' ' << x << " 0 0 " << x << " 0 0 " << stamp << " nohost " << stamp << "\n";
+    }
+    return s.str();
+}
+
+// Lines of a text file.
+std::size_t lineCount(const std::string& path) {
+    std::ifstream in(path);
+    std::size_t n = 0;
+    for (std::string line; std::getline(in, line);)
+        ++n;
+    return n;
+}
+
+bool haveTool(const std::string& tool) {
+    return runCommand("command -v " + tool + " >/dev/null").exitCode == 0;
+}
+
+}  // namespace
+
+TEST(ToposlamConvert, CarmenToRawlogInBothFormats) {
+    TempDir dir;
+    writeText(dir.file("log.clf"), carmenLog(5));
+    for (const std::string format : {"obs", "sf"}) {
+        const std::string out = dir.file("log_" + format + ".rawlog.gz");
+        const auto r =
+            runApp("toposlam-convert", dir.file("log.clf") + " -o " + out + " --format " + format);
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        EXPECT_NE(r.output.find("5 scans of 181 readings"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("10 objects"), std::string::npos) << r.output;
+        toposlam::io::LaserLogReader reader(out);
+        EXPECT_EQ(reader.format(), format == "sf"
+                                       ? toposlam::io::LaserLogFormat::RawlogSensoryFrames
+                                       : toposlam::io::LaserLogFormat::RawlogObservations);
+        toposlam::io::LaserLogRecord rec;
+        std::size_t n = 0;
+        while (reader.next(rec)) {
+            EXPECT_EQ(rec.scan->maxRange, 30.0f);
+            EXPECT_FALSE(rec.scan->getScanRangeValidity(90)) << "35 m >= PARAM max range";
+            EXPECT_NEAR(rec.odometry.x(), 0.1 * static_cast<double>(n), 1e-9);
+            ++n;
+        }
+        EXPECT_EQ(n, 5u);
+    }
+}
+
+TEST(ToposlamConvert, OdometryTrajectoryUsesPrintedStamps) {
+    TempDir dir;
+    writeText(dir.file("log.clf"), carmenLog(4));
+    const auto r = runApp("toposlam-convert",
+                          dir.file("log.clf") + " --odometry-trajectory " + dir.file("odo.txt"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("1 timestamps repaired"), std::string::npos) << r.output;
+    const auto t = toposlam::io::loadTrajectory(dir.file("odo.txt"));
+    ASSERT_EQ(t.size(), 4u);
+    EXPECT_EQ(t[2].stamp, 10.4) << "the stamp as printed, not the repaired time";
+    EXPECT_EQ(t[3].pose.x, 0.3);
+    const std::string text = readText(dir.file("odo.txt"));
+    EXPECT_NE(text.find("\n10.4 0.2 0 0\n"), std::string::npos) << text;
+}
+
+TEST(ToposlamConvert, BadLogsFailCleanly) {
+    TempDir dir;
+    // Missing input.
+    auto r = runApp("toposlam-convert", dir.file("none.clf") + " -o " + dir.file("out.rawlog"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("error: " + dir.file("none.clf") + ": file not found"),
+              std::string::npos)
+        << r.output;
+
+    // A NaN reading on line 7: no rawlog, no trajectory.
+    std::string log = carmenLog(4);
+    const auto pos = log.find(" 2.01 ", log.rfind("FLASER"));
+    log.replace(pos, 6, " nan ");
+    writeText(dir.file("nan.clf"), log);
+    r = runApp("toposlam-convert", dir.file("nan.clf") + " -o " + dir.file("out.rawlog") +
+                                       " --odometry-trajectory " + dir.file("odo.txt"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("nan.clf: line 10: reading 1 is nan"), std::string::npos) << r.output;
+
+    // Wrong field count.
+    writeText(dir.file("short.clf"), "FLASER 3 1 2 0 0 0 0 0 0 1.0 nohost 1.0\n");
+    r = runApp("toposlam-convert", dir.file("short.clf") + " -o " + dir.file("out.rawlog"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("line 1: FLASER has 13 fields, expected 14"), std::string::npos)
+        << r.output;
+
+    // A truncated rawlog.
+    writeText(dir.file("ok.clf"), carmenLog(20));
+    ASSERT_EQ(
+        runApp("toposlam-convert", dir.file("ok.clf") + " -q -o " + dir.file("ok.rawlog")).exitCode,
+        0);
+    std::string bytes = readText(dir.file("ok.rawlog"));
+    fs::remove(dir.file("ok.rawlog"));
+    // All records have the same size: cut inside one (a cut exactly between two objects
+    // cannot be told from the end of a plain rawlog).
+    std::ofstream(dir.file("cut.rawlog"), std::ios::binary)
+        << bytes.substr(0, bytes.size() / 2 + 100);
+    r = runApp("toposlam-convert", dir.file("cut.rawlog") + " -o " + dir.file("out.rawlog.gz"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("cut.rawlog: object #"), std::string::npos) << r.output;
+
+    // No scan with the requested label.
+    r = runApp("toposlam-convert",
+               dir.file("ok.clf") + " --label RLASER -o " + dir.file("out.rawlog"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("no laser scans labelled 'RLASER'"), std::string::npos) << r.output;
+
+    // Bad options.
+    r = runApp("toposlam-convert", dir.file("ok.clf") + " --format xyz -o " + dir.file("o.rawlog"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("error: "), std::string::npos) << r.output;
+    r = runApp("toposlam-convert", dir.file("ok.clf"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("nothing to do"), std::string::npos) << r.output;
+    r = runApp("toposlam-convert",
+               dir.file("ok.clf") + " --laser-offset 1,2 -o " + dir.file("o.rawlog"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("--laser-offset"), std::string::npos) << r.output;
+
+    for (const auto& e : fs::directory_iterator(dir.path())) {
+        const std::string name = e.path().filename().string();
+        EXPECT_TRUE(name.find(".clf") != std::string::npos || name == "cut.rawlog")
+            << "left behind: " << name;
+    }
+}
+
+TEST(ToposlamConvert, GridMapsBetweenFormats) {
+    TempDir dir;
+    mrpt::maps::COccupancyGridMap2D g(-2.0f, 3.0f, -1.0f, 1.5f, 0.1f);
+    g.fill(0.95f);
+    for (int cx = 0; cx < static_cast<int>(g.getSizeX()); ++cx)
+        g.setCell(cx, 0, 0.05f);
+    toposlam::io::saveGridMap(g, dir.file("a.gridmap.gz"));
+
+    auto r = runApp("toposlam-convert", dir.file("a.gridmap.gz") + " -o " + dir.file("b.yaml"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("50 x 25 cells"), std::string::npos) << r.output;
+    r = runApp("toposlam-convert", dir.file("b.yaml") + " -o " + dir.file("c.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    r = runApp("toposlam-convert", dir.file("c.png") + " -o " + dir.file("d.gridmap"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto d = toposlam::io::loadGridMap(dir.file("d.gridmap"));
+    EXPECT_EQ(d.getSizeX(), 50u);
+    EXPECT_EQ(d.getXMin(), -2.0f);
+    EXPECT_EQ(d.getYMin(), -1.0f);
+    EXPECT_LT(d.getCell(10, 0), 0.1f);
+    EXPECT_GT(d.getCell(10, 1), 0.9f);
+
+    // A bare image placed by the options.
+    fs::remove(dir.file("c.yaml"));
+    r = runApp("toposlam-convert",
+               dir.file("c.png") + " --resolution 0.2 --origin 5,-5 -o " + dir.file("e.gridmap"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto e = toposlam::io::loadGridMap(dir.file("e.gridmap"));
+    EXPECT_EQ(e.getResolution(), 0.2f);
+    EXPECT_EQ(e.getXMin(), 5.0f);
+    EXPECT_EQ(e.getYMax(), 0.0f);
+}
+
+TEST(ToposlamConvert, BadMapsFailCleanly) {
+    TempDir dir;
+    mrpt::maps::COccupancyGridMap2D walls(0, 1, 0, 1, 0.1f);
+    walls.fill(0.0f);
+    toposlam::io::saveGridMap(walls, dir.file("walls.gridmap"));
+    auto r = runApp("toposlam-convert", dir.file("walls.gridmap") + " -o " + dir.file("w.png"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("error: " + dir.file("walls.gridmap") + ": map has no free cells"),
+              std::string::npos)
+        << r.output;
+    writeText(dir.file("broken.png"), "not an image");
+    r = runApp("toposlam-convert", dir.file("broken.png") + " -o " + dir.file("b.gridmap"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("broken.png: cannot read the image"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir.file("w.png")));
+    EXPECT_FALSE(fs::exists(dir.file("w.yaml")));
+    EXPECT_FALSE(fs::exists(dir.file("b.gridmap")));
+}
+
+// The converted mit-csail log with MRPT's own tools: rawlog-edit must count 2 x 1988 objects
+// and see every scan's and every odometry's timestamp distinct and increasing (an odometry
+// shares its scan's time); icp-slam must run and log one pose per rawlog entry. icp-slam runs
+// on the first 500 scans only (the full log takes ~40 s).
+TEST(ToposlamConvert, MitCsailWithMrptTools) {
+    TOPOSLAM_SHARED_DATA_OR_SKIP(clf, "slam/mit-csail.clf");
+    if (!haveTool("rawlog-edit") || !haveTool("icp-slam")) {
+        GTEST_SKIP() << "MRPT apps (package mrpt-apps) not installed";
+    }
+    TempDir dir;
+    auto r = runApp("toposlam-convert", clf + " -q -o " + dir.file("mit.rawlog"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+
+    r = runCommand("rawlog-edit -i " + dir.file("mit.rawlog") + " --info");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("Overall number of objects         : 3976"), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("Observations format               : Yes"), std::string::npos);
+
+    r = runCommand("rawlog-edit -i " + dir.file("mit.rawlog") +
+                   " --list-timestamps --text-file-output " + dir.file("stamps.txt"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::ifstream in(dir.file("stamps.txt"));
+    std::map<std::string, std::vector<double>> stampsByLabel;
+    double t = 0;
+    std::string label, cls;
+    while (in >> t >> label >> cls)
+        stampsByLabel[label].push_back(t);
+    ASSERT_EQ(stampsByLabel["FLASER"].size(), 1988u);
+    ASSERT_EQ(stampsByLabel["ODOMETRY"].size(), 1988u);
+    for (const auto& [name, stamps] : stampsByLabel) {
+        for (std::size_t i = 1; i < stamps.size(); ++i) {
+            ASSERT_GT(stamps[i], stamps[i - 1]) << name << " " << i;
+        }
+    }
+
+    r = runApp("toposlam-convert", clf + " -q --max-scans 500 -o " + dir.file("mit500.rawlog"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::string ini = readText(std::string(TOPOSLAM_CONFIG_DIR) + "/icp-slam-carmen.ini");
+    const std::string key = "logOutput_dir = icp-slam-out";
+    ASSERT_NE(ini.find(key), std::string::npos);
+    ini.replace(ini.find(key), key.size(), "logOutput_dir = " + dir.file("icp"));
+    writeText(dir.file("icp.ini"), ini);
+    r = runCommand("cd " + dir.path() + " && icp-slam icp.ini mit500.rawlog");
+    ASSERT_EQ(r.exitCode, 0) << r.output.substr(r.output.size() > 2000 ? r.output.size() - 2000
+                                                                       : 0);
+    EXPECT_EQ(lineCount(dir.file("icp/log_estimated_path.txt")), 1000u);
+}

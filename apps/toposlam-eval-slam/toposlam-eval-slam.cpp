@@ -1,0 +1,263 @@
+// toposlam-eval-slam: scores SLAM trajectories with the relation metric of Kümmerle et al. 2009
+// (benchmark B3), against a .relations file or a ground-truth trajectory, several methods side
+// by side in one table, optionally as JSON and as a picture.
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <toposlam/evaluation/GroundTruthRelations.h>
+#include <toposlam/evaluation/IcpSlamPath.h>
+#include <toposlam/evaluation/LogOdometry.h>
+#include <toposlam/evaluation/RelationFile.h>
+#include <toposlam/evaluation/SlamEvaluation.h>
+#include <toposlam/io/InputError.h>
+#include <toposlam/io/Trajectory.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace toposlam;
+
+const char* const kDescription =
+    "Scores 2D SLAM trajectories with the relation-based metric of Kuemmerle et al. 2009 (\"On "
+    "measuring the accuracy of SLAM algorithms\"; TopoSLAM benchmark B3). For every relation "
+    "(t1, t2, delta_gt) the error is e = inv(delta_gt) (+) delta_est with delta_est = inv(x_t1) "
+    "(+) x_t2, x_t the trajectory's pose at stamp t. Printed per method: relations matched / "
+    "total, mean +- std (sample std) of |translation(e)| in m and |rotation(e)| in deg, the same "
+    "for the squared errors (m^2, deg^2), and the maxima. Relations whose stamps are not in a "
+    "trajectory (within --stamp-tolerance) are left out and counted as unmatched.\n"
+    "With --ground-truth, relations are derived from the true trajectory (every consecutive "
+    "pose pair + pairs separated by d, 2d, 4d ... metres of travelled path, d = "
+    "--gt-separation, start poses d/2 apart) and the absolute trajectory error after the best "
+    "rigid 2D alignment (ATE RMSE, max) is added.\n"
+    "Methods (table rows, in this order): --odometry-of (a log's raw odometry at each scan), "
+    "trajectory files (positional or --trajectory), --icp-slam-path. Trajectory files: one "
+    "pose per line 'timestamp x y yaw' (s, m, m, rad; '#' comments), the timestamps being the "
+    "scans' stamps as the log prints them. MRPT icp-slam's log_estimated_path.txt ('step x y "
+    "yaw', one line per rawlog entry, no stamps) needs --rawlog: the scans of the rawlog "
+    "icp-slam ran on give the lines their stamps, or, with --scan-stamps, the scans of the log "
+    "that rawlog was converted from.\n"
+    "Examples:\n"
+    "  toposlam-eval-slam --odometry-of intel.clf --relations intel.relations\n"
+    "  toposlam-eval-slam --odometry-of intel.clf --trajectory toposlam=slam.txt "
+    "--icp-slam-path icp-out/log_estimated_path.txt --rawlog intel.rawlog --scan-stamps "
+    "intel.clf --relations intel.relations --json intel-b3.json --plot intel-b3.png\n"
+    "  toposlam-eval-slam slam.txt --ground-truth office_gt.txt --json office.json\n"
+    "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input (missing or "
+    "malformed files, non-finite poses). Output files are written atomically, and only on "
+    "success.";
+
+enum class Kind { LogOdometry, TrajectoryFile, IcpSlamPath };
+
+struct Method {
+    Kind kind;
+    std::string name;
+    std::string file;
+};
+
+// "label=path" -> {label, path}; a plain path gets `defaultName` (or else the file's stem).
+Method parseMethod(Kind kind, const std::string& spec, const std::string& defaultName) {
+    const auto eq = spec.find('=');
+    if (eq != std::string::npos && eq > 0 && spec.substr(0, eq).find('/') == std::string::npos) {
+        return {kind, spec.substr(0, eq), spec.substr(eq + 1)};
+    }
+    return {kind, defaultName.empty() ? std::filesystem::path(spec).stem().string() : defaultName,
+            spec};
+}
+
+int run(int argc, char** argv) {
+    TCLAP::CmdLine cmd(kDescription, ' ', "0.1");
+    TCLAP::UnlabeledMultiArg<std::string> positional(
+        "trajectories",
+        "Trajectory file(s) 'timestamp x y yaw' to score; labelled by --name or by the file "
+        "name",
+        false, "trajectory.txt", cmd);
+    TCLAP::MultiArg<std::string> trajectories(
+        "", "trajectory",
+        "A trajectory file to score, labelled: [label=]file (repeatable; the label names the "
+        "table row, default: the file name without extension)",
+        false, "[label=]file", cmd);
+    TCLAP::MultiArg<std::string> odometryOf(
+        "", "odometry-of",
+        "Score the raw wheel odometry of this laser log (CARMEN .clf/.log or rawlog) at each "
+        "scan, stamped with the scans' file stamps: the odometry-only baseline. [label=]log, "
+        "default label 'odometry' (repeatable)",
+        false, "[label=]log", cmd);
+    TCLAP::MultiArg<std::string> icpSlamPaths(
+        "", "icp-slam-path",
+        "MRPT icp-slam's log_estimated_path.txt to score (needs --rawlog): [label=]file, "
+        "default label 'icp-slam' (repeatable, e.g. for several configurations on one rawlog)",
+        false, "[label=]file", cmd);
+    TCLAP::ValueArg<std::string> rawlog(
+        "", "rawlog",
+        "The rawlog icp-slam ran on: its scan entries give the --icp-slam-path lines their "
+        "stamps (MRPT timestamps as Unix seconds)",
+        false, "", "log.rawlog", cmd);
+    TCLAP::ValueArg<std::string> scanStamps(
+        "", "scan-stamps",
+        "The log --rawlog was converted from (e.g. the CARMEN .clf): the file stamps of its "
+        "scans, in order, replace the rawlog's scan stamps, one per scan. Needed where a "
+        "converter made the stamps increasing (intel), since relation files use the stamps as "
+        "printed",
+        false, "", "log", cmd);
+    TCLAP::ValueArg<std::string> name("", "name", "Label of the (single) positional trajectory",
+                                      false, "", "label", cmd);
+    TCLAP::ValueArg<std::string> relationsFile(
+        "", "relations",
+        "Ground-truth relations, Kuemmerle benchmark format 't1 t2 x y z roll pitch yaw'", true, "",
+        "file.relations");
+    TCLAP::ValueArg<std::string> groundTruthFile(
+        "", "ground-truth",
+        "Ground-truth trajectory 'timestamp x y yaw' (e.g. of a simulated log): relations are "
+        "derived from it, and the ATE is reported",
+        true, "", "gt.txt");
+    cmd.xorAdd(relationsFile, groundTruthFile);
+    TCLAP::ValueArg<double> separation(
+        "", "gt-separation",
+        "With --ground-truth: shortest path separation d (m) of the multi-scale relations (d, "
+        "2d, 4d, ... up to the path length); 0 keeps only consecutive pairs. Default 1 m",
+        false, 1.0, "metres", cmd);
+    TCLAP::ValueArg<double> tolerance(
+        "", "stamp-tolerance",
+        "Largest stamp difference (s) at which a relation or ground-truth stamp matches a "
+        "trajectory pose (nearest one wins). Default 1e-5 s",
+        false, evaluation::StampedPoseLookup::kDefaultTolerance, "seconds", cmd);
+    TCLAP::ValueArg<std::string> writeRelations(
+        "", "write-relations",
+        "Also write the relations used (with --ground-truth: the derived ones) in .relations "
+        "format, e.g. to score other tools against the same set",
+        false, "", "out.relations", cmd);
+    TCLAP::ValueArg<std::string> plot(
+        "", "plot",
+        "Also draw every trajectory into this PNG, rigidly aligned to the ground truth (drawn "
+        "too) or else to the method with the lowest mean translational error",
+        false, "", "out.png", cmd);
+    TCLAP::ValueArg<std::string> json(
+        "", "json", "Write the results as JSON to this file (keys: see the README)", false, "",
+        "out.json", cmd);
+    if (!cmd.parse(argc, argv)) {
+        // TCLAP printed the help, the version or a usage error: only the first two succeed.
+        const std::vector<std::string> args(argv + 1, argv + argc);
+        for (const char* done : {"-h", "--help", "--version"}) {
+            if (std::find(args.begin(), args.end(), done) != args.end())
+                return EXIT_SUCCESS;
+        }
+        return EXIT_FAILURE;
+    }
+
+    // Which trajectories, under which labels, in table order.
+    if (name.isSet() && positional.getValue().size() != 1) {
+        throw std::invalid_argument("--name labels a single positional trajectory");
+    }
+    std::vector<Method> methods;
+    for (const auto& spec : odometryOf.getValue()) {
+        methods.push_back(parseMethod(Kind::LogOdometry, spec, "odometry"));
+    }
+    for (const auto& file : positional.getValue()) {
+        methods.push_back(parseMethod(Kind::TrajectoryFile, file, name.getValue()));
+    }
+    for (const auto& spec : trajectories.getValue()) {
+        methods.push_back(parseMethod(Kind::TrajectoryFile, spec, ""));
+    }
+    for (const auto& spec : icpSlamPaths.getValue()) {
+        methods.push_back(parseMethod(Kind::IcpSlamPath, spec, "icp-slam"));
+    }
+    if (methods.empty()) {
+        throw std::invalid_argument(
+            "no trajectory to score (give a file, --trajectory, --odometry-of or "
+            "--icp-slam-path; see --help)");
+    }
+    if (!icpSlamPaths.getValue().empty() && !rawlog.isSet()) {
+        throw std::invalid_argument("--icp-slam-path needs --rawlog (the rawlog icp-slam ran on)");
+    }
+    if (scanStamps.isSet() && !rawlog.isSet()) {
+        throw std::invalid_argument("--scan-stamps replaces the stamps of --rawlog's scans");
+    }
+    if (!(tolerance.getValue() >= 0)) {
+        throw std::invalid_argument("--stamp-tolerance must be >= 0");
+    }
+
+    // The reference.
+    evaluation::SlamEvaluation ev;
+    ev.stampTolerance = tolerance.getValue();
+    evaluation::PoseRelations relations;
+    std::optional<io::Trajectory2D> groundTruth;
+    if (relationsFile.isSet()) {
+        ev.referenceFile = relationsFile.getValue();
+        relations = evaluation::loadRelations(ev.referenceFile);
+    } else {
+        ev.referenceFile = groundTruthFile.getValue();
+        ev.referenceIsGroundTruth = true;
+        groundTruth = io::loadTrajectory(ev.referenceFile);
+        ev.groundTruthPoses = groundTruth->size();
+        ev.groundTruthRelations.baseSeparation = separation.getValue();
+        relations = evaluation::relationsFromGroundTruth(*groundTruth, ev.groundTruthRelations);
+        if (relations.empty()) {
+            throw io::InputError(ev.referenceFile, "fewer than 2 poses: no relation to score");
+        }
+    }
+    ev.relationCount = relations.size();
+
+    // Every method, read and scored before anything is written.
+    std::optional<std::vector<double>> stamps;
+    if (scanStamps.isSet())
+        stamps = evaluation::scanFileStamps(scanStamps.getValue());
+    std::vector<io::Trajectory2D> estimates;  // kept for the plot only
+    for (const Method& m : methods) {
+        io::Trajectory2D estimate;
+        std::string source = m.file;
+        switch (m.kind) {
+            case Kind::LogOdometry:
+                estimate = evaluation::odometryAtScans(m.file);
+                source = "odometry of " + m.file;
+                break;
+            case Kind::TrajectoryFile:
+                estimate = io::loadTrajectory(m.file);
+                break;
+            case Kind::IcpSlamPath:
+                estimate = evaluation::loadIcpSlamPath(m.file, rawlog.getValue(),
+                                                       stamps ? &*stamps : nullptr);
+                source = m.file + " + " + rawlog.getValue();
+                break;
+        }
+        if (estimate.empty())
+            throw io::InputError(m.file, "no pose in the trajectory");
+        try {
+            ev.methods.push_back(evaluation::evaluateMethod(m.name, source, estimate, relations,
+                                                            groundTruth ? &*groundTruth : nullptr,
+                                                            ev.stampTolerance));
+        } catch (const std::invalid_argument& e) {
+            throw io::InputError(m.file, e.what());
+        }
+        if (plot.isSet())
+            estimates.push_back(std::move(estimate));
+    }
+
+    std::cout << evaluation::formatEvaluationTable(ev);
+    if (writeRelations.isSet())
+        evaluation::saveRelations(relations, writeRelations.getValue());
+    if (plot.isSet()) {
+        evaluation::saveEvaluationPlot(ev, estimates, groundTruth ? &*groundTruth : nullptr,
+                                       plot.getValue());
+    }
+    if (json.isSet())
+        evaluation::saveEvaluationJson(ev, json.getValue());
+    return EXIT_SUCCESS;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const TCLAP::ArgException& e) {
+        std::cerr << "error: " << e.argId() << ": " << e.error() << "\n";
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+    }
+    return EXIT_FAILURE;
+}

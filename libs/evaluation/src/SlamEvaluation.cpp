@@ -1,0 +1,242 @@
+#include <toposlam/evaluation/SlamEvaluation.h>
+#include <toposlam/evaluation/TrajectoryPlot.h>
+#include <toposlam/io/AtomicFile.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace toposlam::evaluation {
+
+MethodEvaluation evaluateMethod(const std::string& name, const std::string& source,
+                                const io::Trajectory2D& estimate, const PoseRelations& relations,
+                                const io::Trajectory2D* groundTruth, double stampTolerance) {
+    MethodEvaluation m;
+    m.name = name;
+    m.source = source;
+    m.poses = estimate.size();
+    m.relative = evaluateRelativePoseError(estimate, relations, {stampTolerance});
+    if (groundTruth) {
+        m.absolute = evaluateAbsoluteTrajectoryError(estimate, *groundTruth, stampTolerance);
+    }
+    return m;
+}
+
+// ---- table --------------------------------------------------------------------------------
+
+namespace {
+
+std::string fixed(double v, int decimals) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return buf;
+}
+
+// Decimals that show `reference` with 4 significant digits (0 to 8 decimals).
+int decimalsFor(double reference) {
+    if (!(std::abs(reference) > 0))
+        return 4;
+    const int magnitude = static_cast<int>(std::floor(std::log10(std::abs(reference))));
+    return std::clamp(3 - magnitude, 0, 8);
+}
+
+std::string meanStd(const ErrorStatistics& s, int decimals) {
+    return fixed(s.mean, decimals) + " ± " + fixed(s.std, decimals);
+}
+
+std::string meanStdSignificant(const ErrorStatistics& s) {
+    return meanStd(s, decimalsFor(std::max(s.mean, s.std)));
+}
+
+}  // namespace
+
+std::string formatEvaluationTable(const SlamEvaluation& ev) {
+    std::ostringstream out;
+    out << "Reference: " << ev.referenceFile << " (";
+    if (ev.referenceIsGroundTruth) {
+        out << "ground-truth trajectory, " << ev.groundTruthPoses << " poses -> "
+            << ev.relationCount << " relations: consecutive"
+            << (ev.groundTruthRelations.baseSeparation > 0
+                    ? " + path separations " + fixed(ev.groundTruthRelations.baseSeparation, 2) +
+                          " m x 2^k"
+                    : std::string())
+            << ")\n";
+    } else {
+        out << ev.relationCount << " relations)\n";
+    }
+    out << "Metric: Kümmerle et al. 2009, e = δ_gt⁻¹ ⊕ δ_est, δ_est = x_t1⁻¹ ⊕ x_t2; mean ± "
+           "std; stamps matched within "
+        << ev.stampTolerance << " s\n\n";
+
+    const bool withAte = std::any_of(ev.methods.begin(), ev.methods.end(),
+                                     [](const MethodEvaluation& m) { return m.absolute; });
+    out << "| method | relations matched | translational error (m) | rotational error (deg) | "
+           "squared transl. (m²) | squared rot. (deg²) | max transl. (m) / rot. (deg) |";
+    if (withAte)
+        out << " ATE RMSE (m) | ATE max (m) |";
+    out << "\n|---|---|---|---|---|---|---|" << (withAte ? "---|---|" : "") << "\n";
+    for (const MethodEvaluation& m : ev.methods) {
+        const RelativePoseErrorResult& r = m.relative;
+        out << "| " << m.name << " | " << r.matchedRelations << " / " << r.totalRelations << " | ";
+        if (r.matchedRelations == 0) {
+            out << "– | – | – | – | – |";
+        } else {
+            out << meanStd(r.translation, 4) << " | " << meanStd(r.rotation, 3) << " | "
+                << meanStdSignificant(r.translationSquared) << " | "
+                << meanStdSignificant(r.rotationSquared) << " | " << fixed(r.translation.max, 4)
+                << " / " << fixed(r.rotation.max, 3) << " |";
+        }
+        if (withAte) {
+            if (m.absolute && m.absolute->matchedPoses > 0) {
+                out << " " << fixed(m.absolute->position.rms, 4) << " | "
+                    << fixed(m.absolute->position.max, 4) << " |";
+            } else {
+                out << " – | – |";
+            }
+        }
+        out << "\n";
+    }
+    return out.str();
+}
+
+// ---- JSON ---------------------------------------------------------------------------------
+
+namespace {
+
+std::string jsonString(const std::string& s) {
+    std::string out = "\"";
+    for (const unsigned char c : s) {
+        switch (c) {
+            case '"':
+                out += "\\\"";
+                break;
+            case '\\':
+                out += "\\\\";
+                break;
+            case '\n':
+                out += "\\n";
+                break;
+            case '\t':
+                out += "\\t";
+                break;
+            case '\r':
+                out += "\\r";
+                break;
+            default:
+                if (c < 0x20) {
+                    char buf[8];
+                    std::snprintf(buf, sizeof buf, "\\u%04x", c);
+                    out += buf;
+                } else {
+                    out += static_cast<char>(c);
+                }
+        }
+    }
+    return out + "\"";
+}
+
+std::string jsonNumber(double v) {
+    if (!std::isfinite(v))
+        return "null";
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    return buf;
+}
+
+std::string jsonStats(const ErrorStatistics& s) {
+    return "{\"count\": " + std::to_string(s.count) + ", \"mean\": " + jsonNumber(s.mean) +
+           ", \"std\": " + jsonNumber(s.std) + ", \"max\": " + jsonNumber(s.max) +
+           ", \"rms\": " + jsonNumber(s.rms) + "}";
+}
+
+}  // namespace
+
+std::string formatEvaluationJson(const SlamEvaluation& ev) {
+    std::ostringstream out;
+    out << "{\n  \"tool\": \"toposlam-eval-slam\",\n"
+        << "  \"metric\": \"Kuemmerle et al. 2009 relation error e = inv(delta_gt) (+) "
+           "delta_est, delta_est = inv(x_t1) (+) x_t2; std is the sample std (n-1)\",\n"
+        << "  \"reference\": {\"file\": " << jsonString(ev.referenceFile)
+        << ", \"kind\": " << (ev.referenceIsGroundTruth ? "\"ground_truth\"" : "\"relations\"")
+        << ", \"relations\": " << ev.relationCount;
+    if (ev.referenceIsGroundTruth) {
+        out << ", \"ground_truth_poses\": " << ev.groundTruthPoses
+            << ", \"relation_scheme\": {\"consecutive\": "
+            << (ev.groundTruthRelations.consecutive ? "true" : "false")
+            << ", \"base_separation_m\": " << jsonNumber(ev.groundTruthRelations.baseSeparation)
+            << "}";
+    }
+    out << "},\n  \"stamp_tolerance_s\": " << jsonNumber(ev.stampTolerance)
+        << ",\n  \"methods\": [";
+    for (std::size_t i = 0; i < ev.methods.size(); ++i) {
+        const MethodEvaluation& m = ev.methods[i];
+        const RelativePoseErrorResult& r = m.relative;
+        out << (i ? "," : "") << "\n    {\"name\": " << jsonString(m.name)
+            << ", \"source\": " << jsonString(m.source) << ", \"poses\": " << m.poses
+            << ",\n     \"relations_total\": " << r.totalRelations
+            << ", \"relations_matched\": " << r.matchedRelations
+            << ", \"relations_unmatched\": " << r.unmatchedRelations()
+            << ",\n     \"translation_m\": " << jsonStats(r.translation)
+            << ",\n     \"rotation_deg\": " << jsonStats(r.rotation)
+            << ",\n     \"translation_squared_m2\": " << jsonStats(r.translationSquared)
+            << ",\n     \"rotation_squared_deg2\": " << jsonStats(r.rotationSquared);
+        if (m.absolute) {
+            const AbsoluteTrajectoryErrorResult& a = *m.absolute;
+            out << ",\n     \"ate\": {\"matched_poses\": " << a.matchedPoses
+                << ", \"alignment\": {\"x\": " << jsonNumber(a.alignment.x)
+                << ", \"y\": " << jsonNumber(a.alignment.y)
+                << ", \"phi_rad\": " << jsonNumber(a.alignment.phi) << "}"
+                << ",\n             \"position_m\": " << jsonStats(a.position)
+                << ",\n             \"heading_deg\": " << jsonStats(a.heading) << "}";
+        }
+        out << "}";
+    }
+    out << "\n  ]\n}\n";
+    return out.str();
+}
+
+void saveEvaluationJson(const SlamEvaluation& evaluation, const std::string& path) {
+    const std::string json = formatEvaluationJson(evaluation);
+    io::writeFileAtomically(path, [&](const std::string& tmp) {
+        std::ofstream f(tmp, std::ios::binary);
+        f << json;
+        f.close();
+        if (!f)
+            throw std::runtime_error(path + ": cannot write the JSON file");
+    });
+}
+
+// ---- plot ---------------------------------------------------------------------------------
+
+void saveEvaluationPlot(const SlamEvaluation& ev, const std::vector<io::Trajectory2D>& estimates,
+                        const io::Trajectory2D* groundTruth, const std::string& path) {
+    if (estimates.size() != ev.methods.size()) {
+        throw std::invalid_argument("saveEvaluationPlot: one trajectory per method expected");
+    }
+    std::vector<PlottedTrajectory> plotted;
+    std::size_t best = 0;
+    for (std::size_t i = 0; i < estimates.size(); ++i) {
+        const RelativePoseErrorResult& r = ev.methods[i].relative;
+        plotted.push_back(
+            {ev.methods[i].name + (r.matchedRelations ? ": " + fixed(r.translation.mean, 4) + " m"
+                                                      : std::string(": no relation matched")),
+             estimates[i]});
+        const RelativePoseErrorResult& b = ev.methods[best].relative;
+        if (r.matchedRelations &&
+            (!b.matchedRelations || r.translation.mean < b.translation.mean)) {
+            best = i;
+        }
+    }
+    if (groundTruth) {
+        plotted = alignedTo(*groundTruth, std::move(plotted), ev.stampTolerance);
+        plotted.insert(plotted.begin(), {"ground truth", *groundTruth});
+    } else if (!estimates.empty()) {
+        plotted = alignedTo(estimates[best], std::move(plotted), ev.stampTolerance);
+    }
+    saveTrajectoryPlot(plotted, path);
+}
+
+}  // namespace toposlam::evaluation

@@ -1,0 +1,201 @@
+// End-to-end tests of the toposlam-eval-slam app on small files made here.
+#include <gtest/gtest.h>
+
+#include <toposlam/io/LaserLogReader.h>
+#include <toposlam/io/RawlogWriter.h>
+
+#include <TestSupport.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+using toposlam::test::runApp;
+using toposlam::test::TempDir;
+
+namespace {
+
+bool contains(const std::string& text, const std::string& what) {
+    return text.find(what) != std::string::npos;
+}
+
+std::string readFile(const std::string& path) {
+    std::ifstream in(path);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+std::string write(const TempDir& dir, const std::string& name, const std::string& text) {
+    std::ofstream(dir.file(name)) << text;
+    return dir.file(name);
+}
+
+// Poses 1 m apart on a line; relations "no motion" -> translational errors 1, 2, 3 m.
+struct Fixture {
+    TempDir dir;
+    std::string trajectory = write(dir, "slam.txt",
+                                   "# timestamp x y yaw\n"
+                                   "10 0 0 0\n11 1 0 0\n12 2 0 0\n13 3 0 0\n");
+    std::string perfect = write(dir, "perfect.txt", "10 0 0 0\n11 0 0 0\n12 0 0 0\n13 0 0 0\n");
+    std::string relations = write(dir, "line.relations",
+                                  "10 11 0 0 0 0 0 0\n11 13 0 0 0 0 0 0\n10 13 0 0 0 0 0 0\n"
+                                  "10 14 0 0 0 0 0 0\n");
+    std::string json = dir.file("out.json");
+};
+
+}  // namespace
+
+TEST(EvalSlamApp, HelpExplainsEveryOption) {
+    const auto r = runApp("toposlam-eval-slam", "--help");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    for (const char* option : {"--relations", "--ground-truth", "--trajectory", "--icp-slam-path",
+                               "--rawlog", "--scan-stamps", "--json", "--name", "--gt-separation",
+                               "--stamp-tolerance", "--write-relations", "--plot", "Kuemmerle"}) {
+        EXPECT_TRUE(contains(r.output, option)) << option;
+    }
+}
+
+TEST(EvalSlamApp, TableAndJsonWithKnownErrors) {
+    Fixture f;
+    const auto r = runApp("toposlam-eval-slam", f.trajectory + " --name mine --relations " +
+                                                    f.relations + " --json " + f.json);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    // Errors {1, 2, 3} m: 2 ± 1 m; squared {1, 4, 9}: 4.667 ± 4.041; 3 of 4 matched.
+    EXPECT_TRUE(contains(r.output,
+                         "| mine | 3 / 4 | 2.0000 ± 1.0000 | 0.000 ± 0.000 | "
+                         "4.667 ± 4.041 |"))
+        << r.output;
+    const std::string json = readFile(f.json);
+    EXPECT_TRUE(contains(json, "\"name\": \"mine\"")) << json;
+    EXPECT_TRUE(contains(json, "\"relations_matched\": 3")) << json;
+    EXPECT_TRUE(contains(json, "\"relations_unmatched\": 1")) << json;
+    EXPECT_TRUE(contains(json,
+                         "\"translation_m\": {\"count\": 3, \"mean\": 2, \"std\": 1, "
+                         "\"max\": 3"))
+        << json;
+}
+
+TEST(EvalSlamApp, SeveralMethodsSideBySide) {
+    Fixture f;
+    const auto r =
+        runApp("toposlam-eval-slam", "--trajectory odometry=" + f.trajectory + " --trajectory " +
+                                         f.perfect + " --relations " + f.relations);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(contains(r.output, "| odometry | 3 / 4 | 2.0000 ± 1.0000 |")) << r.output;
+    EXPECT_TRUE(contains(r.output, "| perfect | 3 / 4 | 0.0000 ± 0.0000 |")) << r.output;
+}
+
+TEST(EvalSlamApp, GroundTruthModeAddsAteAndWritesTheRelations) {
+    Fixture f;
+    // Truth: 21 poses 0.5 m apart on x; estimate: the same, rotated by 90 deg and shifted.
+    std::string truth, estimate;
+    for (int i = 0; i <= 20; ++i) {
+        truth += std::to_string(100 + i) + " " + std::to_string(0.5 * i) + " 0 0\n";
+        estimate +=
+            std::to_string(100 + i) + " 5 " + std::to_string(0.5 * i) + " 1.5707963267948966\n";
+    }
+    const std::string gt = write(f.dir, "gt.txt", truth);
+    const std::string est = write(f.dir, "est.txt", estimate);
+    const std::string rel = f.dir.file("derived.relations");
+    const std::string png = f.dir.file("plot.png");
+    const auto r =
+        runApp("toposlam-eval-slam", est + " --ground-truth " + gt + " --json " + f.json +
+                                         " --write-relations " + rel + " --plot " + png);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    // 10 m path, d = 1 m: 20 consecutive + 19 (1 m) + 9 (2 m) + 4 (4 m) + 1 (8 m) relations.
+    EXPECT_TRUE(contains(r.output, "| est | 53 / 53 | 0.0000 ± 0.0000 | 0.000 ± 0.000 |"))
+        << r.output;
+    EXPECT_TRUE(contains(r.output, "ATE RMSE (m)")) << r.output;
+    EXPECT_TRUE(contains(r.output, "| 0.0000 | 0.0000 |")) << r.output;
+    EXPECT_TRUE(contains(readFile(f.json), "\"kind\": \"ground_truth\""));
+    EXPECT_TRUE(contains(readFile(f.json), "\"matched_poses\": 21"));
+    std::ifstream relationsOut(rel);
+    std::size_t lines = 0;
+    for (std::string line; std::getline(relationsOut, line);)
+        ++lines;
+    EXPECT_EQ(lines, 53u);
+    EXPECT_EQ(readFile(png).substr(1, 3), "PNG") << "the plot is a PNG file";
+}
+
+TEST(EvalSlamApp, BadInputExitsNonZeroAndWritesNoJson) {
+    Fixture f;
+    const std::string badRelations =
+        write(f.dir, "bad.relations", "10 11 0 0 0 0 0 0\n10 11 0 0 0 0\n");
+    const std::string nanTrajectory = write(f.dir, "nan.txt", "10 0 0 0\n11 nan 0 0\n");
+    const struct {
+        std::string args, expected;
+    } cases[] = {
+        {f.trajectory + " --relations " + f.dir.file("missing.relations"), "missing.relations"},
+        {f.trajectory + " --relations " + badRelations, "line 2"},
+        {nanTrajectory + " --relations " + f.relations, "nan.txt"},
+        {f.dir.file("missing.txt") + " --relations " + f.relations, "missing.txt"},
+        {"--icp-slam-path " + f.trajectory + " --relations " + f.relations, "--rawlog"},
+        {"--relations " + f.relations, "no trajectory"},
+        {f.trajectory + " " + f.perfect + " --name x --relations " + f.relations, "--name"},
+    };
+    for (const auto& c : cases) {
+        const auto r = runApp("toposlam-eval-slam", c.args + " --json " + f.json);
+        EXPECT_NE(r.exitCode, 0) << c.args;
+        EXPECT_TRUE(contains(r.output, "error: ")) << r.output;
+        EXPECT_TRUE(contains(r.output, c.expected)) << r.output;
+        EXPECT_FALSE(std::filesystem::exists(f.json)) << "no JSON after a failure: " << c.args;
+    }
+    // An existing JSON is left as it was when a later run fails.
+    write(f.dir, "out.json", "previous");
+    const auto r = runApp("toposlam-eval-slam",
+                          nanTrajectory + " --relations " + f.relations + " --json " + f.json);
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_EQ(readFile(f.json), "previous");
+    // Neither option, or both: a usage error.
+    EXPECT_NE(runApp("toposlam-eval-slam", f.trajectory).exitCode, 0);
+    EXPECT_NE(runApp("toposlam-eval-slam", f.trajectory + " --relations " + f.relations +
+                                               " --ground-truth " + f.trajectory)
+                  .exitCode,
+              0);
+}
+
+TEST(EvalSlamApp, OdometryOfALogAndIcpSlamPathWithTheLogsStamps) {
+    TempDir dir;
+    // A 3-scan CARMEN log moving 0.5 m per scan along x. Its second stamp was printed the old
+    // CARMEN way, without zero padding ("101.45670" = 101.045670 s): it goes backwards, as 631
+    // of intel's do. Relation files use the printed stamps.
+    std::string clf;
+    const char* stamps[] = {"100.900000", "101.45670", "101.100000"};
+    for (int i = 0; i < 3; ++i) {
+        clf += "FLASER 180";
+        for (int b = 0; b < 180; ++b)
+            clf += " 2.0";
+        const std::string x = std::to_string(0.5 * i);
+        clf += " " + x + " 0 0 " + x + " 0 0 " + stamps[i] + " nohost " + stamps[i] + "\n";
+    }
+    const std::string log = write(dir, "tiny.clf", clf);
+    const std::string relations = write(dir, "tiny.relations",
+                                        "100.9 101.4567 0.5 0 0 0 0 0\n"
+                                        "101.4567 101.1 0.5 0 0 0 0 0\n");
+
+    // The rawlog icp-slam would run on (odometry + scan per record: 6 entries), and an
+    // icp-slam path with the true poses on the scan lines 1, 3, 5.
+    const std::string rawlog = dir.file("tiny.rawlog");
+    {
+        toposlam::io::RawlogWriter writer(rawlog, toposlam::io::RawlogFormat::Observations);
+        for (const auto& record : toposlam::io::LaserLogReader::readAll(log))
+            writer.write(record);
+        writer.commit();
+    }
+    const std::string path = write(dir, "log_estimated_path.txt",
+                                   "0 0 0 0\n1 0 0 0\n2 0.5 0 0\n3 0.5 0 0\n4 1 0 0\n5 1 0 0\n");
+
+    const std::string common = " --relations " + relations + " --icp-slam-path " + path +
+                               " --rawlog " + rawlog + " --odometry-of " + log;
+    const auto withStamps = runApp("toposlam-eval-slam", common + " --scan-stamps " + log);
+    ASSERT_EQ(withStamps.exitCode, 0) << withStamps.output;
+    EXPECT_TRUE(contains(withStamps.output, "| odometry | 2 / 2 | 0.0000 ± 0.0000 |"))
+        << withStamps.output;
+    EXPECT_TRUE(contains(withStamps.output, "| icp-slam | 2 / 2 | 0.0000 ± 0.0000 |"))
+        << withStamps.output;
+    // Without --scan-stamps the rawlog's stamps are used: the converter made them increasing
+    // (101.045670 s), so the relations that name the printed stamp do not match.
+    const auto rawlogStamps = runApp("toposlam-eval-slam", common);
+    ASSERT_EQ(rawlogStamps.exitCode, 0) << rawlogStamps.output;
+    EXPECT_TRUE(contains(rawlogStamps.output, "| icp-slam | 0 / 2 |")) << rawlogStamps.output;
+}

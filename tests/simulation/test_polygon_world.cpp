@@ -38,8 +38,8 @@ TEST(LaserModel, ScanGeometryAndInvalidBeams) {
     std::mt19937 rng(1);
     const auto scan = simulateScan(w, laser, mrpt::poses::CPose2D(0, 0, 0), rng);
     ASSERT_EQ(scan.getScanSize(), 181u);
-    EXPECT_NEAR(scan.getScanRange(90), 2.0, 1e-6);          // straight ahead
-    EXPECT_NEAR(scan.getScanRange(0), 2.0, 1e-6);           // -90 deg
+    EXPECT_NEAR(scan.getScanRange(90), 2.0, 1e-6);  // straight ahead
+    EXPECT_NEAR(scan.getScanRange(0), 2.0, 1e-6);   // -90 deg
     EXPECT_FALSE(scan.getScanRangeValidity(45)) << "the -45 deg corner is 2.83 m > 2.5 m away";
     EXPECT_TRUE(scan.getScanRangeValidity(30));
 }

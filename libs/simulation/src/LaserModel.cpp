@@ -23,9 +23,11 @@ mrpt::obs::CObservation2DRangeScan simulateScan(const RangeWorld& world, const L
 
     for (std::size_t i = 0; i < laser.beams; ++i) {
         double bearing = scan.getScanAngle(i);
-        if (laser.bearingNoiseStd > 0) bearing += bearingNoise(rng);
+        if (laser.bearingNoiseStd > 0)
+            bearing += bearingNoise(rng);
         double r = world.castRay(origin, sensorInWorld.yaw() + bearing, laser.maxRange);
-        if (std::isfinite(r) && laser.rangeNoiseStd > 0) r += rangeNoise(rng);
+        if (std::isfinite(r) && laser.rangeNoiseStd > 0)
+            r += rangeNoise(rng);
         const bool valid = std::isfinite(r) && r >= laser.minRange && r < laser.maxRange;
         scan.setScanRange(i, valid ? static_cast<float>(r) : scan.maxRange);
         scan.setScanRangeValidity(i, valid);

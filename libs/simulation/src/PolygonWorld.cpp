@@ -1,5 +1,7 @@
 #include <toposlam/simulation/PolygonWorld.h>
+#include <toposlam/simulation/RayDiscIntersection.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -17,7 +19,9 @@ void PolygonWorld::addPolygon(const std::vector<TPoint2D>& vertices) {
     }
 }
 
-void PolygonWorld::addDisc(const Disc& disc) { discs_.push_back(disc); }
+void PolygonWorld::addDisc(const Disc& disc) {
+    discs_.push_back(disc);
+}
 
 double PolygonWorld::castRay(const TPoint2D& origin, double angle, double maxRange) const {
     const double dx = std::cos(angle), dy = std::sin(angle);
@@ -27,19 +31,17 @@ double PolygonWorld::castRay(const TPoint2D& origin, double angle, double maxRan
     for (const WallSegment& w : segments_) {
         const double ex = w.b.x - w.a.x, ey = w.b.y - w.a.y;
         const double denom = dx * ey - dy * ex;
-        if (std::abs(denom) < 1e-15) continue;  // parallel: grazing rays never return
+        if (std::abs(denom) < 1e-15)
+            continue;  // parallel: grazing rays never return
         const double ox = w.a.x - origin.x, oy = w.a.y - origin.y;
         const double t = (ox * ey - oy * ex) / denom;
         const double s = (ox * dy - oy * dx) / denom;
-        if (t > 0 && s >= 0 && s <= 1 && t < best) best = t;
+        if (t > 0 && s >= 0 && s <= 1 && t < best)
+            best = t;
     }
     for (const Disc& c : discs_) {
-        const double ox = origin.x - c.centre.x, oy = origin.y - c.centre.y;
-        const double b = ox * dx + oy * dy;
-        const double disc = b * b - (ox * ox + oy * oy - c.radius * c.radius);
-        if (disc < 0) continue;
-        const double t = -b - std::sqrt(disc);  // entry point; origin inside a disc sees nothing
-        if (t > 0 && t < best) best = t;
+        best = std::min(best,
+                        rayDiscEntry(origin.x, origin.y, dx, dy, c.centre.x, c.centre.y, c.radius));
     }
     return best <= maxRange ? best : std::numeric_limits<double>::infinity();
 }

@@ -15,10 +15,10 @@ namespace toposlam::simulation {
 
 struct LaserModel {
     std::size_t beams = 361;
-    double aperture = M_PI;    ///< rad, angle from the first to the last beam
-    double maxRange = 30.0;    ///< m; farther (or no) returns are invalid readings
-    double minRange = 0.05;    ///< m; nearer returns are invalid readings
-    double rangeNoiseStd = 0;  ///< m, Gaussian, per beam
+    double aperture = M_PI;      ///< rad, angle from the first to the last beam
+    double maxRange = 30.0;      ///< m; farther (or no) returns are invalid readings
+    double minRange = 0.05;      ///< m; nearer returns are invalid readings
+    double rangeNoiseStd = 0;    ///< m, Gaussian, per beam
     double bearingNoiseStd = 0;  ///< rad, Gaussian jitter of each beam's true direction
     bool rightToLeft = true;
     mrpt::poses::CPose3D sensorPose;  ///< laser pose in the robot frame

@@ -18,7 +18,7 @@ struct Disc {
 };
 
 class PolygonWorld : public RangeWorld {
-public:
+  public:
     void addSegment(const mrpt::math::TPoint2D& a, const mrpt::math::TPoint2D& b);
     /// Adds the edges of a closed polygon (the last vertex connects to the first).
     void addPolygon(const std::vector<mrpt::math::TPoint2D>& vertices);
@@ -32,7 +32,7 @@ public:
     double castRay(const mrpt::math::TPoint2D& origin, double angle,
                    double maxRange) const override;
 
-private:
+  private:
     std::vector<WallSegment> segments_;
     std::vector<Disc> discs_;
 };

@@ -7,7 +7,7 @@
 namespace toposlam::simulation {
 
 class RangeWorld {
-public:
+  public:
     virtual ~RangeWorld() = default;
     /// Distance (m) from `origin` (world frame, m) along direction `angle` (rad, world frame)
     /// to the first obstacle, or +infinity when nothing is hit within `maxRange` (m).

@@ -1,0 +1,37 @@
+#pragma once
+// How the simulated robot drives a planned path and when its laser records. The robot follows
+// each leg with its heading along the path tangent, at most maxSpeed, slowing down where the
+// path turns faster than maxTurnRate allows; between legs it turns on the spot. Like the loggers
+// of real robots (CARMEN, MRPT's rawlog-grabber with a motion filter), it records a scan each
+// time it has driven scanDistance or turned scanAngle since the last one.
+#include <mrpt/math/TPoint2D.h>
+#include <toposlam/io/Trajectory.h>
+
+#include <cmath>
+#include <vector>
+
+namespace mrpt::config {
+class CConfigFileBase;
+}
+
+namespace toposlam::simulation {
+
+struct MotionOptions {
+    double maxSpeed = 0.4;            ///< m/s
+    double maxTurnRate = M_PI / 6;    ///< rad/s (30 deg/s)
+    double scanDistance = 0.3;        ///< m driven between recorded scans
+    double scanAngle = 0.2618;        ///< rad turned between recorded scans (15 deg)
+    double startTime = 1700000000.0;  ///< s (Unix time) of the first scan
+
+    /// Reads max_speed, max_turn_rate_deg, scan_distance, scan_angle_deg, start_time.
+    void loadFromConfig(const mrpt::config::CConfigFileBase& config, const std::string& section);
+};
+
+/// The timed robot poses (world frame; stamps in s) at which scans are recorded while driving
+/// `legs` one after the other. Each leg is a polyline (world frame, m) that starts where the
+/// previous one ended; the robot starts at the first point of the first leg with heading
+/// `initialYaw` (rad). The first and the last pose are always recorded.
+io::Trajectory2D driveLegs(const std::vector<std::vector<mrpt::math::TPoint2D>>& legs,
+                           double initialYaw, const MotionOptions& options);
+
+}  // namespace toposlam::simulation

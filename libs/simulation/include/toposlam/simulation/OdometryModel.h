@@ -1,0 +1,78 @@
+#pragma once
+// Wheel odometry with realistic drift. Each true motion increment between two odometry readings
+// is decomposed as in Thrun, Burgard & Fox, Probabilistic Robotics (2005), sec. 5.4: a rotation
+// rot1 towards the direction of travel, a translation trans, a final rotation rot2. The reading
+// then gets two kinds of error:
+//
+//  * systematic (the same every time; Borenstein & Feng's UMBmark error sources):
+//      trans' = trans * distanceScale              (mean wheel radius wrong)
+//      rot'   = rot * rotationScale                (effective wheelbase wrong)
+//             + curvaturePerMetre * trans          (left/right wheel radii differ: the robot
+//                                                   believes it curves while driving straight)
+//  * random, zero-mean Gaussian, whose VARIANCE grows linearly with the motion (alpha1..alpha4
+//    play the roles of Thrun's):
+//      var(rotation error)    = alpha1 * |rot|   + alpha2 * |trans|   (split over rot1, rot2)
+//      var(translation error) = alpha3 * |trans| + alpha4 * |rot|
+//    Thrun's model uses squared increments, which makes the drift vanish as the odometry rate
+//    grows; with linear variances the drift after a path is the same however finely it is
+//    sampled: after driving D metres straight, the heading error has std sqrt(alpha2 * D) and
+//    the distance error std sqrt(alpha3 * D).
+//
+// Defaults: a well-maintained indoor differential-drive robot (Pioneer-class) on a hard floor:
+// 1 % distance scale error, 1.5 % rotation scale error (1.35 deg per 90 deg turn), 0.1 deg/m
+// curvature; random errors of 1.5 cm and 0.5 deg after 1 m, 1.5 deg after a full 1 rad turn.
+// Over a 100 m office tour that is a few metres and tens of degrees of accumulated drift, as
+// raw logs of real robots show.
+#include <mrpt/poses/CPose2D.h>
+
+#include <random>
+#include <string>
+
+namespace mrpt::config {
+class CConfigFileBase;
+}
+
+namespace toposlam::simulation {
+
+struct OdometryErrorModel {
+    double distanceScale = 1.01;        ///< measured / true distance (1 = exact)
+    double rotationScale = 1.015;       ///< measured / true rotation (1 = exact)
+    double curvaturePerMetre = 0.0017;  ///< rad of spurious rotation per metre driven
+    double alpha1 = 0.0007;             ///< rad^2 of rotation variance per rad turned ((1.5 deg)^2)
+    double alpha2 = 7.6e-5;             ///< rad^2 of rotation variance per m driven ((0.5 deg)^2)
+    double alpha3 = 2.25e-4;            ///< m^2 of translation variance per m driven ((1.5 cm)^2)
+    double alpha4 = 2.5e-5;             ///< m^2 of translation variance per rad turned ((0.5 cm)^2)
+
+    /// Perfect odometry: readings equal the true motion.
+    static OdometryErrorModel exact();
+    /// Reads the keys of config_ini/sim-office.ini's [Odometry] section from `section`
+    /// (distance_scale, rotation_scale, curvature_deg_per_m, rot_std_deg_per_sqrt_rad,
+    /// rot_std_deg_per_sqrt_m, trans_std_m_per_sqrt_m, trans_std_m_per_sqrt_rad); keys that are
+    /// absent keep the current value.
+    void loadFromConfig(const mrpt::config::CConfigFileBase& config, const std::string& section);
+};
+
+/// Integrates noisy odometry along the true motion of a robot.
+class OdometryModel {
+  public:
+    /// Odometry starts at `start` (robots usually start their odometry at (0,0,0)).
+    explicit OdometryModel(const OdometryErrorModel& model,
+                           const mrpt::poses::CPose2D& start = mrpt::poses::CPose2D());
+
+    /// Applies one true motion increment (robot frame of the previous pose, m and rad) and
+    /// returns the new cumulative odometry (odometry frame). `rng` supplies the noise.
+    const mrpt::poses::CPose2D& move(const mrpt::poses::CPose2D& trueIncrement, std::mt19937& rng);
+    /// The increment the odometry reports for one true increment (no accumulation).
+    mrpt::poses::CPose2D measureIncrement(const mrpt::poses::CPose2D& trueIncrement,
+                                          std::mt19937& rng);
+
+    const mrpt::poses::CPose2D& pose() const { return pose_; }
+    const OdometryErrorModel& model() const { return model_; }
+
+  private:
+    OdometryErrorModel model_;
+    mrpt::poses::CPose2D pose_;
+    std::normal_distribution<double> gauss_{0.0, 1.0};
+};
+
+}  // namespace toposlam::simulation

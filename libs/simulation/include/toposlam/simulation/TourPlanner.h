@@ -1,0 +1,56 @@
+#pragma once
+// An automatic robot tour over a map that visits every room-sized free area: find the areas
+// (RoomSizedAreas), order them (TourOrder) by path cost, plan a clearance-keeping path between
+// consecutive ones (GridPathPlanner), smooth it (PathSmoother) and drive it (MotionProfile),
+// which gives the timed poses at which the laser records.
+#include <mrpt/math/TPose2D.h>
+#include <toposlam/io/Trajectory.h>
+#include <toposlam/simulation/ClearanceMap.h>
+#include <toposlam/simulation/GridPathPlanner.h>
+#include <toposlam/simulation/MotionProfile.h>
+#include <toposlam/simulation/RoomSizedAreas.h>
+
+#include <optional>
+#include <vector>
+
+namespace mrpt::config {
+class CConfigFileBase;
+}
+
+namespace toposlam::simulation {
+
+struct TourOptions {
+    double robotRadius = 0.25;        ///< m
+    double safetyMargin = 0.05;       ///< m kept between the robot's outline and any obstacle
+    double preferredClearance = 0.8;  ///< m; see PathCostOptions
+    double clearanceWeight = 3.0;     ///< see PathCostOptions
+    RoomSizedAreaOptions areas;
+    double smoothingSigma = 0.3;  ///< m; see smoothPath
+    bool returnToStart = true;    ///< close the loop (SLAM needs loops to be tested)
+    /// Start pose (world frame); default: the centre of the largest area, heading along the
+    /// first leg.
+    std::optional<mrpt::math::TPose2D> start;
+    MotionOptions motion;
+
+    PathCostOptions pathCost() const {
+        return {robotRadius + safetyMargin, preferredClearance, clearanceWeight};
+    }
+    /// Reads robot_radius, safety_margin, preferred_clearance, clearance_weight,
+    /// door_width_max, min_area_m2, smoothing_sigma, return_to_start, and MotionOptions' keys.
+    void loadFromConfig(const mrpt::config::CConfigFileBase& config, const std::string& section);
+};
+
+struct Tour {
+    std::vector<RoomSizedArea> areas;      ///< every area found, largest first
+    std::vector<std::size_t> visitOrder;   ///< indices into `areas`, in visiting order
+    std::vector<std::size_t> unreachable;  ///< areas the robot cannot reach from the start
+    std::vector<std::vector<mrpt::math::TPoint2D>> legs;  ///< the smoothed path of each leg
+    io::Trajectory2D poses;                               ///< scan poses (world frame), stamps in s
+    double length = 0;                                    ///< m driven
+};
+
+/// Plans the tour. Throws std::invalid_argument when the map has no place where the robot fits,
+/// no room-sized area, or a start pose where the robot does not fit.
+Tour planTour(const ClearanceMap& map, const TourOptions& options);
+
+}  // namespace toposlam::simulation

@@ -1,0 +1,75 @@
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/core/bits_math.h>
+#include <mrpt/math/wrap2pi.h>
+#include <toposlam/simulation/OdometryModel.h>
+
+#include <cmath>
+
+namespace toposlam::simulation {
+
+OdometryErrorModel OdometryErrorModel::exact() {
+    OdometryErrorModel m;
+    m.distanceScale = m.rotationScale = 1.0;
+    m.curvaturePerMetre = m.alpha1 = m.alpha2 = m.alpha3 = m.alpha4 = 0.0;
+    return m;
+}
+
+void OdometryErrorModel::loadFromConfig(const mrpt::config::CConfigFileBase& c,
+                                        const std::string& s) {
+    using mrpt::DEG2RAD;
+    using mrpt::RAD2DEG;
+    const auto sq = [](double v) { return v * v; };
+    distanceScale = c.read_double(s, "distance_scale", distanceScale);
+    rotationScale = c.read_double(s, "rotation_scale", rotationScale);
+    curvaturePerMetre =
+        DEG2RAD(c.read_double(s, "curvature_deg_per_m", RAD2DEG(curvaturePerMetre)));
+    alpha1 = sq(DEG2RAD(c.read_double(s, "rot_std_deg_per_sqrt_rad", RAD2DEG(std::sqrt(alpha1)))));
+    alpha2 = sq(DEG2RAD(c.read_double(s, "rot_std_deg_per_sqrt_m", RAD2DEG(std::sqrt(alpha2)))));
+    alpha3 = sq(c.read_double(s, "trans_std_m_per_sqrt_m", std::sqrt(alpha3)));
+    alpha4 = sq(c.read_double(s, "trans_std_m_per_sqrt_rad", std::sqrt(alpha4)));
+}
+
+OdometryModel::OdometryModel(const OdometryErrorModel& model, const mrpt::poses::CPose2D& start)
+    : model_(model), pose_(start) {}
+
+mrpt::poses::CPose2D OdometryModel::measureIncrement(const mrpt::poses::CPose2D& inc,
+                                                     std::mt19937& rng) {
+    // rot1 / trans / rot2 decomposition; a backwards motion is a negative translation, so
+    // rot1 never flips by pi for a robot that reverses.
+    double trans = std::hypot(inc.x(), inc.y());
+    double rot1 = 0;
+    if (trans > 1e-9) {
+        rot1 = std::atan2(inc.y(), inc.x());
+        if (std::abs(rot1) > M_PI / 2) {
+            rot1 = mrpt::math::wrapToPi(rot1 - M_PI);
+            trans = -trans;
+        }
+    }
+    const double rot2 = mrpt::math::wrapToPi(inc.phi() - rot1);
+    const double absTrans = std::abs(trans);
+    const double absRot = std::abs(rot1) + std::abs(rot2);
+
+    const auto noise = [&](double variance) {
+        return variance > 0 ? std::sqrt(variance) * gauss_(rng) : 0.0;
+    };
+    // Rotation noise and curvature bias are split between rot1 and rot2 so that their sum has
+    // the documented mean and variance.
+    const auto rotReading = [&](double rot) {
+        return rot * model_.rotationScale + 0.5 * model_.curvaturePerMetre * trans +
+               noise(model_.alpha1 * std::abs(rot) + 0.5 * model_.alpha2 * absTrans);
+    };
+    const double r1 = rotReading(rot1);
+    const double t =
+        trans * model_.distanceScale + noise(model_.alpha3 * absTrans + model_.alpha4 * absRot);
+    const double r2 = rotReading(rot2);
+    return mrpt::poses::CPose2D(t * std::cos(r1), t * std::sin(r1), r1 + r2);
+}
+
+const mrpt::poses::CPose2D& OdometryModel::move(const mrpt::poses::CPose2D& trueIncrement,
+                                                std::mt19937& rng) {
+    pose_ = pose_ + measureIncrement(trueIncrement, rng);
+    pose_.normalizePhi();
+    return pose_;
+}
+
+}  // namespace toposlam::simulation

@@ -1,0 +1,239 @@
+// toposlam-sim end to end, and the share/office data set it makes.
+#include <gtest/gtest.h>
+#include <toposlam/io/GridMapIO.h>
+#include <toposlam/io/LaserLogReader.h>
+#include <toposlam/io/Trajectory.h>
+#include <toposlam/simulation/GridGeometry.h>
+#include <toposlam/simulation/OfficeFloorPlan.h>
+
+#include <filesystem>
+#include <fstream>
+#include <opencv2/imgcodecs.hpp>
+#include <set>
+#include <sstream>
+
+#include "SimulationTestMaps.h"
+#include "TestSupport.h"
+
+using namespace toposlam;
+using namespace toposlam::simulation;
+using toposlam::test::runApp;
+using toposlam::test::TempDir;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string quoted(const std::string& s) {
+    return "'" + s + "'";
+}
+
+void writeText(const std::string& path, const std::string& text) {
+    std::ofstream(path) << text;
+}
+
+/// Two 4 m x 3 m rooms joined by a 0.9 m door: a small map for quick tours.
+FloorPlan twoRooms() {
+    FloorPlan plan;
+    const double t = 0.1, o = t / 2;
+    plan.addWall({-o, -o}, {8.1 + o, -o}, t);
+    plan.addWall({-o, 3 + o}, {8.1 + o, 3 + o}, t);
+    plan.addWall({-o, -o}, {-o, 3 + o}, t);
+    plan.addWall({8.1 + o, -o}, {8.1 + o, 3 + o}, t);
+    plan.addWall({4.05, 0}, {4.05, 3}, t);
+    const int a = plan.addRoom("west", "room", {0, 0, 4, 3});
+    const int b = plan.addRoom("east", "room", {4.1, 0, 8.1, 3});
+    plan.addDoor({4.05, 1.0}, {4.05, 1.9}, a, b);
+    return plan;
+}
+
+std::string officeMap() {
+    return toposlam::test::shareDir() + "/office/office.gridmap.gz";
+}
+
+}  // namespace
+
+TEST(ToposlamSim, HelpExplainsEveryOption) {
+    const auto r = runApp("toposlam-sim", "--help");
+    EXPECT_EQ(r.exitCode, 0);
+    for (const char* option :
+         {"--poses",          "--tour",       "--make-office", "--out",
+          "--format",         "--gt",         "--config",      "--beams",
+          "--fov-deg",        "--max-range",  "--range-noise", "--bearing-noise-deg",
+          "--exact-odometry", "--people",     "--seed",        "--start",
+          "--plot",           "--resolution", "--origin",      "--quiet"}) {
+        EXPECT_NE(r.output.find(option), std::string::npos) << option;
+    }
+    EXPECT_NE(r.output.find("Default: 361"), std::string::npos);
+}
+
+TEST(ToposlamSim, TourOnASmallMapWritesARawlogAndItsGroundTruth) {
+    TempDir dir;
+    io::saveGridMap(twoRooms().rasterise(0.05, 0.3), dir.file("rooms.gridmap.gz"));
+    const auto r = runApp("toposlam-sim", quoted(dir.file("rooms.gridmap.gz")) + " --tour -o " +
+                                              quoted(dir.file("out.rawlog")) + " --plot " +
+                                              quoted(dir.file("tour.png")));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto records = io::LaserLogReader::readAll(dir.file("out.rawlog"));
+    const auto gt = io::loadTrajectory(dir.file("out_gt.txt"));  // the default name
+    ASSERT_GT(records.size(), 10u);
+    ASSERT_EQ(records.size(), gt.size());
+    std::set<int> rooms;
+    const FloorPlan plan = twoRooms();
+    for (std::size_t i = 0; i < gt.size(); ++i) {
+        EXPECT_EQ(records[i].fileStamp, gt[i].stamp);
+        rooms.insert(plan.roomAt({gt[i].pose.x, gt[i].pose.y}));
+    }
+    EXPECT_TRUE(rooms.count(1) && rooms.count(2)) << "the tour visits both rooms";
+    const auto& scan = *records[0].scan;
+    EXPECT_EQ(scan.getScanSize(), 361u);
+    EXPECT_NEAR(scan.aperture, 1.5 * M_PI, 1e-6);
+    EXPECT_EQ(scan.sensorLabel, "LASER");
+    EXPECT_NEAR(scan.sensorPose.x(), 0.2, 1e-9);
+    EXPECT_TRUE(fs::exists(dir.file("tour.png")));
+}
+
+TEST(ToposlamSim, CommandLineOverridesTheConfigFile) {
+    TempDir dir;
+    writeText(dir.file("sim.ini"),
+              "[Laser]\nbeams = 100\nfov_deg = 90\n[Simulation]\nformat = sf\n");
+    writeText(dir.file("poses.txt"), "# t x y yaw\n10 2 6.5 0\n10.5 2.3 6.5 0\n11 2.6 6.5 0.1\n");
+    const auto r =
+        runApp("toposlam-sim", quoted(officeMap()) + " --poses " + quoted(dir.file("poses.txt")) +
+                                   " -o " + quoted(dir.file("run.rawlog.gz")) + " -c " +
+                                   quoted(dir.file("sim.ini")) + " --beams 181 --gt " +
+                                   quoted(dir.file("gt.txt")));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    io::LaserLogReader reader(dir.file("run.rawlog.gz"));
+    EXPECT_EQ(reader.format(), io::LaserLogFormat::RawlogSensoryFrames);
+    io::LaserLogRecord rec;
+    std::size_t n = 0;
+    while (reader.next(rec)) {
+        EXPECT_EQ(rec.scan->getScanSize(), 181u) << "--beams beats the file";
+        EXPECT_NEAR(rec.scan->aperture, M_PI / 2, 1e-6) << "the file beats the default";
+        ++n;
+    }
+    EXPECT_EQ(n, 3u);
+    const auto gt = io::loadTrajectory(dir.file("gt.txt"));
+    ASSERT_EQ(gt.size(), 3u);
+    EXPECT_EQ(gt[2].stamp, 11.0);
+    EXPECT_EQ(gt[2].pose.phi, 0.1);
+}
+
+TEST(ToposlamSim, BadInputGivesAClearErrorAndNoOutput) {
+    TempDir dir;
+    const std::string out = dir.file("out.rawlog");
+    mrpt::maps::COccupancyGridMap2D walls(0.0f, 3.0f, 0.0f, 3.0f, 0.05f);
+    walls.fill(0.0f);
+    io::saveGridMap(walls, dir.file("walls.gridmap.gz"));
+    writeText(dir.file("malformed.txt"), "1 2 6.5 0\n2 2.5 six 0\n");
+    writeText(dir.file("backwards.txt"), "1 2 6.5 0\n2 2.5 6.5 0\n1.5 3 6.5 0\n");
+    writeText(dir.file("outside.txt"), "1 2 6.5 0\n2 200 6.5 0\n");
+    struct Case {
+        std::string args, expected;
+    };
+    const std::vector<Case> cases = {
+        {quoted(dir.file("missing.gridmap.gz")) + " --tour", "missing.gridmap.gz"},
+        {quoted(dir.file("walls.gridmap.gz")) + " --tour", "free"},
+        {quoted(dir.file("walls.gridmap.gz")) + " --poses " + quoted(dir.file("backwards.txt")),
+         "free"},
+        {quoted(officeMap()) + " --poses " + quoted(dir.file("malformed.txt")), "malformed.txt"},
+        {quoted(officeMap()) + " --poses " + quoted(dir.file("backwards.txt")), "increase"},
+        {quoted(officeMap()) + " --poses " + quoted(dir.file("outside.txt")), "outside the map"},
+        {quoted(officeMap()) + " --poses " + quoted(dir.file("nothere.txt")), "nothere.txt"},
+        {quoted(officeMap()), "exactly one of --poses"},
+        {quoted(officeMap()) + " --tour --beams 1", "beams"},
+        {quoted(officeMap()) + " --tour --format xml", "format"},
+        {quoted(officeMap()) + " --tour -c " + quoted(dir.file("no.ini")), "no.ini"},
+        {quoted(officeMap()) + " --tour --no-such-option", "no-such-option"},
+    };
+    for (const Case& c : cases) {
+        const auto r = runApp("toposlam-sim", c.args + " -o " + quoted(out));
+        EXPECT_NE(r.exitCode, 0) << c.args;
+        EXPECT_NE(r.output.find("error:"), std::string::npos) << c.args << "\n" << r.output;
+        EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.args << "\n" << r.output;
+        EXPECT_FALSE(fs::exists(out)) << c.args;
+        EXPECT_FALSE(fs::exists(dir.file("out_gt.txt"))) << c.args;
+    }
+    // Nothing else either (no temporary files left behind).
+    std::size_t files = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir.path()))
+        ++files;
+    EXPECT_EQ(files, 4u) << "walls.gridmap.gz and the three pose files only";
+}
+
+TEST(ShareOffice, IsTheOfficeAndItsToursGroundTruth) {
+    const std::string dir = toposlam::test::shareDir() + "/office";
+    const FloorPlan plan = makeOfficeFloorPlan();
+    const auto map = io::loadGridMap(dir + "/office.gridmap.gz");
+    const auto png = io::loadGridMap(dir + "/office.png");
+    EXPECT_EQ(map.getSizeX(), png.getSizeX());
+    EXPECT_NEAR(map.getXMin(), png.getXMin(), 1e-6);
+
+    // Labels: one id per room, the map's geometry, top row = highest y.
+    const cv::Mat labels = cv::imread(dir + "/office_rooms.png", cv::IMREAD_UNCHANGED);
+    ASSERT_EQ(labels.type(), CV_8UC1);
+    ASSERT_EQ(labels.cols, static_cast<int>(map.getSizeX()));
+    ASSERT_EQ(labels.rows, static_cast<int>(map.getSizeY()));
+    const GridGeometry g = GridGeometry::of(map);
+    const auto labelAt = [&](double x, double y) {
+        return static_cast<int>(labels.at<std::uint8_t>(g.sizeY - 1 - g.cellY(y), g.cellX(x)));
+    };
+    for (const FloorRoom& room : plan.rooms()) {
+        const double cx = (room.floor.xMin + room.floor.xMax) / 2;
+        EXPECT_EQ(labelAt(cx, room.floor.yMin + 0.1), room.id) << room.name;
+    }
+
+    // The log: 300-600 scans of a 361-beam laser, stamps shared with the ground truth, and a
+    // tour that enters every room.
+    const auto records = io::LaserLogReader::readAll(dir + "/office.rawlog");
+    const auto gt = io::loadTrajectory(dir + "/office_gt.txt");
+    ASSERT_EQ(records.size(), gt.size());
+    EXPECT_GE(records.size(), 300u);
+    EXPECT_LE(records.size(), 600u);
+    std::set<int> visited;
+    for (std::size_t i = 0; i < gt.size(); ++i) {
+        ASSERT_EQ(records[i].fileStamp, gt[i].stamp);
+        EXPECT_EQ(records[i].scan->getScanSize(), 361u);
+        visited.insert(labelAt(gt[i].pose.x, gt[i].pose.y));
+    }
+    visited.erase(0);
+    EXPECT_EQ(visited.size(), plan.rooms().size());
+
+    // Doors in the JSON.
+    std::ifstream json(dir + "/office_rooms.json");
+    const std::string text((std::istreambuf_iterator<char>(json)),
+                           std::istreambuf_iterator<char>());
+    std::size_t doors = 0;
+    for (std::size_t p = 0; (p = text.find("\"jambs\"", p)) != std::string::npos; ++p)
+        ++doors;
+    EXPECT_EQ(doors, plan.doors().size());
+
+    // share/ stays small.
+    std::uintmax_t bytes = 0;
+    for (const auto& e : fs::directory_iterator(dir))
+        bytes += fs::file_size(e.path());
+    EXPECT_LT(bytes, 2u * 1024 * 1024);
+}
+
+TEST(ShareOffice, IsReproducedBitForBitByMakeOffice) {
+    TempDir dir;
+    const auto r = runApp("toposlam-sim",
+                          "--make-office " + quoted(dir.path()) + " -q -c " +
+                              quoted(toposlam::test::shareDir() + "/../config_ini/sim-office.ini"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const std::string share = toposlam::test::shareDir() + "/office";
+    std::size_t compared = 0;
+    for (const auto& e : fs::directory_iterator(dir.path())) {
+        const std::string name = e.path().filename().string();
+        std::ifstream a(e.path(), std::ios::binary), b(share + "/" + name, std::ios::binary);
+        ASSERT_TRUE(b) << "share/office/" << name << " is missing";
+        std::ostringstream sa, sb;
+        sa << a.rdbuf();
+        sb << b.rdbuf();
+        EXPECT_TRUE(sa.str() == sb.str())
+            << "share/office/" << name << " differs from what toposlam-sim --make-office makes "
+            << "now: regenerate share/office (README, \"Office floor plan\")";
+        ++compared;
+    }
+    EXPECT_EQ(compared, 8u);
+}

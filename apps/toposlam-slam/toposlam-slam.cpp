@@ -2,8 +2,8 @@
 //   toposlam-slam <config.ini> <log.{rawlog,clf}> [-o outdir]
 // Writes the trajectory (one pose per scan), the occupancy grid (.gridmap.gz, .png + .yaml)
 // and prints a summary. The algorithm lives in libs/mapping.
-#include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFile.h>
+#include <toposlam/cli/CommandLine.h>
 #include <toposlam/io/GridMapIO.h>
 #include <toposlam/io/InputError.h>
 #include <toposlam/io/Trajectory.h>
@@ -30,12 +30,8 @@ int main(int argc, char** argv) {
         cmd);
     TCLAP::ValueArg<std::string> outArg("o", "out", "output directory (created; default slam-out)",
                                         false, "slam-out", "dir", cmd);
-    try {
-        cmd.parse(argc, argv);
-    } catch (const TCLAP::ArgException& e) {
-        std::cerr << "error: " << e.error() << " (" << e.argId() << ")\n";
-        return 2;
-    }
+    if (const auto exitCode = toposlam::cli::parseCommandLine(cmd, argc, argv))
+        return *exitCode;
 
     try {
         if (!fs::is_regular_file(configArg.getValue())) {
@@ -58,6 +54,12 @@ int main(int argc, char** argv) {
                     result.grid.getSizeX(), result.grid.getSizeY(), result.grid.getResolution(),
                     result.grid.getXMin(), result.grid.getXMax(), result.grid.getYMin(),
                     result.grid.getYMax());
+        if (result.wallAlignment != 0) {
+            std::printf(
+                "map turned by %.2f deg to line the walls up with the axes (wall "
+                "direction strength %.2f)\n",
+                result.wallAlignment * 180.0 / M_PI, result.wallDirectionStrength);
+        }
         for (const char* f : {"trajectory.txt", "map.gridmap.gz", "map.png", "map.yaml"}) {
             std::printf("wrote %s\n", (out / f).c_str());
         }

@@ -129,6 +129,22 @@ TEST(LogMapper, CorrectsOdometryDriftOnSimulatedLog) {
         << "the room is free";
 }
 
+TEST(LogMapper, TurnsTheMapToLineUpTheWalls) {
+    test::TempDir dir;
+    const SimulatedLog log = writeLog(dir.file("sim.rawlog"));
+    const mrpt::config::CConfigFile ini(kConfig);
+    const mapping::MappingResult result = mapping::mapLog(dir.file("sim.rawlog"), ini);
+    // The map starts in the frame of the first pose, which faces atan(0.25) = 14.04 deg off
+    // the (axis-aligned) walls; turning by that much lines them up again. Tolerance: the
+    // walls are measured in the SLAM map, whose headings carry ICP's ~0.5 deg bias (see
+    // above); the range noise itself averages out over thousands of wall pieces.
+    const double start = log.truth.front().phi();
+    EXPECT_NEAR(result.wallAlignment, start, 1.0 * M_PI / 180);
+    EXPECT_GT(result.wallDirectionStrength, 0.5);
+    const mrpt::poses::CPose2D firstPose(result.trajectory.front().pose);
+    EXPECT_DOUBLE_EQ(firstPose.phi(), result.wallAlignment) << "the first pose turned with it";
+}
+
 TEST(LogMapper, MissingLogIsAnInputError) {
     const mrpt::config::CConfigFile ini(kConfig);
     EXPECT_THROW(mapping::mapLog("/nonexistent/log.rawlog", ini), io::InputError);

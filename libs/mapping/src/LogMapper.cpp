@@ -4,6 +4,7 @@
 #include <toposlam/io/ProgressDisplay.h>
 #include <toposlam/mapping/IcpSlam.h>
 #include <toposlam/mapping/LogMapper.h>
+#include <toposlam/mapping/ManhattanAlignment.h>
 #include <toposlam/mapping/OccupancyGridBuilder.h>
 
 #include <chrono>
@@ -32,6 +33,23 @@ MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFile
     progress.finish();
     if (posedScans.empty())
         throw io::InputError(logPath, "the log contains no laser scans");
+
+    if (ini.read_bool("OccupancyGrid", "alignWithWalls", true)) {
+        const double minStrength =
+            ini.read_double("OccupancyGrid", "minWallDirectionStrength", 0.2);
+        const auto walls = estimateWallDirection(posedScans);
+        if (walls && walls->strength >= minStrength) {
+            result.wallAlignment = -walls->angle;
+            result.wallDirectionStrength = walls->strength;
+            const mrpt::poses::CPose2D turn(0, 0, result.wallAlignment);
+            for (std::size_t i = 0; i < posedScans.size(); ++i) {
+                posedScans[i].robotPose = turn + posedScans[i].robotPose;
+                result.trajectory[i].pose = posedScans[i].robotPose.asTPose();
+            }
+        } else if (walls) {
+            result.wallDirectionStrength = walls->strength;
+        }
+    }
 
     result.scans = posedScans.size();
     result.logDuration = mrpt::system::timeDifference(posedScans.front().scan->timestamp,

@@ -12,16 +12,23 @@ namespace toposlam::mapping {
 
 struct MappingResult {
     /// Robot pose at every scan: stamp = the scan's fileStamp (as in the log, so relation
-    /// files match), pose in the map frame (m, rad).
+    /// files match), pose in the map frame (m, rad): the odometry frame of the first scan,
+    /// turned about its origin by wallAlignment.
     io::Trajectory2D trajectory;
     mrpt::maps::COccupancyGridMap2D grid;
+    /// Rotation (rad) applied about the map origin to line the walls up with the grid axes
+    /// (0 when alignment is off or the walls show no dominant direction).
+    double wallAlignment = 0;
+    double wallDirectionStrength = 0;  ///< see WallDirection::strength
     std::size_t scans = 0;
     double logDuration = 0;  ///< s, last minus first scan time
     double wallSeconds = 0;  ///< s spent mapping (reading included)
 };
 
 /// Runs SLAM on `logPath` with the settings in `ini`: sections [MappingApplication] and
-/// [ICP] (icp-slam's keys, see IcpSlam) and [OccupancyGrid] (OccupancyGridOptions).
+/// [ICP] (icp-slam's keys, see IcpSlam) and [OccupancyGrid] (OccupancyGridOptions, plus
+/// alignWithWalls (default 1) and minWallDirectionStrength (default 0.2): turn the map so its
+/// dominant walls run along the axes, when they are that dominant; see ManhattanAlignment.h).
 /// Shows progress on a terminal. Throws io::InputError for unreadable or malformed logs,
 /// and for a log without scans.
 MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFileBase& ini);

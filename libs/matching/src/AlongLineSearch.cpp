@@ -49,9 +49,11 @@ mrpt::poses::CPose2D AlongLineSearch::search(const PolarScan& reference, const P
         sums_[std::size_t(b + half)] = votes_[std::size_t(b + half - 1)] +
                                        votes_[std::size_t(b + half)] +
                                        votes_[std::size_t(b + half + 1)];
+    AlignmentScoreOptions sparse = score;  // every stride-th point is evidence enough here
+    sparse.stride = stride;
     const auto value = [&](double off) {
         const mrpt::poses::CPose2D q(pose.x() + off * u.x, pose.y() + off * u.y, pose.phi());
-        const AlignmentScore a = scoreAlignment(reference, current, q, score);
+        const AlignmentScore a = scoreAlignment(reference, current, q, sparse);
         return double(a.inliers) - double(a.violations);
     };
     double best = 0, bestValue = value(0.0);
@@ -65,7 +67,7 @@ mrpt::poses::CPose2D AlongLineSearch::search(const PolarScan& reference, const P
              k <= std::min(long(sums_.size()) - 1, at + suppress); ++k)
             sums_[std::size_t(k)] = 0;
         const double centre = double(at - half) * options.bin;
-        for (long k = -2; k <= 2; ++k) {
+        for (long k = -1; k <= 1; ++k) {
             const double off = centre + double(k) * options.fineStep;
             const double v = value(off);
             if (v > bestValue || (v == bestValue && std::abs(off) < std::abs(best)))

@@ -158,21 +158,32 @@ bool GraphScanMatcher::refine(const PolarScan& referenceScan, const PolarScan& c
                                  options_.score);
         out.searchedAlongLine = true;
     }
-    if (options_.scanRefinement) {
-        out.icp = icp_.refineOnScan(referenceScan, currentScan, pose, options_.scanIcp,
-                                    options_.score.searchBeams + 1);
-        pose = out.icp.pose;
-    }
     out.pose = pose;
-    out.score = scoreAlignment(referenceScan, currentScan, pose, options_.score);
+    // Screening score: forward only, sparse, tolerant to the coarse pose's residual error.
+    AlignmentScoreOptions screen = options_.score;
+    screen.stride = options_.screenStride;
+    screen.inlierDistance = 2 * options_.score.inlierDistance;
+    const AlignmentScore a = scoreAlignment(referenceScan, currentScan, pose, screen);
+    out.screenValue = double(a.inliers) - double(a.violations);
+    return true;
+}
+
+void GraphScanMatcher::polish(const PolarScan& referenceScan, const PolarScan& currentScan,
+                              Refined& out) {
+    if (options_.scanRefinement) {
+        out.icp = icp_.refineOnScan(referenceScan, currentScan, out.pose, options_.scanIcp,
+                                    options_.score.searchBeams + 1);
+        out.pose = out.icp.pose;
+    }
+    out.score = scoreAlignment(referenceScan, currentScan, out.pose, options_.score);
     out.value = double(out.score.inliers) - double(out.score.violations);
     if (options_.symmetricScore) {
         // The reference scan seen from the current one: a pose that explains the current
         // points but puts reference points in the current scan's free space is wrong too.
-        out.reverseScore = scoreAlignment(currentScan, referenceScan, -pose, options_.score);
+        out.reverseScore = scoreAlignment(currentScan, referenceScan, -out.pose, options_.score);
         out.value += double(out.reverseScore.inliers) - double(out.reverseScore.violations);
     }
-    return true;
+    out.polished = true;
 }
 
 void GraphScanMatcher::addRefined(const PolarScan& referenceScan, const PolarScan& currentScan,
@@ -187,6 +198,34 @@ void GraphScanMatcher::addRefined(const PolarScan& referenceScan, const PolarSca
                            options_.ransac.distinctRotation))
             return;
     refined_.push_back(refined);
+}
+
+void GraphScanMatcher::polishCandidates(const PolarScan& referenceScan,
+                                        const PolarScan& currentScan) {
+    // The full refinement (scan ICP, symmetric scoring) for the best screened poses only:
+    // the leader, and any other within polishRatio of it (a possible better pose or a
+    // look-alike that makes the match ambiguous). The rest cannot win and are dropped.
+    double leader = -std::numeric_limits<double>::infinity();
+    for (const Refined& r : refined_)
+        if (!r.polished)
+            leader = std::max(leader, r.screenValue);
+    std::size_t kept = 0;
+    for (Refined& r : refined_) {
+        if (!r.polished) {
+            if (r.screenValue < leader - (1 - options_.polishRatio) * std::abs(leader))
+                continue;
+            polish(referenceScan, currentScan, r);
+        }
+        // After polishing two poses may coincide: keep the first (better supported).
+        bool duplicate = false;
+        for (std::size_t k = 0; k < kept; ++k)
+            duplicate = duplicate || !posesDistinct(refined_[k].pose, r.pose,
+                                                    options_.ransac.distinctTranslation,
+                                                    options_.ransac.distinctRotation);
+        if (!duplicate)
+            refined_[kept++] = r;
+    }
+    refined_.resize(kept);
 }
 
 void GraphScanMatcher::decide() {
@@ -263,6 +302,7 @@ const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
     r.candidates = r.hypotheses = 0;
     r.spgmIterations = 0;
     r.usedFallback = false;
+    r.retriedWithoutGuess = false;
     r.secondsGraph = r.secondsRansac = r.secondsRefine = r.secondsFallback = 0;
     refined_.clear();
     auto t0 = cpuSeconds();
@@ -303,6 +343,7 @@ const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
         r.secondsRansac = t2 - t1;
         for (std::size_t h = 0; h < hyps.size() && h < options_.refineTop; ++h)
             addRefined(referenceScan, currentScan, hyps[h], h);
+        polishCandidates(referenceScan, currentScan);
         decide();
         t0 = cpuSeconds();
         r.secondsRefine = t0 - t2;
@@ -325,8 +366,18 @@ const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
             addRefined(referenceScan, currentScan, fallback_, options_.refineTop + k);
         }
         r.hypotheses += poses.size();
+        polishCandidates(referenceScan, currentScan);
         decide();
         r.secondsFallback = cpuSeconds() - t0;
+    }
+    // A guess that pruned the truth away (odometry drifted beyond the windows): once more
+    // without it, keeping the result only if that one is reliable.
+    if (guess && options_.guessFreeRetry && !r.reliable()) {
+        const MatchResult guided = r;
+        match(referenceScan, referenceFeatures, currentScan, currentFeatures, std::nullopt);
+        if (!r.reliable())
+            r = guided;
+        r.retriedWithoutGuess = true;
     }
     return r;
 }
@@ -353,6 +404,9 @@ void GraphMatcherOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
     read(c, s, "minLengthRatio", minLengthRatio);
     read(c, s, "guessTranslationWindow", guessTranslationWindow);
     read(c, s, "guessRotationWindow", guessRotationWindow);
+    int retry = guessFreeRetry ? 1 : 0;
+    read(c, s, "guessFreeRetry", retry);
+    guessFreeRetry = retry != 0;
     read(c, s, "similarity_alpha", similarity.alpha);
     read(c, s, "similarity_maxAngleDifference", similarity.maxAngleDifference);
     read(c, s, "spgm_maxIterations", spgm.maxIterations);
@@ -389,6 +443,9 @@ void GraphMatcherOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
     read(c, s, "scanIcp_robustScale", scanIcp.robustScale);
     read(c, s, "scanIcp_stride", scanIcp.stride);
     read(c, s, "scanIcp_minNoiseStd", scanIcp.minNoiseStd);
+    int symmetric = symmetricScore ? 1 : 0;
+    read(c, s, "symmetricScore", symmetric);
+    symmetricScore = symmetric != 0;
     read(c, s, "score_inlierDistance", score.inlierDistance);
     long searchBeams = score.searchBeams;
     searchBeams = c.read_int(s, "score_searchBeams", int(searchBeams));
@@ -403,6 +460,8 @@ void GraphMatcherOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
     read(c, s, "alongLine_peaks", alongLine.peaks);
     read(c, s, "alongLine_stride", alongLine.stride);
     read(c, s, "refineTop", refineTop);
+    read(c, s, "screenStride", screenStride);
+    read(c, s, "polishRatio", polishRatio);
     int fallback = houghFallback ? 1 : 0;
     read(c, s, "houghFallback", fallback);
     houghFallback = fallback != 0;

@@ -27,7 +27,7 @@ struct AlongLineSearchOptions {
     double bin = 0.05;              ///< m, vote bin
     double acrossTolerance = 0.08;  ///< m
     std::size_t stride = 2;         ///< use every stride-th beam of both scans
-    double fineStep = 0.02;         ///< m, scorer check around each peak (+-2 steps)
+    double fineStep = 0.03;         ///< m, scorer check around each peak (+-1 step)
     std::size_t peaks = 3;          ///< vote peaks checked with the scorer
 };
 

@@ -56,18 +56,20 @@ namespace toposlam::matching {
 struct GraphMatcherOptions {
     // Graph
     double minSegmentLength = 0.25;  ///< m; shorter segments are not graph nodes
-    std::size_t maxSegments = 24;    ///< per scan, the longest ones
+    std::size_t maxSegments = 16;    ///< per scan, the longest ones
     // Candidates
     double minLengthRatio = 0.15;         ///< shorter/longer length of a candidate pair, no guess
     double guessTranslationWindow = 1.5;  ///< m; with a guess: predicted position error
     double guessRotationWindow = 0.6;     ///< rad; with a guess: predicted direction error
+    /// With a guess and no reliable match inside its windows, match again without it.
+    bool guessFreeRetry = true;
     // Steps
     SimilarityOptions similarity;
     SpgmOptions spgm;
     RansacOptions ransac;
-    IcpOptions icp;              ///< segment-mode ICP
+    IcpOptions icp{15, 0.30, 0.05, 1e-4, 1e-5, 2, 0.01, 1e-2};  ///< segment-mode ICP
     bool scanRefinement = true;  ///< polish with scan-mode ICP on all points
-    IcpOptions scanIcp{15, 0.20, 0.05, 1e-4, 1e-5, 1, 0.01, 1e-4};
+    IcpOptions scanIcp{15, 0.20, 0.05, 1e-4, 1e-5, 2, 0.01, 1e-4};
     AlignmentScoreOptions score;
     bool symmetricScore = true;  ///< score both ways (current on reference and back)
     /// Consensus lines this close to parallel (smallest / largest eigenvalue of their normal
@@ -75,6 +77,11 @@ struct GraphMatcherOptions {
     double alongLineConditioning = 0.03;
     AlongLineSearchOptions alongLine;
     std::size_t refineTop = 3;  ///< hypotheses refined by ICP and scored on points
+    /// Refined hypotheses are first screened (segment ICP, every screenStride-th point, twice
+    /// the inlier distance); only those within polishRatio of the best screened one get the
+    /// scan-mode ICP and the full scoring.
+    std::size_t screenStride = 3;
+    double polishRatio = 0.8;
     /// When the graph gives nothing reliable, search with HoughPoseSearch (rotations from
     /// segment pairs, translations voted by all points) and refine its best houghRefineTop.
     bool houghFallback = true;
@@ -128,7 +135,8 @@ struct MatchResult {
     std::size_t currentNodes = 0, referenceNodes = 0, candidates = 0;
     int spgmIterations = 0;
     std::size_t hypotheses = 0;
-    bool usedFallback = false;  ///< HoughPoseSearch ran (the graph alone was not reliable)
+    bool usedFallback = false;         ///< HoughPoseSearch ran (the graph alone was not reliable)
+    bool retriedWithoutGuess = false;  ///< the guided match failed and was retried guess-free
     /// CPU seconds (this thread) of the stages: graphs + candidates + similarities + SPGM + greedy;
     /// RANSAC; refinement and scoring of its hypotheses; the fallback (search + refinement).
     double secondsGraph = 0, secondsRansac = 0, secondsRefine = 0, secondsFallback = 0;
@@ -166,13 +174,20 @@ class GraphScanMatcher {
         mrpt::poses::CPose2D pose;
         IcpResult icp;
         AlignmentScore score, reverseScore;
-        double value = 0;
+        double value = 0;        // inliers - violations (both ways when symmetric)
+        double screenValue = 0;  // the same, sparse and forward only, before polishing
+        bool polished = false;
         std::size_t hypothesis = 0;
         bool searchedAlongLine = false;
         mrpt::poses::CPose2D lineBase;       // pose the along-line search started from
         mrpt::math::TPoint2D lineDirection;  // and its direction
     };
-    /// Refines hypothesis `h` into `out`; false when it duplicates an earlier one.
+    /// Polishes a coarse pose: scan-mode ICP and the full (symmetric) scoring.
+    void polish(const PolarScan& referenceScan, const PolarScan& currentScan, Refined& out);
+    /// Polishes the screened poses that can still win; drops the others and duplicates.
+    void polishCandidates(const PolarScan& referenceScan, const PolarScan& currentScan);
+    /// Coarse refinement of hypothesis `h` into `out` (line fit, segment ICP, along-line
+    /// search) and its screening score; false when it duplicates an earlier one.
     bool refine(const PolarScan& referenceScan, const PolarScan& currentScan, const Hypothesis& h,
                 Refined& out);
     /// Refines `h` and keeps it unless it ends on a pose already kept.

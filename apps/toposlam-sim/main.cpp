@@ -78,6 +78,7 @@ int run(int argc, char** argv) {
         "  toposlam-sim --make-office share/office -c config_ini/sim-office.ini",
         ' ', "0.1.0");
     ParseErrorOutput output;
+    delete cmd.getOutput();  // TCLAP's setOutput() would leak the default output object
     cmd.setOutput(&output);
 
     TCLAP::UnlabeledValueArg<std::string> mapArg(

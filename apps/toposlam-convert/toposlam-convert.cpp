@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -174,6 +175,7 @@ int run(int argc, char** argv) {
         false, "", "x,y", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "No progress display and no summary", cmd);
     ParseErrorOutput parseErrors;
+    const std::unique_ptr<TCLAP::CmdLineOutput> defaultOutput(cmd.getOutput());  // else leaked
     cmd.setOutput(&parseErrors);
     if (!cmd.parse(argc, argv)) {  // --help, --version, or a parse error
         return parseErrors.failed ? EXIT_FAILURE : EXIT_SUCCESS;

@@ -11,7 +11,9 @@
 #include <toposlam/io/InputError.h>
 #include <toposlam/io/LaserLogReader.h>
 #include <toposlam/io/RawlogWriter.h>
+#include <toposlam/io/Trajectory.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -320,4 +322,19 @@ TEST(RawlogSamples, MrptSampleLogs) {
     EXPECT_LE(records.size(), 225u);
     EXPECT_EQ(records.front().scan->getScanSize(), 361u);
     EXPECT_NEAR(records.front().scan->sensorPose.x(), 0.78, 1e-6);
+}
+
+TEST(RawlogSamples, SimulatedLogStartsWithoutOdometry) {
+    TOPOSLAM_SHARED_DATA_OR_SKIP(simul, "rawlog/simul.rawlog");
+    TOPOSLAM_SHARED_DATA_OR_SKIP(gt, "rawlog/simul.rawlog.GT.txt");
+    const auto records = LaserLogReader::readAll(simul);
+    // SOURCES.md: 1732 odometry actions + 1733 scans; the file starts with a sensory frame,
+    // so the first scan has no odometry.
+    ASSERT_EQ(records.size(), 1733u);
+    EXPECT_FALSE(records.front().hasOdometry);
+    EXPECT_TRUE(std::all_of(records.begin() + 1, records.end(),
+                            [](const LaserLogRecord& r) { return r.hasOdometry; }));
+    EXPECT_EQ(records.front().scan->sensorLabel, "LASER_SIM");
+    // Its ground truth is a 'timestamp x y phi' file, which Trajectory.h reads.
+    EXPECT_EQ(toposlam::io::loadTrajectory(gt).size(), 1734u);
 }

@@ -7,7 +7,7 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <toposlam/io/InputError.h>
 
-#include <regex>
+#include <cctype>
 
 #include "MrptErrorText.h"
 
@@ -20,11 +20,21 @@ namespace {
 // used instead (a log whose odometry stops).
 constexpr std::size_t kMaxScansAwaitingOdometry = 100;
 
-// A quoted C++ class name after `prefix` in an MRPT error message, or "".
+// A quoted C++ class name right after `prefix` in an MRPT error message, or "".
 std::string quotedClassAfter(const std::string& text, const std::string& prefix) {
-    const std::regex pattern(prefix + "'([A-Za-z_][A-Za-z0-9_:]*)'");
-    std::smatch match;
-    return std::regex_search(text, match, pattern) ? match[1].str() : std::string();
+    const auto at = text.find(prefix + "'");
+    if (at == std::string::npos)
+        return {};
+    const auto begin = at + prefix.size() + 1;
+    const auto end = text.find('\'', begin);
+    if (end == std::string::npos || end == begin)
+        return {};
+    const std::string name = text.substr(begin, end - begin);
+    for (char c : name) {
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == ':'))
+            return {};
+    }
+    return name;
 }
 
 }  // namespace

@@ -34,10 +34,11 @@ struct Line2D {
 };
 
 struct LineSegment {
-    mrpt::math::TPoint2D start, end;  ///< end points projected onto `line` (m); start = firstBeam side
-    Line2D line;                      ///< the fitted line
-    std::uint32_t firstBeam = 0;      ///< index of the first supporting beam in the scan
-    std::uint32_t lastBeam = 0;       ///< index of the last supporting beam (inclusive)
+    mrpt::math::TPoint2D start,
+        end;                      ///< end points projected onto `line` (m); start = firstBeam side
+    Line2D line;                  ///< the fitted line
+    std::uint32_t firstBeam = 0;  ///< index of the first supporting beam in the scan
+    std::uint32_t lastBeam = 0;   ///< index of the last supporting beam (inclusive)
     EndpointType startType = EndpointType::Open;
     EndpointType endType = EndpointType::Open;
     double residualRms = 0;  ///< RMS distance (m) of the supporting points to `line`
@@ -46,7 +47,8 @@ struct LineSegment {
 };
 
 struct Corner {
-    mrpt::math::TPoint2D position;  ///< intersection of the two incident lines (m)
+    mrpt::math::TPoint2D position;    ///< intersection of the two incident lines (m)
+    std::uint32_t beam = 0;           ///< index of the scan beam at the joint of the two segments
     std::uint32_t segmentBefore = 0;  ///< index in ScanFeatures::segments, lower beam indices
     std::uint32_t segmentAfter = 0;   ///< index in ScanFeatures::segments, higher beam indices
     double angle = 0;  ///< angle between the two segments at the corner, rad in (0, pi)

@@ -38,7 +38,9 @@
 //  - Read object by object: a clean end of file ends the stream; a truncated or corrupt
 //    object, damaged gzip data, or an object of a class not registered with MRPT (MRPT's
 //    readers stop there silently) is an InputError naming the object index (0-based, as
-//    RawLogViewer counts) and the class.
+//    RawLogViewer counts) and the class. (A plain, uncompressed rawlog cut exactly between
+//    two objects cannot be told from a complete one: the format has no object count; gzip
+//    files end with a checksum, so any cut shows.)
 //  - Actions/sensory-frame format: odometry is the composition, from (0,0,0), of the
 //    CActionRobotMovement2D increments read before the scan (the odometry change of each
 //    action; MRPT's own tools integrate them the same way).

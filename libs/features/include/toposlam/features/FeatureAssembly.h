@@ -1,0 +1,61 @@
+#pragma once
+// From a segment set L (LinePart list, after split / merge / fix) to ScanFeatures: the corner
+// paper's steps 4 and 5, plus what a usable feature set needs and the paper leaves open.
+//  - Very short parts (fewer than minSegmentPoints readings, or shorter than
+//    minSegmentLength) carry no reliable direction and are dropped. When such a part sits
+//    between two corners, its neighbours are joined instead: a corner whose two lines are
+//    split by a few noisy readings is still one corner.
+//  - Each remaining part is fitted (two-point fit, step 4, or least squares) and becomes a
+//    LineSegment; the ends are its first and last readings projected onto the line.
+//  - Each joint becomes a Corner (step 5, CornerIntersection.h) unless the fitted lines turn
+//    by less than minCornerTurn (they would have been merged; or, at the other extreme, they
+//    fold back onto each other), the intersection lies farther than maxCornerOffset from the
+//    reading where the corner was detected (nearly parallel lines or a bad fit: the
+//    intersection means nothing there), one of the two segments is no line (its residual RMS
+//    exceeds max(maxLineResidual, residualSigmas * sigma): it holds readings of two walls),
+//    or, when rejectArcs is set, the two segments are pieces of one small circle
+//    (ArcCornerTest.h).
+//  - Segment ends get their types (corner type, Jump, Open); endpoints lists every corner
+//    (convex / concave) and every jump (the nearer reading of a range discontinuity).
+// The result is in the scan's own beam order (ScanPoints::toScanOrder).
+#include <mrpt/config/CLoadableOptions.h>
+#include <toposlam/features/ArcCornerTest.h>
+#include <toposlam/features/LineFit.h>
+#include <toposlam/features/LinePart.h>
+#include <toposlam/features/ScanFeatures.h>
+#include <toposlam/features/ScanPoints.h>
+
+#include <cmath>
+#include <vector>
+
+namespace toposlam::features {
+
+struct FeatureAssemblyOptions : public mrpt::config::CLoadableOptions {
+    LineFitMethod lineFit = LineFitMethod::TwoPoint;
+    unsigned minSegmentPoints = 4;          ///< readings
+    double minSegmentLength = 0;            ///< m, first to last reading
+    double maxCornerOffset = 0.2;           ///< m, corner to the reading where it was detected
+    double minCornerTurn = std::atan(0.3);  ///< rad; the corner paper's merge angle
+    double maxLineResidual = 0.01;          ///< m, floor of the line tolerance
+    double residualSigmas = 3;              ///< line tolerance in range-noise sigmas
+    bool rejectArcs = true;
+    double maxArcRadius = 1.0;  ///< m, see ArcCornerTest
+
+    void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                            const std::string& section) override;
+    void dumpToTextStream(std::ostream& out) const override;
+};
+
+class FeatureAssembly {
+  public:
+    FeatureAssemblyOptions options;
+
+    /// `parts` is consumed (edited in place). sigma: sensor range noise (m), the floor of the
+    /// point noise in corner covariances. `out` is cleared first.
+    void assemble(ScanPoints& pts, std::vector<LinePart>& parts, double sigma, ScanFeatures& out);
+
+  private:
+    std::vector<LineFit> fits_;
+};
+
+}  // namespace toposlam::features

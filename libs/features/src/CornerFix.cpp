@@ -1,0 +1,31 @@
+#include <toposlam/features/CornerFix.h>
+
+#include <cmath>
+#include <limits>
+
+namespace toposlam::features {
+
+void fixCorners(const SlopeDifference& sd, std::vector<LinePart>& parts) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+        LinePart &first = parts[i], &second = parts[i + 1];
+        if (!first.cornerAfter || first.end != first.joint || second.begin != first.joint) {
+            continue;
+        }
+        const std::size_t q = first.joint;
+        const double toPrev = q > 0 && sd.defined(q - 1) ? std::abs(sd.dk[q] - sd.dk[q - 1]) : inf;
+        const double toNext =
+            q + 1 < sd.dk.size() && sd.defined(q + 1) ? std::abs(sd.dk[q] - sd.dk[q + 1]) : inf;
+        if (toPrev == inf && toNext == inf)
+            continue;
+        if (toPrev < toNext) {
+            if (first.end > first.begin)
+                --first.end;
+        } else {
+            if (second.begin < second.end)
+                ++second.begin;
+        }
+    }
+}
+
+}  // namespace toposlam::features

@@ -1,0 +1,64 @@
+#include <mrpt/config/CConfigFileBase.h>
+#include <toposlam/features/JumpDetector.h>
+
+#include <algorithm>
+#include <cmath>
+#include <ostream>
+
+namespace toposlam::features {
+
+void JumpDetectorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                             const std::string& section) {
+    enabled = cfg.read_bool(section, "jump_enabled", enabled);
+    k = cfg.read_double(section, "jump_k", k);
+    noiseSigmas = cfg.read_double(section, "jump_noise_sigmas", noiseSigmas);
+}
+
+void JumpDetectorOptions::dumpToTextStream(std::ostream& out) const {
+    out << "jump_enabled      = " << enabled << "  (cut runs at range jumps)\n"
+        << "jump_k            = " << k << "  (jump if gap > k * step * range)\n"
+        << "jump_noise_sigmas = " << noiseSigmas << "  (and gap > this * sqrt(2) * sigma)\n";
+}
+
+bool JumpDetector::isJump(const ScanPoints& pts, std::size_t k, double sigma) const {
+    const double dx = pts.x(k + 1) - pts.x(k), dy = pts.y(k + 1) - pts.y(k);
+    const double gap2 = dx * dx + dy * dy;
+    const double byRange = options.k * pts.angularStep() * std::min(pts.range(k), pts.range(k + 1));
+    const double byNoise = options.noiseSigmas * M_SQRT2 * sigma;
+    const double threshold = std::max(byRange, byNoise);
+    return gap2 > threshold * threshold;
+}
+
+void JumpDetector::findRuns(const ScanPoints& pts, double sigma,
+                            std::vector<PointRun>& runs) const {
+    runs.clear();
+    const std::size_t n = pts.size();
+    std::size_t k = 0;
+    EndpointType nextBeginType = EndpointType::Open;
+    while (k < n) {
+        if (!pts.valid(k)) {
+            ++k;
+            nextBeginType = EndpointType::Open;
+            continue;
+        }
+        PointRun run;
+        run.begin = static_cast<std::uint32_t>(k);
+        run.beginType = nextBeginType;
+        nextBeginType = EndpointType::Open;
+        while (k + 1 < n && pts.valid(k + 1)) {
+            if (options.enabled && isJump(pts, k, sigma)) {
+                // The nearer side occludes the farther one.
+                const bool thisNearer = pts.range(k) < pts.range(k + 1);
+                run.endType = thisNearer ? EndpointType::Jump : EndpointType::Open;
+                nextBeginType = thisNearer ? EndpointType::Open : EndpointType::Jump;
+                break;
+            }
+            ++k;
+        }
+        run.end = static_cast<std::uint32_t>(k);
+        runs.push_back(run);
+        ++k;
+    }
+}
+
+}  // namespace toposlam::features

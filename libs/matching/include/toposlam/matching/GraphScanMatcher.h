@@ -1,0 +1,181 @@
+#pragma once
+// Scan matching by attributed-graph matching (graph-matching paper, sec. 2.2), the engine of
+// tracking and loop closure. The pipeline, one file per step:
+//   1. AttributedGraph   the graphs of both scans' segments (lengths; angles, length ratios,
+//                        midpoint and closest-point distances);
+//   2. candidates        which observed segment may be which reference segment: all pairs of
+//                        compatible length, or, with a pose guess, those the guess places
+//                        near each other with similar directions (fewer pairs, faster);
+//   3. Similarity        X and y over the candidates (eqs. 2-3, alpha = 1);
+//   4. SpgmSolver        the relaxed assignment P (eqs. 4-5);
+//   5. GreedyAssignment  P -> one-to-one matches;
+//   6. RansacMatcher     transforms from pairs of matched segments (lines, not midpoints),
+//                        ranked by how many segments agree;
+//   7. PointToLineIcp    refinement of the best few on the points of their agreeing segments,
+//                        (AlongLineSearch where those are all parallel, e.g. a corridor),
+//                        then on all points against the reference scan's local lines;
+//   8. AlignmentScorer   free-space consistency of each refined pose against the whole
+//                        reference scan, and the decision below.
+// The result is the pose of the CURRENT scan's sensor in the REFERENCE scan's sensor frame
+// (what MRPT calls the pose of m2 relative to m1), its covariance and the evidence for it.
+// Decision: a pose is returned as reliable only when
+//   - enough of the current scan lands on the reference surface (inliers >= minInliers and
+//     >= minInlierRatio of its valid points) and little of it lands in space the reference
+//     saw as free (inlier fraction >= minInlierFraction);
+//   - the matched lines fix the pose (ICP's worst translation std <= maxTranslationStd):
+//     a single wall or a featureless corridor does not;
+//   - no clearly different pose (distinct by the RANSAC distinctness thresholds) explains the
+//     data almost as well (its score >= ambiguityRatio x the best): symmetric rooms and
+//     repetitive corridors are reported as ambiguous, with the alternative, instead of
+//     returning one of the look-alikes with confidence.
+// All workspaces live in the object: reuse one matcher for many pairs. Not thread-safe.
+#include <mrpt/math/CMatrixFixed.h>
+#include <mrpt/poses/CPose2D.h>
+#include <toposlam/features/ScanFeatures.h>
+#include <toposlam/matching/AlignmentScorer.h>
+#include <toposlam/matching/AlongLineSearch.h>
+#include <toposlam/matching/AttributedGraph.h>
+#include <toposlam/matching/GreedyAssignment.h>
+#include <toposlam/matching/PointToLineIcp.h>
+#include <toposlam/matching/PolarScan.h>
+#include <toposlam/matching/RansacMatcher.h>
+#include <toposlam/matching/Similarity.h>
+#include <toposlam/matching/SpgmSolver.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mrpt::config {
+class CConfigFileBase;
+}
+
+namespace toposlam::matching {
+
+struct GraphMatcherOptions {
+    // Graph
+    double minSegmentLength = 0.25;  ///< m; shorter segments are not graph nodes
+    std::size_t maxSegments = 24;    ///< per scan, the longest ones
+    // Candidates
+    double minLengthRatio = 0.15;         ///< shorter/longer length of a candidate pair, no guess
+    double guessTranslationWindow = 1.5;  ///< m; with a guess: predicted position error
+    double guessRotationWindow = 0.6;     ///< rad; with a guess: predicted direction error
+    // Steps
+    SimilarityOptions similarity;
+    SpgmOptions spgm;
+    RansacOptions ransac;
+    IcpOptions icp;              ///< segment-mode ICP
+    bool scanRefinement = true;  ///< polish with scan-mode ICP on all points
+    IcpOptions scanIcp{15, 0.20, 0.05, 1e-4, 1e-5, 1, 0.01, 1e-4};
+    AlignmentScoreOptions score;
+    /// Consensus lines this close to parallel (smallest / largest eigenvalue of their normal
+    /// matrix; 0.03 = all within ~10 deg) leave the position along them to AlongLineSearch.
+    double alongLineConditioning = 0.03;
+    AlongLineSearchOptions alongLine;
+    std::size_t refineTop = 4;  ///< hypotheses refined by ICP and scored on points
+    // Decision
+    std::size_t minInliers = 30;
+    double minInlierRatio = 0.25;     ///< of the current scan's valid points
+    double minInlierFraction = 0.70;  ///< inliers / (inliers + free-space violations)
+    double maxTranslationStd = 0.05;  ///< m
+    double ambiguityRatio = 0.85;
+
+    /// Reads every field from `section` (keys named as the fields; the step options as
+    /// <step>_<field>, e.g. ransac_maxHypotheses, icp_maxDistance); absent keys keep their
+    /// value. See config_ini/graph-matcher.ini.
+    void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+};
+
+enum class MatchStatus {
+    Matched,         ///< reliable
+    TooFewFeatures,  ///< a scan has fewer than two usable segments
+    NoConsensus,     ///< no pair of segments gives a transform others agree with
+    PoorFit,         ///< the best pose leaves too much of the scan unexplained
+    Degenerate,      ///< the matched lines do not fix the pose (e.g. one wall, a corridor)
+    Ambiguous        ///< a clearly different pose fits (almost) as well (symmetric scene)
+};
+const char* toString(MatchStatus s);
+
+struct MatchResult {
+    MatchStatus status = MatchStatus::TooFewFeatures;
+    bool reliable() const { return status == MatchStatus::Matched; }
+
+    /// Current sensor frame in the reference sensor frame (m, rad). Set whenever a
+    /// hypothesis was found, reliable or not (then it is the best guess, to inspect only).
+    mrpt::poses::CPose2D pose;
+    /// Covariance of (x, y, phi) from the point-to-line refinement (m^2, rad^2).
+    mrpt::math::CMatrixDouble33 covariance;
+    /// inlierFraction x inliers / current valid points, in [0, 1]: the share of the current
+    /// scan the pose explains, discounted by free-space violations. 0 without a hypothesis.
+    double quality = 0;
+    AlignmentScore score;    ///< point evidence of `pose`
+    double residualRms = 0;  ///< m, point-to-line RMS after refinement
+    double ambiguity = 0;    ///< score of the best distinct alternative / best score
+    std::optional<mrpt::poses::CPose2D> alternative;  ///< that alternative, if any
+    /// Matched segments as indices into the two ScanFeatures::segments.
+    std::vector<SegmentMatch> matches;
+    // Diagnostics
+    std::size_t currentNodes = 0, referenceNodes = 0, candidates = 0;
+    int spgmIterations = 0;
+    std::size_t hypotheses = 0;
+};
+
+class GraphScanMatcher {
+  public:
+    explicit GraphScanMatcher(const GraphMatcherOptions& options = {});
+
+    GraphMatcherOptions& options() { return options_; }
+    const GraphMatcherOptions& options() const { return options_; }
+
+    /// Matches the current scan against the reference scan. `guess`: pose of the current
+    /// sensor in the reference sensor frame (e.g. from odometry), or none for guess-free
+    /// matching (loop closure, relocalisation). Features must be in their scans' sensor
+    /// frames with beam indices into the PolarScans. The returned reference stays valid
+    /// until the next call.
+    const MatchResult& match(const PolarScan& referenceScan,
+                             const features::ScanFeatures& referenceFeatures,
+                             const PolarScan& currentScan,
+                             const features::ScanFeatures& currentFeatures,
+                             const std::optional<mrpt::poses::CPose2D>& guess = {});
+
+    const MatchResult& result() const { return result_; }
+    /// The graphs of the last call (for visualisation and tests).
+    const AttributedGraph& currentGraph() const { return current_; }
+    const AttributedGraph& referenceGraph() const { return reference_; }
+    /// The RANSAC hypotheses of the last call, best supported first (diagnostics).
+    const std::vector<Hypothesis>& hypotheses() const { return ransac_.hypotheses(); }
+
+  private:
+    void buildCandidates(const std::optional<mrpt::poses::CPose2D>& guess);
+    void buildPool();
+    struct Refined {
+        mrpt::poses::CPose2D pose;
+        IcpResult icp;
+        AlignmentScore score;
+        double value = 0;
+        std::size_t hypothesis = 0;
+        bool searchedAlongLine = false;
+        mrpt::poses::CPose2D lineBase;       // pose the along-line search started from
+        mrpt::math::TPoint2D lineDirection;  // and its direction
+    };
+    /// Refines hypothesis `h` into `out`; false when it duplicates an earlier one.
+    bool refine(const PolarScan& referenceScan, const PolarScan& currentScan, const Hypothesis& h,
+                Refined& out);
+
+    GraphMatcherOptions options_;
+    AttributedGraph current_, reference_;
+    bool swapped_ = false;  // SPGM rows are the reference graph
+    std::vector<Assignment> candidates_;
+    std::vector<ScoredAssignment> scored_, pool_;
+    Similarity similarity_;
+    SpgmSolver spgm_;
+    GreedyAssignment greedy_;
+    RansacMatcher ransac_;
+    PointToLineIcp icp_;
+    std::vector<LinePair> lines_;
+    std::vector<SegmentMatch> consensus_, best_;
+    std::vector<Refined> refined_;
+    MatchResult result_;
+};
+
+}  // namespace toposlam::matching

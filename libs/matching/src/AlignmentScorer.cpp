@@ -1,0 +1,88 @@
+#include <toposlam/matching/AlignmentScorer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace toposlam::matching {
+
+double AlignmentScore::inlierRms() const {
+    return inliers > 0 ? std::sqrt(inlierSquaredError / double(inliers)) : 0.0;
+}
+
+namespace {
+double squaredDistanceToSegment(double px, double py, const mrpt::math::TPoint2D& a,
+                                const mrpt::math::TPoint2D& b) {
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double len2 = dx * dx + dy * dy;
+    double t = len2 > 0 ? ((px - a.x) * dx + (py - a.y) * dy) / len2 : 0.0;
+    t = std::clamp(t, 0.0, 1.0);
+    const double ex = px - (a.x + t * dx), ey = py - (a.y + t * dy);
+    return ex * ex + ey * ey;
+}
+/// True when the reference saw farther than `range` (+ margin) on beam b and on both its
+/// neighbours: a point there contradicts the reference. Requiring the neighbours too keeps
+/// a beam that just grazes past an edge from calling the edge's points violations.
+bool inFreeSpace(const PolarScan& reference, long b, double range, double margin) {
+    for (long o = -1; o <= 1; ++o) {
+        const long r = reference.neighbour(b, o);
+        if (r < 0)
+            continue;
+        if (!reference.valid(std::size_t(r)) || range >= reference.range(std::size_t(r)) - margin)
+            return false;
+    }
+    return true;
+}
+}  // namespace
+
+AlignmentScore scoreAlignment(const PolarScan& reference, const PolarScan& current,
+                              const mrpt::poses::CPose2D& pose,
+                              const AlignmentScoreOptions& options) {
+    AlignmentScore s;
+    const double c = std::cos(pose.phi()), sn = std::sin(pose.phi());
+    const double tol2 = options.inlierDistance * options.inlierDistance;
+    const double stepArc = std::abs(reference.bearingStep());
+    const std::size_t stride = std::max<std::size_t>(1, options.stride);
+
+    for (std::size_t i = 0; i < current.size(); i += stride) {
+        if (!current.valid(i))
+            continue;
+        const mrpt::math::TPoint2D& p = current.point(i);
+        const double qx = pose.x() + c * p.x - sn * p.y, qy = pose.y() + sn * p.x + c * p.y;
+        const long b = reference.beamAtPoint(qx, qy);
+        if (b < 0) {
+            ++s.unverifiable;
+            continue;
+        }
+        double best = std::numeric_limits<double>::infinity();
+        long prev = -1;
+        for (long o = -options.searchBeams; o <= options.searchBeams; ++o) {
+            const long r = reference.neighbour(b, o);
+            if (r < 0 || !reference.valid(std::size_t(r))) {
+                prev = -1;
+                continue;
+            }
+            const mrpt::math::TPoint2D& q = reference.point(std::size_t(r));
+            best = std::min(best, (qx - q.x) * (qx - q.x) + (qy - q.y) * (qy - q.y));
+            if (prev >= 0) {
+                const mrpt::math::TPoint2D& pq = reference.point(std::size_t(prev));
+                const double join =
+                    options.maxJoinDistance + 3 * stepArc * reference.range(std::size_t(r));
+                if ((pq.x - q.x) * (pq.x - q.x) + (pq.y - q.y) * (pq.y - q.y) < join * join)
+                    best = std::min(best, squaredDistanceToSegment(qx, qy, pq, q));
+            }
+            prev = r;
+        }
+        if (best <= tol2) {
+            ++s.inliers;
+            s.inlierSquaredError += best;
+        } else if (inFreeSpace(reference, b, std::hypot(qx, qy), options.inlierDistance)) {
+            ++s.violations;
+        } else {
+            ++s.unverifiable;
+        }
+    }
+    return s;
+}
+
+}  // namespace toposlam::matching

@@ -1,0 +1,249 @@
+#include <toposlam/matching/PointToLineIcp.h>
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace toposlam::matching {
+
+/// Normal equations of one Gauss-Newton step.
+struct PointToLineIcp::Accumulator {
+    Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d g = Eigen::Vector3d::Zero();
+    double weightedSq = 0, weightSum = 0;
+    std::size_t used = 0;
+
+    /// Residual r = n . q - offset of the rotated point (rx, ry) + t = q.
+    void add(double nx, double ny, double r, double rx, double ry, double c2) {
+        const double w = 1.0 / (1.0 + r * r / c2);
+        const Eigen::Vector3d J(nx, ny, -nx * ry + ny * rx);
+        H.noalias() += w * J * J.transpose();
+        g.noalias() += w * r * J;
+        weightedSq += w * r * r;
+        weightSum += w;
+        ++used;
+    }
+    /// Applies the step to the pose; true when it was below the tolerances.
+    bool step(double& x, double& y, double& phi, const IcpOptions& o) const {
+        // Solve only along well-determined eigen-directions of H.
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(H);
+        const double largest = eig.eigenvalues().maxCoeff();
+        Eigen::Vector3d d = Eigen::Vector3d::Zero();
+        for (int k = 0; k < 3; ++k) {
+            const double lambda = eig.eigenvalues()[k];
+            if (!(lambda > o.minEigenRatio * largest) || !(lambda > 0))
+                continue;
+            const Eigen::Vector3d v = eig.eigenvectors().col(k);
+            d -= (v.dot(g) / lambda) * v;
+        }
+        x += d[0], y += d[1], phi += d[2];
+        return std::hypot(d[0], d[1]) < o.translationTolerance &&
+               std::abs(d[2]) < o.rotationTolerance;
+    }
+};
+
+namespace {
+/// Largest minor/major eigenvalue ratio of a neighbourhood that is still read as a line:
+/// 1 cm noise on 5 points 20 cm apart gives ~0.01; a right-angle corner ~0.3.
+constexpr double kMaxFlatness = 0.05;
+/// Smallest association gate of scan-mode ICP's second stage (m).
+constexpr double kMinGate = 0.02;
+
+/// Distance from p to the segment of node n, clamped at its ends.
+double distanceToSegment(const SegmentNode& n, double px, double py) {
+    const double t = std::clamp((px - n.start.x) * n.direction.x + (py - n.start.y) * n.direction.y,
+                                0.0, n.length);
+    return std::hypot(px - (n.start.x + t * n.direction.x), py - (n.start.y + t * n.direction.y));
+}
+}  // namespace
+
+IcpResult PointToLineIcp::refine(const PolarScan& current, const AttributedGraph& currentGraph,
+                                 const AttributedGraph& referenceGraph,
+                                 const std::vector<SegmentMatch>& matches,
+                                 const mrpt::poses::CPose2D& initial, const IcpOptions& options) {
+    sorted_ = matches;
+    std::sort(sorted_.begin(), sorted_.end(), [](const SegmentMatch& a, const SegmentMatch& b) {
+        return a.current != b.current ? a.current < b.current : a.reference < b.reference;
+    });
+
+    IcpResult out;
+    double x = initial.x(), y = initial.y(), phi = initial.phi();
+    const std::uint32_t stride = std::uint32_t(std::max<std::size_t>(1, options.stride));
+    const double c2 = options.robustScale * options.robustScale;
+    Accumulator acc;
+    for (int it = 0; it < options.maxIterations; ++it) {
+        acc = Accumulator();
+        const double c = std::cos(phi), s = std::sin(phi);
+        for (std::size_t m = 0; m < sorted_.size();) {
+            std::size_t end = m;
+            while (end < sorted_.size() && sorted_[end].current == sorted_[m].current)
+                ++end;
+            const SegmentNode& cn = currentGraph.node(sorted_[m].current);
+            for (std::uint32_t b = cn.firstBeam; b <= cn.lastBeam; b += stride) {
+                if (b >= current.size() || !current.valid(b))
+                    continue;
+                const mrpt::math::TPoint2D& p = current.point(b);
+                const double rx = c * p.x - s * p.y, ry = s * p.x + c * p.y;
+                const double qx = rx + x, qy = ry + y;
+                const SegmentNode* best = nullptr;
+                double bestDist = std::numeric_limits<double>::infinity();
+                for (std::size_t k = m; k < end; ++k) {
+                    const SegmentNode& rn = referenceGraph.node(sorted_[k].reference);
+                    const double d = distanceToSegment(rn, qx, qy);
+                    if (d < bestDist)
+                        bestDist = d, best = &rn;
+                }
+                const double r = best->normal.x * qx + best->normal.y * qy - best->offset;
+                if (std::abs(r) > options.maxDistance)
+                    continue;
+                acc.add(best->normal.x, best->normal.y, r, rx, ry, c2);
+            }
+            m = end;
+        }
+        out.iterations = it + 1;
+        if (acc.used < 3)
+            break;
+        if (acc.step(x, y, phi, options)) {
+            out.converged = true;
+            break;
+        }
+    }
+    out.pose = mrpt::poses::CPose2D(x, y, phi);
+    finish(out, acc, options);
+    return out;
+}
+
+void PointToLineIcp::prepareReference(const PolarScan& reference, double maxJoinDistance) {
+    const std::size_t n = reference.size();
+    lines_.assign(n, LocalLine());
+    const double stepArc = std::abs(reference.bearingStep());
+    for (std::size_t b = 0; b < n; ++b) {
+        if (!reference.valid(b))
+            continue;
+        const mrpt::math::TPoint2D& p = reference.point(b);
+        const double join = maxJoinDistance + 3 * stepArc * reference.range(b);
+        // Neighbours within +-2 beams, walking outwards and stopping at a jump.
+        double sx = p.x, sy = p.y, sxx = p.x * p.x, sxy = p.x * p.y, syy = p.y * p.y;
+        int count = 1;
+        for (long dir : {-1L, 1L}) {
+            mrpt::math::TPoint2D last = p;
+            for (long k = 1; k <= 2; ++k) {
+                const long q = reference.neighbour(long(b), dir * k);
+                if (q < 0 || !reference.valid(std::size_t(q)))
+                    break;
+                const mrpt::math::TPoint2D& o = reference.point(std::size_t(q));
+                if (std::hypot(o.x - last.x, o.y - last.y) > join)
+                    break;
+                sx += o.x, sy += o.y, sxx += o.x * o.x, sxy += o.x * o.y, syy += o.y * o.y;
+                ++count;
+                last = o;
+            }
+        }
+        if (count < 3)
+            continue;
+        // Principal direction of the neighbourhood; the normal is the minor axis.
+        const double mx = sx / count, my = sy / count;
+        const double cxx = sxx / count - mx * mx, cxy = sxy / count - mx * my,
+                     cyy = syy / count - my * my;
+        const double theta = 0.5 * std::atan2(2 * cxy, cxx - cyy);  // major axis
+        // Not a line where the neighbourhood bends (a corner, a leg): minor / major spread.
+        const double mean = 0.5 * (cxx + cyy), radius = std::hypot(0.5 * (cxx - cyy), cxy);
+        if (mean - radius > kMaxFlatness * (mean + radius))
+            continue;
+        LocalLine& l = lines_[b];
+        l.nx = -std::sin(theta);
+        l.ny = std::cos(theta);
+        l.offset = l.nx * mx + l.ny * my;
+        l.valid = true;
+    }
+}
+
+IcpResult PointToLineIcp::refineOnScan(const PolarScan& reference, const PolarScan& current,
+                                       const mrpt::poses::CPose2D& initial,
+                                       const IcpOptions& options, long searchBeams) {
+    IcpResult out;
+    double x = initial.x(), y = initial.y(), phi = initial.phi();
+    const std::size_t stride = std::max<std::size_t>(1, options.stride);
+    const double c2 = options.robustScale * options.robustScale;
+    double gate2 = options.maxDistance * options.maxDistance;
+    bool tightened = false;
+    Accumulator acc;
+    if (lines_.size() != reference.size())
+        prepareReference(reference);  // never prepared
+    for (int it = 0; it < options.maxIterations; ++it) {
+        acc = Accumulator();
+        const double c = std::cos(phi), s = std::sin(phi);
+        for (std::size_t i = 0; i < current.size(); i += stride) {
+            if (!current.valid(i))
+                continue;
+            const mrpt::math::TPoint2D& p = current.point(i);
+            const double rx = c * p.x - s * p.y, ry = s * p.x + c * p.y;
+            const double qx = rx + x, qy = ry + y;
+            const long b = reference.beamAtPoint(qx, qy);
+            if (b < 0)
+                continue;
+            long best = -1;
+            double bestD2 = gate2;
+            for (long o = -searchBeams; o <= searchBeams; ++o) {
+                const long k = reference.neighbour(b, o);
+                if (k < 0 || !lines_[std::size_t(k)].valid)
+                    continue;
+                const mrpt::math::TPoint2D& q = reference.point(std::size_t(k));
+                const double d2 = (qx - q.x) * (qx - q.x) + (qy - q.y) * (qy - q.y);
+                if (d2 < bestD2)
+                    bestD2 = d2, best = k;
+            }
+            if (best < 0)
+                continue;
+            const LocalLine& l = lines_[std::size_t(best)];
+            const double r = l.nx * qx + l.ny * qy - l.offset;
+            if (r * r > gate2)
+                continue;
+            acc.add(l.nx, l.ny, r, rx, ry, c2);
+        }
+        out.iterations = it + 1;
+        if (acc.used < 3)
+            break;
+        if (acc.step(x, y, phi, options)) {
+            // Converged with the wide gate: once more with a gate of 3 sigma of the residuals
+            // (at least kMinGate), which drops the points that only looked near a surface
+            // (beside occluding edges, on moving people) and pulled the pose by millimetres.
+            if (tightened) {
+                out.converged = true;
+                break;
+            }
+            tightened = true;
+            const double sigma = std::sqrt(acc.weightedSq / std::max(1.0, acc.weightSum));
+            const double gate = std::clamp(3 * sigma, kMinGate, options.maxDistance);
+            gate2 = gate * gate;
+        }
+    }
+    out.pose = mrpt::poses::CPose2D(x, y, phi);
+    finish(out, acc, options);
+    return out;
+}
+
+void PointToLineIcp::finish(IcpResult& out, const Accumulator& acc,
+                            const IcpOptions& options) const {
+    out.pointsUsed = acc.used;
+    out.residualRms = acc.weightSum > 0 ? std::sqrt(acc.weightedSq / acc.weightSum) : 0.0;
+    // Covariance sigma^2 H^-1, with undetermined directions (tiny eigenvalues) set huge.
+    const double dof = std::max(1.0, acc.weightSum - 3.0);
+    const double sigma2 = std::max(acc.weightedSq / dof, options.minNoiseStd * options.minNoiseStd);
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(acc.H);
+    const double scale = std::max(1.0, eig.eigenvalues().maxCoeff());
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    for (int k = 0; k < 3; ++k) {
+        const double lambda = eig.eigenvalues()[k];
+        const double variance = lambda > 1e-9 * scale ? sigma2 / lambda : 1e6;
+        cov += variance * eig.eigenvectors().col(k) * eig.eigenvectors().col(k).transpose();
+    }
+    for (int r = 0; r < 3; ++r)
+        for (int k = 0; k < 3; ++k)
+            out.covariance(r, k) = cov(r, k);
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> te(cov.topLeftCorner<2, 2>());
+    out.worstTranslationStd = std::sqrt(std::max(0.0, te.eigenvalues().maxCoeff()));
+}
+
+}  // namespace toposlam::matching

@@ -107,6 +107,11 @@ TEST(EvalSlamApp, GroundTruthModeAddsAteAndWritesTheRelations) {
         << r.output;
     EXPECT_TRUE(contains(r.output, "ATE RMSE (m)")) << r.output;
     EXPECT_TRUE(contains(r.output, "| 0.0000 | 0.0000 |")) << r.output;
+    EXPECT_TRUE(contains(r.output,
+                         "| method | consecutive (20) | 1.00 m (19) | 2.00 m (9) | "
+                         "4.00 m (4) | 8.00 m (1) |"))
+        << r.output;
+    EXPECT_TRUE(contains(readFile(f.json), "{\"separation_m\": 8, \"relations_total\": 1,"));
     EXPECT_TRUE(contains(readFile(f.json), "\"kind\": \"ground_truth\""));
     EXPECT_TRUE(contains(readFile(f.json), "\"matched_poses\": 21"));
     std::ifstream relationsOut(rel);

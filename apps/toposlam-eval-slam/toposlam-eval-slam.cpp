@@ -195,7 +195,8 @@ int run(int argc, char** argv) {
         groundTruth = io::loadTrajectory(ev.referenceFile);
         ev.groundTruthPoses = groundTruth->size();
         ev.groundTruthRelations.baseSeparation = separation.getValue();
-        relations = evaluation::relationsFromGroundTruth(*groundTruth, ev.groundTruthRelations);
+        relations = evaluation::relationsFromGroundTruth(*groundTruth, ev.groundTruthRelations,
+                                                         &ev.relationSeparations);
         if (relations.empty()) {
             throw io::InputError(ev.referenceFile, "fewer than 2 poses: no relation to score");
         }
@@ -227,9 +228,9 @@ int run(int argc, char** argv) {
         if (estimate.empty())
             throw io::InputError(m.file, "no pose in the trajectory");
         try {
-            ev.methods.push_back(evaluation::evaluateMethod(m.name, source, estimate, relations,
-                                                            groundTruth ? &*groundTruth : nullptr,
-                                                            ev.stampTolerance));
+            ev.methods.push_back(evaluation::evaluateMethod(
+                m.name, source, estimate, relations, groundTruth ? &*groundTruth : nullptr,
+                ev.stampTolerance, groundTruth ? &ev.relationSeparations : nullptr));
         } catch (const std::invalid_argument& e) {
             throw io::InputError(m.file, e.what());
         }

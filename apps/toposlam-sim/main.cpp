@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <sstream>
 
@@ -78,6 +79,8 @@ int run(int argc, char** argv) {
         "  toposlam-sim --make-office share/office -c config_ini/sim-office.ini",
         ' ', "0.1.0");
     ParseErrorOutput output;
+    // MRPT's TCLAP does not free its default output object once setOutput() replaces it.
+    const std::unique_ptr<TCLAP::CmdLineOutput> defaultOutput(cmd.getOutput());
     cmd.setOutput(&output);
 
     TCLAP::UnlabeledValueArg<std::string> mapArg(

@@ -107,6 +107,11 @@ TEST(EvalSlamApp, GroundTruthModeAddsAteAndWritesTheRelations) {
         << r.output;
     EXPECT_TRUE(contains(r.output, "ATE RMSE (m)")) << r.output;
     EXPECT_TRUE(contains(r.output, "| 0.0000 | 0.0000 |")) << r.output;
+    EXPECT_TRUE(contains(r.output,
+                         "| method | consecutive (20) | 1.00 m (19) | 2.00 m (9) | "
+                         "4.00 m (4) | 8.00 m (1) |"))
+        << r.output;
+    EXPECT_TRUE(contains(readFile(f.json), "{\"separation_m\": 8, \"relations_total\": 1,"));
     EXPECT_TRUE(contains(readFile(f.json), "\"kind\": \"ground_truth\""));
     EXPECT_TRUE(contains(readFile(f.json), "\"matched_poses\": 21"));
     std::ifstream relationsOut(rel);
@@ -198,4 +203,23 @@ TEST(EvalSlamApp, OdometryOfALogAndIcpSlamPathWithTheLogsStamps) {
     const auto rawlogStamps = runApp("toposlam-eval-slam", common);
     ASSERT_EQ(rawlogStamps.exitCode, 0) << rawlogStamps.output;
     EXPECT_TRUE(contains(rawlogStamps.output, "| icp-slam | 0 / 2 |")) << rawlogStamps.output;
+}
+
+TEST(EvalSlamApp, BundledSimulatedOfficeLogScoresAgainstItsGroundTruth) {
+    // share/office: the simulator's log and its ground truth carry the same stamps, so every
+    // derived relation and every pose matches; its odometry has simulated drift.
+    const std::string office = toposlam::test::shareDir() + "/office/";
+    ASSERT_TRUE(std::filesystem::exists(office + "office_gt.txt")) << office;
+    TempDir dir;
+    const auto r = runApp("toposlam-eval-slam", "--odometry-of " + office + "office.rawlog" +
+                                                    " --ground-truth " + office + "office_gt.txt" +
+                                                    " --json " + dir.file("office.json"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const std::string json = readFile(dir.file("office.json"));
+    EXPECT_TRUE(contains(json, "\"relations_unmatched\": 0")) << json;
+    const auto poses = json.find("\"ground_truth_poses\": ");
+    ASSERT_NE(poses, std::string::npos);
+    const std::string count = json.substr(poses + 22, json.find(',', poses) - poses - 22);
+    EXPECT_TRUE(contains(json, "\"matched_poses\": " + count)) << json;
+    EXPECT_FALSE(contains(r.output, "| 0.0000 ± 0.0000 |")) << "odometry drift is not zero";
 }

@@ -45,6 +45,17 @@ TEST(GroundTruthRelations, ConsecutivePlusDoublingSeparations) {
     EXPECT_NEAR(r[26].motion.x, 4.0, 1e-15);
 }
 
+TEST(GroundTruthRelations, ReportsTheSeparationOfEachRelation) {
+    std::vector<double> separations;
+    const PoseRelations r = relationsFromGroundTruth(straightLine(), {true, 1.0}, &separations);
+    ASSERT_EQ(separations.size(), r.size());
+    EXPECT_EQ(separations[15], 0.0) << "consecutive";
+    EXPECT_EQ(separations[16], 1.0);
+    EXPECT_EQ(separations[22], 1.0);
+    EXPECT_EQ(separations[23], 2.0);
+    EXPECT_EQ(separations[26], 4.0);
+}
+
 TEST(GroundTruthRelations, OptionsSelectTheLevels) {
     EXPECT_EQ(relationsFromGroundTruth(straightLine(), {true, 0.0}).size(), 16u);
     EXPECT_EQ(relationsFromGroundTruth(straightLine(), {false, 1.0}).size(), 11u);

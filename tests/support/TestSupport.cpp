@@ -19,21 +19,27 @@ std::string sharedDataDir() {
 
 std::string sharedDataFile(const std::string& relative) {
     const std::string dir = sharedDataDir();
-    if (dir.empty()) return {};
+    if (dir.empty())
+        return {};
     const fs::path p = fs::path(dir) / relative;
     return fs::exists(p) ? p.string() : std::string();
 }
 
-std::string shareDir() { return std::string(TOPOSLAM_SOURCE_DIR) + "/share"; }
+std::string shareDir() {
+    return std::string(TOPOSLAM_SOURCE_DIR) + "/share";
+}
 
-std::string binDir() { return std::string(TOPOSLAM_BINARY_DIR) + "/bin"; }
+std::string binDir() {
+    return std::string(TOPOSLAM_BINARY_DIR) + "/bin";
+}
 
 TempDir::TempDir() {
     static std::atomic<unsigned> counter{0};
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     std::string name = info ? std::string(info->test_suite_name()) + "." + info->name() : "tmp";
     for (char& c : name) {
-        if (c == '/') c = '_';
+        if (c == '/')
+            c = '_';
     }
     const fs::path p = fs::path(TOPOSLAM_BINARY_DIR) / "test-tmp" /
                        (name + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
@@ -50,10 +56,12 @@ TempDir::~TempDir() {
 CommandResult runCommand(const std::string& command) {
     CommandResult result;
     FILE* pipe = ::popen(("(" + command + ") </dev/null 2>&1").c_str(), "r");
-    if (!pipe) return result;
+    if (!pipe)
+        return result;
     std::array<char, 4096> buf{};
     std::size_t n = 0;
-    while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) result.output.append(buf.data(), n);
+    while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0)
+        result.output.append(buf.data(), n);
     const int status = ::pclose(pipe);
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return result;

@@ -18,7 +18,7 @@ std::string binDir();
 
 /// A fresh directory under the build tree's test-tmp/, removed by the destructor.
 class TempDir {
-public:
+  public:
     TempDir();
     ~TempDir();
     TempDir(const TempDir&) = delete;
@@ -26,7 +26,7 @@ public:
     const std::string& path() const { return path_; }
     std::string file(const std::string& name) const { return path_ + "/" + name; }
 
-private:
+  private:
     std::string path_;
 };
 
@@ -43,9 +43,9 @@ CommandResult runApp(const std::string& app, const std::string& args);
 
 /// Skips the current test, with a message, when ../shared/data/<relative> is absent;
 /// otherwise declares `var` holding its absolute path.
-#define TOPOSLAM_SHARED_DATA_OR_SKIP(var, relative)                                          \
-    const std::string var = ::toposlam::test::sharedDataFile(relative);                      \
-    if (var.empty()) {                                                                       \
-        GTEST_SKIP() << "public benchmark data not found: ../shared/data/" << (relative)     \
-                     << " (tests that need it are skipped where ../shared is absent)";        \
+#define TOPOSLAM_SHARED_DATA_OR_SKIP(var, relative)                                      \
+    const std::string var = ::toposlam::test::sharedDataFile(relative);                  \
+    if (var.empty()) {                                                                   \
+        GTEST_SKIP() << "public benchmark data not found: ../shared/data/" << (relative) \
+                     << " (tests that need it are skipped where ../shared is absent)";   \
     }

@@ -16,7 +16,8 @@ PoseRelation relationBetween(const io::TimedPose2D& from, const io::TimedPose2D&
 }  // namespace
 
 PoseRelations relationsFromGroundTruth(const io::Trajectory2D& groundTruth,
-                                       const GroundTruthRelationOptions& options) {
+                                       const GroundTruthRelationOptions& options,
+                                       std::vector<double>* separations) {
     const std::size_t n = groundTruth.size();
     // pathLength[i]: metres travelled from pose 0 to pose i.
     std::vector<double> pathLength(n, 0.0);
@@ -39,6 +40,8 @@ PoseRelations relationsFromGroundTruth(const io::Trajectory2D& groundTruth,
             relations.push_back(relationBetween(groundTruth[i], groundTruth[i + 1]));
         }
     }
+    if (separations)
+        separations->assign(relations.size(), 0.0);
     if (n < 2 || !(options.baseSeparation > 0))
         return relations;
 
@@ -55,6 +58,8 @@ PoseRelations relationsFromGroundTruth(const io::Trajectory2D& groundTruth,
                 break;
             const auto j = static_cast<std::size_t>(end - pathLength.begin());
             relations.push_back(relationBetween(groundTruth[start], groundTruth[j]));
+            if (separations)
+                separations->push_back(d);
             // Next start: d/2 further along the path, and at least one pose further.
             const auto next = firstAtDistance(start, d / 2);
             start = std::max(start + 1, static_cast<std::size_t>(next - pathLength.begin()));

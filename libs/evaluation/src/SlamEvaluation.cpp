@@ -13,7 +13,8 @@ namespace toposlam::evaluation {
 
 MethodEvaluation evaluateMethod(const std::string& name, const std::string& source,
                                 const io::Trajectory2D& estimate, const PoseRelations& relations,
-                                const io::Trajectory2D* groundTruth, double stampTolerance) {
+                                const io::Trajectory2D* groundTruth, double stampTolerance,
+                                const std::vector<double>* separations) {
     MethodEvaluation m;
     m.name = name;
     m.source = source;
@@ -21,6 +22,30 @@ MethodEvaluation evaluateMethod(const std::string& name, const std::string& sour
     m.relative = evaluateRelativePoseError(estimate, relations, {stampTolerance});
     if (groundTruth) {
         m.absolute = evaluateAbsoluteTrajectoryError(estimate, *groundTruth, stampTolerance);
+    }
+    if (separations) {
+        if (separations->size() != relations.size()) {
+            throw std::invalid_argument("evaluateMethod: one separation per relation expected");
+        }
+        std::vector<double> scales = *separations;
+        std::sort(scales.begin(), scales.end());
+        scales.erase(std::unique(scales.begin(), scales.end()), scales.end());
+        for (const double scale : scales) {
+            SeparationErrors s;
+            s.separation = scale;
+            s.totalRelations = static_cast<std::size_t>(
+                std::count(separations->begin(), separations->end(), scale));
+            std::vector<double> translation, rotation;
+            for (const RelationError& e : m.relative.errors) {
+                if ((*separations)[e.relation] != scale)
+                    continue;
+                translation.push_back(e.translation);
+                rotation.push_back(e.rotationDeg);
+            }
+            s.translation = summarizeErrors(translation);
+            s.rotation = summarizeErrors(rotation);
+            m.bySeparation.push_back(s);
+        }
     }
     return m;
 }
@@ -98,6 +123,30 @@ std::string formatEvaluationTable(const SlamEvaluation& ev) {
             }
         }
         out << "\n";
+    }
+
+    const auto& scales =
+        ev.methods.empty() ? std::vector<SeparationErrors>() : ev.methods.front().bySeparation;
+    if (!scales.empty()) {
+        out << "\nTranslational error (m) by relation separation (travelled path), mean ± std "
+               "(relations):\n\n| method |";
+        for (const SeparationErrors& s : scales) {
+            out << " "
+                << (s.separation == 0 ? std::string("consecutive") : fixed(s.separation, 2) + " m")
+                << " (" << s.totalRelations << ") |";
+        }
+        out << "\n|---|";
+        for (std::size_t i = 0; i < scales.size(); ++i)
+            out << "---|";
+        out << "\n";
+        for (const MethodEvaluation& m : ev.methods) {
+            out << "| " << m.name << " |";
+            for (const SeparationErrors& s : m.bySeparation) {
+                out << " " << (s.translation.count ? meanStd(s.translation, 4) : std::string("–"))
+                    << " |";
+            }
+            out << "\n";
+        }
     }
     return out.str();
 }
@@ -191,6 +240,17 @@ std::string formatEvaluationJson(const SlamEvaluation& ev) {
                 << ", \"phi_rad\": " << jsonNumber(a.alignment.phi) << "}"
                 << ",\n             \"position_m\": " << jsonStats(a.position)
                 << ",\n             \"heading_deg\": " << jsonStats(a.heading) << "}";
+        }
+        if (!m.bySeparation.empty()) {
+            out << ",\n     \"by_separation\": [";
+            for (std::size_t k = 0; k < m.bySeparation.size(); ++k) {
+                const SeparationErrors& s = m.bySeparation[k];
+                out << (k ? "," : "") << "\n       {\"separation_m\": " << jsonNumber(s.separation)
+                    << ", \"relations_total\": " << s.totalRelations
+                    << ", \"translation_m\": " << jsonStats(s.translation)
+                    << ", \"rotation_deg\": " << jsonStats(s.rotation) << "}";
+            }
+            out << "]";
         }
         out << "}";
     }

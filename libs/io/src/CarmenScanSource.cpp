@@ -90,6 +90,21 @@ BeamLayout oldFormatLayout(std::size_t n, std::optional<double> resolutionDeg) {
     return {span >= 179.0 * kDeg - 1e-9 ? -kPi / 2 : -span / 2, step};
 }
 
+// PARAM names of the front or rear laser (CARMEN's robot and laser modules).
+struct LaserParamNames {
+    std::string maxRange, resolution, offset, sideOffset, angularOffset;
+};
+
+const LaserParamNames& laserParamNames(bool front) {
+    static const LaserParamNames kFront{"robot_front_laser_max", "laser_front_laser_resolution",
+                                        "robot_frontlaser_offset", "robot_frontlaser_side_offset",
+                                        "robot_frontlaser_angular_offset"};
+    static const LaserParamNames kRear{"robot_rear_laser_max", "laser_rear_laser_resolution",
+                                       "robot_rearlaser_offset", "robot_rearlaser_side_offset",
+                                       "robot_rearlaser_angular_offset"};
+    return front ? kFront : kRear;
+}
+
 // The laser's pose on the robot (m, rad): the one the line states (laser pose relative to
 // the robot pose), or, when the line states none (both poses equal, as in raw FLASER logs),
 // the PARAM offsets robot_{front,rear}laser_{offset,side_offset,angular_offset} (rear lasers
@@ -105,13 +120,13 @@ mrpt::poses::CPose2D laserMount(const mrpt::poses::CPose2D& laser,
         std::abs(stated.x()) < 1e-9 && std::abs(stated.y()) < 1e-9 && std::abs(stated.phi()) < 1e-9;
     if (!none && std::hypot(stated.x(), stated.y()) <= kMaxMountOffset)
         return stated;
-    const std::string prefix = front ? "robot_frontlaser_" : "robot_rearlaser_";
+    const LaserParamNames& names = laserParamNames(front);
     const auto get = [&](const std::string& key) {
-        const auto it = params.find(prefix + key);
+        const auto it = params.find(key);
         return it == params.end() ? 0.0 : it->second;
     };
-    return mrpt::poses::CPose2D(get("offset"), get("side_offset"),
-                                get("angular_offset") + (front ? 0.0 : kPi));
+    return mrpt::poses::CPose2D(get(names.offset), get(names.sideOffset),
+                                get(names.angularOffset) + (front ? 0.0 : kPi));
 }
 
 // A pose exactly as the log prints it: CPose2D's constructor wraps the angle with arithmetic
@@ -222,11 +237,10 @@ void CarmenScanSource::parseFlaser(LaserLogRecord& out, bool front) {
     expectFields(n + 11,
                  "FLASER n r1..rn x y theta odom_x odom_y odom_theta ipc_timestamp "
                  "ipc_hostname logger_timestamp");
-    const std::string side = front ? "front" : "rear";
-    const auto maxRange =
-        static_cast<float>(param("robot_" + side + "_laser_max", options_.carmenDefaultMaxRange));
+    const LaserParamNames& names = laserParamNames(front);
+    const auto maxRange = static_cast<float>(param(names.maxRange, options_.carmenDefaultMaxRange));
     std::optional<double> resolution;
-    if (const auto it = params_.find("laser_" + side + "_laser_resolution"); it != params_.end()) {
+    if (const auto it = params_.find(names.resolution); it != params_.end()) {
         resolution = it->second;
     }
     const BeamLayout layout = oldFormatLayout(n, resolution);

@@ -19,6 +19,8 @@
 #include <toposlam/evaluation/RelationFile.h>
 #include <toposlam/io/Trajectory.h>
 
+#include <vector>
+
 namespace toposlam::evaluation {
 
 struct GroundTruthRelationOptions {
@@ -29,9 +31,11 @@ struct GroundTruthRelationOptions {
 };
 
 /// Relations of `groundTruth` under the scheme above, local ones first, then by scale and
-/// start pose. Stamps are those of the trajectory's poses. Throws std::invalid_argument for a
-/// non-finite pose.
+/// start pose. Stamps are those of the trajectory's poses. `separations`, if given, receives
+/// the scale of each relation: 0 for consecutive pairs, d (m) for the multi-scale ones.
+/// Throws std::invalid_argument for a non-finite pose.
 PoseRelations relationsFromGroundTruth(const io::Trajectory2D& groundTruth,
-                                       const GroundTruthRelationOptions& options = {});
+                                       const GroundTruthRelationOptions& options = {},
+                                       std::vector<double>* separations = nullptr);
 
 }  // namespace toposlam::evaluation

@@ -14,6 +14,15 @@
 
 namespace toposlam::evaluation {
 
+/// The errors of the relations of one scale of a ground-truth relation set
+/// (GroundTruthRelations.h): how a method drifts over 0 (consecutive poses), d, 2d, ... metres.
+struct SeparationErrors {
+    double separation = 0;           ///< m of travelled path; 0 = consecutive poses
+    std::size_t totalRelations = 0;  ///< relations of this scale
+    ErrorStatistics translation;     ///< m, over the matched ones
+    ErrorStatistics rotation;        ///< degrees
+};
+
 struct MethodEvaluation {
     std::string name;    ///< label in the table, e.g. "odometry", "icp-slam"
     std::string source;  ///< where the trajectory came from (file names)
@@ -21,6 +30,8 @@ struct MethodEvaluation {
     RelativePoseErrorResult relative;
     /// Only when the reference is a ground-truth trajectory.
     std::optional<AbsoluteTrajectoryErrorResult> absolute;
+    /// Only when the relations come with their separations (ground-truth reference).
+    std::vector<SeparationErrors> bySeparation;
 };
 
 struct SlamEvaluation {
@@ -31,17 +42,22 @@ struct SlamEvaluation {
     std::size_t groundTruthPoses = 0;
     GroundTruthRelationOptions groundTruthRelations;
     std::size_t relationCount = 0;
+    /// Ground-truth reference: the separation of each relation (relationsFromGroundTruth).
+    std::vector<double> relationSeparations;
     double stampTolerance = StampedPoseLookup::kDefaultTolerance;
     std::vector<MethodEvaluation> methods;
 };
 
-/// Scores one trajectory: the relation metric, and the ATE when `groundTruth` is given.
+/// Scores one trajectory: the relation metric, and the ATE when `groundTruth` is given;
+/// broken down by scale when `separations` (one per relation) is given.
 MethodEvaluation evaluateMethod(const std::string& name, const std::string& source,
                                 const io::Trajectory2D& estimate, const PoseRelations& relations,
-                                const io::Trajectory2D* groundTruth, double stampTolerance);
+                                const io::Trajectory2D* groundTruth, double stampTolerance,
+                                const std::vector<double>* separations = nullptr);
 
 /// A Markdown table (readable in a terminal, pasteable into a README), one row per method,
-/// preceded by a line that names the reference.
+/// preceded by a line that names the reference; with a ground-truth reference, a second table
+/// of the translational error by relation separation.
 std::string formatEvaluationTable(const SlamEvaluation& evaluation);
 
 /// The whole evaluation as a JSON document (keys documented in the README).

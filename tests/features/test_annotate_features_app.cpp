@@ -54,6 +54,10 @@ TEST(AnnotateFeaturesApp, RawlogEditReadsEveryObjectWithThePluginOnly) {
     if (test::runCommand("command -v rawlog-edit").exitCode != 0) {
         GTEST_SKIP() << "rawlog-edit (mrpt-apps) not installed";
     }
+#ifdef TOPOSLAM_SANITIZED_BUILD
+    GTEST_SKIP() << "the plugin is built with AddressSanitizer and MRPT's rawlog-edit is not, "
+                    "so it cannot load it; the Release suite runs this test";
+#endif
     test::TempDir dir;
     const std::string in = writeInputLog(dir), out = dir.file("out.rawlog");
     const auto run = test::runApp("toposlam-annotate-features",

@@ -2,6 +2,7 @@
 // as a rawlog MRPT's tools read with the TopoSLAM plugin.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFile.h>
+#include <toposlam/cli/CommandLine.h>
 #include <toposlam/features/FeatureExtractor.h>
 #include <toposlam/features/LogAnnotation.h>
 #include <toposlam/io/ProgressDisplay.h>
@@ -38,15 +39,6 @@ const char* const kDescription =
     "  toposlam-annotate-features run.rawlog -o out.rawlog -c config_ini/features.ini\n"
     "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input or options; no "
     "output file is written unless the whole log is processed.";
-
-class ParseErrorOutput : public TCLAP::StdOutput {
-  public:
-    bool failed = false;
-    void failure(TCLAP::CmdLineInterface&, TCLAP::ArgException& e) override {
-        failed = true;
-        std::cerr << "error: " << e.argId() << ": " << e.error() << " (see --help)\n";
-    }
-};
 
 int run(int argc, char** argv) {
     TCLAP::CmdLine cmd(kDescription, ' ', "0.1");
@@ -91,11 +83,8 @@ int run(int argc, char** argv) {
     TCLAP::SwitchArg printOptions("", "print-options",
                                   "Print the extractor's options (as .ini lines) and exit", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "No progress display and no summary", cmd);
-    ParseErrorOutput parseErrors;
-    const std::unique_ptr<TCLAP::CmdLineOutput> defaultOutput(cmd.getOutput());
-    cmd.setOutput(&parseErrors);
-    if (!cmd.parse(argc, argv))
-        return parseErrors.failed ? EXIT_FAILURE : EXIT_SUCCESS;
+    if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
+        return *exitCode;
 
     std::unique_ptr<mrpt::config::CConfigFile> ini;
     if (config.isSet()) {

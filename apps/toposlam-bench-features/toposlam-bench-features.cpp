@@ -4,6 +4,7 @@
 // scan on every scan of the real logs intel and fr079. One table on stdout, JSON to a file.
 #include <benchmark/benchmark.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <toposlam/cli/CommandLine.h>
 #include <toposlam/featureeval/SimulatedScans.h>
 #include <toposlam/features/FeatureExtractor.h>
 #include <toposlam/io/AtomicFile.h>
@@ -152,7 +153,8 @@ int run(int argc, char** argv) {
     TCLAP::ValueArg<double> minTime("", "min-time",
                                     "Minimum time of each timing repetition, s. Default: 0.05",
                                     false, 0.05, "s", cmd);
-    cmd.parse(argc, argv);
+    if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
+        return *exitCode;
 
     // ---- Simulated scans and accuracy ------------------------------------------------------
     const std::vector<featureeval::LaserSetup> lasers = {

@@ -1,6 +1,7 @@
 // toposlam-convert: laser logs (CARMEN or MRPT rawlog) to MRPT rawlogs in either format, the
 // odometry of a log as a trajectory, and grid maps between formats.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <toposlam/cli/CommandLine.h>
 #include <toposlam/io/GridMapIO.h>
 #include <toposlam/io/LogConversion.h>
 #include <toposlam/io/ProgressDisplay.h>
@@ -62,28 +63,6 @@ bool isGridMapPath(const std::string& path) {
     return false;
 }
 
-// "a,b[,c]" -> numbers; throws std::invalid_argument naming the option.
-std::vector<double> parseNumbers(const std::string& text, std::size_t count,
-                                 const std::string& option) {
-    std::vector<double> values;
-    std::stringstream ss(text);
-    std::string item;
-    while (std::getline(ss, item, ',')) {
-        char* end = nullptr;
-        const double v = std::strtod(item.c_str(), &end);
-        if (item.empty() || *end != '\0' || !std::isfinite(v)) {
-            throw std::invalid_argument(option + ": '" + text + "' is not a list of " +
-                                        std::to_string(count) + " numbers");
-        }
-        values.push_back(v);
-    }
-    if (values.size() != count) {
-        throw std::invalid_argument(option + ": expected " + std::to_string(count) +
-                                    " comma-separated numbers, got '" + text + "'");
-    }
-    return values;
-}
-
 std::string fileName(const std::string& path) {
     return std::filesystem::path(path).filename().string();
 }
@@ -98,7 +77,7 @@ int convertMap(const std::string& input, const std::string& output, bool hasReso
         if (hasResolution)
             geometry->resolution = resolution;
         if (!origin.empty()) {
-            const auto xy = parseNumbers(origin, 2, "--origin");
+            const auto xy = cli::parseNumberList(origin, 2, "--origin");
             geometry->originX = xy[0];
             geometry->originY = xy[1];
         }
@@ -112,17 +91,6 @@ int convertMap(const std::string& input, const std::string& output, bool hasReso
     }
     return EXIT_SUCCESS;
 }
-
-// MRPT's TCLAP reports parse errors through the output object and returns false from parse();
-// this one prints them in the project's "error: ..." form and remembers that they happened.
-class ParseErrorOutput : public TCLAP::StdOutput {
-  public:
-    bool failed = false;
-    void failure(TCLAP::CmdLineInterface&, TCLAP::ArgException& e) override {
-        failed = true;
-        std::cerr << "error: " << e.argId() << ": " << e.error() << " (see --help)\n";
-    }
-};
 
 int run(int argc, char** argv) {
     TCLAP::CmdLine cmd(kDescription, ' ', "0.1");
@@ -174,11 +142,8 @@ int run(int argc, char** argv) {
         "its sidecar). Default: the sidecar's, else 0,0",
         false, "", "x,y", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "No progress display and no summary", cmd);
-    ParseErrorOutput parseErrors;
-    const std::unique_ptr<TCLAP::CmdLineOutput> defaultOutput(cmd.getOutput());  // else leaked
-    cmd.setOutput(&parseErrors);
-    if (!cmd.parse(argc, argv)) {  // --help, --version, or a parse error
-        return parseErrors.failed ? EXIT_FAILURE : EXIT_SUCCESS;
+    if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv)) {
+        return *exitCode;
     }
 
     if (isGridMapPath(input.getValue())) {
@@ -192,7 +157,7 @@ int run(int argc, char** argv) {
     options.read.scanLabel = label.getValue();
     options.read.carmenDefaultMaxRange = static_cast<float>(maxRange.getValue());
     if (laserOffset.isSet()) {
-        const auto v = parseNumbers(laserOffset.getValue(), 3, "--laser-offset");
+        const auto v = cli::parseNumberList(laserOffset.getValue(), 3, "--laser-offset");
         options.read.laserPoseOnRobot = mrpt::math::TPose2D(v[0], v[1], v[2]);
     }
     options.rawlogPath = output.getValue();

@@ -2,6 +2,7 @@
 // (benchmark B3), against a .relations file or a ground-truth trajectory, several methods side
 // by side in one table, optionally as JSON and as a picture.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <toposlam/cli/CommandLine.h>
 #include <toposlam/evaluation/GroundTruthRelations.h>
 #include <toposlam/evaluation/IcpSlamPath.h>
 #include <toposlam/evaluation/LogOdometry.h>
@@ -139,15 +140,8 @@ int run(int argc, char** argv) {
     TCLAP::ValueArg<std::string> json(
         "", "json", "Write the results as JSON to this file (keys: see the README)", false, "",
         "out.json", cmd);
-    if (!cmd.parse(argc, argv)) {
-        // TCLAP printed the help, the version or a usage error: only the first two succeed.
-        const std::vector<std::string> args(argv + 1, argv + argc);
-        for (const char* done : {"-h", "--help", "--version"}) {
-            if (std::find(args.begin(), args.end(), done) != args.end())
-                return EXIT_SUCCESS;
-        }
-        return EXIT_FAILURE;
-    }
+    if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
+        return *exitCode;
 
     // Which trajectories, under which labels, in table order.
     if (name.isSet() && positional.getValue().size() != 1) {

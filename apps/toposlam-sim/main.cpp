@@ -3,6 +3,7 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/core/bits_math.h>
+#include <toposlam/cli/CommandLine.h>
 #include <toposlam/io/GridMapIO.h>
 #include <toposlam/io/InputError.h>
 #include <toposlam/io/Trajectory.h>
@@ -24,17 +25,6 @@ namespace {
 
 using namespace toposlam;
 using namespace toposlam::simulation;
-
-/// TCLAP's usage and version output, but errors as "error: ..." like every TopoSLAM app.
-class ParseErrorOutput : public TCLAP::StdOutput {
-  public:
-    bool failed = false;
-    void failure(TCLAP::CmdLineInterface& c, TCLAP::ArgException& e) override {
-        failed = true;
-        std::cerr << "error: " << e.argId() << ": " << e.error() << " (see " << c.getProgramName()
-                  << " --help)\n";
-    }
-};
 
 /// "out.rawlog[.gz]" -> "out_gt.txt".
 std::string defaultGroundTruthPath(const std::string& rawlog) {
@@ -78,10 +68,6 @@ int run(int argc, char** argv) {
         "  toposlam-sim map.png --poses poses.txt -o run.rawlog.gz --format sf --people 3\n"
         "  toposlam-sim --make-office share/office -c config_ini/sim-office.ini",
         ' ', "0.1.0");
-    ParseErrorOutput output;
-    // MRPT's TCLAP does not free its default output object once setOutput() replaces it.
-    const std::unique_ptr<TCLAP::CmdLineOutput> defaultOutput(cmd.getOutput());
-    cmd.setOutput(&output);
 
     TCLAP::UnlabeledValueArg<std::string> mapArg(
         "map",
@@ -164,8 +150,8 @@ int run(int argc, char** argv) {
         false, "", "x,y", cmd);
     TCLAP::SwitchArg quietArg("q", "quiet", "No progress display and no summary.", cmd, false);
 
-    if (!cmd.parse(argc, argv))
-        return output.failed ? 2 : 0;  // error, or --help / --version
+    if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
+        return *exitCode;
 
     // Configuration: defaults, then the .ini, then explicit command-line options.
     SimulatorConfig config;

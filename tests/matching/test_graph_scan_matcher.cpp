@@ -100,8 +100,11 @@ TEST(GraphScanMatcher, EmptyAndSingleWallScansGiveNoMatch) {
     GraphScanMatcher matcher;
     EXPECT_EQ(matcher.match(empty.polar, empty.features, empty.polar, empty.features).status,
               MatchStatus::TooFewFeatures);
-    EXPECT_EQ(matcher.match(w1.polar, w1.features, w2.polar, w2.features).status,
-              MatchStatus::TooFewFeatures);
+    // One wall fixes no position along itself: the fallback's point search finds poses all
+    // along it, and the refinement reports the free direction.
+    const MatchStatus oneWall = matcher.match(w1.polar, w1.features, w2.polar, w2.features).status;
+    EXPECT_TRUE(oneWall == MatchStatus::TooFewFeatures || oneWall == MatchStatus::Degenerate)
+        << toString(oneWall);
     EXPECT_FALSE(matcher.match(w1.polar, w1.features, empty.polar, empty.features).reliable());
 
     // Two parallel walls (an endless corridor) fix no along-corridor position.

@@ -1,10 +1,12 @@
 // toposlam-sim end to end, and the share/office data set it makes.
 #include <gtest/gtest.h>
+#include <mrpt/config/CConfigFile.h>
 #include <toposlam/io/GridMapIO.h>
 #include <toposlam/io/LaserLogReader.h>
 #include <toposlam/io/Trajectory.h>
 #include <toposlam/simulation/GridGeometry.h>
 #include <toposlam/simulation/OfficeFloorPlan.h>
+#include <toposlam/simulation/SimulatorConfig.h>
 
 #include <filesystem>
 #include <fstream>
@@ -236,4 +238,60 @@ TEST(ShareOffice, IsReproducedBitForBitByMakeOffice) {
         ++compared;
     }
     EXPECT_EQ(compared, 8u);
+}
+
+TEST(SimOfficeIni, SpellsOutTheBuiltInDefaultsExactly) {
+    // README and --help promise that config_ini/sim-office.ini holds the built-in defaults;
+    // bit for bit, so that share/office comes out the same with or without -c.
+    SimulatorConfig fromFile;
+    mrpt::config::CConfigFile ini(toposlam::test::shareDir() + "/../config_ini/sim-office.ini");
+    loadSimulatorConfig(ini, fromFile);
+    const SimulatorConfig d;
+    const LaserModel &a = fromFile.log.laser, &b = d.log.laser;
+    EXPECT_EQ(a.beams, b.beams);
+    EXPECT_EQ(a.aperture, b.aperture);
+    EXPECT_EQ(a.maxRange, b.maxRange);
+    EXPECT_EQ(a.minRange, b.minRange);
+    EXPECT_EQ(a.rangeNoiseStd, b.rangeNoiseStd);
+    EXPECT_EQ(a.bearingNoiseStd, b.bearingNoiseStd);
+    EXPECT_EQ(a.rightToLeft, b.rightToLeft);
+    EXPECT_EQ(a.sensorLabel, b.sensorLabel);
+    EXPECT_EQ(a.sensorPose.asVectorVal(), b.sensorPose.asVectorVal());
+    const OdometryErrorModel &oa = fromFile.log.odometry, &ob = d.log.odometry;
+    EXPECT_EQ(oa.distanceScale, ob.distanceScale);
+    EXPECT_EQ(oa.rotationScale, ob.rotationScale);
+    EXPECT_EQ(oa.curvaturePerMetre, ob.curvaturePerMetre);
+    EXPECT_EQ(oa.alpha1, ob.alpha1);
+    EXPECT_EQ(oa.alpha2, ob.alpha2);
+    EXPECT_EQ(oa.alpha3, ob.alpha3);
+    EXPECT_EQ(oa.alpha4, ob.alpha4);
+    const PeopleOptions &pa = fromFile.log.people, &pb = d.log.people;
+    EXPECT_EQ(pa.count, pb.count);
+    EXPECT_EQ(pa.radius, pb.radius);
+    EXPECT_EQ(pa.minSpeed, pb.minSpeed);
+    EXPECT_EQ(pa.maxSpeed, pb.maxSpeed);
+    EXPECT_EQ(pa.maxPause, pb.maxPause);
+    EXPECT_EQ(pa.maxTripLength, pb.maxTripLength);
+    EXPECT_EQ(pa.robotKeepOut, pb.robotKeepOut);
+    const TourOptions &ta = fromFile.tour, &tb = d.tour;
+    EXPECT_EQ(ta.robotRadius, tb.robotRadius);
+    EXPECT_EQ(ta.safetyMargin, tb.safetyMargin);
+    EXPECT_EQ(ta.preferredClearance, tb.preferredClearance);
+    EXPECT_EQ(ta.clearanceWeight, tb.clearanceWeight);
+    EXPECT_EQ(ta.areas.doorWidthMax, tb.areas.doorWidthMax);
+    EXPECT_EQ(ta.areas.minAreaM2, tb.areas.minAreaM2);
+    EXPECT_EQ(ta.smoothingSigma, tb.smoothingSigma);
+    EXPECT_EQ(ta.returnToStart, tb.returnToStart);
+    EXPECT_EQ(ta.motion.maxSpeed, tb.motion.maxSpeed);
+    EXPECT_EQ(ta.motion.maxTurnRate, tb.motion.maxTurnRate);
+    EXPECT_EQ(ta.motion.scanDistance, tb.motion.scanDistance);
+    EXPECT_EQ(ta.motion.scanAngle, tb.motion.scanAngle);
+    EXPECT_EQ(ta.motion.startTime, tb.motion.startTime);
+    EXPECT_EQ(fromFile.format, d.format);
+    EXPECT_EQ(fromFile.log.seed, d.log.seed);
+    EXPECT_EQ(fromFile.log.odometryStep, d.log.odometryStep);
+    EXPECT_EQ(fromFile.log.odometryStepAngle, d.log.odometryStepAngle);
+    EXPECT_EQ(fromFile.log.world.thresholds.occupiedBelow, d.log.world.thresholds.occupiedBelow);
+    EXPECT_EQ(fromFile.log.world.thresholds.freeAbove, d.log.world.thresholds.freeAbove);
+    EXPECT_EQ(fromFile.log.world.unknownIsObstacle, d.log.world.unknownIsObstacle);
 }

@@ -76,7 +76,8 @@ AlignmentScore scoreAlignment(const PolarScan& reference, const PolarScan& curre
         if (best <= tol2) {
             ++s.inliers;
             s.inlierSquaredError += best;
-        } else if (inFreeSpace(reference, b, std::hypot(qx, qy), options.inlierDistance)) {
+        } else if (inFreeSpace(reference, b, std::sqrt(qx * qx + qy * qy),
+                               options.inlierDistance)) {
             ++s.violations;
         } else {
             ++s.unverifiable;

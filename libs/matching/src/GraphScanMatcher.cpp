@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
+#include <limits>
 
 namespace toposlam::matching {
 
@@ -25,6 +27,15 @@ const char* toString(MatchStatus s) {
     }
     return "?";
 }
+
+namespace {
+/// CPU time of the calling thread (s): stage timings that other processes do not inflate.
+double cpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+}  // namespace
 
 GraphScanMatcher::GraphScanMatcher(const GraphMatcherOptions& options) : options_(options) {}
 
@@ -143,19 +154,135 @@ bool GraphScanMatcher::refine(const PolarScan& referenceScan, const PolarScan& c
         for (const SegmentMatch& m : consensus_)
             longest = std::max(longest, current_.node(m.current).length);
         search.range = std::min(search.range, longest);
-        pose = searchAlongLine(referenceScan, currentScan, pose, fit.weakDirection, search,
-                               options_.score);
+        pose = alongLine_.search(referenceScan, currentScan, pose, fit.weakDirection, search,
+                                 options_.score);
         out.searchedAlongLine = true;
     }
-    if (options_.scanRefinement && !consensus_.empty()) {
-        out.icp = icp_.refineOnScan(referenceScan, currentScan, pose, options_.scanIcp,
-                                    options_.score.searchBeams + 1);
-        pose = out.icp.pose;
-    }
     out.pose = pose;
-    out.score = scoreAlignment(referenceScan, currentScan, pose, options_.score);
-    out.value = double(out.score.inliers) - double(out.score.violations);
+    // Screening score: forward only, sparse, tolerant to the coarse pose's residual error.
+    AlignmentScoreOptions screen = options_.score;
+    screen.stride = options_.screenStride;
+    screen.inlierDistance = 2 * options_.score.inlierDistance;
+    const AlignmentScore a = scoreAlignment(referenceScan, currentScan, pose, screen);
+    out.screenValue = double(a.inliers) - double(a.violations);
     return true;
+}
+
+void GraphScanMatcher::polish(const PolarScan& referenceScan, const PolarScan& currentScan,
+                              Refined& out) {
+    if (options_.scanRefinement) {
+        out.icp = icp_.refineOnScan(referenceScan, currentScan, out.pose, options_.scanIcp,
+                                    options_.score.searchBeams + 1);
+        out.pose = out.icp.pose;
+    }
+    out.score = scoreAlignment(referenceScan, currentScan, out.pose, options_.score);
+    out.value = double(out.score.inliers) - double(out.score.violations);
+    if (options_.symmetricScore) {
+        // The reference scan seen from the current one: a pose that explains the current
+        // points but puts reference points in the current scan's free space is wrong too.
+        out.reverseScore = scoreAlignment(currentScan, referenceScan, -out.pose, options_.score);
+        out.value += double(out.reverseScore.inliers) - double(out.reverseScore.violations);
+    }
+    out.polished = true;
+}
+
+void GraphScanMatcher::addRefined(const PolarScan& referenceScan, const PolarScan& currentScan,
+                                  const Hypothesis& h, std::size_t index) {
+    Refined refined;
+    refined.hypothesis = index;
+    if (!refine(referenceScan, currentScan, h, refined))
+        return;
+    // Converged onto an earlier (better supported) hypothesis's pose: the same solution.
+    for (const Refined& r : refined_)
+        if (!posesDistinct(r.pose, refined.pose, options_.ransac.distinctTranslation,
+                           options_.ransac.distinctRotation))
+            return;
+    refined_.push_back(refined);
+}
+
+void GraphScanMatcher::polishCandidates(const PolarScan& referenceScan,
+                                        const PolarScan& currentScan) {
+    // The full refinement (scan ICP, symmetric scoring) for the best screened poses only:
+    // the leader, and any other within polishRatio of it (a possible better pose or a
+    // look-alike that makes the match ambiguous). The rest cannot win and are dropped.
+    double leader = -std::numeric_limits<double>::infinity();
+    for (const Refined& r : refined_)
+        if (!r.polished)
+            leader = std::max(leader, r.screenValue);
+    std::size_t kept = 0;
+    for (Refined& r : refined_) {
+        if (!r.polished) {
+            if (r.screenValue < leader - (1 - options_.polishRatio) * std::abs(leader))
+                continue;
+            polish(referenceScan, currentScan, r);
+        }
+        // After polishing two poses may coincide: keep the first (better supported).
+        bool duplicate = false;
+        for (std::size_t k = 0; k < kept; ++k)
+            duplicate = duplicate || !posesDistinct(refined_[k].pose, r.pose,
+                                                    options_.ransac.distinctTranslation,
+                                                    options_.ransac.distinctRotation);
+        if (!duplicate)
+            refined_[kept++] = r;
+    }
+    refined_.resize(kept);
+}
+
+void GraphScanMatcher::decide() {
+    MatchResult& r = result_;
+    if (refined_.empty())
+        return;
+    // Best explained first; equal evidence: the tighter fit.
+    std::stable_sort(refined_.begin(), refined_.end(), [](const Refined& a, const Refined& b) {
+        if (a.value != b.value)
+            return a.value > b.value;
+        return a.score.inlierRms() < b.score.inlierRms();
+    });
+    const Refined& best = refined_.front();
+    r.pose = best.pose;
+    r.covariance = best.icp.covariance;
+    r.residualRms = best.icp.residualRms;
+    r.score = best.score;
+    r.reverseScore = best.reverseScore;
+    // Evidence in both directions when scored symmetrically: counts add up.
+    AlignmentScore evidence = best.score;
+    if (options_.symmetricScore) {
+        evidence.inliers += best.reverseScore.inliers;
+        evidence.violations += best.reverseScore.violations;
+        evidence.unverifiable += best.reverseScore.unverifiable;
+        evidence.inlierSquaredError += best.reverseScore.inlierSquaredError;
+    }
+    const double scored = double(evidence.verified() + evidence.unverifiable);
+    r.quality = scored > 0 ? evidence.inlierFraction() * double(evidence.inliers) / scored : 0.0;
+    RansacMatcher::consensus(current_, reference_, best.pose, options_.ransac, &consensus_);
+    r.matches.clear();
+    for (const SegmentMatch& m : consensus_)
+        r.matches.push_back(
+            {current_.node(m.current).segment, reference_.node(m.reference).segment});
+
+    // refined_ holds pairwise distinct poses: the runner-up is the best alternative.
+    double lead = std::numeric_limits<double>::infinity();
+    r.alternative.reset();
+    r.ambiguity = 0;
+    if (refined_.size() > 1) {
+        const Refined& alt = refined_[1];
+        r.alternative = alt.pose;
+        r.ambiguity = best.value > 0 ? std::max(0.0, alt.value) / best.value : 1.0;
+        lead = best.value - alt.value;
+    }
+
+    if (best.score.inliers < options_.minInliers ||
+        double(evidence.inliers) < options_.minInlierRatio * scored ||
+        evidence.inlierFraction() < options_.minInlierFraction) {
+        r.status = MatchStatus::PoorFit;
+    } else if (best.icp.pointsUsed < 3 ||
+               best.icp.worstTranslationStd > options_.maxTranslationStd) {
+        r.status = MatchStatus::Degenerate;
+    } else if (lead < options_.ambiguityMargin * scored) {
+        r.status = MatchStatus::Ambiguous;
+    } else {
+        r.status = MatchStatus::Matched;
+    }
 }
 
 const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
@@ -169,101 +296,88 @@ const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
     r.covariance.setZero();
     r.quality = r.residualRms = r.ambiguity = 0;
     r.score = {};
+    r.reverseScore = {};
     r.alternative.reset();
     r.matches.clear();
     r.candidates = r.hypotheses = 0;
     r.spgmIterations = 0;
+    r.usedFallback = false;
+    r.retriedWithoutGuess = false;
+    r.secondsGraph = r.secondsRansac = r.secondsRefine = r.secondsFallback = 0;
+    refined_.clear();
+    auto t0 = cpuSeconds();
 
     current_.build(currentFeatures.segments, options_.minSegmentLength, options_.maxSegments);
     reference_.build(referenceFeatures.segments, options_.minSegmentLength, options_.maxSegments);
     r.currentNodes = current_.size();
     r.referenceNodes = reference_.size();
-    if (current_.size() < 2 || reference_.size() < 2)
+    if (current_.empty() || reference_.empty())
         return r;
 
     // SPGM rows: the smaller graph, so that "every row matched once" can hold.
     swapped_ = current_.size() > reference_.size();
     buildCandidates(guess);
     r.candidates = candidates_.size();
-    r.status = MatchStatus::NoConsensus;
-    if (candidates_.size() < 2)
-        return r;
-
-    const AttributedGraph& rows = swapped_ ? reference_ : current_;
-    const AttributedGraph& cols = swapped_ ? current_ : reference_;
-    similarity_.build(rows, cols, candidates_, options_.similarity);
-    const std::vector<double>& p =
-        spgm_.solve(similarity_, candidates_, rows.size(), cols.size(), options_.spgm);
-    r.spgmIterations = spgm_.iterations();
-    for (std::size_t k = 0; k < p.size(); ++k)
-        scored_[k].probability = p[k];
-    greedy_.solve(candidates_, p, rows.size(), cols.size());
-
-    buildPool();
-    const std::vector<Hypothesis>& hyps =
-        ransac_.run(current_, reference_, pool_, options_.ransac, guess);
-    r.hypotheses = ransac_.evaluated();
-    if (hyps.empty())
-        return r;
-
     if (options_.scanRefinement)
         icp_.prepareReference(referenceScan, options_.score.maxJoinDistance);
-    refined_.clear();
-    for (std::size_t h = 0; h < hyps.size() && h < options_.refineTop; ++h) {
-        Refined refined;
-        refined.hypothesis = h;
-        if (!refine(referenceScan, currentScan, hyps[h], refined))
-            continue;
-        // Converged onto an earlier (better supported) hypothesis's pose: the same solution.
-        bool duplicate = false;
-        for (const Refined& r : refined_)
-            duplicate = duplicate ||
-                        !posesDistinct(r.pose, refined.pose, options_.ransac.distinctTranslation,
-                                       options_.ransac.distinctRotation);
-        if (!duplicate)
-            refined_.push_back(refined);
-    }
-    // Best explained first; equal evidence: the tighter fit.
-    std::stable_sort(refined_.begin(), refined_.end(), [](const Refined& a, const Refined& b) {
-        if (a.value != b.value)
-            return a.value > b.value;
-        return a.score.inlierRms() < b.score.inlierRms();
-    });
-    const Refined& best = refined_.front();
-    r.pose = best.pose;
-    r.covariance = best.icp.covariance;
-    r.residualRms = best.icp.residualRms;
-    r.score = best.score;
-    const std::size_t scored = best.score.inliers + best.score.violations + best.score.unverifiable;
-    r.quality = scored > 0
-                    ? best.score.inlierFraction() * double(best.score.inliers) / double(scored)
-                    : 0.0;
-    RansacMatcher::consensus(current_, reference_, best.pose, options_.ransac, &consensus_);
-    for (const SegmentMatch& m : consensus_)
-        r.matches.push_back(
-            {current_.node(m.current).segment, reference_.node(m.reference).segment});
 
-    for (std::size_t k = 1; k < refined_.size(); ++k) {
-        if (posesDistinct(refined_[k].pose, best.pose, options_.ransac.distinctTranslation,
-                          options_.ransac.distinctRotation)) {
-            r.alternative = refined_[k].pose;
-            r.ambiguity = best.value > 0 ? std::max(0.0, refined_[k].value) / best.value : 1.0;
-            break;
+    if (current_.size() >= 2 && reference_.size() >= 2 && candidates_.size() >= 2) {
+        r.status = MatchStatus::NoConsensus;
+        const AttributedGraph& rows = swapped_ ? reference_ : current_;
+        const AttributedGraph& cols = swapped_ ? current_ : reference_;
+        similarity_.build(rows, cols, candidates_, options_.similarity);
+        const std::vector<double>& p =
+            spgm_.solve(similarity_, candidates_, rows.size(), cols.size(), options_.spgm);
+        r.spgmIterations = spgm_.iterations();
+        for (std::size_t k = 0; k < p.size(); ++k)
+            scored_[k].probability = p[k];
+        greedy_.solve(candidates_, p, rows.size(), cols.size());
+        const double t1 = cpuSeconds();
+        r.secondsGraph = t1 - t0;
+
+        buildPool();
+        const std::vector<Hypothesis>& hyps =
+            ransac_.run(current_, reference_, pool_, options_.ransac, guess);
+        r.hypotheses = ransac_.evaluated();
+        const double t2 = cpuSeconds();
+        r.secondsRansac = t2 - t1;
+        for (std::size_t h = 0; h < hyps.size() && h < options_.refineTop; ++h)
+            addRefined(referenceScan, currentScan, hyps[h], h);
+        polishCandidates(referenceScan, currentScan);
+        decide();
+        t0 = cpuSeconds();
+        r.secondsRefine = t0 - t2;
+    }
+
+    // Nothing reliable from the graph: rotations from segment pairs, translations from all
+    // points (HoughPoseSearch), refined and judged the same way, together with the graph's.
+    if (options_.houghFallback && r.status != MatchStatus::Matched &&
+        r.status != MatchStatus::Ambiguous && !scored_.empty()) {
+        r.usedFallback = true;
+        const std::vector<PoseCandidate>& poses = hough_.search(
+            referenceScan, currentScan, current_, reference_, scored_, options_.hough);
+        for (std::size_t k = 0; k < poses.size() && k < options_.houghRefineTop; ++k) {
+            if (guess && posesDistinct(poses[k].pose, *guess, options_.guessTranslationWindow,
+                                       options_.guessRotationWindow))
+                continue;
+            fallback_.pose = poses[k].pose;
+            RansacMatcher::consensus(current_, reference_, fallback_.pose, options_.ransac,
+                                     &fallback_.consensus);
+            addRefined(referenceScan, currentScan, fallback_, options_.refineTop + k);
         }
+        r.hypotheses += poses.size();
+        polishCandidates(referenceScan, currentScan);
+        decide();
+        r.secondsFallback = cpuSeconds() - t0;
     }
-
-    const double validScored = double(scored);
-    if (best.score.inliers < options_.minInliers ||
-        double(best.score.inliers) < options_.minInlierRatio * validScored ||
-        best.score.inlierFraction() < options_.minInlierFraction) {
-        r.status = MatchStatus::PoorFit;
-    } else if (best.icp.pointsUsed < 3 ||
-               best.icp.worstTranslationStd > options_.maxTranslationStd) {
-        r.status = MatchStatus::Degenerate;
-    } else if (r.ambiguity >= options_.ambiguityRatio) {
-        r.status = MatchStatus::Ambiguous;
-    } else {
-        r.status = MatchStatus::Matched;
+    // A guess that pruned the truth away (odometry drifted beyond the windows): once more
+    // without it, keeping the result only if that one is reliable.
+    if (guess && options_.guessFreeRetry && !r.reliable()) {
+        const MatchResult guided = r;
+        match(referenceScan, referenceFeatures, currentScan, currentFeatures, std::nullopt);
+        if (!r.reliable())
+            r = guided;
+        r.retriedWithoutGuess = true;
     }
     return r;
 }
@@ -290,6 +404,9 @@ void GraphMatcherOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
     read(c, s, "minLengthRatio", minLengthRatio);
     read(c, s, "guessTranslationWindow", guessTranslationWindow);
     read(c, s, "guessRotationWindow", guessRotationWindow);
+    int retry = guessFreeRetry ? 1 : 0;
+    read(c, s, "guessFreeRetry", retry);
+    guessFreeRetry = retry != 0;
     read(c, s, "similarity_alpha", similarity.alpha);
     read(c, s, "similarity_maxAngleDifference", similarity.maxAngleDifference);
     read(c, s, "spgm_maxIterations", spgm.maxIterations);
@@ -326,6 +443,9 @@ void GraphMatcherOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
     read(c, s, "scanIcp_robustScale", scanIcp.robustScale);
     read(c, s, "scanIcp_stride", scanIcp.stride);
     read(c, s, "scanIcp_minNoiseStd", scanIcp.minNoiseStd);
+    int symmetric = symmetricScore ? 1 : 0;
+    read(c, s, "symmetricScore", symmetric);
+    symmetricScore = symmetric != 0;
     read(c, s, "score_inlierDistance", score.inlierDistance);
     long searchBeams = score.searchBeams;
     searchBeams = c.read_int(s, "score_searchBeams", int(searchBeams));
@@ -334,15 +454,31 @@ void GraphMatcherOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
     read(c, s, "score_maxJoinDistance", score.maxJoinDistance);
     read(c, s, "alongLineConditioning", alongLineConditioning);
     read(c, s, "alongLine_range", alongLine.range);
-    read(c, s, "alongLine_coarseStep", alongLine.coarseStep);
+    read(c, s, "alongLine_bin", alongLine.bin);
+    read(c, s, "alongLine_acrossTolerance", alongLine.acrossTolerance);
     read(c, s, "alongLine_fineStep", alongLine.fineStep);
+    read(c, s, "alongLine_peaks", alongLine.peaks);
     read(c, s, "alongLine_stride", alongLine.stride);
     read(c, s, "refineTop", refineTop);
+    read(c, s, "screenStride", screenStride);
+    read(c, s, "polishRatio", polishRatio);
+    int fallback = houghFallback ? 1 : 0;
+    read(c, s, "houghFallback", fallback);
+    houghFallback = fallback != 0;
+    read(c, s, "houghRefineTop", houghRefineTop);
+    read(c, s, "hough_maxRotations", hough.maxRotations);
+    read(c, s, "hough_rotationBin", hough.rotationBin);
+    read(c, s, "hough_minRotationWeight", hough.minRotationWeight);
+    read(c, s, "hough_window", hough.window);
+    read(c, s, "hough_cell", hough.cell);
+    read(c, s, "hough_stride", hough.stride);
+    read(c, s, "hough_peaksPerRotation", hough.peaksPerRotation);
+    read(c, s, "hough_minPeakFraction", hough.minPeakFraction);
     read(c, s, "minInliers", minInliers);
     read(c, s, "minInlierRatio", minInlierRatio);
     read(c, s, "minInlierFraction", minInlierFraction);
     read(c, s, "maxTranslationStd", maxTranslationStd);
-    read(c, s, "ambiguityRatio", ambiguityRatio);
+    read(c, s, "ambiguityMargin", ambiguityMargin);
 }
 
 }  // namespace toposlam::matching

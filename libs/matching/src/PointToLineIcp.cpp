@@ -164,7 +164,8 @@ IcpResult PointToLineIcp::refineOnScan(const PolarScan& reference, const PolarSc
                                        const IcpOptions& options, long searchBeams) {
     IcpResult out;
     double x = initial.x(), y = initial.y(), phi = initial.phi();
-    const std::size_t stride = std::max<std::size_t>(1, options.stride);
+    // Stage 1 (wide gate) on every stride-th point, stage 2 (tight gate) on all of them.
+    std::size_t stride = std::max<std::size_t>(1, options.stride);
     const double c2 = options.robustScale * options.robustScale;
     double gate2 = options.maxDistance * options.maxDistance;
     bool tightened = false;
@@ -217,6 +218,7 @@ IcpResult PointToLineIcp::refineOnScan(const PolarScan& reference, const PolarSc
             const double sigma = std::sqrt(acc.weightedSq / std::max(1.0, acc.weightSum));
             const double gate = std::clamp(3 * sigma, kMinGate, options.maxDistance);
             gate2 = gate * gate;
+            stride = 1;
         }
     }
     out.pose = mrpt::poses::CPose2D(x, y, phi);

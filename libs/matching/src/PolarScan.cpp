@@ -99,14 +99,4 @@ long PolarScan::beamAtPoint(double x, double y) const {
     return beamAt(fastAtan2(y, x));
 }
 
-long PolarScan::neighbour(long beam, long offset) const {
-    const long n = static_cast<long>(range_.size());
-    long b = beam + offset;
-    if (fullCircle_) {
-        b %= n;
-        return b < 0 ? b + n : b;
-    }
-    return (b < 0 || b >= n) ? -1 : b;
-}
-
 }  // namespace toposlam::matching

@@ -48,7 +48,10 @@ void Similarity::build(const AttributedGraph& rows, const AttributedGraph& cols,
                 if (b == a)
                     continue;
                 const AttributedGraph::EdgeAttributes& Bp = cols.edge(a, b);
-                const double dAngle = std::abs(wrapAngle(B[0] - Bp[0]));
+                // Both angles are in (-pi, pi]: one turn at most brings the difference back.
+                double dAngle = std::abs(B[0] - Bp[0]);
+                if (dAngle > M_PI)
+                    dAngle = 2 * M_PI - dAngle;
                 if (dAngle > options.maxAngleDifference)
                     continue;
                 const double sum = dAngle + std::abs(B[1] - Bp[1]) + std::abs(B[2] - Bp[2]) +

@@ -1,7 +1,8 @@
-#include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/core/bits_math.h>
 #include <mrpt/math/wrap2pi.h>
 #include <toposlam/simulation/MotionProfile.h>
+
+#include "ConfigReading.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,11 +12,11 @@ namespace toposlam::simulation {
 using mrpt::math::TPoint2D;
 
 void MotionOptions::loadFromConfig(const mrpt::config::CConfigFileBase& c, const std::string& s) {
-    maxSpeed = c.read_double(s, "max_speed", maxSpeed);
-    maxTurnRate = mrpt::DEG2RAD(c.read_double(s, "max_turn_rate_deg", mrpt::RAD2DEG(maxTurnRate)));
-    scanDistance = c.read_double(s, "scan_distance", scanDistance);
-    scanAngle = mrpt::DEG2RAD(c.read_double(s, "scan_angle_deg", mrpt::RAD2DEG(scanAngle)));
-    startTime = c.read_double(s, "start_time", startTime);
+    detail::readKey(c, s, "max_speed", maxSpeed);
+    detail::readDegrees(c, s, "max_turn_rate_deg", maxTurnRate);
+    detail::readKey(c, s, "scan_distance", scanDistance);
+    detail::readDegrees(c, s, "scan_angle_deg", scanAngle);
+    detail::readKey(c, s, "start_time", startTime);
 }
 
 namespace {

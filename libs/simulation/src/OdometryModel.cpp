@@ -3,6 +3,8 @@
 #include <mrpt/math/wrap2pi.h>
 #include <toposlam/simulation/OdometryModel.h>
 
+#include "ConfigReading.h"
+
 #include <cmath>
 
 namespace toposlam::simulation {
@@ -16,17 +18,15 @@ OdometryErrorModel OdometryErrorModel::exact() {
 
 void OdometryErrorModel::loadFromConfig(const mrpt::config::CConfigFileBase& c,
                                         const std::string& s) {
-    using mrpt::DEG2RAD;
-    using mrpt::RAD2DEG;
-    const auto sq = [](double v) { return v * v; };
-    distanceScale = c.read_double(s, "distance_scale", distanceScale);
-    rotationScale = c.read_double(s, "rotation_scale", rotationScale);
-    curvaturePerMetre =
-        DEG2RAD(c.read_double(s, "curvature_deg_per_m", RAD2DEG(curvaturePerMetre)));
-    alpha1 = sq(DEG2RAD(c.read_double(s, "rot_std_deg_per_sqrt_rad", RAD2DEG(std::sqrt(alpha1)))));
-    alpha2 = sq(DEG2RAD(c.read_double(s, "rot_std_deg_per_sqrt_m", RAD2DEG(std::sqrt(alpha2)))));
-    alpha3 = sq(c.read_double(s, "trans_std_m_per_sqrt_m", std::sqrt(alpha3)));
-    alpha4 = sq(c.read_double(s, "trans_std_m_per_sqrt_rad", std::sqrt(alpha4)));
+    const auto squaredDegrees = [](double deg) { return mrpt::square(mrpt::DEG2RAD(deg)); };
+    const auto squared = [](double v) { return v * v; };
+    detail::readKey(c, s, "distance_scale", distanceScale);
+    detail::readKey(c, s, "rotation_scale", rotationScale);
+    detail::readDegrees(c, s, "curvature_deg_per_m", curvaturePerMetre);
+    detail::readKey(c, s, "rot_std_deg_per_sqrt_rad", alpha1, squaredDegrees);
+    detail::readKey(c, s, "rot_std_deg_per_sqrt_m", alpha2, squaredDegrees);
+    detail::readKey(c, s, "trans_std_m_per_sqrt_m", alpha3, squared);
+    detail::readKey(c, s, "trans_std_m_per_sqrt_rad", alpha4, squared);
 }
 
 OdometryModel::OdometryModel(const OdometryErrorModel& model, const mrpt::poses::CPose2D& start)

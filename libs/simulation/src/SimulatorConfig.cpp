@@ -2,6 +2,8 @@
 #include <mrpt/core/bits_math.h>
 #include <toposlam/simulation/SimulatorConfig.h>
 
+#include "ConfigReading.h"
+
 #include <algorithm>
 #include <cctype>
 #include <stdexcept>
@@ -9,7 +11,6 @@
 namespace toposlam::simulation {
 
 using mrpt::DEG2RAD;
-using mrpt::RAD2DEG;
 
 LogSimulationOptions SimulatorConfig::defaultLog() {
     LogSimulationOptions o;
@@ -38,19 +39,20 @@ void loadSimulatorConfig(const mrpt::config::CConfigFileBase& c, SimulatorConfig
     LaserModel& l = config.log.laser;
     const std::string laser = "Laser";
     l.beams = static_cast<std::size_t>(c.read_uint64_t(laser, "beams", l.beams));
-    l.aperture = DEG2RAD(c.read_double(laser, "fov_deg", RAD2DEG(l.aperture)));
-    l.maxRange = c.read_double(laser, "max_range", l.maxRange);
-    l.minRange = c.read_double(laser, "min_range", l.minRange);
-    l.rangeNoiseStd = c.read_double(laser, "range_noise", l.rangeNoiseStd);
-    l.bearingNoiseStd =
-        DEG2RAD(c.read_double(laser, "bearing_noise_deg", RAD2DEG(l.bearingNoiseStd)));
+    detail::readDegrees(c, laser, "fov_deg", l.aperture);
+    detail::readKey(c, laser, "max_range", l.maxRange);
+    detail::readKey(c, laser, "min_range", l.minRange);
+    detail::readKey(c, laser, "range_noise", l.rangeNoiseStd);
+    detail::readDegrees(c, laser, "bearing_noise_deg", l.bearingNoiseStd);
     l.rightToLeft = c.read_bool(laser, "right_to_left", l.rightToLeft);
     l.sensorLabel = c.read_string(laser, "label", l.sensorLabel);
-    l.sensorPose = mrpt::poses::CPose3D(
-        c.read_double(laser, "sensor_x", l.sensorPose.x()),
-        c.read_double(laser, "sensor_y", l.sensorPose.y()),
-        c.read_double(laser, "sensor_z", l.sensorPose.z()),
-        DEG2RAD(c.read_double(laser, "sensor_yaw_deg", RAD2DEG(l.sensorPose.yaw()))), 0, 0);
+    double x = l.sensorPose.x(), y = l.sensorPose.y(), z = l.sensorPose.z(),
+           yaw = l.sensorPose.yaw();
+    detail::readKey(c, laser, "sensor_x", x);
+    detail::readKey(c, laser, "sensor_y", y);
+    detail::readKey(c, laser, "sensor_z", z);
+    detail::readDegrees(c, laser, "sensor_yaw_deg", yaw);
+    l.sensorPose = mrpt::poses::CPose3D(x, y, z, yaw, 0, 0);
 
     config.log.odometry.loadFromConfig(c, "Odometry");
     config.log.people.loadFromConfig(c, "People");
@@ -58,13 +60,10 @@ void loadSimulatorConfig(const mrpt::config::CConfigFileBase& c, SimulatorConfig
 
     const std::string sim = "Simulation";
     config.log.seed = static_cast<unsigned>(c.read_uint64_t(sim, "seed", config.log.seed));
-    config.log.odometryStep = c.read_double(sim, "odometry_step", config.log.odometryStep);
-    config.log.odometryStepAngle =
-        DEG2RAD(c.read_double(sim, "odometry_step_deg", RAD2DEG(config.log.odometryStepAngle)));
-    config.log.world.thresholds.occupiedBelow =
-        c.read_double(sim, "occupied_below", config.log.world.thresholds.occupiedBelow);
-    config.log.world.thresholds.freeAbove =
-        c.read_double(sim, "free_above", config.log.world.thresholds.freeAbove);
+    detail::readKey(c, sim, "odometry_step", config.log.odometryStep);
+    detail::readDegrees(c, sim, "odometry_step_deg", config.log.odometryStepAngle);
+    detail::readKey(c, sim, "occupied_below", config.log.world.thresholds.occupiedBelow);
+    detail::readKey(c, sim, "free_above", config.log.world.thresholds.freeAbove);
     config.log.world.unknownIsObstacle =
         c.read_bool(sim, "unknown_is_obstacle", config.log.world.unknownIsObstacle);
     const std::string format = c.read_string(sim, "format", "");

@@ -25,7 +25,7 @@
 //   - the matched lines fix the pose (ICP's worst translation std <= maxTranslationStd):
 //     a single wall or a featureless corridor does not;
 //   - no clearly different pose (distinct by the RANSAC distinctness thresholds) explains the
-//     data almost as well (its score >= ambiguityRatio x the best): symmetric rooms and
+//     data almost as well (the best must lead by ambiguityMargin of the scan): symmetric rooms and
 //     repetitive corridors are reported as ambiguous, with the alternative, instead of
 //     returning one of the look-alikes with confidence.
 // All workspaces live in the object: reuse one matcher for many pairs. Not thread-safe.
@@ -36,6 +36,7 @@
 #include <toposlam/matching/AlongLineSearch.h>
 #include <toposlam/matching/AttributedGraph.h>
 #include <toposlam/matching/GreedyAssignment.h>
+#include <toposlam/matching/HoughPoseSearch.h>
 #include <toposlam/matching/PointToLineIcp.h>
 #include <toposlam/matching/PolarScan.h>
 #include <toposlam/matching/RansacMatcher.h>
@@ -55,30 +56,45 @@ namespace toposlam::matching {
 struct GraphMatcherOptions {
     // Graph
     double minSegmentLength = 0.25;  ///< m; shorter segments are not graph nodes
-    std::size_t maxSegments = 24;    ///< per scan, the longest ones
+    std::size_t maxSegments = 16;    ///< per scan, the longest ones
     // Candidates
     double minLengthRatio = 0.15;         ///< shorter/longer length of a candidate pair, no guess
     double guessTranslationWindow = 1.5;  ///< m; with a guess: predicted position error
     double guessRotationWindow = 0.6;     ///< rad; with a guess: predicted direction error
+    /// With a guess and no reliable match inside its windows, match again without it.
+    bool guessFreeRetry = true;
     // Steps
     SimilarityOptions similarity;
     SpgmOptions spgm;
     RansacOptions ransac;
-    IcpOptions icp;              ///< segment-mode ICP
+    IcpOptions icp{15, 0.30, 0.05, 1e-4, 1e-5, 2, 0.01, 1e-2};  ///< segment-mode ICP
     bool scanRefinement = true;  ///< polish with scan-mode ICP on all points
-    IcpOptions scanIcp{15, 0.20, 0.05, 1e-4, 1e-5, 1, 0.01, 1e-4};
+    IcpOptions scanIcp{15, 0.20, 0.05, 1e-4, 1e-5, 2, 0.01, 1e-4};
     AlignmentScoreOptions score;
+    bool symmetricScore = true;  ///< score both ways (current on reference and back)
     /// Consensus lines this close to parallel (smallest / largest eigenvalue of their normal
     /// matrix; 0.03 = all within ~10 deg) leave the position along them to AlongLineSearch.
     double alongLineConditioning = 0.03;
     AlongLineSearchOptions alongLine;
-    std::size_t refineTop = 4;  ///< hypotheses refined by ICP and scored on points
+    std::size_t refineTop = 3;  ///< hypotheses refined by ICP and scored on points
+    /// Refined hypotheses are first screened (segment ICP, every screenStride-th point, twice
+    /// the inlier distance); only those within polishRatio of the best screened one get the
+    /// scan-mode ICP and the full scoring.
+    std::size_t screenStride = 3;
+    double polishRatio = 0.8;
+    /// When the graph gives nothing reliable, search with HoughPoseSearch (rotations from
+    /// segment pairs, translations voted by all points) and refine its best houghRefineTop.
+    bool houghFallback = true;
+    std::size_t houghRefineTop = 6;
+    HoughPoseSearchOptions hough;
     // Decision
     std::size_t minInliers = 30;
     double minInlierRatio = 0.25;     ///< of the current scan's valid points
-    double minInlierFraction = 0.70;  ///< inliers / (inliers + free-space violations)
+    double minInlierFraction = 0.90;  ///< inliers / (inliers + free-space violations)
     double maxTranslationStd = 0.05;  ///< m
-    double ambiguityRatio = 0.85;
+    /// The best pose must explain this fraction of the current scan's points more than any
+    /// clearly different pose (score = inliers - violations), else the match is ambiguous.
+    double ambiguityMargin = 0.05;
 
     /// Reads every field from `section` (keys named as the fields; the step options as
     /// <step>_<field>, e.g. ransac_maxHypotheses, icp_maxDistance); absent keys keep their
@@ -108,9 +124,10 @@ struct MatchResult {
     /// inlierFraction x inliers / current valid points, in [0, 1]: the share of the current
     /// scan the pose explains, discounted by free-space violations. 0 without a hypothesis.
     double quality = 0;
-    AlignmentScore score;    ///< point evidence of `pose`
-    double residualRms = 0;  ///< m, point-to-line RMS after refinement
-    double ambiguity = 0;    ///< score of the best distinct alternative / best score
+    AlignmentScore score;         ///< point evidence of `pose`: current points on the reference
+    AlignmentScore reverseScore;  ///< and reference points on the current scan (symmetricScore)
+    double residualRms = 0;       ///< m, point-to-line RMS after refinement
+    double ambiguity = 0;         ///< score of the best distinct alternative / best score
     std::optional<mrpt::poses::CPose2D> alternative;  ///< that alternative, if any
     /// Matched segments as indices into the two ScanFeatures::segments.
     std::vector<SegmentMatch> matches;
@@ -118,6 +135,11 @@ struct MatchResult {
     std::size_t currentNodes = 0, referenceNodes = 0, candidates = 0;
     int spgmIterations = 0;
     std::size_t hypotheses = 0;
+    bool usedFallback = false;         ///< HoughPoseSearch ran (the graph alone was not reliable)
+    bool retriedWithoutGuess = false;  ///< the guided match failed and was retried guess-free
+    /// CPU seconds (this thread) of the stages: graphs + candidates + similarities + SPGM + greedy;
+    /// RANSAC; refinement and scoring of its hypotheses; the fallback (search + refinement).
+    double secondsGraph = 0, secondsRansac = 0, secondsRefine = 0, secondsFallback = 0;
 };
 
 class GraphScanMatcher {
@@ -151,16 +173,28 @@ class GraphScanMatcher {
     struct Refined {
         mrpt::poses::CPose2D pose;
         IcpResult icp;
-        AlignmentScore score;
-        double value = 0;
+        AlignmentScore score, reverseScore;
+        double value = 0;        // inliers - violations (both ways when symmetric)
+        double screenValue = 0;  // the same, sparse and forward only, before polishing
+        bool polished = false;
         std::size_t hypothesis = 0;
         bool searchedAlongLine = false;
         mrpt::poses::CPose2D lineBase;       // pose the along-line search started from
         mrpt::math::TPoint2D lineDirection;  // and its direction
     };
-    /// Refines hypothesis `h` into `out`; false when it duplicates an earlier one.
+    /// Polishes a coarse pose: scan-mode ICP and the full (symmetric) scoring.
+    void polish(const PolarScan& referenceScan, const PolarScan& currentScan, Refined& out);
+    /// Polishes the screened poses that can still win; drops the others and duplicates.
+    void polishCandidates(const PolarScan& referenceScan, const PolarScan& currentScan);
+    /// Coarse refinement of hypothesis `h` into `out` (line fit, segment ICP, along-line
+    /// search) and its screening score; false when it duplicates an earlier one.
     bool refine(const PolarScan& referenceScan, const PolarScan& currentScan, const Hypothesis& h,
                 Refined& out);
+    /// Refines `h` and keeps it unless it ends on a pose already kept.
+    void addRefined(const PolarScan& referenceScan, const PolarScan& currentScan,
+                    const Hypothesis& h, std::size_t index);
+    /// Picks the best refined pose and sets the result's status.
+    void decide();
 
     GraphMatcherOptions options_;
     AttributedGraph current_, reference_;
@@ -172,6 +206,9 @@ class GraphScanMatcher {
     GreedyAssignment greedy_;
     RansacMatcher ransac_;
     PointToLineIcp icp_;
+    HoughPoseSearch hough_;
+    AlongLineSearch alongLine_;
+    Hypothesis fallback_;
     std::vector<LinePair> lines_;
     std::vector<SegmentMatch> consensus_, best_;
     std::vector<Refined> refined_;

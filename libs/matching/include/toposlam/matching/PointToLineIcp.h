@@ -46,8 +46,8 @@ struct IcpOptions {
     double robustScale = 0.05;           ///< m; Cauchy kernel scale c
     double translationTolerance = 1e-4;  ///< m
     double rotationTolerance = 1e-5;     ///< rad
-    std::size_t stride = 1;              ///< use every stride-th beam
-    double minNoiseStd = 0.01;           ///< m; floor of sigma in the covariance
+    std::size_t stride = 1;     ///< every stride-th beam (scan mode: in the wide-gate stage)
+    double minNoiseStd = 0.01;  ///< m; floor of sigma in the covariance
     /// Steps are taken only along directions whose eigenvalue of H is at least this fraction
     /// of the largest: nearly parallel lines fix nothing along themselves, and a plain
     /// Gauss-Newton step there is noise amplified, sliding the pose down a corridor.

@@ -47,7 +47,15 @@ class PolarScan {
     /// any beam step): this lookup runs for every point of every ICP iteration.
     long beamAtPoint(double x, double y) const;
     /// Index `beam + offset`, wrapped on full-circle scans; -1 when out of range otherwise.
-    long neighbour(long beam, long offset) const;
+    long neighbour(long beam, long offset) const {  // inline: runs in every ICP inner loop
+        const long n = static_cast<long>(range_.size());
+        const long b = beam + offset;
+        if (b >= 0 && b < n)
+            return b;
+        if (!fullCircle_)
+            return -1;
+        return b < 0 ? b + n : b - n;  // offsets are never more than one turn
+    }
 
   private:
     void finish();

@@ -41,9 +41,9 @@
 namespace toposlam::matching {
 
 struct SpgmOptions {
-    int maxIterations = 60;
+    int maxIterations = 30;
     double tolerance = 1e-3;  ///< on max |change| of an entry of P per iteration
-    int projectionCycles = 30;
+    int projectionCycles = 5;
     double projectionTolerance = 1e-6;
 };
 

@@ -2,6 +2,7 @@
 // The simulated robot run: a laser (LaserModel) and wheel odometry (OdometryModel) along a
 // ground-truth trajectory over a grid map, with optional people walking about (MovingObstacles);
 // written as an MRPT rawlog (either format) plus the ground-truth trajectory file.
+#include <mrpt/core/bits_math.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <toposlam/io/LaserLogReader.h>
 #include <toposlam/io/RawlogWriter.h>
@@ -26,8 +27,8 @@ struct LogSimulationOptions {
     GridWorldOptions world;
     /// Odometry is integrated in steps of at most this many metres / radians between scans,
     /// like a real robot's odometry running faster than its laser.
-    double odometryStep = 0.05;
-    double odometryStepAngle = 0.035;
+    double odometryStep = 0.05;                     ///< m
+    double odometryStepAngle = mrpt::DEG2RAD(2.0);  ///< rad
     unsigned seed = 1;  ///< fixes every random draw: the same inputs give the same log
 };
 

@@ -4,10 +4,10 @@
 // path turns faster than maxTurnRate allows; between legs it turns on the spot. Like the loggers
 // of real robots (CARMEN, MRPT's rawlog-grabber with a motion filter), it records a scan each
 // time it has driven scanDistance or turned scanAngle since the last one.
+#include <mrpt/core/bits_math.h>
 #include <mrpt/math/TPoint2D.h>
 #include <toposlam/io/Trajectory.h>
 
-#include <cmath>
 #include <vector>
 
 namespace mrpt::config {
@@ -17,11 +17,11 @@ class CConfigFileBase;
 namespace toposlam::simulation {
 
 struct MotionOptions {
-    double maxSpeed = 0.4;            ///< m/s
-    double maxTurnRate = M_PI / 6;    ///< rad/s (30 deg/s)
-    double scanDistance = 0.3;        ///< m driven between recorded scans
-    double scanAngle = 0.2618;        ///< rad turned between recorded scans (15 deg)
-    double startTime = 1700000000.0;  ///< s (Unix time) of the first scan
+    double maxSpeed = 0.4;                     ///< m/s
+    double maxTurnRate = mrpt::DEG2RAD(30.0);  ///< rad/s
+    double scanDistance = 0.3;                 ///< m driven between recorded scans
+    double scanAngle = mrpt::DEG2RAD(15.0);    ///< rad turned between recorded scans
+    double startTime = 1700000000.0;           ///< s (Unix time) of the first scan
 
     /// Reads max_speed, max_turn_rate_deg, scan_distance, scan_angle_deg, start_time.
     void loadFromConfig(const mrpt::config::CConfigFileBase& config, const std::string& section);

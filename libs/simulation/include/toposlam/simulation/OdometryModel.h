@@ -23,6 +23,7 @@
 // curvature; random errors of 1.5 cm and 0.5 deg after 1 m, 1.5 deg after a full 1 rad turn.
 // Over a 100 m office tour that is a few metres and tens of degrees of accumulated drift, as
 // raw logs of real robots show.
+#include <mrpt/core/bits_math.h>
 #include <mrpt/poses/CPose2D.h>
 
 #include <random>
@@ -35,13 +36,16 @@ class CConfigFileBase;
 namespace toposlam::simulation {
 
 struct OdometryErrorModel {
-    double distanceScale = 1.01;        ///< measured / true distance (1 = exact)
-    double rotationScale = 1.015;       ///< measured / true rotation (1 = exact)
-    double curvaturePerMetre = 0.0017;  ///< rad of spurious rotation per metre driven
-    double alpha1 = 0.0007;             ///< rad^2 of rotation variance per rad turned ((1.5 deg)^2)
-    double alpha2 = 7.6e-5;             ///< rad^2 of rotation variance per m driven ((0.5 deg)^2)
-    double alpha3 = 2.25e-4;            ///< m^2 of translation variance per m driven ((1.5 cm)^2)
-    double alpha4 = 2.5e-5;             ///< m^2 of translation variance per rad turned ((0.5 cm)^2)
+    double distanceScale = 1.01;   ///< measured / true distance (1 = exact)
+    double rotationScale = 1.015;  ///< measured / true rotation (1 = exact)
+    /// rad of spurious rotation per metre driven (0.1 deg/m)
+    double curvaturePerMetre = mrpt::DEG2RAD(0.1);
+    /// rad^2 of rotation variance per rad turned ((1.5 deg)^2)
+    double alpha1 = mrpt::square(mrpt::DEG2RAD(1.5));
+    /// rad^2 of rotation variance per m driven ((0.5 deg)^2)
+    double alpha2 = mrpt::square(mrpt::DEG2RAD(0.5));
+    double alpha3 = 0.015 * 0.015;  ///< m^2 of translation variance per m driven ((1.5 cm)^2)
+    double alpha4 = 0.005 * 0.005;  ///< m^2 of translation variance per rad turned ((0.5 cm)^2)
 
     /// Perfect odometry: readings equal the true motion.
     static OdometryErrorModel exact();

@@ -15,8 +15,10 @@ std::vector<mrpt::math::TPoint2D> resamplePolyline(const std::vector<mrpt::math:
                                                    double spacing);
 
 /// The smoothed path, sampled every `spacing` m. `sigma` (m) is the Gaussian's standard deviation
-/// along the path: corners get rounded over about 2*sigma. Every returned point is traversable
-/// for `planner` when every input point was.
+/// along the path: corners get rounded over about 2*sigma. When every input point is traversable
+/// for `planner`, so is every smoothed point; the returned points are resampled from those, so
+/// each lies within `spacing` of two traversable points (the planner's clearance keeps a margin
+/// for that: use a spacing below the grid resolution).
 std::vector<mrpt::math::TPoint2D> smoothPath(const std::vector<mrpt::math::TPoint2D>& path,
                                              const GridPathPlanner& planner, double sigma,
                                              double spacing);

@@ -1,0 +1,133 @@
+#include <toposlam/matching/HoughPoseSearch.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace toposlam::matching {
+
+void HoughPoseSearch::rotationCandidates(const AttributedGraph& currentGraph,
+                                         const AttributedGraph& referenceGraph,
+                                         const std::vector<ScoredAssignment>& pairs,
+                                         const HoughPoseSearchOptions& options) {
+    const std::size_t bins =
+        std::max<std::size_t>(8, std::size_t(std::lround(2 * M_PI / options.rotationBin)));
+    const double width = 2 * M_PI / double(bins);
+    binWeight_.assign(bins, 0.0);
+    binSin_.assign(bins, 0.0);
+    binCos_.assign(bins, 0.0);
+    for (const ScoredAssignment& p : pairs) {
+        const SegmentNode& c = currentGraph.node(p.current);
+        const SegmentNode& r = referenceGraph.node(p.reference);
+        const double angle = wrapAngle(r.heading - c.heading);
+        const double w = std::min(c.length, r.length);
+        const long b = long(std::floor((angle + M_PI) / width)) % long(bins);
+        for (long o = -1; o <= 1; ++o) {  // each vote also counts for the neighbouring bins
+            const std::size_t k = std::size_t((b + o + long(bins)) % long(bins));
+            binWeight_[k] += w;
+            binSin_[k] += w * std::sin(angle);
+            binCos_[k] += w * std::cos(angle);
+        }
+    }
+    // Local maxima, strongest first.
+    rotations_.clear();
+    std::vector<std::pair<double, std::size_t>>& peaks = peaks_;  // (weight, bin)
+    peaks.clear();
+    for (std::size_t k = 0; k < bins; ++k) {
+        const double w = binWeight_[k];
+        if (w < options.minRotationWeight)
+            continue;
+        if (w < binWeight_[(k + 1) % bins] || w <= binWeight_[(k + bins - 1) % bins])
+            continue;
+        peaks.push_back({w, k});
+    }
+    std::sort(peaks.begin(), peaks.end(), [](const auto& a, const auto& b) {
+        return a.first != b.first ? a.first > b.first : a.second < b.second;
+    });
+    for (std::size_t i = 0; i < peaks.size() && i < options.maxRotations; ++i) {
+        const std::size_t k = peaks[i].second;
+        rotations_.push_back(std::atan2(binSin_[k], binCos_[k]));
+    }
+}
+
+const std::vector<PoseCandidate>& HoughPoseSearch::search(
+    const PolarScan& reference, const PolarScan& current, const AttributedGraph& currentGraph,
+    const AttributedGraph& referenceGraph, const std::vector<ScoredAssignment>& pairs,
+    const HoughPoseSearchOptions& options) {
+    out_.clear();
+    rotationCandidates(currentGraph, referenceGraph, pairs, options);
+    if (rotations_.empty())
+        return out_;
+
+    const std::size_t stride = std::max<std::size_t>(1, options.stride);
+    ref_.clear();
+    cur_.clear();
+    for (std::size_t i = 0; i < reference.size(); i += stride)
+        if (reference.valid(i))
+            ref_.push_back(reference.point(i));
+    for (std::size_t i = 0; i < current.size(); i += stride)
+        if (current.valid(i))
+            cur_.push_back(current.point(i));
+    if (ref_.empty() || cur_.empty())
+        return out_;
+
+    const long side = long(std::ceil(2 * options.window / options.cell));
+    const double inv = 1.0 / options.cell;
+    votes_.resize(std::size_t(side * side));
+    sums_.resize(std::size_t(side * side));
+    const double minVotes = options.minPeakFraction * double(cur_.size());
+
+    for (const double phi : rotations_) {
+        std::fill(votes_.begin(), votes_.end(), std::uint16_t(0));
+        const double c = std::cos(phi), s = std::sin(phi);
+        for (const mrpt::math::TPoint2D& p : cur_) {
+            const double rx = c * p.x - s * p.y, ry = s * p.x + c * p.y;
+            for (const mrpt::math::TPoint2D& q : ref_) {
+                const long ix = long(std::floor((q.x - rx + options.window) * inv));
+                const long iy = long(std::floor((q.y - ry + options.window) * inv));
+                if (ix < 0 || iy < 0 || ix >= side || iy >= side)
+                    continue;
+                std::uint16_t& v = votes_[std::size_t(iy * side + ix)];
+                if (v < 65535)
+                    ++v;
+            }
+        }
+        // 3x3 sums, then the strongest peaks with their neighbourhoods suppressed.
+        std::fill(sums_.begin(), sums_.end(), 0u);
+        for (long y = 1; y + 1 < side; ++y)
+            for (long x = 1; x + 1 < side; ++x) {
+                std::uint32_t sum = 0;
+                for (long dy = -1; dy <= 1; ++dy)
+                    for (long dx = -1; dx <= 1; ++dx)
+                        sum += votes_[std::size_t((y + dy) * side + x + dx)];
+                sums_[std::size_t(y * side + x)] = sum;
+            }
+        for (std::size_t peak = 0; peak < options.peaksPerRotation; ++peak) {
+            const auto it = std::max_element(sums_.begin(), sums_.end());
+            if (double(*it) < minVotes)
+                break;
+            const long at = long(it - sums_.begin()), px = at % side, py = at / side;
+            // Vote-weighted centre of the 3x3 block.
+            double wx = 0, wy = 0, w = 0;
+            for (long dy = -1; dy <= 1; ++dy)
+                for (long dx = -1; dx <= 1; ++dx) {
+                    const double v = votes_[std::size_t((py + dy) * side + px + dx)];
+                    wx += v * double(px + dx), wy += v * double(py + dy), w += v;
+                }
+            const double tx = (wx / w + 0.5) * options.cell - options.window;
+            const double ty = (wy / w + 0.5) * options.cell - options.window;
+            out_.push_back({mrpt::poses::CPose2D(tx, ty, phi), double(*it)});
+            for (long dy = -3; dy <= 3; ++dy)
+                for (long dx = -3; dx <= 3; ++dx) {
+                    const long x = px + dx, y = py + dy;
+                    if (x >= 0 && y >= 0 && x < side && y < side)
+                        sums_[std::size_t(y * side + x)] = 0;
+                }
+        }
+    }
+    std::stable_sort(out_.begin(), out_.end(), [](const PoseCandidate& a, const PoseCandidate& b) {
+        return a.votes > b.votes;
+    });
+    return out_;
+}
+
+}  // namespace toposlam::matching

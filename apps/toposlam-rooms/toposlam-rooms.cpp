@@ -20,6 +20,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -135,6 +136,7 @@ int run(int argc, char** argv) {
                                false, 2, "n", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "No summary on stdout", cmd);
     ParseErrorOutput parseErrors;
+    const std::unique_ptr<TCLAP::CmdLineOutput> defaultOutput(cmd.getOutput());  // else leaked
     cmd.setOutput(&parseErrors);
     if (!cmd.parse(argc, argv))
         return parseErrors.failed ? EXIT_FAILURE : EXIT_SUCCESS;

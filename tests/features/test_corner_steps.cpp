@@ -73,8 +73,8 @@ TEST(SlopeDifference, CornerMakesAPeak) {
     sd.compute(p, runs, true, 0.6, 0, 3);
     // The corner is on beam 100 (bearing 0), the farthest point (concave): the chord slope
     // tan(phi) goes from +1 to -1, so dk = k(before) - k(after) = +2 there.
-    EXPECT_NEAR(sd.dk[100], 2, 0.05);
-    EXPECT_NEAR(sd.dk[60], 0, 0.01);
+    EXPECT_NEAR(sd.value(100), 2, 0.05);
+    EXPECT_NEAR(sd.value(60), 0, 0.01);
 }
 
 TEST(SegmentMerge, MergesSlightBendsNotCornersOrHairpins) {
@@ -123,7 +123,8 @@ TEST(SegmentMerge, MergesSlightBendsNotCornersOrHairpins) {
 
 TEST(CornerFix, MovesTheJointToTheSideOfTheTrueCorner) {
     SlopeDifference sd;
-    sd.dk = {0, 0.1, 1.9, 2.0, 0.2, 0.1, 0};
+    sd.numerator = {0, 0.1, 1.9, 2.0, 0.2, 0.1, 0};
+    sd.scale.assign(7, 1.0);
     sd.baseline = {0, 1, 1, 1, 1, 1, 0};
     // Corner found at 3; dk(2) is close to dk(3): the true corner lies between 2 and 3, so the
     // first line ends at 2.
@@ -134,7 +135,7 @@ TEST(CornerFix, MovesTheJointToTheSideOfTheTrueCorner) {
     EXPECT_EQ(parts[0].end, 2u);
     EXPECT_EQ(parts[1].begin, 3u);
     // Mirror image: the second line starts at 4.
-    sd.dk = {0, 0.1, 0.2, 2.0, 1.9, 0.1, 0};
+    sd.numerator = {0, 0.1, 0.2, 2.0, 1.9, 0.1, 0};
     parts[0] = {0, 3, true, 3};
     parts[1] = {3, 6, false, 0};
     fixCorners(sd, parts);

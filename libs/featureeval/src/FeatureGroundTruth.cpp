@@ -82,6 +82,14 @@ ScanGroundTruth computeGroundTruth(const SyntheticScene& scene,
                                        : TPoint2D(0, 0);
     }
 
+    // Consecutive hits on one wall are one continuous surface when closer than the graph
+    // paper's jump distance k psi d (k = 15): the wall is seen at less than 86 deg incidence.
+    const auto continuous = [&](std::size_t k1, std::size_t k2) {
+        const TPoint2D &p = hitPoint[k1], &q = hitPoint[k2];
+        const double d = std::min(std::hypot(p.x, p.y), std::hypot(q.x, q.y));
+        return std::hypot(p.x - q.x, p.y - q.y) <= 15.0 * step * d;
+    };
+
     // Corners.
     const double c = std::cos(yaw), s = std::sin(yaw);
     for (std::size_t p = 0; p < scene.polygons.size(); ++p) {
@@ -119,14 +127,7 @@ ScanGroundTruth computeGroundTruth(const SyntheticScene& scene,
                                    (lowerEdge == edgeAfter && upperEdge == edgeBefore);
             if (!bothWalls)
                 continue;
-            // Arm lengths in beams, counting only while the wall is seen as one surface:
-            // neighbouring hits closer than the jump threshold k psi d (graph paper eq. 1,
-            // k = 15), i.e. not at grazing incidence beyond acos(1/15) = 86 deg.
-            const auto continuous = [&](std::size_t k1, std::size_t k2) {
-                const TPoint2D &p = hitPoint[k1], &q = hitPoint[k2];
-                const double d = std::min(std::hypot(p.x, p.y), std::hypot(q.x, q.y));
-                return std::hypot(p.x - q.x, p.y - q.y) <= 15.0 * step * d;
-            };
+            // Arm lengths in beams, counting only while the wall is one continuous surface.
             unsigned lowerArm = 1, upperArm = 1;
             for (std::size_t k = below; k > 0 && edgeOf[k - 1] == lowerEdge && continuous(k - 1, k);
                  --k) {

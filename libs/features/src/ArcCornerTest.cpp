@@ -1,4 +1,5 @@
 #include <toposlam/features/ArcCornerTest.h>
+#include <toposlam/features/LineFit.h>
 
 #include <algorithm>
 #include <cmath>
@@ -28,7 +29,7 @@ struct CircleSums {
 }  // namespace
 
 bool ArcCornerTest::isArc(const ScanPoints& pts, std::size_t a0, std::size_t a1, std::size_t b0,
-                          std::size_t b1, double lineRms) const {
+                          std::size_t b1, double lineRss, double sigma) const {
     CircleSums s;
     s.ox = pts.x(a1);  // near the joint: keeps the sums well conditioned
     s.oy = pts.y(a1);
@@ -61,16 +62,89 @@ bool ArcCornerTest::isArc(const ScanPoints& pts, std::size_t a0, std::size_t a1,
     }
     const double D = sol[0], E = sol[1], F = sol[2];
     const double radius2 = 0.25 * (D * D + E * E) - F;
-    if (!(radius2 > 0) || radius2 > maxRadius * maxRadius)
+    // Far too large a circle (a straight-ish pair of walls): no arc of interest.
+    if (!(radius2 > 0) || radius2 > 4 * maxRadius * maxRadius)
         return false;
-    // Mean squared algebraic residual (z + D x + E y + F)^2, expanded in the sums; the
-    // geometric residual is about the algebraic one / (2 R).
-    const double algebraic2 =
-        (s.zz + D * D * s.xx + E * E * s.yy + F * F * s.n + 2 * D * s.xz + 2 * E * s.yz +
-         2 * F * s.z + 2 * D * E * s.xy + 2 * D * F * s.x + 2 * E * F * s.y) /
-        s.n;
-    const double circleRms = std::sqrt(std::max(algebraic2, 0.0) / (4 * radius2));
-    return circleRms <= lineRms;
+    // The circle has 3 parameters, the two lines 4 (+ where they meet): prefer the circle
+    // unless the lines explain the readings better by more than the extra parameters do by
+    // chance (about 2 sigma^2 each, as in Akaike's criterion).
+    const double allowed = lineRss + 4 * sigma * sigma;
+    // The algebraic residual (z + D x + E y + F)^2, expanded in the sums, is about (2R)^2 times
+    // the geometric one: a cheap first verdict on circles that clearly do not fit.
+    const double algebraicRss = s.zz + D * D * s.xx + E * E * s.yy + F * F * s.n + 2 * D * s.xz +
+                                2 * E * s.yz + 2 * F * s.z + 2 * D * E * s.xy + 2 * D * F * s.x +
+                                2 * E * F * s.y;
+    if (algebraicRss / (4 * radius2) > 20 * allowed)
+        return false;
+    // Geometric residual of the algebraic circle, then Gauss-Newton on the geometric one (the
+    // algebraic fit is biased towards small circles on short noisy arcs). Each pass gives the
+    // residual at the current circle and the normal equations for the next step. Clear cases
+    // stop early: a circle already good enough, or one far worse than the lines.
+    double cx = s.ox - 0.5 * D, cy = s.oy - 0.5 * E, radius = std::sqrt(radius2);
+    {  // the algebraic circle alone decides the clear cases
+        double rss = 0;
+        const auto add = [&](std::size_t k) {
+            const double r = std::sqrt(sq2(pts.x(k) - cx, pts.y(k) - cy)) - radius;
+            rss += r * r;
+        };
+        for (std::size_t k = a0; k <= a1; ++k)
+            add(k);
+        for (std::size_t k = b0; k <= b1; ++k)
+            add(k);
+        if (rss <= allowed)
+            return radius <= maxRadius;
+        if (rss > 10 * allowed)
+            return false;  // no refinement would make this circle fit
+    }
+    double bestRss = HUGE_VAL, bestRadius = radius;
+    for (int iteration = 0; iteration < 6; ++iteration) {
+        double jtj[3][3] = {}, jtr[3] = {}, rss = 0;
+        const auto add = [&](std::size_t k) {
+            const double dx = pts.x(k) - cx, dy = pts.y(k) - cy, d = std::sqrt(sq2(dx, dy));
+            if (!(d > 0))
+                return;
+            const double inv = 1 / d, jx = -dx * inv, jy = -dy * inv, r = d - radius;
+            rss += r * r;
+            jtr[0] += jx * r;
+            jtr[1] += jy * r;
+            jtr[2] -= r;
+            jtj[0][0] += jx * jx;
+            jtj[0][1] += jx * jy;
+            jtj[0][2] -= jx;
+            jtj[1][1] += jy * jy;
+            jtj[1][2] -= jy;
+            jtj[2][2] += 1;
+        };
+        for (std::size_t k = a0; k <= a1; ++k)
+            add(k);
+        for (std::size_t k = b0; k <= b1; ++k)
+            add(k);
+        jtj[1][0] = jtj[0][1];
+        jtj[2][0] = jtj[0][2];
+        jtj[2][1] = jtj[1][2];
+        if (!(rss < bestRss))
+            break;  // the last step made it worse: keep the best
+        bestRss = rss;
+        bestRadius = radius;
+        if (rss <= allowed)
+            break;  // an arc
+        const double dj = det3(jtj);
+        if (!(std::abs(dj) > 1e-300))
+            break;
+        double step[3];
+        for (int c = 0; c < 3; ++c) {
+            double mc[3][3];
+            for (int i = 0; i < 3; ++i) {
+                for (int j = 0; j < 3; ++j)
+                    mc[i][j] = j == c ? -jtr[i] : jtj[i][j];
+            }
+            step[c] = det3(mc) / dj;
+        }
+        cx += step[0];
+        cy += step[1];
+        radius += step[2];
+    }
+    return bestRadius > 0 && bestRadius <= maxRadius && bestRss <= allowed;
 }
 
 }  // namespace toposlam::features

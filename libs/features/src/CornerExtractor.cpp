@@ -76,14 +76,6 @@ void CornerExtractor::extract(const mrpt::obs::CObservation2DRangeScan& scan, Sc
     assembly_.options.minCornerTurn = std::atan(options.thetaThreshold);
     if (paper)
         assembly_.options.rejectArcs = false;  // the paper assumes polygonal scenes
-    if (!paper) {
-        // A segment shorter than the chord its corners' dk was measured over cannot be told
-        // from the corner bump itself (SlopeDifferenceSplit keeps one peak per baseline).
-        assembly_.options.minSegmentLength =
-            std::max(assembly_.options.minSegmentLength,
-                     SlopeDifference::noiseChord(sigma, options.noiseSigmas,
-                                                 options.alpha * options.dkThreshold));
-    }
     assembly_.assemble(points_, parts_, sigma, out);
 }
 

@@ -13,9 +13,13 @@ void fixCorners(const SlopeDifference& sd, std::vector<LinePart>& parts) {
             continue;
         }
         const std::size_t q = first.joint;
-        const double toPrev = q > 0 && sd.defined(q - 1) ? std::abs(sd.dk[q] - sd.dk[q - 1]) : inf;
-        const double toNext =
-            q + 1 < sd.dk.size() && sd.defined(q + 1) ? std::abs(sd.dk[q] - sd.dk[q + 1]) : inf;
+        if (!sd.defined(q))
+            continue;
+        const double here = sd.value(q);
+        const double toPrev = q > 0 && sd.defined(q - 1) ? std::abs(here - sd.value(q - 1)) : inf;
+        const double toNext = q + 1 < sd.baseline.size() && sd.defined(q + 1)
+                                  ? std::abs(here - sd.value(q + 1))
+                                  : inf;
         if (toPrev == inf && toNext == inf)
             continue;
         if (toPrev < toNext) {

@@ -16,13 +16,22 @@ bool intersectLines(const LineFit& a, const LineFit& b, TPoint2D& out) {
     return true;
 }
 
-namespace {
-/// Point noise variance of a fit: its unbiased residual variance, at least the sensor's.
 double pointVariance(const LineFit& f, double sensorSigma) {
-    const double n = f.count;
-    const double residualVar = f.residualRms * f.residualRms * (n > 2 ? n / (n - 2) : 1.0);
-    return std::max(residualVar, sensorSigma * sensorSigma);
+    // The residual sum of squares has N - 2 degrees of freedom; the sensor's stated noise
+    // counts as 2 more (a conjugate prior): long fits trust their residual (which also sees
+    // that range noise shrinks by cos(incidence) normal to an oblique wall), short ones the
+    // sensor.
+    constexpr double priorDof = 2;
+    const double n = f.count, rss = n * f.residualRms * f.residualRms;
+    return (rss + priorDof * sensorSigma * sensorSigma) / (std::max(n - 2, 0.0) + priorDof);
 }
+
+double angleStd(const LineFit& a, const LineFit& b, double sensorSigma) {
+    return std::sqrt(pointVariance(a, sensorSigma) * a.directionVarFactor +
+                     pointVariance(b, sensorSigma) * b.directionVarFactor);
+}
+
+namespace {
 /// Variance of the line's normal offset at point p (on the line).
 double offsetVarianceAt(const LineFit& f, const TPoint2D& p, double sensorSigma) {
     const double t = (p.x - f.anchor.x) * -f.normal.y + (p.y - f.anchor.y) * f.normal.x;

@@ -1,6 +1,7 @@
 #include <mrpt/config/CConfigFileBase.h>
 #include <toposlam/features/CornerIntersection.h>
 #include <toposlam/features/FeatureAssembly.h>
+#include <toposlam/features/LeastSquaresLineFit.h>
 
 #include <algorithm>
 #include <cmath>
@@ -28,7 +29,8 @@ void FeatureAssemblyOptions::loadFromConfigFile(const mrpt::config::CConfigFileB
     minSegmentLength = cfg.read_double(section, "min_segment_length", minSegmentLength);
     maxCornerOffset = cfg.read_double(section, "max_corner_offset", maxCornerOffset);
     maxLineResidual = cfg.read_double(section, "max_line_residual", maxLineResidual);
-    residualSigmas = cfg.read_double(section, "residual_sigmas", residualSigmas);
+    lineNoiseFactor = cfg.read_double(section, "line_noise_factor", lineNoiseFactor);
+    mergeCollinear = cfg.read_bool(section, "merge_collinear", mergeCollinear);
     rejectArcs = cfg.read_bool(section, "reject_arcs", rejectArcs);
     maxArcRadius = cfg.read_double(section, "max_arc_radius", maxArcRadius);
 }
@@ -41,7 +43,8 @@ void FeatureAssemblyOptions::dumpToTextStream(std::ostream& out) const {
         << "max_corner_offset  = " << maxCornerOffset << "  (m)\n"
         << "min_corner_turn    = " << minCornerTurn << "  (rad)\n"
         << "max_line_residual  = " << maxLineResidual << "  (m)\n"
-        << "residual_sigmas    = " << residualSigmas << "\n"
+        << "line_noise_factor  = " << lineNoiseFactor << "\n"
+        << "merge_collinear    = " << mergeCollinear << "\n"
         << "reject_arcs        = " << rejectArcs << "\n"
         << "max_arc_radius     = " << maxArcRadius << "  (m)\n";
 }
@@ -95,11 +98,86 @@ void FeatureAssembly::assemble(ScanPoints& pts, std::vector<LinePart>& parts, do
     if (kept > 0 && parts[kept - 1].cornerAfter)
         parts[kept - 1].cornerAfter = false;
 
-    // Step 4: fit each part.
+    // Step 4: fit each part. A part whose readings are no line (residual beyond the noise:
+    // it spans two walls, or clutter) is dropped like a short one, breaking its joints.
+    // Chi-square test on the residual: a true line of N readings leaves a sum of squares of
+    // about (N - 2) s^2; allow mean + 3 std, with s the range noise made 50 % more generous
+    // (sensors state their noise optimistically), at least maxLineResidual.
+    const double lineSigma = std::max(options.maxLineResidual, options.lineNoiseFactor * sigma);
+    const auto isLine = [&](const LineFit& f) {
+        if (!f.ok)
+            return false;
+        const double dof = std::max(1.0, static_cast<double>(f.count) - 2);
+        const double rss = f.count * f.residualRms * f.residualRms;
+        return rss <= lineSigma * lineSigma * (dof + 3 * std::sqrt(2 * dof));
+    };
     fits_.resize(kept);
+    std::size_t lines = 0;
+    bool brokenBefore = false;  // the part dropped before this one was joined to it
+    for (std::size_t i = 0; i < kept; ++i) {
+        LinePart p = parts[i];
+        const LineFit fit = fitLine(options.lineFit, pts, p.begin, p.end);
+        if (!isLine(fit)) {
+            if (lines > 0 && parts[lines - 1].cornerAfter) {
+                parts[lines - 1].cornerAfter = false;
+                parts[lines - 1].endType = EndpointType::Open;
+            }
+            brokenBefore = p.cornerAfter;
+            continue;
+        }
+        if (brokenBefore && p.beginType != EndpointType::Jump)
+            p.beginType = EndpointType::Open;
+        brokenBefore = false;
+        fits_[lines] = fit;
+        parts[lines++] = p;
+    }
+    kept = lines;
+    parts.resize(kept);
+
+    // Neighbours that are one line after all: a split by noise. The union's least-squares
+    // residual is compared with the two fits': if both lie on one line, the union's sum of
+    // squares exceeds theirs by about (gap + 2) sigma^2 (chi-square, gap = readings between
+    // them); a real corner adds far more. Merge below that mean + 3 standard deviations.
+    if (options.mergeCollinear && kept > 1) {
+        const double var = std::max(sigma, 1e-5) * std::max(sigma, 1e-5);
+        std::size_t m = 0;
+        for (std::size_t i = 1; i < kept; ++i) {
+            LinePart& last = parts[m];
+            if (last.cornerAfter) {
+                // The union's sums from the two fits' and the readings between: no new pass.
+                PointSums sums = fits_[m].sums;
+                sums.merge(fits_[i].sums);
+                for (std::size_t k = last.end + 1; k < parts[i].begin; ++k) {
+                    sums.add(pts.x(k), pts.y(k));
+                }
+                const LineFit joint = fitLeastSquares(sums);
+                const double gap = static_cast<double>(parts[i].begin - last.end - 1);
+                const auto rss = [](const LineFit& f) {
+                    return f.count * f.residualRms * f.residualRms;
+                };
+                const double excess = rss(joint) - rss(fits_[m]) - rss(fits_[i]);
+                const double dof = gap + 2;
+                if (joint.ok && excess <= var * (dof + 3 * std::sqrt(2 * dof))) {
+                    last.end = parts[i].end;
+                    last.cornerAfter = parts[i].cornerAfter;
+                    last.joint = parts[i].joint;
+                    last.endType = parts[i].endType;
+                    fits_[m] = options.lineFit == LineFitMethod::LeastSquares
+                                   ? joint
+                                   : fitLine(options.lineFit, pts, last.begin, last.end);
+                    continue;
+                }
+            }
+            ++m;
+            parts[m] = parts[i];
+            fits_[m] = fits_[i];
+        }
+        kept = m + 1;
+        parts.resize(kept);
+    }
+
     for (std::size_t i = 0; i < kept; ++i) {
         const LinePart& p = parts[i];
-        fits_[i] = fitLine(options.lineFit, pts, p.begin, p.end);
         LineSegment s;
         s.line = fits_[i].line;
         s.start = s.line.project(pts.point(p.begin));
@@ -113,7 +191,6 @@ void FeatureAssembly::assemble(ScanPoints& pts, std::vector<LinePart>& parts, do
     }
 
     // Step 5: corners at the joints.
-    const double lineTolerance = std::max(options.maxLineResidual, options.residualSigmas * sigma);
     ArcCornerTest arcTest;
     arcTest.maxRadius = options.maxArcRadius;
     for (std::size_t i = 0; i + 1 < kept; ++i) {
@@ -124,16 +201,24 @@ void FeatureAssembly::assemble(ScanPoints& pts, std::vector<LinePart>& parts, do
         const bool ok = fits_[i].ok && fits_[i + 1].ok &&
                         intersectCorner(fits_[i], fits_[i + 1], a.start, b.end, sigma, c);
         const TPoint2D joint = pts.point(parts[i].joint);
+        // A segment measurably straight (its sagitta on a circle of maxArcRadius, L^2 / 8R,
+        // beyond 3 sigma of its own noise) cannot be a piece of such a circle: skip the test.
+        const auto straight = [&](std::size_t k) {
+            const LinePart& p = parts[k];
+            const double l2 = sq2(pts.x(p.end) - pts.x(p.begin), pts.y(p.end) - pts.y(p.begin));
+            return l2 / (8 * options.maxArcRadius) > 3 * std::sqrt(pointVariance(fits_[k], sigma));
+        };
         const auto isArc = [&] {
+            if (straight(i) || straight(i + 1))
+                return false;
             const double na = fits_[i].count, nb = fits_[i + 1].count;
             const double ra = fits_[i].residualRms, rb = fits_[i + 1].residualRms;
-            const double lineRms = std::sqrt((na * ra * ra + nb * rb * rb) / (na + nb));
             return arcTest.isArc(pts, parts[i].begin, parts[i].end, parts[i + 1].begin,
-                                 parts[i + 1].end, lineRms);
+                                 parts[i + 1].end, na * ra * ra + nb * rb * rb, sigma);
         };
         if (!ok || M_PI - c.angle < options.minCornerTurn || c.angle < options.minCornerTurn ||
-            fits_[i].residualRms > lineTolerance || fits_[i + 1].residualRms > lineTolerance ||
-            std::hypot(c.position.x - joint.x, c.position.y - joint.y) > options.maxCornerOffset ||
+            sq2(c.position.x - joint.x, c.position.y - joint.y) >
+                options.maxCornerOffset * options.maxCornerOffset ||
             (options.rejectArcs && isArc())) {
             a.endType = EndpointType::Open;
             b.startType = EndpointType::Open;

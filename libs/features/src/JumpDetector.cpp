@@ -33,10 +33,16 @@ void JumpDetector::findRuns(const ScanPoints& pts, double sigma,
                             std::vector<PointRun>& runs) const {
     runs.clear();
     const std::size_t n = pts.size();
+    const double* __restrict x = pts.xData();
+    const double* __restrict y = pts.yData();
+    const double* __restrict r = pts.rangeData();  // 0 where invalid
+    const double perRange = options.k * pts.angularStep();
+    const double byNoise = options.noiseSigmas * M_SQRT2 * sigma;
+    const bool enabled = options.enabled;
     std::size_t k = 0;
     EndpointType nextBeginType = EndpointType::Open;
     while (k < n) {
-        if (!pts.valid(k)) {
+        if (!(r[k] > 0)) {
             ++k;
             nextBeginType = EndpointType::Open;
             continue;
@@ -45,15 +51,19 @@ void JumpDetector::findRuns(const ScanPoints& pts, double sigma,
         run.begin = static_cast<std::uint32_t>(k);
         run.beginType = nextBeginType;
         nextBeginType = EndpointType::Open;
-        while (k + 1 < n && pts.valid(k + 1)) {
-            if (options.enabled && isJump(pts, k, sigma)) {
+        for (; k + 1 < n && r[k + 1] > 0; ++k) {
+            if (!enabled)
+                continue;
+            // Same test as isJump(), inlined.
+            const double dx = x[k + 1] - x[k], dy = y[k + 1] - y[k];
+            const double t = std::max(perRange * std::min(r[k], r[k + 1]), byNoise);
+            if (dx * dx + dy * dy > t * t) {
                 // The nearer side occludes the farther one.
-                const bool thisNearer = pts.range(k) < pts.range(k + 1);
+                const bool thisNearer = r[k] < r[k + 1];
                 run.endType = thisNearer ? EndpointType::Jump : EndpointType::Open;
                 nextBeginType = thisNearer ? EndpointType::Open : EndpointType::Jump;
                 break;
             }
-            ++k;
         }
         run.end = static_cast<std::uint32_t>(k);
         runs.push_back(run);

@@ -10,7 +10,7 @@ LineFit fitLeastSquares(const PointSums& s) {
         return fit;
     const double mx = s.sx / s.n, my = s.sy / s.n;
     const double a = s.sxx / s.n - mx * mx, b = s.sxy / s.n - mx * my, c = s.syy / s.n - my * my;
-    const double mean = 0.5 * (a + c), dev = std::hypot(0.5 * (a - c), b);
+    const double mean = 0.5 * (a + c), dev = std::sqrt(sq2(0.5 * (a - c), b));
     const double lambdaMax = mean + dev, lambdaMin = std::max(mean - dev, 0.0);
     if (!(lambdaMax > 0))
         return fit;
@@ -23,7 +23,7 @@ LineFit fitLeastSquares(const PointSums& s) {
         ux = vx;
         uy = vy;
     }
-    double norm = std::hypot(ux, uy);
+    double norm = std::sqrt(sq2(ux, uy));
     if (!(norm > 0)) {  // isotropic scatter along an axis: a == lambdaMax, b == 0
         ux = a >= c ? 1 : 0;
         uy = a >= c ? 0 : 1;
@@ -36,6 +36,7 @@ LineFit fitLeastSquares(const PointSums& s) {
     fit.directionVarFactor = 1.0 / (s.n * lambdaMax);  // 1 / sum of squared spreads along it
     fit.count = static_cast<std::uint32_t>(s.n);
     fit.residualRms = std::sqrt(lambdaMin);
+    fit.sums = s;
     fit.ok = true;
     return fit;
 }

@@ -17,6 +17,15 @@ void RangeMedianFilter::apply(ScanPoints& pts) {
     for (std::size_t k = 0; k < n; ++k)
         original_[k] = pts.range(k);
 
+    if (window == 3) {  // the usual case, without sorting
+        for (std::size_t k = 1; k + 1 < n; ++k) {
+            if (!pts.valid(k) || !pts.valid(k - 1) || !pts.valid(k + 1))
+                continue;
+            const double a = original_[k - 1], b = original_[k], c = original_[k + 1];
+            pts.setRange(k, std::max(std::min(a, b), std::min(std::max(a, b), c)));
+        }
+        return;
+    }
     std::array<double, 15> buf{};
     for (std::size_t k = 0; k < n; ++k) {
         if (!pts.valid(k))

@@ -30,8 +30,8 @@ void ScanPoints::assign(const mrpt::obs::CObservation2DRangeScan& scan, double m
     x_.resize(n);
     y_.resize(n);
     valid_.resize(n);
-    cos_.resize(n);
-    sin_.resize(n);
+    cos_ = geomCos_.data();
+    sin_ = geomSin_.data();
     seam_ = 0;
     cyclic_ = false;
     validCount_ = 0;
@@ -41,15 +41,20 @@ void ScanPoints::assign(const mrpt::obs::CObservation2DRangeScan& scan, double m
     const float* ranges = &scan.getScanRange(0);  // contiguous storage
     const double maxRange = scan.maxRange > 0 ? scan.maxRange : HUGE_VAL;
     const double minRange = std::max(0.0, minValidRange);
+    double* __restrict range = range_.data();
+    std::uint8_t* __restrict valid = valid_.data();
+    std::size_t count = 0;
     for (std::size_t k = 0; k < n; ++k) {
         const std::size_t i = reversed_ ? n - 1 - k : k;
         const double r = ranges[i];
-        // The comparisons are false for NaN, so NaN readings are invalid too.
-        const bool ok = scan.getScanRangeValidity(i) && r > minRange && r < maxRange;
-        valid_[k] = ok;
-        validCount_ += ok;
-        range_[k] = ok ? r : 0.0;
+        // The comparisons are false for NaN, so NaN readings are invalid too. The (out of
+        // line) validity flag is asked only about plausible readings.
+        const bool ok = r > minRange && r < maxRange && scan.getScanRangeValidity(i);
+        valid[k] = ok;
+        count += ok;
+        range[k] = ok ? r : 0.0;
     }
+    validCount_ = count;
 
     // A full circle: the gap from the last beam round to the first is one step.
     cyclic_ =
@@ -62,12 +67,23 @@ void ScanPoints::assign(const mrpt::obs::CObservation2DRangeScan& scan, double m
         std::rotate(valid_.begin(), valid_.begin() + static_cast<std::ptrdiff_t>(seam_),
                     valid_.end());
     }
+    if (seam_ != 0) {
+        rotatedCos_.resize(n);
+        rotatedSin_.resize(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::size_t g = k + seam_ < n ? k + seam_ : k + seam_ - n;
+            rotatedCos_[k] = geomCos_[g];
+            rotatedSin_[k] = geomSin_[g];
+        }
+        cos_ = rotatedCos_.data();
+        sin_ = rotatedSin_.data();
+    }
+    double* __restrict x = x_.data();
+    double* __restrict y = y_.data();
+    const double* __restrict r = range_.data();
     for (std::size_t k = 0; k < n; ++k) {
-        const std::size_t g = k + seam_ < n ? k + seam_ : k + seam_ - n;
-        cos_[k] = geomCos_[g];
-        sin_[k] = geomSin_[g];
-        x_[k] = range_[k] * cos_[k];
-        y_[k] = range_[k] * sin_[k];
+        x[k] = r[k] * cos_[k];
+        y[k] = r[k] * sin_[k];
     }
 }
 
@@ -112,10 +128,33 @@ void ScanPoints::chooseSeam() {
     }
 }
 
-void ScanPoints::setRange(std::size_t k, double r) {
-    range_[k] = r;
-    x_[k] = r * cos_[k];
-    y_[k] = r * sin_[k];
+void ScanPoints::copyFrom(const ScanPoints& o) {
+    if (this == &o)
+        return;
+    range_ = o.range_;
+    x_ = o.x_;
+    y_ = o.y_;
+    valid_ = o.valid_;
+    if (geomSize_ != o.geomSize_ || geomAperture_ != o.geomAperture_) {
+        geomCos_ = o.geomCos_;
+        geomSin_ = o.geomSin_;
+        geomSize_ = o.geomSize_;
+        geomAperture_ = o.geomAperture_;
+    }
+    step_ = o.step_;
+    reversed_ = o.reversed_;
+    cyclic_ = o.cyclic_;
+    seam_ = o.seam_;
+    validCount_ = o.validCount_;
+    if (o.cos_ == o.geomCos_.data()) {
+        cos_ = geomCos_.data();
+        sin_ = geomSin_.data();
+    } else {
+        rotatedCos_ = o.rotatedCos_;
+        rotatedSin_ = o.rotatedSin_;
+        cos_ = rotatedCos_.data();
+        sin_ = rotatedSin_.data();
+    }
 }
 
 void ScanPoints::toScanOrder(ScanFeatures& f) {

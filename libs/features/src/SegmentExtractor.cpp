@@ -63,7 +63,7 @@ void SegmentExtractor::extract(const mrpt::obs::CObservation2DRangeScan& scan, S
     out.clear();
     const double sigma = rangeNoise(scan);
     raw_.assign(scan, options.minValidRange);
-    filtered_.assign(scan, options.minValidRange);
+    filtered_.copyFrom(raw_);
     median_.window = options.medianWindow;
     median_.apply(filtered_);
 
@@ -177,7 +177,7 @@ void SegmentExtractor::concaveSegments(double sigma, ScanFeatures& out) {
             continue;
         if (prev) {
             const TPoint2D a = filtered_.point(prev->beam), b = filtered_.point(cur.beam);
-            const double length = std::hypot(b.x - a.x, b.y - a.y);
+            const double length = std::sqrt(sq2(b.x - a.x, b.y - a.y));
             if (length > 0) {
                 const double ux = (b.x - a.x) / length, uy = (b.y - a.y) / length;
                 std::size_t total = 0, inliers = 0;

@@ -1,5 +1,6 @@
 #include <toposlam/features/SegmentMerge.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace toposlam::features {
@@ -23,6 +24,7 @@ void mergeSegments(const ScanPoints& pts, double thetaThreshold, std::vector<Lin
             last.cornerAfter = parts[i].cornerAfter;
             last.joint = parts[i].joint;
             last.endType = parts[i].endType;
+            last.minSize = std::max(last.minSize, parts[i].minSize);
         } else {
             parts[++out] = parts[i];
         }

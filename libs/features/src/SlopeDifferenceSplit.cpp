@@ -10,10 +10,10 @@ namespace {
 /// Paper rules within one run.
 void splitRunPaper(const ScanPoints& pts, const PointRun& run, const SlopeDifference& sd,
                    double dkTh, std::vector<LinePart>& parts) {
-    const auto& dk = sd.dk;
+    const auto& num = sd.numerator;                    // the paper's form: scale 1, numerator = dk
     const auto breakpointAfter = [&](std::size_t i) {  // between i and i+1
-        return i + 1 <= run.end && sd.defined(i) && sd.defined(i + 1) && std::abs(dk[i]) > dkTh &&
-               std::abs(dk[i + 1]) > dkTh && dk[i] * dk[i + 1] < 0;
+        return i + 1 <= run.end && sd.defined(i) && sd.defined(i + 1) && sd.exceeds(i, dkTh) &&
+               sd.exceeds(i + 1, dkTh) && num[i] * num[i + 1] < 0;
     };
     LinePart cur;
     cur.begin = run.begin;
@@ -31,9 +31,9 @@ void splitRunPaper(const ScanPoints& pts, const PointRun& run, const SlopeDiffer
         }
         if (breakpointAfter(i - 1))
             continue;  // i starts a line after a breakpoint
-        const double a = std::abs(dk[i]);
-        const bool peak = a > sd.threshold[i] && (!sd.defined(i - 1) || a > std::abs(dk[i - 1])) &&
-                          (!sd.defined(i + 1) || a > std::abs(dk[i + 1]));
+        const bool peak = sd.exceeds(i, sd.threshold[i]) &&
+                          (!sd.defined(i - 1) || sd.stronger(i, i - 1)) &&
+                          (!sd.defined(i + 1) || sd.stronger(i, i + 1));
         if (peak) {
             cur.end = static_cast<std::uint32_t>(i);
             cur.cornerAfter = true;
@@ -48,26 +48,27 @@ void splitRunPaper(const ScanPoints& pts, const PointRun& run, const SlopeDiffer
     parts.push_back(cur);
 }
 
-/// Robust rules within one run: the largest |dk| of each same-sign stretch above threshold is
-/// a candidate; of candidates closer than their baselines (their dk bumps overlap, so they
-/// cannot be told apart) only the strongest stays.
-void splitRunRobust(const PointRun& run, const SlopeDifference& sd, std::vector<LinePart>& parts,
-                    std::vector<std::uint32_t>& peaks) {
-    const auto& dk = sd.dk;
+/// Robust rules within one run: the largest |dk| of each same-sign stretch of consecutive
+/// readings above threshold is a candidate; of candidates closer than their baselines (their dk
+/// bumps overlap, so they cannot be told apart) only the strongest stays. Only the readings
+/// above threshold (sd.above, ascending) are visited. `next`: position in sd.above.
+void splitRunRobust(const PointRun& run, const SlopeDifference& sd, std::size_t& next,
+                    std::vector<LinePart>& parts, std::vector<std::uint32_t>& peaks) {
+    const auto& num = sd.numerator;  // scale > 0: its sign is dk's
+    const auto& above = sd.above;
     peaks.clear();
-    std::size_t i = run.begin + 1;
-    while (i < run.end) {
-        if (!sd.defined(i) || !(std::abs(dk[i]) > sd.threshold[i])) {
-            ++i;
-            continue;
-        }
-        const bool positive = dk[i] > 0;
-        std::size_t best = i;
-        for (; i < run.end && sd.defined(i) && std::abs(dk[i]) > sd.threshold[i] &&
-               (dk[i] > 0) == positive;
-             ++i) {
-            if (std::abs(dk[i]) > std::abs(dk[best]))
-                best = i;
+    while (next < above.size() && above[next] <= run.begin)
+        ++next;
+    while (next < above.size() && above[next] < run.end) {
+        const std::size_t first = above[next];
+        const bool positive = num[first] > 0;
+        std::size_t best = first, last = first;
+        for (++next; next < above.size() && above[next] == last + 1 && above[next] < run.end &&
+                     (num[above[next]] > 0) == positive;
+             ++next) {
+            last = above[next];
+            if (sd.stronger(last, best))
+                best = last;
         }
         // Non-maximum suppression against the peaks kept so far (a stack: a new strong peak
         // may knock out several weaker ones before it).
@@ -77,7 +78,7 @@ void splitRunRobust(const PointRun& run, const SlopeDifference& sd, std::vector<
             const std::size_t window = std::max(sd.baseline[last], sd.baseline[best]);
             if (best - last >= window)
                 break;
-            if (std::abs(dk[last]) >= std::abs(dk[best])) {
+            if (!sd.stronger(best, last)) {
                 keep = false;
                 break;
             }
@@ -93,9 +94,11 @@ void splitRunRobust(const PointRun& run, const SlopeDifference& sd, std::vector<
         cur.end = q;
         cur.cornerAfter = true;
         cur.joint = q;
+        cur.minSize = std::max(cur.minSize, sd.baseline[q]);
         parts.push_back(cur);
         cur = LinePart();
         cur.begin = q;
+        cur.minSize = sd.baseline[q];
     }
     cur.end = run.end;
     cur.endType = run.endType;
@@ -108,11 +111,12 @@ void splitBySlopeDifference(const ScanPoints& pts, const std::vector<PointRun>& 
                             const SlopeDifference& sd, double dkThreshold, bool paperRules,
                             std::vector<LinePart>& parts, std::vector<std::uint32_t>& workspace) {
     parts.clear();
+    std::size_t next = 0;
     for (const PointRun& run : runs) {
         if (paperRules) {
             splitRunPaper(pts, run, sd, dkThreshold, parts);
         } else {
-            splitRunRobust(run, sd, parts, workspace);
+            splitRunRobust(run, sd, next, parts, workspace);
         }
     }
 }

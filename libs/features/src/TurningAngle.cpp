@@ -34,6 +34,8 @@ void TurningAngle::compute(const ScanPoints& pts, const std::vector<PointRun>& r
     if (!(step > 0))
         return;
     const double chord = z * 2.0 * sigma / threshold;
+    // |turn| > threshold <=> |cross| cos(threshold) > dot sin(threshold): atan2 only then.
+    const double cosT = std::cos(threshold), sinT = std::sin(threshold);
     for (const PointRun& run : runs) {
         for (std::size_t i = run.begin + 2; i + 2 <= run.end; ++i) {
             const double r = pts.range(i);
@@ -44,8 +46,10 @@ void TurningAngle::compute(const ScanPoints& pts, const std::vector<PointRun>& r
             if (s < 1 || static_cast<double>(s) < wanted)
                 continue;  // chords too short here
             const std::size_t a = i - 1 - s, b = i - 1, c = i + 1, d = i + 1 + s;
-            windowTurn[i] = turnBetween(pts.x(b) - pts.x(a), pts.y(b) - pts.y(a),
-                                        pts.x(d) - pts.x(c), pts.y(d) - pts.y(c));
+            const double ax = pts.x(b) - pts.x(a), ay = pts.y(b) - pts.y(a);
+            const double bx = pts.x(d) - pts.x(c), by = pts.y(d) - pts.y(c);
+            const double cross = ax * by - ay * bx, dot = ax * bx + ay * by;
+            windowTurn[i] = std::abs(cross) * cosT > dot * sinT ? std::atan2(cross, dot) : 0.0;
             defined[i] = 1;
         }
     }

@@ -12,24 +12,37 @@ LineFit fitTwoPoint(const ScanPoints& pts, std::size_t begin, std::size_t end) {
     const std::size_t firstHalfEnd = begin + half;  // exclusive
     const std::size_t secondHalfBegin = end + 1 - half;
 
-    // One pass: the two half sums (for the line) and all sums (for the residual).
+    // One pass in three branch-free stretches: the two half sums (for the line) and the sums
+    // of all readings (for the residual).
+    const double* __restrict xs = pts.xData();
+    const double* __restrict ys = pts.yData();
     PointSums all;
-    all.reset(pts.x(begin), pts.y(begin));
-    double x1 = 0, y1 = 0, x2 = 0, y2 = 0;
-    for (std::size_t k = begin; k <= end; ++k) {
-        all.add(pts.x(k), pts.y(k));
-        const double x = pts.x(k) - all.ox, y = pts.y(k) - all.oy;
-        if (k < firstHalfEnd) {
-            x1 += x;
-            y1 += y;
-        } else if (k >= secondHalfBegin) {
-            x2 += x;
-            y2 += y;
+    all.reset(xs[begin], ys[begin]);
+    const auto accumulate = [&](std::size_t from, std::size_t to, double& sx, double& sy) {
+        double sxx = 0, sxy = 0, syy = 0;
+        sx = sy = 0;
+        for (std::size_t k = from; k < to; ++k) {
+            const double x = xs[k] - all.ox, y = ys[k] - all.oy;
+            sx += x;
+            sy += y;
+            sxx += x * x;
+            sxy += x * y;
+            syy += y * y;
         }
-    }
+        all.n += static_cast<double>(to - from);
+        all.sx += sx;
+        all.sy += sy;
+        all.sxx += sxx;
+        all.sxy += sxy;
+        all.syy += syy;
+    };
+    double x1 = 0, y1 = 0, x2 = 0, y2 = 0, xm = 0, ym = 0;
+    accumulate(begin, firstHalfEnd, x1, y1);
+    accumulate(firstHalfEnd, secondHalfBegin, xm, ym);  // the middle reading of an odd count
+    accumulate(secondHalfBegin, end + 1, x2, y2);
     const double h = static_cast<double>(half);
     const double dx = (x2 - x1) / h, dy = (y2 - y1) / h;  // mean of 2nd half - mean of 1st
-    const double len = std::hypot(dx, dy);
+    const double len = std::sqrt(sq2(dx, dy));
     if (!(len > 0))
         return fit;
 
@@ -41,6 +54,7 @@ LineFit fitTwoPoint(const ScanPoints& pts, std::size_t begin, std::size_t end) {
     fit.directionVarFactor = (2.0 / h) / (len * len);  // var(mean2 - mean1) / distance^2
     fit.count = static_cast<std::uint32_t>(count);
     fit.residualRms = std::sqrt(all.sumSquaredDistance(fit.normal, fit.line.rho) / all.n);
+    fit.sums = all;
     fit.ok = true;
     return fit;
 }

@@ -7,9 +7,9 @@
 //    Vertices seen with both walls but fewer beams are "don't care": a detection there is
 //    neither a hit nor a false alarm. A vertex seen with one wall only (an occluding edge)
 //    is not a corner: a corner reported there is a false alarm.
-//  - Wall runs: maximal blocks of consecutive beams hitting the same polygon edge (at least
-//    minRunBeams), with the exact hit points of their first and last beams: the visible extent
-//    of that wall, what a segment should span.
+//  - Wall runs: maximal blocks of consecutive beams hitting the same polygon edge as one
+//    continuous surface (at least minRunBeams), with the exact hit points of their first and
+//    last beams: the visible extent of that wall, what a segment should span.
 // Beams are cast exactly (no noise) along the scan's own beam directions.
 #include <mrpt/math/TPoint2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>

@@ -12,13 +12,14 @@
 //
 // Two variants, measured side by side in benchmark B1:
 //  - paperExact = true: eq. (2) and the breakpoint / corner rules exactly as printed.
-//  - default (robust): dk in exact form over a range-adaptive baseline with noise-aware
-//    thresholds (SlopeDifference.h), breaks at invalid readings and at range jumps
-//    (JumpDetector.h) instead of the opposite-sign rule, one corner per dk bump.
-//    The range noise sigma comes from the scan (CObservation2DRangeScan::stdError) or from
-//    rangeNoiseStd. Segments shorter than the chord their corners were measured over are
-//    dropped (they cannot be told from the corner bump itself), lines whose residual exceeds
-//    the noise and pairs of lines that are pieces of one small circle make no corner.
+//  - default (robust; each step documents its deviation): dk in exact form, smoothed, over a
+//    range-adaptive baseline with noise-aware thresholds (SlopeDifference.h); breaks at
+//    invalid readings and at range jumps (JumpDetector.h) instead of the opposite-sign rule;
+//    one corner per dk bump (SlopeDifferenceSplit.h); segments shorter than the baseline their
+//    corners were measured over are dropped, lines whose residual exceeds the noise too,
+//    neighbours that are one line within the noise are merged, and two lines that are pieces
+//    of one small circle make no corner (FeatureAssembly.h, ArcCornerTest.h). The range noise
+//    sigma comes from the scan (CObservation2DRangeScan::stdError) or from rangeNoiseStd.
 // Both: invalid / zero / max-range / NaN readings are breaks, angles replace slopes, very
 // short segments are dropped, any field of view and either beam order give the same corners.
 //

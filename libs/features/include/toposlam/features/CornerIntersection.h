@@ -6,12 +6,19 @@
 //  - the position covariance, propagated from both line fits: each line's normal offset at
 //    the corner has variance sigma_j^2 (offsetVarFactor + t^2 directionVarFactor), t the
 //    distance from the fit's anchor along the line, and the corner moves with both offsets.
-//    sigma_j is the line's own residual (unbiased), but never below the sensor's range noise.
+//    sigma_j^2 is the line's residual variance (N - 2 degrees of freedom) pooled with the
+//    sensor's range noise counted as 2 degrees of freedom.
 #include <mrpt/math/TPoint2D.h>
 #include <toposlam/features/LineFit.h>
 #include <toposlam/features/ScanFeatures.h>
 
 namespace toposlam::features {
+
+/// Point noise variance (m^2) of a fit: its residual variance pooled with the sensor's noise.
+double pointVariance(const LineFit& fit, double sensorSigma);
+
+/// Standard deviation (rad) of the angle between two fitted lines.
+double angleStd(const LineFit& a, const LineFit& b, double sensorSigma);
 
 /// Intersection of two lines; false when they are parallel (|sin angle| < 1e-9).
 bool intersectLines(const LineFit& a, const LineFit& b, mrpt::math::TPoint2D& out);

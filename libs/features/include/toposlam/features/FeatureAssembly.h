@@ -6,14 +6,19 @@
 //    between two corners, its neighbours are joined instead: a corner whose two lines are
 //    split by a few noisy readings is still one corner.
 //  - Each remaining part is fitted (two-point fit, step 4, or least squares) and becomes a
-//    LineSegment; the ends are its first and last readings projected onto the line.
+//    LineSegment; the ends are its first and last readings projected onto the line. A part
+//    that is no line is dropped, and its joints broken: its residual sum of squares fails a
+//    chi-square test (mean + 3 std for N - 2 degrees of freedom) at the noise level
+//    max(maxLineResidual, lineNoiseFactor * sigma): it holds readings of two walls, or clutter.
+//  - With mergeCollinear, joined neighbours whose readings are one line after all (the
+//    union's least-squares residual exceeds the two fits' by no more than noise explains, a
+//    chi-square test at mean + 3 std) are merged: a wall split by a noise peak stays one wall.
 //  - Each joint becomes a Corner (step 5, CornerIntersection.h) unless the fitted lines turn
 //    by less than minCornerTurn (they would have been merged; or, at the other extreme, they
 //    fold back onto each other), the intersection lies farther than maxCornerOffset from the
 //    reading where the corner was detected (nearly parallel lines or a bad fit: the
-//    intersection means nothing there), one of the two segments is no line (its residual RMS
-//    exceeds max(maxLineResidual, residualSigmas * sigma): it holds readings of two walls),
-//    or, when rejectArcs is set, the two segments are pieces of one small circle
+//    intersection means nothing there), or, when rejectArcs is set, the two segments are
+//    pieces of one small circle
 //    (ArcCornerTest.h).
 //  - Segment ends get their types (corner type, Jump, Open); endpoints lists every corner
 //    (convex / concave) and every jump (the nearer reading of a range discontinuity).
@@ -36,8 +41,9 @@ struct FeatureAssemblyOptions : public mrpt::config::CLoadableOptions {
     double minSegmentLength = 0;            ///< m, first to last reading
     double maxCornerOffset = 0.2;           ///< m, corner to the reading where it was detected
     double minCornerTurn = std::atan(0.3);  ///< rad; the corner paper's merge angle
-    double maxLineResidual = 0.01;          ///< m, floor of the line tolerance
-    double residualSigmas = 3;              ///< line tolerance in range-noise sigmas
+    double maxLineResidual = 0.01;          ///< m, floor of the noise level of the line test
+    double lineNoiseFactor = 1.5;           ///< line test noise level in range-noise sigmas
+    bool mergeCollinear = true;  ///< merge joined neighbours that are one line (see above)
     bool rejectArcs = true;
     double maxArcRadius = 1.0;  ///< m, see ArcCornerTest
 

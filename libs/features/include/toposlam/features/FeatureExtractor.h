@@ -37,7 +37,11 @@ class FeatureExtractor {
 const std::vector<std::string>& featureExtractorNames();
 /// The default .ini section of a method ("CornerExtractor", "SegmentExtractor", ...).
 std::string defaultConfigSection(const std::string& name);
-/// A new extractor; throws std::invalid_argument for an unknown name.
-std::unique_ptr<FeatureExtractor> makeFeatureExtractor(const std::string& name);
+/// A new extractor; throws std::invalid_argument for an unknown name. With `config`, its
+/// options are read from `section` (default: defaultConfigSection(name)) first; the preset the
+/// name stands for (least squares, paper-exact) is applied after.
+std::unique_ptr<FeatureExtractor> makeFeatureExtractor(
+    const std::string& name, const mrpt::config::CConfigFileBase* config = nullptr,
+    const std::string& section = "");
 
 }  // namespace toposlam::features

@@ -14,22 +14,10 @@
 
 namespace toposlam::features {
 
-struct LineFit {
-    Line2D line;
-    mrpt::math::TPoint2D normal{1, 0};  ///< (cos theta, sin theta) of `line`
-    mrpt::math::TPoint2D anchor;        ///< m, on the line
-    double offsetVarFactor = 0;         ///< 1/count for both methods
-    double directionVarFactor = 0;      ///< 1/m^2
-    double residualRms = 0;             ///< RMS distance of every supporting point to the line, m
-    std::uint32_t count = 0;            ///< supporting points
-    bool ok = false;                    ///< false for fewer than 2 distinct points
-};
-
-enum class LineFitMethod : std::uint8_t {
-    TwoPoint,     ///< corner paper, step 4 (TwoPointLineFit.h)
-    LeastSquares  ///< orthogonal least squares (LeastSquaresLineFit.h)
-};
-const char* toString(LineFitMethod m);
+/// a^2 + b^2 (std::hypot guards against overflow and is several times slower).
+inline double sq2(double a, double b) {
+    return a * a + b * b;
+}
 
 /// Running sums of 2D points taken relative to an origin (the first point), so that second
 /// moments stay well conditioned far from the sensor.
@@ -52,9 +40,36 @@ struct PointSums {
         sxy += x * y;
         syy += y * y;
     }
+    /// Adds another set of sums (any origin): the sums of the union of both point sets.
+    void merge(const PointSums& o) {
+        const double dx = o.ox - ox, dy = o.oy - oy;  // o's origin in this one's frame
+        sxx += o.sxx + 2 * dx * o.sx + o.n * dx * dx;
+        syy += o.syy + 2 * dy * o.sy + o.n * dy * dy;
+        sxy += o.sxy + dx * o.sy + dy * o.sx + o.n * dx * dy;
+        sx += o.sx + o.n * dx;
+        sy += o.sy + o.n * dy;
+        n += o.n;
+    }
     /// Sum of squared distances (m^2) of the points to the line n.p = rho.
     double sumSquaredDistance(const mrpt::math::TPoint2D& normal, double rho) const;
 };
+struct LineFit {
+    Line2D line;
+    mrpt::math::TPoint2D normal{1, 0};  ///< (cos theta, sin theta) of `line`
+    mrpt::math::TPoint2D anchor;        ///< m, on the line
+    double offsetVarFactor = 0;         ///< 1/count for both methods
+    double directionVarFactor = 0;      ///< 1/m^2
+    double residualRms = 0;             ///< RMS distance of every supporting point to the line, m
+    std::uint32_t count = 0;            ///< supporting points
+    bool ok = false;                    ///< false for fewer than 2 distinct points
+    PointSums sums;                     ///< of the supporting points (to test unions cheaply)
+};
+
+enum class LineFitMethod : std::uint8_t {
+    TwoPoint,     ///< corner paper, step 4 (TwoPointLineFit.h)
+    LeastSquares  ///< orthogonal least squares (LeastSquaresLineFit.h)
+};
+const char* toString(LineFitMethod m);
 
 /// The line with unit normal `normal` through point p, in Line2D's form (rho >= 0).
 Line2D lineThrough(mrpt::math::TPoint2D normal, const mrpt::math::TPoint2D& p,

@@ -18,6 +18,10 @@ struct LinePart {
     /// How each end came about when it is not a corner: Jump (the nearer side of a range
     /// discontinuity) or Open (far side of a jump, invalid reading, scan border).
     EndpointType beginType = EndpointType::Open, endType = EndpointType::Open;
+    /// Fewest readings this part may have (0: no constraint of its own). The robust split sets
+    /// it to the baseline its corners were measured over: a shorter part lies inside the
+    /// corner's own dk bump and says nothing of its own about a line.
+    std::uint32_t minSize = 0;
     std::uint32_t size() const { return end >= begin ? end - begin + 1 : 0; }
 };
 

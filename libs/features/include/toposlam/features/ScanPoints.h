@@ -39,12 +39,16 @@ class ScanPoints {
 
     // Canonical index k = 0..size()-1, bearings increasing (counter-clockwise).
     bool valid(std::size_t k) const { return valid_[k] != 0; }
-    double range(std::size_t k) const { return range_[k]; }  ///< m (meaningless if invalid)
+    double range(std::size_t k) const { return range_[k]; }  ///< m; 0 for invalid readings
     double x(std::size_t k) const { return x_[k]; }          ///< m, sensor frame
     double y(std::size_t k) const { return y_[k]; }          ///< m, sensor frame
     mrpt::math::TPoint2D point(std::size_t k) const { return {x_[k], y_[k]}; }
     double cosBearing(std::size_t k) const { return cos_[k]; }
     double sinBearing(std::size_t k) const { return sin_[k]; }
+    /// Contiguous arrays (canonical order) for tight loops.
+    const double* xData() const { return x_.data(); }
+    const double* yData() const { return y_.data(); }
+    const double* rangeData() const { return range_.data(); }
     /// The scan's own beam index of canonical reading k.
     std::uint32_t beam(std::size_t k) const {
         const std::size_t rotated = k + seam_ < size() ? k + seam_ : k + seam_ - size();
@@ -53,7 +57,13 @@ class ScanPoints {
     std::size_t validCount() const { return validCount_; }
 
     /// Replaces the point of canonical reading k (used by filters that smooth ranges).
-    void setRange(std::size_t k, double r);
+    void setRange(std::size_t k, double r) {
+        range_[k] = r;
+        x_[k] = r * cos_[k];
+        y_[k] = r * sin_[k];
+    }
+    /// This becomes a copy of `other` (reusing this object's buffers).
+    void copyFrom(const ScanPoints& other);
 
     /// Maps features extracted in canonical order (beam fields holding canonical indices,
     /// "before"/"start" meaning lower canonical index) to the scan's own beam indices and
@@ -65,7 +75,9 @@ class ScanPoints {
     void updateGeometry(std::size_t n, float aperture, bool rightToLeft);
     void chooseSeam();
 
-    std::vector<double> range_, x_, y_, cos_, sin_;
+    std::vector<double> range_, x_, y_;
+    const double *cos_ = nullptr, *sin_ = nullptr;  // geometry, rotated to the seam
+    std::vector<double> rotatedCos_, rotatedSin_;   // used only when there is a seam
     std::vector<std::uint8_t> valid_;
     // Bearings of the cached geometry, in canonical (unrotated) order.
     std::vector<double> geomCos_, geomSin_;

@@ -14,13 +14,19 @@
 //  - s is at least minBaseline (3): with s = 1 a corner that falls between two readings
 //    splits its dk between them (each gets about half, and a 135-degree corner then passes
 //    alpha * dk_th at neither); with s >= 3 the reading next to the corner keeps >= 5/6 of it;
-//  - s adapts to the range: range noise sigma moves dk_s by sqrt(6) sigma / b (b = r s dtheta,
-//    the chord), so s is the smallest baseline whose b keeps that below threshold / z. Where a
-//    run is too short for it, s is clipped and the reading's threshold raised to z times the
-//    noise of dk_s instead, so that noise never passes as a corner.
+//  - each of the three readings is replaced by the mean inverse range of the 2m+1 readings
+//    around it (m = s/2): along a straight line 1/r is a sinusoid of the bearing, so symmetric
+//    means scale all three by one factor and dk_s stays exactly 0, while the noise drops by
+//    sqrt(2m+1) (without noise, m = 0);
+//  - s adapts to the range: range noise sigma moves dk_s by
+//    sqrt(6) sigma / (r dtheta s sqrt(2m+1)), so s is the smallest baseline that keeps this
+//    below threshold / z. Where a run is too short for it, s is clipped and the reading's
+//    threshold raised to z times the noise of dk_s instead, so that noise never passes as a
+//    corner.
 #include <toposlam/features/JumpDetector.h>
 #include <toposlam/features/ScanPoints.h>
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -36,15 +42,23 @@ inline double slopeDifferenceExact(double rPrev, double r, double rNext, double 
     return (r * (1 / rPrev + 1 / rNext) - 2 * cosA) / sinA;
 }
 
-/// dk of every reading of a scan, per run, with the threshold each reading must pass.
+/// dk of every reading of a scan, per run, with the threshold each reading must pass. The
+/// robust form is computed in blocks of 16 readings that share the baseline their nearest
+/// reading needs: a fixed stencil on running sums of inverse ranges, a handful of operations
+/// per reading.
 class SlopeDifference {
   public:
-    /// dk(k) for canonical reading k; 0 where undefined (run ends, invalid readings).
-    std::vector<double> dk;
-    /// Baseline s (beams) used at k; 0 where dk is undefined.
+    /// dk(k) = numerator[k] / scale[k] for canonical reading k (scale > 0); kept as a fraction
+    /// because only a few readings need the quotient: the rest are compared (|dk| > t is
+    /// |numerator| > t scale), which saves a division per reading.
+    std::vector<double> numerator, scale;
+    /// Baseline s (beams) used at k; 0 where dk is undefined (run ends, invalid readings).
     std::vector<std::uint32_t> baseline;
-    /// |dk| a corner at k must exceed: cornerThreshold, raised where noise demands it.
+    /// |dk| a corner at k must exceed: cornerThreshold, raised where noise demands it. In the
+    /// robust form it is set only where |dk| > cornerThreshold (elsewhere it is irrelevant).
     std::vector<double> threshold;
+    /// The readings whose |dk| exceeds their threshold, ascending (robust form only).
+    std::vector<std::uint32_t> above;
 
     /// paperForm: eq. (2) as printed with s = 1 (sigma ignored). Otherwise the exact form with
     /// the range-adaptive baseline (at least minBaseline readings) for range noise sigma (m);
@@ -53,16 +67,30 @@ class SlopeDifference {
                  double cornerThreshold, double sigma, double z, unsigned minBaseline = 3);
 
     bool defined(std::size_t k) const { return baseline[k] != 0; }
-
-    /// The chord (m) over which dk_s has noise threshold / z for range noise sigma (m):
-    /// z sqrt(6) sigma / threshold.
-    static double noiseChord(double sigma, double z, double threshold) {
-        return z * 2.449489742783178 * sigma / threshold;
+    /// dk at reading k (defined readings only).
+    double value(std::size_t k) const { return numerator[k] / scale[k]; }
+    /// |dk(k)| > t.
+    bool exceeds(std::size_t k, double t) const { return std::abs(numerator[k]) > t * scale[k]; }
+    /// |dk(a)| > |dk(b)|.
+    bool stronger(std::size_t a, std::size_t b) const {
+        return std::abs(numerator[a]) * scale[b] > std::abs(numerator[b]) * scale[a];
     }
 
   private:
-    std::vector<double> cosTable_, sinTable_;  // cos/sin(s * step), s = 0..
+    /// Evaluates the exact form at reading i of a run [runBegin, runEnd] with baseline s (the
+    /// noise-wanted one; clipped to the run here). False when it does not fit.
+    bool evaluateAt(std::size_t i, std::size_t runBegin, std::size_t runEnd, std::size_t s,
+                    double noiseHere);
+
+    std::vector<double> cosTable_, invSinTable_;  // cos(s step), 1 / sin(s step), s = 0..
+    std::vector<double> invGain_;                 // 1 / (s sqrt(2m + 1))
+    std::vector<double> inverse_;                 // 1 / range (0 where invalid)
+    std::vector<double> prefix_;                  // running sums of inverse ranges
     double tableStep_ = -1;
+    bool tableSmooth_ = false;
+    bool paper_ = false, smooth_ = false;
+    double cornerThreshold_ = 0, noiseScale_ = 0;
+    std::size_t sMin_ = 1, maxBaseline_ = 0;
 };
 
 }  // namespace toposlam::features

@@ -26,7 +26,8 @@ double turnBetween(double ax, double ay, double bx, double by);
 
 class TurningAngle {
   public:
-    /// Windowed turn of each reading (rad); 0 where undefined.
+    /// Windowed turn of each reading (rad); 0 where undefined. In the chord form only turns
+    /// beyond the threshold are computed (atan2 is the costly part); smaller ones read 0.
     std::vector<double> windowTurn;
     /// Whether windowTurn[k] is defined (the window and its chords fit in k's run).
     std::vector<std::uint8_t> defined;

@@ -1,0 +1,128 @@
+// toposlam-annotate-features end to end, and MRPT's own rawlog-edit reading its output through
+// the TopoSLAM plugin (and truncating it without: the check that this test can fail).
+#include <gtest/gtest.h>
+#include <toposlam/io/RawlogWriter.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include "FeatureTestScenes.h"
+#include "TestSupport.h"
+
+using namespace toposlam;
+
+namespace {
+
+constexpr int kScans = 6;
+
+/// A small observations-format rawlog: odometry + a simulated scan, kScans times.
+std::string writeInputLog(const test::TempDir& dir) {
+    const std::string path = dir.file("in.rawlog");
+    io::RawlogWriter writer(path, io::RawlogFormat::Observations);
+    const auto scene = test::roomWithBox();
+    for (int i = 0; i < kScans; ++i) {
+        const mrpt::poses::CPose2D pose(-1 + 0.3 * i, 0.2 * i, 0.1 * i);
+        io::LaserLogRecord record;
+        record.index = static_cast<std::size_t>(i);
+        record.scan = mrpt::obs::CObservation2DRangeScan::Create(
+            test::scanOf(scene, pose, 361, M_PI, 0.01, i + 1));
+        record.scan->sensorLabel = "LASER";
+        record.scan->timestamp = mrpt::Clock::fromDouble(1000.0 + i);
+        record.odometry = pose;
+        record.hasOdometry = true;
+        writer.write(record);
+    }
+    writer.commit();
+    return path;
+}
+
+/// "Overall number of objects : N" from rawlog-edit --info, or -1.
+int objectCount(const std::string& infoOutput) {
+    std::smatch m;
+    static const std::regex re("Overall number of objects\\s*:\\s*([0-9]+)");
+    return std::regex_search(infoOutput, m, re) ? std::stoi(m[1]) : -1;
+}
+
+std::string pluginPath() {
+    return std::filesystem::canonical(test::binDir() + "/../lib/libtoposlam-plugin.so").string();
+}
+
+}  // namespace
+
+TEST(AnnotateFeaturesApp, RawlogEditReadsEveryObjectWithThePluginOnly) {
+    if (test::runCommand("command -v rawlog-edit").exitCode != 0) {
+        GTEST_SKIP() << "rawlog-edit (mrpt-apps) not installed";
+    }
+#ifdef TOPOSLAM_SANITIZED_BUILD
+    GTEST_SKIP() << "the plugin is built with AddressSanitizer and MRPT's rawlog-edit is not, "
+                    "so it cannot load it; the Release suite runs this test";
+#endif
+    test::TempDir dir;
+    const std::string in = writeInputLog(dir), out = dir.file("out.rawlog");
+    const auto run = test::runApp("toposlam-annotate-features",
+                                  "'" + in + "' -o '" + out + "' --bearing-range -q");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    ASSERT_TRUE(std::filesystem::exists(out));
+
+    // odometry + scan + features + corners per scan.
+    const auto with =
+        test::runCommand("rawlog-edit -p '" + pluginPath() + "' -i '" + out + "' --info");
+    EXPECT_EQ(objectCount(with.output), 4 * kScans) << with.output;
+    EXPECT_NE(with.output.find("LASER_FEATURES"), std::string::npos) << with.output;
+    EXPECT_NE(with.output.find("LASER_CORNERS"), std::string::npos) << with.output;
+
+    // Without the plugin MRPT stops at the first unknown object, quietly, exit code 0.
+    const auto without = test::runCommand("rawlog-edit -i '" + out + "' --info");
+    EXPECT_LT(objectCount(without.output), 4 * kScans) << without.output;
+    EXPECT_NE(without.output.find("not registered"), std::string::npos) << without.output;
+
+    // The description MRPT's tools show for our class.
+    const auto describe =
+        test::runCommand("rawlog-edit -p '" + pluginPath() + "' -i '" + out + "' --describe");
+    EXPECT_NE(describe.output.find("TopoSLAM laser features, extracted by 'corners'"),
+              std::string::npos);
+}
+
+TEST(AnnotateFeaturesApp, EveryExtractorAndOptionsFromAnIniFile) {
+    test::TempDir dir;
+    const std::string in = writeInputLog(dir);
+    for (const char* e : {"corners", "corners-ls", "corners-paper", "segments", "split-merge"}) {
+        const std::string out = dir.file(std::string(e) + ".rawlog.gz");
+        const auto run =
+            test::runApp("toposlam-annotate-features", "'" + in + "' -o '" + out + "' -e " + e);
+        EXPECT_EQ(run.exitCode, 0) << e << ": " << run.output;
+        EXPECT_NE(run.output.find("6 scans"), std::string::npos) << run.output;
+        EXPECT_TRUE(std::filesystem::exists(out)) << e;
+    }
+    const std::string ini = dir.file("f.ini");
+    {
+        std::ofstream f(ini);
+        f << "[CornerExtractor]\ndk_th = 2.5\nline_fit = least_squares\n";
+    }
+    const auto printed = test::runApp("toposlam-annotate-features",
+                                      "'" + in + "' -o x.rawlog -c '" + ini + "' --print-options");
+    EXPECT_EQ(printed.exitCode, 0) << printed.output;
+    EXPECT_NE(printed.output.find("dk_th              = 2.5"), std::string::npos) << printed.output;
+    EXPECT_NE(printed.output.find("least_squares"), std::string::npos) << printed.output;
+}
+
+TEST(AnnotateFeaturesApp, BadInputIsAnErrorAndLeavesNoOutput) {
+    test::TempDir dir;
+    const std::string out = dir.file("out.rawlog");
+    auto run = test::runApp("toposlam-annotate-features",
+                            "'" + dir.file("missing.clf") + "' -o '" + out + "'");
+    EXPECT_NE(run.exitCode, 0);
+    EXPECT_NE(run.output.find("error:"), std::string::npos) << run.output;
+    EXPECT_FALSE(std::filesystem::exists(out));
+    {
+        std::ofstream bad(dir.file("bad.clf"));
+        bad << "FLASER 3 1.0 2.0\n";
+    }
+    run = test::runApp("toposlam-annotate-features",
+                       "'" + dir.file("bad.clf") + "' -o '" + out + "'");
+    EXPECT_NE(run.exitCode, 0) << run.output;
+    EXPECT_FALSE(std::filesystem::exists(out));
+    run = test::runApp("toposlam-annotate-features", "x -o y -e nonsense");
+    EXPECT_NE(run.exitCode, 0);
+}

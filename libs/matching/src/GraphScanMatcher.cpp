@@ -175,13 +175,20 @@ void GraphScanMatcher::polish(const PolarScan& referenceScan, const PolarScan& c
                                     options_.score.searchBeams + 1);
         out.pose = out.icp.pose;
     }
+    // Value: each inlier counts 1 - (d / inlierDistance)^2 (a tighter fit scores higher,
+    // which separates poses a few centimetres apart that all have the same inliers), each
+    // free-space violation -1.
+    const double inv2 = 1.0 / (options_.score.inlierDistance * options_.score.inlierDistance);
+    const auto value = [&](const AlignmentScore& a) {
+        return double(a.inliers) - a.inlierSquaredError * inv2 - double(a.violations);
+    };
     out.score = scoreAlignment(referenceScan, currentScan, out.pose, options_.score);
-    out.value = double(out.score.inliers) - double(out.score.violations);
+    out.value = value(out.score);
     if (options_.symmetricScore) {
         // The reference scan seen from the current one: a pose that explains the current
         // points but puts reference points in the current scan's free space is wrong too.
         out.reverseScore = scoreAlignment(currentScan, referenceScan, -out.pose, options_.score);
-        out.value += double(out.reverseScore.inliers) - double(out.reverseScore.violations);
+        out.value += value(out.reverseScore);
     }
     out.polished = true;
 }
@@ -238,6 +245,18 @@ void GraphScanMatcher::decide() {
             return a.value > b.value;
         return a.score.inlierRms() < b.score.inlierRms();
     });
+    // Distinct solutions only (a polished or locally improved pose may reach another's).
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < refined_.size(); ++k) {
+        bool duplicate = false;
+        for (std::size_t j = 0; j < kept && !duplicate; ++j)
+            duplicate = !posesDistinct(refined_[j].pose, refined_[k].pose,
+                                       options_.ransac.distinctTranslation,
+                                       options_.ransac.distinctRotation);
+        if (!duplicate)
+            refined_[kept++] = refined_[k];
+    }
+    refined_.resize(kept);
     const Refined& best = refined_.front();
     r.pose = best.pose;
     r.covariance = best.icp.covariance;

@@ -57,8 +57,19 @@ const std::vector<PoseCandidate>& HoughPoseSearch::search(
     rotationCandidates(currentGraph, referenceGraph, pairs, options);
     if (rotations_.empty())
         return out_;
+    collectPoints(reference, current, options.stride);
+    for (const double phi : rotations_)
+        vote(phi, 0.0, 0.0, options.window, options.cell, options.peaksPerRotation,
+             options.minPeakFraction);
+    std::stable_sort(out_.begin(), out_.end(), [](const PoseCandidate& a, const PoseCandidate& b) {
+        return a.votes > b.votes;
+    });
+    return out_;
+}
 
-    const std::size_t stride = std::max<std::size_t>(1, options.stride);
+void HoughPoseSearch::collectPoints(const PolarScan& reference, const PolarScan& current,
+                                    std::size_t strideOption) {
+    const std::size_t stride = std::max<std::size_t>(1, strideOption);
     ref_.clear();
     cur_.clear();
     for (std::size_t i = 0; i < reference.size(); i += stride)
@@ -67,67 +78,62 @@ const std::vector<PoseCandidate>& HoughPoseSearch::search(
     for (std::size_t i = 0; i < current.size(); i += stride)
         if (current.valid(i))
             cur_.push_back(current.point(i));
+}
+
+void HoughPoseSearch::vote(double phi, double cx, double cy, double window, double cell,
+                           std::size_t peaks, double minPeakFraction) {
     if (ref_.empty() || cur_.empty())
-        return out_;
-
-    const long side = long(std::ceil(2 * options.window / options.cell));
-    const double inv = 1.0 / options.cell;
-    votes_.resize(std::size_t(side * side));
-    sums_.resize(std::size_t(side * side));
-    const double minVotes = options.minPeakFraction * double(cur_.size());
-
-    for (const double phi : rotations_) {
-        std::fill(votes_.begin(), votes_.end(), std::uint16_t(0));
-        const double c = std::cos(phi), s = std::sin(phi);
-        for (const mrpt::math::TPoint2D& p : cur_) {
-            const double rx = c * p.x - s * p.y, ry = s * p.x + c * p.y;
-            for (const mrpt::math::TPoint2D& q : ref_) {
-                const long ix = long(std::floor((q.x - rx + options.window) * inv));
-                const long iy = long(std::floor((q.y - ry + options.window) * inv));
-                if (ix < 0 || iy < 0 || ix >= side || iy >= side)
-                    continue;
-                std::uint16_t& v = votes_[std::size_t(iy * side + ix)];
-                if (v < 65535)
-                    ++v;
-            }
-        }
-        // 3x3 sums, then the strongest peaks with their neighbourhoods suppressed.
-        std::fill(sums_.begin(), sums_.end(), 0u);
-        for (long y = 1; y + 1 < side; ++y)
-            for (long x = 1; x + 1 < side; ++x) {
-                std::uint32_t sum = 0;
-                for (long dy = -1; dy <= 1; ++dy)
-                    for (long dx = -1; dx <= 1; ++dx)
-                        sum += votes_[std::size_t((y + dy) * side + x + dx)];
-                sums_[std::size_t(y * side + x)] = sum;
-            }
-        for (std::size_t peak = 0; peak < options.peaksPerRotation; ++peak) {
-            const auto it = std::max_element(sums_.begin(), sums_.end());
-            if (double(*it) < minVotes)
-                break;
-            const long at = long(it - sums_.begin()), px = at % side, py = at / side;
-            // Vote-weighted centre of the 3x3 block.
-            double wx = 0, wy = 0, w = 0;
-            for (long dy = -1; dy <= 1; ++dy)
-                for (long dx = -1; dx <= 1; ++dx) {
-                    const double v = votes_[std::size_t((py + dy) * side + px + dx)];
-                    wx += v * double(px + dx), wy += v * double(py + dy), w += v;
-                }
-            const double tx = (wx / w + 0.5) * options.cell - options.window;
-            const double ty = (wy / w + 0.5) * options.cell - options.window;
-            out_.push_back({mrpt::poses::CPose2D(tx, ty, phi), double(*it)});
-            for (long dy = -3; dy <= 3; ++dy)
-                for (long dx = -3; dx <= 3; ++dx) {
-                    const long x = px + dx, y = py + dy;
-                    if (x >= 0 && y >= 0 && x < side && y < side)
-                        sums_[std::size_t(y * side + x)] = 0;
-                }
+        return;
+    const long side = long(std::ceil(2 * window / cell));
+    const double inv = 1.0 / cell;
+    votes_.assign(std::size_t(side * side), std::uint16_t(0));
+    sums_.assign(std::size_t(side * side), 0u);
+    const double minVotes = minPeakFraction * double(cur_.size());
+    const double c = std::cos(phi), s = std::sin(phi);
+    const double ox = cx - window, oy = cy - window;  // lower-left corner of the grid
+    for (const mrpt::math::TPoint2D& p : cur_) {
+        const double rx = c * p.x - s * p.y + ox, ry = s * p.x + c * p.y + oy;
+        for (const mrpt::math::TPoint2D& q : ref_) {
+            const long ix = long(std::floor((q.x - rx) * inv));
+            const long iy = long(std::floor((q.y - ry) * inv));
+            if (ix < 0 || iy < 0 || ix >= side || iy >= side)
+                continue;
+            std::uint16_t& v = votes_[std::size_t(iy * side + ix)];
+            if (v < 65535)
+                ++v;
         }
     }
-    std::stable_sort(out_.begin(), out_.end(), [](const PoseCandidate& a, const PoseCandidate& b) {
-        return a.votes > b.votes;
-    });
-    return out_;
+    // 3x3 sums, then the strongest peaks with their neighbourhoods suppressed.
+    for (long y = 1; y + 1 < side; ++y)
+        for (long x = 1; x + 1 < side; ++x) {
+            std::uint32_t sum = 0;
+            for (long dy = -1; dy <= 1; ++dy)
+                for (long dx = -1; dx <= 1; ++dx)
+                    sum += votes_[std::size_t((y + dy) * side + x + dx)];
+            sums_[std::size_t(y * side + x)] = sum;
+        }
+    for (std::size_t peak = 0; peak < peaks; ++peak) {
+        const auto it = std::max_element(sums_.begin(), sums_.end());
+        if (double(*it) < minVotes || *it == 0)
+            break;
+        const long at = long(it - sums_.begin()), px = at % side, py = at / side;
+        // Vote-weighted centre of the 3x3 block.
+        double wx = 0, wy = 0, w = 0;
+        for (long dy = -1; dy <= 1; ++dy)
+            for (long dx = -1; dx <= 1; ++dx) {
+                const double v = votes_[std::size_t((py + dy) * side + px + dx)];
+                wx += v * double(px + dx), wy += v * double(py + dy), w += v;
+            }
+        const double tx = (wx / w + 0.5) * cell + ox;
+        const double ty = (wy / w + 0.5) * cell + oy;
+        out_.push_back({mrpt::poses::CPose2D(tx, ty, phi), double(*it)});
+        for (long dy = -3; dy <= 3; ++dy)
+            for (long dx = -3; dx <= 3; ++dx) {
+                const long x = px + dx, y = py + dy;
+                if (x >= 0 && y >= 0 && x < side && y < side)
+                    sums_[std::size_t(y * side + x)] = 0;
+            }
+    }
 }
 
 }  // namespace toposlam::matching

@@ -54,6 +54,10 @@ class HoughPoseSearch {
     const std::vector<double>& rotations() const { return rotations_; }
 
   private:
+    void collectPoints(const PolarScan& reference, const PolarScan& current, std::size_t stride);
+    /// Votes for translations around (cx, cy) +- window at rotation phi; appends the peaks.
+    void vote(double phi, double cx, double cy, double window, double cell, std::size_t peaks,
+              double minPeakFraction);
     void rotationCandidates(const AttributedGraph& currentGraph,
                             const AttributedGraph& referenceGraph,
                             const std::vector<ScoredAssignment>& pairs,

@@ -55,15 +55,17 @@ int main(int argc, char** argv) {
                                           false, "intel,mit-csail", "names", cmd);
         TCLAP::ValueArg<std::string> config(
             "c", "config",
-            "ini with [GraphScanMatcher] (matcher options, 'extractor') and [ICP] (CICP options "
-            "for both CICP variants; ICP_algorithm is overridden). Default: built-in defaults, "
-            "which are those of config_ini/bench-matching.ini",
+            "ini with [GraphScanMatcher] (matcher options), the extractors' sections "
+            "([SplitAndMergeExtractor], [CornerExtractor], [SegmentExtractor]) and [ICP] (CICP "
+            "options for both CICP variants; ICP_algorithm is overridden). Default: built-in "
+            "defaults (config_ini/graph-matcher.ini, features.ini, bench-matching-icp.ini)",
             false, "", "file.ini", cmd);
         TCLAP::ValueArg<std::string> extractors(
             "e", "extractors",
-            "feature extractors of the graph-matcher rows (default corners,segments: the corner "
-            "paper's segments and the graph paper's sec. 2.1 convex/concave segments)",
-            false, "corners,segments", "names", cmd);
+            "feature extractors of the graph-matcher rows (default split-merge,corners,segments: "
+            "IEPF lines, the corner paper's segments, the graph paper's sec. 2.1 convex/concave "
+            "segments)",
+            false, "split-merge,corners,segments", "names", cmd);
         TCLAP::ValueArg<std::size_t> simPairs("s", "sim-pairs",
                                               "simulated pairs per room x offset x rotation "
                                               "(2 x 4 x 4 cases; default 10, 0 = none)",
@@ -105,8 +107,8 @@ int main(int argc, char** argv) {
 
         std::vector<std::unique_ptr<matchingbench::PairMatcher>> owned;
         for (const std::string& e : splitComma(extractors.getValue()))
-            owned.push_back(std::make_unique<matchingbench::GraphPairMatcher>("graph (" + e + ")",
-                                                                              e, graphOptions));
+            owned.push_back(std::make_unique<matchingbench::GraphPairMatcher>(
+                "graph (" + e + ")", e, graphOptions, ini.get()));
         auto classic = icpParams, lm = icpParams;
         classic.ICP_algorithm = mrpt::slam::icpClassic;
         lm.ICP_algorithm = mrpt::slam::icpLevenbergMarquardt;

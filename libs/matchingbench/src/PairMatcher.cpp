@@ -13,10 +13,14 @@ double threadCpuSeconds() {
 }
 
 GraphPairMatcher::GraphPairMatcher(std::string name, const std::string& extractor,
-                                   const matching::GraphMatcherOptions& options)
+                                   const matching::GraphMatcherOptions& options,
+                                   const mrpt::config::CConfigFileBase* extractorConfig)
     : name_(std::move(name)),
       extractor_(features::makeFeatureExtractor(extractor)),
-      matcher_(options) {}
+      matcher_(options) {
+    if (extractorConfig)
+        extractor_->loadOptions(*extractorConfig, features::defaultConfigSection(extractor));
+}
 
 PairOutcome GraphPairMatcher::match(const ScanPair& pair,
                                     const std::optional<mrpt::poses::CPose2D>& guess) {

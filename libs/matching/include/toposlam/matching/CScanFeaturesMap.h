@@ -4,11 +4,12 @@
 // (CGraphMatcherAlignment, a CMetricMapsAlignmentAlgorithm) can take two of them, and so that
 // .ini map definitions build it:
 //     [map]  scanFeaturesMap_count = 1
-//     [map_scanFeaturesMap_00_creationOpts]  extractor = corners
+//     [map_scanFeaturesMap_00_creationOpts]  extractor = split-merge
 // Inserting a CObservation2DRangeScan REPLACES the content (the map holds one scan): its
 // readings are kept in the sensor frame (PolarScan), its features are extracted with the
-// configured extractor (libs/features: "corners", "segments", ...), and the sensor's pose in
-// the map frame (robot pose given to insertObservation, default the origin, composed with the
+// configured extractor (libs/features: "split-merge" by default, the one the graph matcher
+// does best with on real scans, see README B2; "corners", "segments", ...), and the sensor's pose
+// in the map frame (robot pose given to insertObservation, default the origin, composed with the
 // scan's sensorPose) is remembered. Serialization stores the scan and the extractor name; the
 // features are extracted again on reading (extraction is deterministic).
 // Registered with mrpt-rtti and MAP_DEFINITION_REGISTER ("toposlam::matching::CScanFeaturesMap",
@@ -52,7 +53,7 @@ class CScanFeaturesMap : public mrpt::maps::CMetricMap {
     std::string asString() const override;
 
     MAP_DEFINITION_START(CScanFeaturesMap)
-    std::string extractor = "corners";
+    std::string extractor = "split-merge";
     MAP_DEFINITION_END(CScanFeaturesMap)
 
   private:
@@ -66,7 +67,7 @@ class CScanFeaturesMap : public mrpt::maps::CMetricMap {
         const mrpt::obs::CObservation& obs, const mrpt::poses::CPose3D& takenFrom) const override;
     void extract();
 
-    std::string extractor_ = "corners";
+    std::string extractor_ = "split-merge";
     mrpt::obs::CObservation2DRangeScan scan_;
     mrpt::poses::CPose2D robotPose_, sensorPose_;
     PolarScan polar_;

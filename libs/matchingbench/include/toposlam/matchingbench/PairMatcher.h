@@ -38,8 +38,11 @@ class PairMatcher {
 
 class GraphPairMatcher : public PairMatcher {
   public:
+    /// `extractorConfig`: when given, the extractor's options are read from its default
+    /// section (features::defaultConfigSection, e.g. [SplitAndMergeExtractor]).
     GraphPairMatcher(std::string name, const std::string& extractor,
-                     const matching::GraphMatcherOptions& options);
+                     const matching::GraphMatcherOptions& options,
+                     const mrpt::config::CConfigFileBase* extractorConfig = nullptr);
     std::string name() const override { return name_; }
     PairOutcome match(const ScanPair& pair,
                       const std::optional<mrpt::poses::CPose2D>& guess) override;

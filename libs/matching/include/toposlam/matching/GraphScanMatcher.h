@@ -11,17 +11,22 @@
 //   5. GreedyAssignment  P -> one-to-one matches;
 //   6. RansacMatcher     transforms from pairs of matched segments (lines, not midpoints),
 //                        ranked by how many segments agree;
-//   7. PointToLineIcp    refinement of the best few on the points of their agreeing segments,
-//                        (AlongLineSearch where those are all parallel, e.g. a corridor),
-//                        then on all points against the reference scan's local lines;
-//   8. AlignmentScorer   free-space consistency of each refined pose against the whole
-//                        reference scan, and the decision below.
+//   7. PointToLineIcp    refinement of the best few on the points of their agreeing segments
+//                        (AlongLineSearch where those are all parallel, e.g. a corridor); the
+//                        ones that screen well are then polished on all points against the
+//                        reference scan's local lines;
+//   8. AlignmentScorer   free-space consistency of each polished pose, both ways (current on
+//                        reference and back), and the decision below;
+//   9. HoughPoseSearch   only when 1-8 found nothing reliable: rotations from segment pairs,
+//                        translations voted by all points, refined and judged the same way.
+// With a guess that leads to no reliable match, the match is retried without it
+// (guessFreeRetry).
 // The result is the pose of the CURRENT scan's sensor in the REFERENCE scan's sensor frame
 // (what MRPT calls the pose of m2 relative to m1), its covariance and the evidence for it.
 // Decision: a pose is returned as reliable only when
-//   - enough of the current scan lands on the reference surface (inliers >= minInliers and
-//     >= minInlierRatio of its valid points) and little of it lands in space the reference
-//     saw as free (inlier fraction >= minInlierFraction);
+//   - enough of the scans land on each other's surface (inliers >= minInliers and >=
+//     minInlierRatio of the scored points) and little lands in space the other scan saw as
+//     free (inlier fraction >= minInlierFraction);
 //   - the matched lines fix the pose (ICP's worst translation std <= maxTranslationStd):
 //     a single wall or a featureless corridor does not;
 //   - no clearly different pose (distinct by the RANSAC distinctness thresholds) explains the

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 namespace {
@@ -78,6 +79,7 @@ int main(int argc, char** argv) {
             "paper-exact variant with that file's door width, area and Hough values",
             false, "", "file.ini", cmd);
         ParseErrorOutput parseErrors;
+        const std::unique_ptr<TCLAP::CmdLineOutput> defaultOutput(cmd.getOutput());  // else leaked
         cmd.setOutput(&parseErrors);
         if (!cmd.parse(argc, argv))
             return parseErrors.failed ? 1 : 0;

@@ -20,6 +20,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -113,13 +114,14 @@ int run(int argc, char** argv) {
                                           "Door width tolerance delta_w in m. Default: 0.5", false,
                                           0.5, "m", cmd);
     TCLAP::ValueArg<double> minRoomArea(
-        "", "min-room-area", "Minimum room area N_s in m^2 (both sides of a door). Default: 1.5",
-        false, 1.5, "m^2", cmd);
+        "", "min-room-area", "Minimum room area N_s in m^2 (both sides of a door). Default: 2",
+        false, 2.0, "m^2", cmd);
     TCLAP::ValueArg<double> freeThreshold(
         "", "free-threshold",
-        "A cell is free when p(free) exceeds this. Default: 0.6 (MRPT grids: unknown = 0.5). "
-        "Use 0.98 for maps drawn with grey < 250 = not free (Bormann et al.'s benchmark)",
-        false, 0.6, "p", cmd);
+        "A cell is free when p(free) exceeds this. Default: 0.8 (ROS map_server's free "
+        "threshold; MRPT grids: unknown = 0.5). Use 0.98 for maps drawn with grey < 250 = not "
+        "free (Bormann et al.'s benchmark)",
+        false, 0.8, "p", cmd);
     TCLAP::ValueArg<double> resolution(
         "", "resolution",
         "Cell size in m of a bare input image (overrides its .yaml sidecar). "
@@ -134,6 +136,7 @@ int run(int argc, char** argv) {
                                false, 2, "n", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "No summary on stdout", cmd);
     ParseErrorOutput parseErrors;
+    const std::unique_ptr<TCLAP::CmdLineOutput> defaultOutput(cmd.getOutput());  // else leaked
     cmd.setOutput(&parseErrors);
     if (!cmd.parse(argc, argv))
         return parseErrors.failed ? EXIT_FAILURE : EXIT_SUCCESS;

@@ -184,9 +184,21 @@ TEST(RoomSegmenter, LabelsRoomsAndDoorsAreConsistent) {
     }
     for (const Room& room : map.rooms) {
         // The grid stores its resolution as a float: the cell area is the frame's, not 0.05^2.
-        EXPECT_NEAR(room.area, cells[static_cast<std::size_t>(room.id)] * map.frame.cellArea(), 1e-9);
+        EXPECT_NEAR(room.area, cells[static_cast<std::size_t>(room.id)] * map.frame.cellArea(),
+                    1e-9);
         EXPECT_EQ(map.roomAt(room.anchor.x, room.anchor.y), room.id);  // the anchor is inside
         EXPECT_GE(room.outline.size(), 4u);
+    }
+    // Rooms that touch share a door: the graph is the partition's adjacency.
+    for (int r = 0; r + 1 < map.labels.rows; ++r) {
+        for (int c = 0; c + 1 < map.labels.cols; ++c) {
+            const int a = map.labels.at<int>(r, c);
+            for (const int b : {map.labels.at<int>(r, c + 1), map.labels.at<int>(r + 1, c)}) {
+                if (a > 0 && b > 0 && a != b) {
+                    EXPECT_FALSE(map.doorsBetween(a, b).empty()) << "rooms " << a << ", " << b;
+                }
+            }
+        }
     }
     for (const Door& d : map.doors) {
         // The door's middle cell belongs to one of the two rooms it joins.

@@ -28,20 +28,10 @@ struct UnionFind {
     }
 };
 
-// Length (pixels) of the run of non-free cells that starts at `jamb` in direction (ux, uy),
-// capped at `cap`.
-double obstacleRun(const cv::Mat& free, const cv::Point& jamb, double ux, double uy, double cap) {
-    cv::Point hit;
-    if (!detail::walkRay(
-            jamb, ux, uy, cap, [&](int x, int y) { return detail::isSet(free, x, y); }, hit)) {
-        return cap;
-    }
-    return std::hypot(hit.x - jamb.x, hit.y - jamb.y);
-}
-
-// Like obstacleRun, but a free cell stops the walk only when its two neighbours across the
-// walking direction are free too: a thin wall drawn as a digital line at an angle is followed to
-// its end instead of being left through the gaps of its staircase.
+// Length (pixels, capped at `cap`) of the obstacle that starts at `jamb` in direction (ux, uy).
+// A free cell ends it only when its two neighbours across the walking direction are free too: a
+// thin wall drawn as a digital line at an angle is followed to its end instead of being left
+// through the gaps of its staircase.
 double wallRun(const cv::Mat& free, const cv::Point& jamb, double ux, double uy, double cap) {
     const cv::Point side(cvRound(-uy), cvRound(ux));
     cv::Point hit;
@@ -101,11 +91,11 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
     };
     auto onWall = [&](const cv::Point& jamb, double ux, double uy) {
         // Along the door line (both ways: one leads back into the opening and stops at once)
-        // and across it.
-        return obstacleRun(space.free, jamb, ux, uy, extent) >= extent ||
-               obstacleRun(space.free, jamb, -ux, -uy, extent) >= extent ||
-               obstacleRun(space.free, jamb, -uy, ux, extent) >= extent ||
-               obstacleRun(space.free, jamb, uy, -ux, extent) >= extent;
+        // and across it; walls drawn as thin digital lines at an angle are followed.
+        return wallRun(space.free, jamb, ux, uy, extent) >= extent ||
+               wallRun(space.free, jamb, -ux, -uy, extent) >= extent ||
+               wallRun(space.free, jamb, -uy, ux, extent) >= extent ||
+               wallRun(space.free, jamb, uy, -ux, extent) >= extent;
     };
     // The wall the door is in: from the jamb, away from the opening, the obstacle goes on for
     // longer than any wall is thick (so this is not a walk through the thickness of a wall
@@ -276,8 +266,9 @@ std::vector<std::size_t> DoorFilters::adjacency(const RegionPartition& partition
 }
 
 DoorFilters::Rooms DoorFilters::minimumArea(const RegionPartition& partition,
+                                            const std::vector<VirtualDoor>& doors,
                                             const std::vector<std::size_t>& candidates,
-                                            double cellArea) const {
+                                            double cellArea, double doorWidth) const {
     const int regions = partition.regionCount();
     const double minCells = detail::toCells(options_.minRoomArea, cellArea);
     UnionFind merged(regions + 1);
@@ -334,20 +325,45 @@ DoorFilters::Rooms DoorFilters::minimumArea(const RegionPartition& partition,
             }
             if (smallest < 0)
                 break;
-            // ... is merged through its door to its smallest neighbour.
+            // ... is merged through its least door-like door (eq. 10's |width - w| largest: a
+            // sliver between a doorway's cut and a cut along a wall face keeps the doorway's),
+            // ties through the door to its smallest neighbour.
             std::size_t through = 0;
-            double neighbourArea = 1e300;
+            double worstFit = -1, neighbourArea = 1e300;
             for (std::size_t k = 0; k < candidates.size(); ++k) {
                 const auto [a, b] = liveSides(k);
                 if (removed[k] || a == b || (a != smallest && b != smallest))
                     continue;
+                const double fit = std::abs(doors[candidates[k]].width - doorWidth);
                 const double other = area[static_cast<std::size_t>(a == smallest ? b : a)];
-                if (other < neighbourArea) {
+                if (fit > worstFit + 0.5 ||
+                    (std::abs(fit - worstFit) <= 0.5 && other < neighbourArea)) {
+                    worstFit = fit;
                     neighbourArea = other;
                     through = k;
                 }
             }
             removeDoor(through);
+        }
+    }
+
+    // A door separates exactly two rooms: one that still touches three or more (crossing cuts)
+    // is removed as well, until none is left, so that every two rooms that touch share a door.
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (std::size_t k = 0; k < candidates.size(); ++k) {
+            if (removed[k])
+                continue;
+            std::vector<int> roots;
+            for (const auto& [region, contacts] : partition.regionsAt(candidates[k])) {
+                (void)contacts;
+                roots.push_back(merged.find(region));
+            }
+            std::sort(roots.begin(), roots.end());
+            if (std::unique(roots.begin(), roots.end()) - roots.begin() > 2) {
+                removeDoor(k);
+                changed = true;
+            }
         }
     }
 

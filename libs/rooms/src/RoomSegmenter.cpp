@@ -2,6 +2,8 @@
 #include <toposlam/rooms/RegionPartition.h>
 #include <toposlam/rooms/RoomSegmenter.h>
 
+#include "GridRay.h"
+
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 
@@ -257,7 +259,8 @@ RoomSegmenter::Result RoomSegmenter::segment(
     const std::vector<std::size_t> adjacent = DoorFilters::adjacency(ws.partition);
     result.afterAdjacency = adjacent.size();
     const DoorFilters::Rooms rooms =
-        ws.filters.minimumArea(ws.partition, adjacent, space.frame.cellArea());
+        ws.filters.minimumArea(ws.partition, result.afterDistance, adjacent, space.frame.cellArea(),
+                               detail::toCells(door.doorWidth, res));
     lap("partition+filters");
 
     // Step 6: the rooms. Region labels become room ids in place; cut cells join a neighbour.

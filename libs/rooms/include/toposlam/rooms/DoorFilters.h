@@ -44,14 +44,15 @@ class DoorFilters {
         /// walls are a few cells thick; 0.5 m is more than the thickest wall, so the
         /// cross-sections found all along one doorway count as one door on any map.
         double frameDistance = 0.5;
-        double minRoomArea = 1.5;  ///< N_s (m^2)
+        double minRoomArea = 2.0;  ///< N_s (m^2)
         /// Distance filter: of a group of doors closer than N_d, keep the narrowest (the
         /// waist of the opening; ties: the one nearest the group's middle). Off: the paper's
         /// greedy reading, keep each door that is more than N_d from every door kept before it.
         bool keepNarrowestOfGroup = true;
-        /// Minimum-area filter: merge the smallest too-small region first, through its door to
-        /// its smallest neighbour, and re-evaluate. Off: the paper's single pass, remove every
-        /// door with a too-small region on either side.
+        /// Minimum-area filter: merge the smallest too-small region first, through its least
+        /// door-like door (eq. 10's |width - w| largest; ties: to its smallest neighbour), and
+        /// re-evaluate. Off: the paper's single pass, remove every door with a too-small region
+        /// on either side.
         bool mergeSmallestFirst = true;
         bool requireWallJambs = true;  ///< the wall-jamb test (deviation, see above)
         double minWallExtent = 0.3;    ///< m
@@ -90,11 +91,13 @@ class DoorFilters {
         };
         std::vector<Link> doors;
     };
-    /// The minimum-area filter over the doors `candidates` of `partition`; regions are merged
-    /// through removed doors. `cellArea` in m^2. Doors whose two sides end up in one room are
-    /// dropped too (they no longer separate anything).
-    Rooms minimumArea(const RegionPartition& partition, const std::vector<std::size_t>& candidates,
-                      double cellArea) const;
+    /// The minimum-area filter over the doors `candidates` (indices into `doors`, the doors
+    /// `partition` was cut with); regions are merged through removed doors. `cellArea` in m^2,
+    /// `doorWidth` (w) in pixels. Doors whose two sides end up in one room are dropped too
+    /// (they no longer separate anything).
+    Rooms minimumArea(const RegionPartition& partition, const std::vector<VirtualDoor>& doors,
+                      const std::vector<std::size_t>& candidates, double cellArea,
+                      double doorWidth) const;
 
     const Options& options() const { return options_; }
 

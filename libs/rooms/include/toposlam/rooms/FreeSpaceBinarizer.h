@@ -49,9 +49,11 @@ class FreeSpaceBinarizer {
   public:
     struct Options {
         /// A cell is free when its p(free) exceeds this (MRPT convention: 0 = occupied,
-        /// 0.5 = unknown, 1 = free). 0.6 separates cells seen free at least once from cells
-        /// never seen (exactly 0.5).
-        double freeThreshold = 0.6;
+        /// 0.5 = unknown, 1 = free). 0.8 is ROS map_server's free threshold (occupancy below
+        /// 0.196): cells seen free often enough. Lower values let the weakly observed cells of
+        /// SLAM grids (seen free once or twice, through gaps in walls) join rooms to their
+        /// neighbours; maps drawn with grey < 250 = not free (Bormann et al.) need 0.98.
+        double freeThreshold = 0.8;
         /// Isolated non-free specks of at most this area (m^2) inside the free space count as
         /// free; 0 keeps every speck (the paper). 0.01 m^2 is four 5 cm cells.
         double maxSpeckArea = 0.01;

@@ -5,6 +5,7 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
+#include <toposlam/cli/CommandLine.h>
 #include <toposlam/io/ProgressDisplay.h>
 #include <toposlam/matchingbench/MatchingBenchmark.h>
 #include <toposlam/matchingbench/RelationPairs.h>
@@ -77,7 +78,8 @@ int main(int argc, char** argv) {
         TCLAP::SwitchArg noGuess("", "no-guess-run", "skip the odometry-guess run", cmd);
         TCLAP::ValueArg<std::string> json("j", "json", "JSON output (default bench-matching.json)",
                                           false, "bench-matching.json", "file", cmd);
-        cmd.parse(argc, argv);
+        if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
+            return *exitCode;
 
         mrpt::config::CConfigFileMemory emptyIni;
         std::unique_ptr<mrpt::config::CConfigFile> ini;

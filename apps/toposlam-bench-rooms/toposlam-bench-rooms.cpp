@@ -1,5 +1,6 @@
 // toposlam-bench-rooms: benchmark B4 (room segmentation on the maps of Bormann et al. 2016),
 // the virtual-door segmenter against the morphological and distance baselines in one run.
+#include <toposlam/cli/CommandLine.h>
 #include <toposlam/io/AtomicFile.h>
 #include <toposlam/io/ProgressDisplay.h>
 #include <toposlam/rooms/RoomBenchmark.h>
@@ -14,15 +15,6 @@
 #include <sstream>
 
 namespace {
-
-class ParseErrorOutput : public TCLAP::StdOutput {
-  public:
-    bool failed = false;
-    void failure(TCLAP::CmdLineInterface&, TCLAP::ArgException& e) override {
-        failed = true;
-        std::cerr << "error: " << e.argId() << ": " << e.error() << " (see --help)\n";
-    }
-};
 
 std::vector<std::string> splitList(const std::string& s) {
     std::vector<std::string> out;
@@ -78,11 +70,8 @@ int main(int argc, char** argv) {
             "config_ini/rooms.ini; default: the built-in defaults); vdoor-paper always runs the "
             "paper-exact variant with that file's door width, area and Hough values",
             false, "", "file.ini", cmd);
-        ParseErrorOutput parseErrors;
-        const std::unique_ptr<TCLAP::CmdLineOutput> defaultOutput(cmd.getOutput());  // else leaked
-        cmd.setOutput(&parseErrors);
-        if (!cmd.parse(argc, argv))
-            return parseErrors.failed ? 1 : 0;
+        if (const auto exitCode = toposlam::cli::parseCommandLine(cmd, argc, argv))
+            return *exitCode;
 
         toposlam::rooms::RoomBenchmarkOptions options;
         options.dataDir = data.getValue();

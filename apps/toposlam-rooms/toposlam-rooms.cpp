@@ -4,6 +4,7 @@
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/serialization/CArchive.h>
+#include <toposlam/cli/CommandLine.h>
 #include <toposlam/io/AtomicFile.h>
 #include <toposlam/io/GridMapIO.h>
 #include <toposlam/io/InputError.h>
@@ -53,35 +54,6 @@ const char* const kDescription =
     "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input or options (a missing "
     "or corrupt map, a map without free cells, a malformed trajectory). Nothing is written "
     "unless the segmentation succeeded.";
-
-class ParseErrorOutput : public TCLAP::StdOutput {
-  public:
-    bool failed = false;
-    void failure(TCLAP::CmdLineInterface&, TCLAP::ArgException& e) override {
-        failed = true;
-        std::cerr << "error: " << e.argId() << ": " << e.error() << " (see --help)\n";
-    }
-};
-
-std::vector<double> parseNumbers(const std::string& text, std::size_t count,
-                                 const std::string& option) {
-    std::vector<double> values;
-    std::stringstream ss(text);
-    std::string item;
-    while (std::getline(ss, item, ',')) {
-        char* end = nullptr;
-        const double v = std::strtod(item.c_str(), &end);
-        if (item.empty() || *end != '\0' || !std::isfinite(v)) {
-            throw std::invalid_argument(option + ": '" + text + "' is not a list of numbers");
-        }
-        values.push_back(v);
-    }
-    if (values.size() != count) {
-        throw std::invalid_argument(option + ": expected " + std::to_string(count) +
-                                    " comma-separated numbers, got '" + text + "'");
-    }
-    return values;
-}
 
 int run(int argc, char** argv) {
     TCLAP::CmdLine cmd(kDescription, ' ', "0.1");
@@ -135,11 +107,8 @@ int run(int argc, char** argv) {
     TCLAP::ValueArg<int> scale("", "scale", "rooms.png pixels per grid cell, 1-8. Default: 2",
                                false, 2, "n", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "No summary on stdout", cmd);
-    ParseErrorOutput parseErrors;
-    const std::unique_ptr<TCLAP::CmdLineOutput> defaultOutput(cmd.getOutput());  // else leaked
-    cmd.setOutput(&parseErrors);
-    if (!cmd.parse(argc, argv))
-        return parseErrors.failed ? EXIT_FAILURE : EXIT_SUCCESS;
+    if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
+        return *exitCode;
 
     rooms::RoomSegmenter::Options options;
     if (paper.getValue())
@@ -174,7 +143,7 @@ int run(int argc, char** argv) {
         if (resolution.isSet())
             geometry->resolution = resolution.getValue();
         if (origin.isSet()) {
-            const auto xy = parseNumbers(origin.getValue(), 2, "--origin");
+            const auto xy = cli::parseNumberList(origin.getValue(), 2, "--origin");
             geometry->originX = xy[0];
             geometry->originY = xy[1];
         }

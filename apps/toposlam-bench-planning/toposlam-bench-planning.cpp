@@ -40,6 +40,10 @@ int run(int argc, char** argv) {
         "also the 20 furnished maps of Bormann et al. from this folder (shared/data/rooms; "
         "0.05 m/px, grey < 250 = not free)",
         false, "", "dir", cmd);
+    TCLAP::ValueArg<double> freeThresholdArg(
+        "", "free-threshold",
+        "for the maps given as arguments: p(free) above which a cell is free. Default 0.6", false,
+        0.6, "p", cmd);
     TCLAP::ValueArg<int> pairsArg("", "pairs", "room pairs per map (0 = all). Default 30", false,
                                   30, "n", cmd);
     TCLAP::ValueArg<double> radiusArg("", "robot-radius", "m. Default 0.25", false, 0.25, "m", cmd);
@@ -47,6 +51,11 @@ int run(int argc, char** argv) {
                                             false, "rrtconnect", "name", cmd);
     TCLAP::ValueArg<double> timeArg("", "time", "time limit per leg, s. Default 1", false, 1.0, "s",
                                     cmd);
+    TCLAP::ValueArg<int> attemptsArg(
+        "", "attempts",
+        "independent OMPL solves per leg, the shortest kept (RRT-Connect picks a random side "
+        "of each obstacle). Default 3",
+        false, 3, "n", cmd);
     TCLAP::ValueArg<std::string> jsonArg("", "json", "write the results as JSON", false, "", "file",
                                          cmd);
     if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
@@ -59,7 +68,7 @@ int run(int argc, char** argv) {
     };
     std::vector<MapInput> maps;
     for (const auto& m : mapsArg.getValue())
-        maps.push_back({fs::path(m).filename().string(), m, 0.6});
+        maps.push_back({fs::path(m).filename().string(), m, freeThresholdArg.getValue()});
     if (bormannArg.isSet()) {
         for (const auto& base : rooms::RoomBenchmark::benchmarkMaps()) {
             const std::string name = base + "_furnitures";
@@ -76,6 +85,7 @@ int run(int argc, char** argv) {
     options.robotRadius = radiusArg.getValue();
     options.ompl.planner = plannerArg.getValue();
     options.ompl.timeLimit = timeArg.getValue();
+    options.ompl.attempts = attemptsArg.getValue();
     options.maxPairsPerMap = pairsArg.getValue();
 
     std::vector<planning::PlanningQuery> queries;

@@ -114,6 +114,16 @@ int run(int argc, char** argv) {
         "planning time limit per leg in s (asymptotically optimal planners use all of it). "
         "Default 1",
         false, 1.0, "s", cmd);
+    TCLAP::ValueArg<double> freeThresholdArg(
+        "", "free-threshold",
+        "cells with p(free) above this are free; everything else (occupied, unknown) is an "
+        "obstacle. Default 0.6 (use 0.98 for Bormann-style PNGs, where grey < 250 is not free)",
+        false, 0.6, "p", cmd);
+    TCLAP::ValueArg<int> attemptsArg(
+        "", "attempts",
+        "independent OMPL solves per leg, the shortest kept (RRT-Connect picks a random side "
+        "of each obstacle). Default 3",
+        false, 3, "n", cmd);
     TCLAP::ValueArg<unsigned> seedArg(
         "", "seed", "seed of OMPL's random sampling, for reproducible paths. Default 1", false, 1,
         "n", cmd);
@@ -124,6 +134,7 @@ int run(int argc, char** argv) {
     planning::OmplPlannerOptions options;
     options.planner = plannerArg.getValue();
     options.timeLimit = timeArg.getValue();
+    options.attempts = attemptsArg.getValue();
     options.validate();
     if (!(radiusArg.getValue() > 0))
         throw std::invalid_argument("--robot-radius must be > 0");
@@ -141,7 +152,8 @@ int run(int argc, char** argv) {
                             ? farthestRoom(map, from.point)
                             : parseEndpoint(toArg.getValue(), map, "--to");
 
-    const planning::TraversabilityGrid traversable(grid, radiusArg.getValue());
+    const planning::TraversabilityGrid traversable(grid, radiusArg.getValue(),
+                                                   freeThresholdArg.getValue());
     planning::RoomToRoomPlanner planner(map, traversable, options);
     const planning::RoomPath path = planner.plan(from.point, to.point);
     if (!path.solved) {

@@ -2,7 +2,6 @@
 
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
-#include <ompl/geometric/PathSimplifier.h>
 #include <ompl/geometric/SimpleSetup.h>
 #include <ompl/geometric/planners/informedtrees/BITstar.h>
 #include <ompl/geometric/planners/prm/PRMstar.h>
@@ -109,30 +108,22 @@ OmplPathPlanner::~OmplPathPlanner() = default;
 std::optional<std::vector<TPoint2D>> OmplPathPlanner::plan(const TPoint2D& from,
                                                            const TPoint2D& to) {
     og::SimpleSetup& ss = impl_->setup;
-    ss.clear();  // forget the previous query's tree / roadmap
-    ss.setStartAndGoalStates(impl_->state(from), impl_->state(to));
-    const ob::PlannerStatus status = ss.solve(impl_->options.timeLimit);
-    if (status != ob::PlannerStatus::EXACT_SOLUTION)
-        return std::nullopt;
-    if (impl_->options.simplify)
-        ss.simplifySolution();
-    return Impl::points(ss.getSolutionPath());
-}
-
-std::vector<TPoint2D> OmplPathPlanner::simplify(const std::vector<TPoint2D>& path) {
-    if (!impl_->options.simplify || path.size() < 3)
-        return path;
-    const auto si = impl_->setup.getSpaceInformation();
-    og::PathGeometric geometric(si);
-    for (const TPoint2D& p : path)
-        geometric.append(impl_->state(p).get());
-    og::PathSimplifier(si).simplifyMax(geometric);
-    return Impl::points(geometric);
-}
-
-bool OmplPathPlanner::isMotionValid(const TPoint2D& a, const TPoint2D& b) const {
-    const auto si = impl_->setup.getSpaceInformation();
-    return si->checkMotion(impl_->state(a).get(), impl_->state(b).get());
+    std::optional<std::vector<TPoint2D>> best;
+    double bestLength = 0;
+    for (int attempt = 0; attempt < impl_->options.attempts; ++attempt) {
+        ss.clear();  // forget the previous tree / roadmap
+        ss.setStartAndGoalStates(impl_->state(from), impl_->state(to));
+        if (ss.solve(impl_->options.timeLimit) != ob::PlannerStatus::EXACT_SOLUTION)
+            continue;
+        if (impl_->options.simplify)
+            ss.simplifySolution();
+        og::PathGeometric& path = ss.getSolutionPath();
+        if (!best || path.length() < bestLength) {
+            bestLength = path.length();
+            best = Impl::points(path);
+        }
+    }
+    return best;
 }
 
 }  // namespace toposlam::planning

@@ -1,3 +1,4 @@
+#include <toposlam/planning/PathShortening.h>
 #include <toposlam/planning/RoomToRoomPlanner.h>
 
 #include <chrono>
@@ -95,7 +96,7 @@ RoomPath RoomToRoomPlanner::plan(const TPoint2D& startRequest, const TPoint2D& g
     // Each leg stays inside one room: straight when that is free, else planned.
     std::vector<TPoint2D> path{waypoints.front()};
     for (std::size_t i = 0; i + 1 < waypoints.size(); ++i) {
-        if (planner_.isMotionValid(waypoints[i], waypoints[i + 1])) {
+        if (grid_.isSegmentTraversable(waypoints[i], waypoints[i + 1])) {
             path.push_back(waypoints[i + 1]);
             continue;
         }
@@ -106,7 +107,7 @@ RoomPath RoomToRoomPlanner::plan(const TPoint2D& startRequest, const TPoint2D& g
         }
         path.insert(path.end(), leg->begin() + 1, leg->end());
     }
-    result.points = planner_.simplify(path);
+    result.points = shortenPath(grid_, path);
     result.length = polylineLength(result.points);
     return finish("");
 }

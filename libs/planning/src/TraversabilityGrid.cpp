@@ -42,6 +42,18 @@ double TraversabilityGrid::clearance(double x, double y) const {
     return frame_.contains(c) ? clearanceM_.at<float>(c) : 0.0;
 }
 
+bool TraversabilityGrid::isSegmentTraversable(const mrpt::math::TPoint2D& a,
+                                              const mrpt::math::TPoint2D& b) const {
+    const double length = std::hypot(b.x - a.x, b.y - a.y);
+    const int steps = std::max(1, static_cast<int>(std::ceil(4.0 * length / frame_.resolution)));
+    for (int k = 0; k <= steps; ++k) {
+        const double t = static_cast<double>(k) / steps;
+        if (!isTraversable(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)))
+            return false;
+    }
+    return true;
+}
+
 std::optional<mrpt::math::TPoint2D> TraversabilityGrid::nearestTraversable(
     const mrpt::math::TPoint2D& p, double maxDistance) const {
     const cv::Point centre = frame_.toCell(p.x, p.y);

@@ -18,7 +18,11 @@ struct OmplPlannerOptions {
     std::string planner = "rrtconnect";
     double timeLimit = 1.0;  ///< s per query (per leg for RoomToRoomPlanner)
     bool simplify = true;    ///< shortcut and smooth the solution
-    /// Throws std::invalid_argument for an unknown planner name or a non-positive time.
+    /// Independent solves per query, the shortest kept: a feasible planner such as RRT-Connect
+    /// goes around an obstacle on a random side, which no shortcutting undoes.
+    int attempts = 3;
+    /// Throws std::invalid_argument for an unknown planner name, a non-positive time or
+    /// attempts < 1.
     void validate() const;
 };
 
@@ -27,15 +31,10 @@ class OmplPathPlanner {
     OmplPathPlanner(const TraversabilityGrid& grid, const OmplPlannerOptions& options = {});
     ~OmplPathPlanner();
 
-    /// Collision-free polyline from `from` to `to` (both must be traversable), or nullopt
-    /// when the planner found none within the time limit.
+    /// Collision-free polyline from `from` to `to` (both must be traversable): the shortest of
+    /// `attempts` solutions, or nullopt when no attempt found one within the time limit.
     std::optional<std::vector<mrpt::math::TPoint2D>> plan(const mrpt::math::TPoint2D& from,
                                                           const mrpt::math::TPoint2D& to);
-    /// Shortens a valid polyline (OMPL's shortcutting) keeping it valid; returns it unchanged
-    /// when simplification is off.
-    std::vector<mrpt::math::TPoint2D> simplify(const std::vector<mrpt::math::TPoint2D>& path);
-    /// Whether the straight motion between two points keeps the robot on traversable cells.
-    bool isMotionValid(const mrpt::math::TPoint2D& a, const mrpt::math::TPoint2D& b) const;
 
   private:
     struct Impl;

@@ -1,8 +1,9 @@
 #pragma once
 // Room-to-room paths on a topological map: the room route (RoomRoute) says which doors to go
 // through; OMPL connects consecutive waypoints (start, door middles, goal), each leg inside one
-// room, so the sampling planner never has to find a narrow doorway by chance; the joined path
-// is then shortened as a whole.
+// room, so the sampling planner never has to find a narrow doorway by chance (legs in line of
+// sight are straight and need no planning); the joined path is then pulled taut as a whole
+// (PathShortening).
 #include <toposlam/planning/OmplPathPlanner.h>
 #include <toposlam/planning/RoomPath.h>
 #include <toposlam/planning/TraversabilityGrid.h>

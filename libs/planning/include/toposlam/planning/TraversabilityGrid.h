@@ -31,6 +31,9 @@ class TraversabilityGrid {
     bool isTraversableCell(const cv::Point& cell) const {
         return frame_.contains(cell) && traversable_.at<std::uint8_t>(cell) != 0;
     }
+    /// Whether the robot can move straight from a to b (world, m): every point of the segment,
+    /// sampled at a quarter cell, is traversable. Stops at the first blocked sample.
+    bool isSegmentTraversable(const mrpt::math::TPoint2D& a, const mrpt::math::TPoint2D& b) const;
     /// Distance (m) from the centre of the cell holding (x, y) to the nearest obstacle's
     /// boundary; 0 outside the map and on obstacles.
     double clearance(double x, double y) const;

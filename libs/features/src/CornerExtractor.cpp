@@ -74,8 +74,10 @@ void CornerExtractor::extract(const mrpt::obs::CObservation2DRangeScan& scan, Sc
     // Steps 4 and 5.
     assembly_.options = options.assembly;
     assembly_.options.minCornerTurn = std::atan(options.thetaThreshold);
-    if (paper)
+    if (paper) {
         assembly_.options.rejectArcs = false;  // the paper assumes polygonal scenes
+        assembly_.options.splitNonLines = false;
+    }
     assembly_.assemble(points_, parts_, sigma, out);
 }
 

@@ -31,6 +31,7 @@ void FeatureAssemblyOptions::loadFromConfigFile(const mrpt::config::CConfigFileB
     maxLineResidual = cfg.read_double(section, "max_line_residual", maxLineResidual);
     lineNoiseFactor = cfg.read_double(section, "line_noise_factor", lineNoiseFactor);
     mergeCollinear = cfg.read_bool(section, "merge_collinear", mergeCollinear);
+    splitNonLines = cfg.read_bool(section, "split_non_lines", splitNonLines);
     rejectArcs = cfg.read_bool(section, "reject_arcs", rejectArcs);
     maxArcRadius = cfg.read_double(section, "max_arc_radius", maxArcRadius);
 }
@@ -45,6 +46,7 @@ void FeatureAssemblyOptions::dumpToTextStream(std::ostream& out) const {
         << "max_line_residual  = " << maxLineResidual << "  (m)\n"
         << "line_noise_factor  = " << lineNoiseFactor << "\n"
         << "merge_collinear    = " << mergeCollinear << "\n"
+        << "split_non_lines    = " << splitNonLines << "\n"
         << "reject_arcs        = " << rejectArcs << "\n"
         << "max_arc_radius     = " << maxArcRadius << "  (m)\n";
 }
@@ -98,8 +100,11 @@ void FeatureAssembly::assemble(ScanPoints& pts, std::vector<LinePart>& parts, do
     if (kept > 0 && parts[kept - 1].cornerAfter)
         parts[kept - 1].cornerAfter = false;
 
-    // Step 4: fit each part. A part whose readings are no line (residual beyond the noise:
-    // it spans two walls, or clutter) is dropped like a short one, breaking its joints.
+    // Step 4: fit each part. A part whose readings are no line (residual beyond the noise)
+    // spans two walls whose corner the slope difference missed, or is clutter. With
+    // splitNonLines it is cut at its least-squares two-line breakpoint (TwoLineSplit.h), that
+    // reading left out as a joint, and each half is tested again; otherwise, or once a piece
+    // is too short, it is dropped like a short part, breaking its joints.
     // Chi-square test on the residual: a true line of N readings leaves a sum of squares of
     // about (N - 2) s^2; allow mean + 3 std, with s the range noise made 50 % more generous
     // (sensors state their noise optimistically), at least maxLineResidual.
@@ -111,28 +116,53 @@ void FeatureAssembly::assemble(ScanPoints& pts, std::vector<LinePart>& parts, do
         const double rss = f.count * f.residualRms * f.residualRms;
         return rss <= lineSigma * lineSigma * (dof + 3 * std::sqrt(2 * dof));
     };
-    fits_.resize(kept);
-    std::size_t lines = 0;
+    lineParts_.clear();
+    fits_.clear();
     bool brokenBefore = false;  // the part dropped before this one was joined to it
     for (std::size_t i = 0; i < kept; ++i) {
-        LinePart p = parts[i];
-        const LineFit fit = fitLine(options.lineFit, pts, p.begin, p.end);
-        if (!isLine(fit)) {
-            if (lines > 0 && parts[lines - 1].cornerAfter) {
-                parts[lines - 1].cornerAfter = false;
-                parts[lines - 1].endType = EndpointType::Open;
+        pending_.clear();
+        pending_.push_back(parts[i]);
+        bool prepared = false;  // split_ holds the sums of parts[i]
+        while (!pending_.empty()) {
+            LinePart p = pending_.back();
+            pending_.pop_back();
+            const LineFit fit =
+                tooShort(p) ? LineFit{} : fitLine(options.lineFit, pts, p.begin, p.end);
+            if (isLine(fit)) {
+                if (brokenBefore && p.beginType != EndpointType::Jump)
+                    p.beginType = EndpointType::Open;
+                brokenBefore = false;
+                fits_.push_back(fit);
+                lineParts_.push_back(p);
+                continue;
+            }
+            if (fit.ok && options.splitNonLines && !prepared) {
+                split_.prepare(pts, parts[i].begin, parts[i].end);
+                prepared = true;
+            }
+            std::size_t k = 0;
+            if (fit.ok && options.splitNonLines &&
+                split_.find(p.begin, p.end, options.minSegmentPoints, k)) {
+                LinePart before = p, after = p;
+                before.end = static_cast<std::uint32_t>(k - 1);
+                before.cornerAfter = true;
+                before.joint = static_cast<std::uint32_t>(k);
+                before.endType = EndpointType::Open;
+                after.begin = static_cast<std::uint32_t>(k + 1);
+                after.beginType = EndpointType::Open;
+                pending_.push_back(after);
+                pending_.push_back(before);
+                continue;
+            }
+            if (!lineParts_.empty() && lineParts_.back().cornerAfter) {
+                lineParts_.back().cornerAfter = false;
+                lineParts_.back().endType = EndpointType::Open;
             }
             brokenBefore = p.cornerAfter;
-            continue;
         }
-        if (brokenBefore && p.beginType != EndpointType::Jump)
-            p.beginType = EndpointType::Open;
-        brokenBefore = false;
-        fits_[lines] = fit;
-        parts[lines++] = p;
     }
-    kept = lines;
-    parts.resize(kept);
+    parts.swap(lineParts_);
+    kept = parts.size();
 
     // Neighbours that are one line after all: a split by noise. The union's least-squares
     // residual is compared with the two fits': if both lie on one line, the union's sum of

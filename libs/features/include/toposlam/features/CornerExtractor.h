@@ -52,6 +52,8 @@ struct CornerExtractorOptions : public mrpt::config::CLoadableOptions {
     JumpDetectorOptions jumps;
     FeatureAssemblyOptions assembly;
 
+    /// Parts that are no line are cut (FeatureAssembly.h).
+    CornerExtractorOptions() { assembly.splitNonLines = true; }
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                             const std::string& section) override;
     void dumpToTextStream(std::ostream& out) const override;

@@ -7,9 +7,12 @@
 //    split by a few noisy readings is still one corner.
 //  - Each remaining part is fitted (two-point fit, step 4, or least squares) and becomes a
 //    LineSegment; the ends are its first and last readings projected onto the line. A part
-//    that is no line is dropped, and its joints broken: its residual sum of squares fails a
-//    chi-square test (mean + 3 std for N - 2 degrees of freedom) at the noise level
-//    max(maxLineResidual, lineNoiseFactor * sigma): it holds readings of two walls, or clutter.
+//    that is no line fails a chi-square test on its residual sum of squares (mean + 3 std for
+//    N - 2 degrees of freedom) at the noise level max(maxLineResidual, lineNoiseFactor *
+//    sigma): it holds readings of two walls, or clutter. With splitNonLines it is cut at its
+//    least-squares two-line breakpoint (TwoLineSplit.h), which becomes a joint (only where
+//    the slope difference missed a corner), and both halves are tested again; a piece too
+//    short or still no line is dropped, and its joints broken.
 //  - With mergeCollinear, joined neighbours whose readings are one line after all (the
 //    union's least-squares residual exceeds the two fits' by no more than noise explains, a
 //    chi-square test at mean + 3 std) are merged: a wall split by a noise peak stays one wall.
@@ -18,8 +21,7 @@
 //    fold back onto each other), the intersection lies farther than maxCornerOffset from the
 //    reading where the corner was detected (nearly parallel lines or a bad fit: the
 //    intersection means nothing there), or, when rejectArcs is set, the two segments are
-//    pieces of one small circle
-//    (ArcCornerTest.h).
+//    pieces of one small circle (ArcCornerTest.h).
 //  - Segment ends get their types (corner type, Jump, Open); endpoints lists every corner
 //    (convex / concave) and every jump (the nearer reading of a range discontinuity).
 // The result is in the scan's own beam order (ScanPoints::toScanOrder).
@@ -29,6 +31,7 @@
 #include <toposlam/features/LinePart.h>
 #include <toposlam/features/ScanFeatures.h>
 #include <toposlam/features/ScanPoints.h>
+#include <toposlam/features/TwoLineSplit.h>
 
 #include <cmath>
 #include <vector>
@@ -43,6 +46,7 @@ struct FeatureAssemblyOptions : public mrpt::config::CLoadableOptions {
     double minCornerTurn = std::atan(0.3);  ///< rad; the corner paper's merge angle
     double maxLineResidual = 0.01;          ///< m, floor of the noise level of the line test
     double lineNoiseFactor = 1.5;           ///< line test noise level in range-noise sigmas
+    bool splitNonLines = false;             ///< cut parts that fail the line test (see above)
     bool mergeCollinear = true;  ///< merge joined neighbours that are one line (see above)
     bool rejectArcs = true;
     double maxArcRadius = 1.0;  ///< m, see ArcCornerTest
@@ -62,6 +66,8 @@ class FeatureAssembly {
 
   private:
     std::vector<LineFit> fits_;
+    std::vector<LinePart> lineParts_, pending_;  // step 4's output and the parts still to test
+    TwoLineSplit split_;
 };
 
 }  // namespace toposlam::features

@@ -1,5 +1,6 @@
 // FeatureAssembly's rules beyond the paper's steps 4 and 5: a part that is no line is cut at
-// its least-squares two-line breakpoint (TwoLineSplit).
+// its least-squares two-line breakpoint (TwoLineSplit), and a corner whose angle is too vague
+// to mean anything is not reported.
 #include <gtest/gtest.h>
 #include <toposlam/features/FeatureAssembly.h>
 #include <toposlam/features/TwoLineSplit.h>
@@ -84,4 +85,49 @@ TEST(FeatureAssembly, CutsAPartThatHoldsTwoWalls) {
     EXPECT_NEAR(f.corners[0].position.y, 1.0, 0.02);
     EXPECT_NEAR(f.corners[0].angle, 0.75 * M_PI, 2 * M_PI / 180);
     EXPECT_LE(std::abs(static_cast<double>(f.corners[0].beam) - static_cast<double>(corner)), 2);
+}
+
+TEST(FeatureAssembly, NoCornerWhoseAngleIsTooVague) {
+    // Right-angle room corner at (2, 1); the second wall (y = 1) is seen by only 6 beams
+    // 0.25 deg apart, 2 cm of wall: at 1 cm noise its direction is unknown.
+    const double step = 0.25 * M_PI / 180, cornerBearing = std::atan2(1.0, 2.0);
+    const std::size_t n = 2 * static_cast<std::size_t>(std::floor(cornerBearing / step)) + 13;
+    const double aperture = static_cast<double>(n - 1) * step;
+    FeatureAssembly assembly;
+    assembly.options.cornerAngleSigmas = 3;
+    ScanFeatures f;
+    for (const double sigma : {0.0, 0.01}) {
+        ScanPoints p = roomCorner(M_PI / 2, 1.0, n, aperture, sigma, 7);
+        const std::size_t corner = beamAt(p, cornerBearing);
+        ASSERT_GE(p.size() - corner, 6u);
+        std::vector<LinePart> parts(2);
+        parts[0].begin = 0;
+        parts[0].end = static_cast<std::uint32_t>(corner - 2);
+        parts[0].cornerAfter = true;
+        parts[0].joint = static_cast<std::uint32_t>(corner - 1);
+        parts[1].begin = static_cast<std::uint32_t>(corner);
+        parts[1].end = static_cast<std::uint32_t>(p.size() - 1);
+        assembly.assemble(p, parts, sigma, f);
+        ASSERT_EQ(f.segments.size(), 2u) << "sigma " << sigma;
+        if (sigma == 0) {
+            ASSERT_EQ(f.corners.size(), 1u);  // exact readings: the angle is exact
+            EXPECT_NEAR(f.corners[0].angle, M_PI / 2, 1e-6);
+        } else {
+            EXPECT_TRUE(f.corners.empty());  // the walls stay, their meeting ends are Open
+            EXPECT_EQ(f.segments[0].endType, EndpointType::Open);
+            EXPECT_EQ(f.segments[1].startType, EndpointType::Open);
+        }
+    }
+    // Long walls on both sides: the corner stays at the same noise.
+    ScanPoints p = roomCorner(M_PI / 2, 1.0, 361, M_PI / 2, 0.01, 7);
+    const std::size_t corner = beamAt(p, cornerBearing);
+    std::vector<LinePart> parts(2);
+    parts[0].end = static_cast<std::uint32_t>(corner - 2);
+    parts[0].cornerAfter = true;
+    parts[0].joint = static_cast<std::uint32_t>(corner - 1);
+    parts[1].begin = static_cast<std::uint32_t>(corner);
+    parts[1].end = static_cast<std::uint32_t>(p.size() - 1);
+    assembly.assemble(p, parts, 0.01, f);
+    ASSERT_EQ(f.corners.size(), 1u);
+    EXPECT_NEAR(f.corners[0].angle, M_PI / 2, 2 * M_PI / 180);
 }

@@ -76,6 +76,7 @@ void CornerExtractor::extract(const mrpt::obs::CObservation2DRangeScan& scan, Sc
     assembly_.options.minCornerTurn = std::atan(options.thetaThreshold);
     if (paper) {
         assembly_.options.rejectArcs = false;  // the paper assumes polygonal scenes
+        assembly_.options.cornerAngleSigmas = 0;
         assembly_.options.splitNonLines = false;
     }
     assembly_.assemble(points_, parts_, sigma, out);

@@ -34,6 +34,7 @@ void FeatureAssemblyOptions::loadFromConfigFile(const mrpt::config::CConfigFileB
     splitNonLines = cfg.read_bool(section, "split_non_lines", splitNonLines);
     rejectArcs = cfg.read_bool(section, "reject_arcs", rejectArcs);
     maxArcRadius = cfg.read_double(section, "max_arc_radius", maxArcRadius);
+    cornerAngleSigmas = cfg.read_double(section, "corner_angle_sigmas", cornerAngleSigmas);
 }
 
 void FeatureAssemblyOptions::dumpToTextStream(std::ostream& out) const {
@@ -48,7 +49,8 @@ void FeatureAssemblyOptions::dumpToTextStream(std::ostream& out) const {
         << "merge_collinear    = " << mergeCollinear << "\n"
         << "split_non_lines    = " << splitNonLines << "\n"
         << "reject_arcs        = " << rejectArcs << "\n"
-        << "max_arc_radius     = " << maxArcRadius << "  (m)\n";
+        << "max_arc_radius     = " << maxArcRadius << "  (m)\n"
+        << "corner_angle_sigmas = " << cornerAngleSigmas << "\n";
 }
 
 void FeatureAssembly::assemble(ScanPoints& pts, std::vector<LinePart>& parts, double sigma,
@@ -246,7 +248,11 @@ void FeatureAssembly::assemble(ScanPoints& pts, std::vector<LinePart>& parts, do
             return arcTest.isArc(pts, parts[i].begin, parts[i].end, parts[i + 1].begin,
                                  parts[i + 1].end, na * ra * ra + nb * rb * rb, sigma);
         };
-        if (!ok || M_PI - c.angle < options.minCornerTurn || c.angle < options.minCornerTurn ||
+        const bool vague =
+            ok && options.cornerAngleSigmas * angleStd(fits_[i], fits_[i + 1], sigma) >
+                      options.minCornerTurn;
+        if (!ok || vague || M_PI - c.angle < options.minCornerTurn ||
+            c.angle < options.minCornerTurn ||
             sq2(c.position.x - joint.x, c.position.y - joint.y) >
                 options.maxCornerOffset * options.maxCornerOffset ||
             (options.rejectArcs && isArc())) {

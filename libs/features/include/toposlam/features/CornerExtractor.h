@@ -52,8 +52,12 @@ struct CornerExtractorOptions : public mrpt::config::CLoadableOptions {
     JumpDetectorOptions jumps;
     FeatureAssemblyOptions assembly;
 
-    /// Parts that are no line are cut (FeatureAssembly.h).
-    CornerExtractorOptions() { assembly.splitNonLines = true; }
+    /// Parts that are no line are cut, corners need an angle known to 3 sigmas within
+    /// theta_th's turn (FeatureAssembly.h).
+    CornerExtractorOptions() {
+        assembly.splitNonLines = true;
+        assembly.cornerAngleSigmas = 3;
+    }
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                             const std::string& section) override;
     void dumpToTextStream(std::ostream& out) const override;

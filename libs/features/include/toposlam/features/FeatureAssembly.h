@@ -20,8 +20,14 @@
 //    by less than minCornerTurn (they would have been merged; or, at the other extreme, they
 //    fold back onto each other), the intersection lies farther than maxCornerOffset from the
 //    reading where the corner was detected (nearly parallel lines or a bad fit: the
-//    intersection means nothing there), or, when rejectArcs is set, the two segments are
-//    pieces of one small circle (ArcCornerTest.h).
+//    intersection means nothing there), when rejectArcs is set, the two segments are pieces
+//    of one small circle (ArcCornerTest.h), or, when cornerAngleSigmas > 0, its angle is
+//    too vague: cornerAngleSigmas standard deviations of the angle (propagated from both
+//    fits, angleStd in CornerIntersection.h) exceed minCornerTurn. minCornerTurn is the
+//    smallest turn the extractor calls a corner, its angular resolution; a corner whose
+//    angle is not known to within it (a wall seen over a few centimetres: at 1 cm noise, five
+//    readings over 5 cm leave its direction ~20 deg uncertain) is a place where two walls
+//    meet, not a corner with an angle. Its segments stay, their ends Open.
 //  - Segment ends get their types (corner type, Jump, Open); endpoints lists every corner
 //    (convex / concave) and every jump (the nearer reading of a range discontinuity).
 // The result is in the scan's own beam order (ScanPoints::toScanOrder).
@@ -49,7 +55,8 @@ struct FeatureAssemblyOptions : public mrpt::config::CLoadableOptions {
     bool splitNonLines = false;             ///< cut parts that fail the line test (see above)
     bool mergeCollinear = true;  ///< merge joined neighbours that are one line (see above)
     bool rejectArcs = true;
-    double maxArcRadius = 1.0;  ///< m, see ArcCornerTest
+    double maxArcRadius = 1.0;     ///< m, see ArcCornerTest
+    double cornerAngleSigmas = 0;  ///< angle-precision test (see above); 0 = off
 
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                             const std::string& section) override;

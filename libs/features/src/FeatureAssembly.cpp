@@ -111,12 +111,12 @@ void FeatureAssembly::assemble(ScanPoints& pts, std::vector<LinePart>& parts, do
     // about (N - 2) s^2; allow mean + 3 std, with s the range noise made 50 % more generous
     // (sensors state their noise optimistically), at least maxLineResidual.
     const double lineSigma = std::max(options.maxLineResidual, options.lineNoiseFactor * sigma);
-    const auto isLine = [&](const LineFit& f) {
-        if (!f.ok)
-            return false;
-        const double dof = std::max(1.0, static_cast<double>(f.count) - 2);
-        const double rss = f.count * f.residualRms * f.residualRms;
+    const auto lineRss = [&](double count, double rss) {
+        const double dof = std::max(1.0, count - 2);
         return rss <= lineSigma * lineSigma * (dof + 3 * std::sqrt(2 * dof));
+    };
+    const auto isLine = [&](const LineFit& f) {
+        return f.ok && lineRss(f.count, f.count * f.residualRms * f.residualRms);
     };
     lineParts_.clear();
     fits_.clear();
@@ -128,8 +128,14 @@ void FeatureAssembly::assemble(ScanPoints& pts, std::vector<LinePart>& parts, do
         while (!pending_.empty()) {
             LinePart p = pending_.back();
             pending_.pop_back();
+            const bool canFit = !tooShort(p);
+            // A piece of a cut part whose least-squares residual (from the sums, no pass over
+            // the readings) already fails the test fails it with any fit: no need to fit it.
+            const bool hopeless =
+                prepared && canFit &&
+                !lineRss(static_cast<double>(p.size()), split_.residual(p.begin, p.end));
             const LineFit fit =
-                tooShort(p) ? LineFit{} : fitLine(options.lineFit, pts, p.begin, p.end);
+                canFit && !hopeless ? fitLine(options.lineFit, pts, p.begin, p.end) : LineFit{};
             if (isLine(fit)) {
                 if (brokenBefore && p.beginType != EndpointType::Jump)
                     p.beginType = EndpointType::Open;
@@ -138,12 +144,12 @@ void FeatureAssembly::assemble(ScanPoints& pts, std::vector<LinePart>& parts, do
                 lineParts_.push_back(p);
                 continue;
             }
-            if (fit.ok && options.splitNonLines && !prepared) {
+            if (canFit && options.splitNonLines && !prepared) {
                 split_.prepare(pts, parts[i].begin, parts[i].end);
                 prepared = true;
             }
             std::size_t k = 0;
-            if (fit.ok && options.splitNonLines &&
+            if (canFit && options.splitNonLines &&
                 split_.find(p.begin, p.end, options.minSegmentPoints, k)) {
                 LinePart before = p, after = p;
                 before.end = static_cast<std::uint32_t>(k - 1);

@@ -8,7 +8,7 @@ namespace toposlam::features {
 
 namespace {
 /// Least-squares residual sum of squares (m^2) of the points between two prefix sums.
-double residual(const PointSums& lo, const PointSums& hi) {
+double rssBetween(const PointSums& lo, const PointSums& hi) {
     const double n = hi.n - lo.n;
     const double sx = hi.sx - lo.sx, sy = hi.sy - lo.sy;
     const double cxx = (hi.sxx - lo.sxx) - sx * sx / n;
@@ -39,13 +39,18 @@ bool TwoLineSplit::find(std::size_t begin, std::size_t end, std::size_t minPoint
     double best = std::numeric_limits<double>::infinity();
     // Cut at reading j: readings lo..j-1 before it, j+1..hi-1 after it.
     for (std::size_t j = lo + minPoints; j + minPoints < hi; ++j) {
-        const double r = residual(prefix_[lo], prefix_[j]) + residual(prefix_[j + 1], prefix_[hi]);
+        const double r =
+            rssBetween(prefix_[lo], prefix_[j]) + rssBetween(prefix_[j + 1], prefix_[hi]);
         if (r < best) {
             best = r;
             at = first_ + j;
         }
     }
     return std::isfinite(best);
+}
+
+double TwoLineSplit::residual(std::size_t begin, std::size_t end) const {
+    return std::max(0.0, rssBetween(prefix_[begin - first_], prefix_[end - first_ + 1]));
 }
 
 }  // namespace toposlam::features

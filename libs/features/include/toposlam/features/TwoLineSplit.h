@@ -20,6 +20,9 @@ class TwoLineSplit {
     /// Best k for the readings begin..end (inclusive, inside the prepared part) with at least
     /// minPoints readings on each side; false when there are too few readings for that.
     bool find(std::size_t begin, std::size_t end, std::size_t minPoints, std::size_t& at) const;
+    /// Least-squares residual sum of squares (m^2) of one line through readings begin..end
+    /// (inclusive, inside the prepared part, at least 2).
+    double residual(std::size_t begin, std::size_t end) const;
 
   private:
     std::size_t first_ = 0;          // the prepared part's first reading

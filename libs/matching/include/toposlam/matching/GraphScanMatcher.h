@@ -90,7 +90,7 @@ struct GraphMatcherOptions {
     /// When the graph gives nothing reliable, search with HoughPoseSearch (rotations from
     /// segment pairs, translations voted by all points) and refine its best houghRefineTop.
     bool houghFallback = true;
-    std::size_t houghRefineTop = 6;
+    std::size_t houghRefineTop = 12;
     HoughPoseSearchOptions hough;
     // Decision
     std::size_t minInliers = 30;

@@ -304,6 +304,42 @@ void GraphScanMatcher::decide() {
     }
 }
 
+void GraphScanMatcher::searchWeakDirection(const PolarScan& referenceScan,
+                                           const PolarScan& currentScan) {
+    if (refined_.empty() || options_.weakDirectionRange <= 0)
+        return;
+    const Refined& best = refined_.front();
+    if (weakDirectionSearched_ && !posesDistinct(*weakDirectionSearched_, best.pose, 1e-3, 1e-4))
+        return;  // the fallback kept the graph's best: searched already
+    weakDirectionSearched_ = best.pose;
+    // Eigen-decomposition of the translation covariance [a b; b c]: worst and best variances
+    // and the worst direction.
+    const mrpt::math::CMatrixDouble33& cov = best.icp.covariance;
+    const double a = cov(0, 0), b = cov(0, 1), c = cov(1, 1);
+    const double spread = std::sqrt(0.25 * (a - c) * (a - c) + b * b);
+    const double worst = 0.5 * (a + c) + spread, across = 0.5 * (a + c) - spread;
+    const double elongation = options_.weakDirectionElongation;
+    if (worst < elongation * elongation * std::max(across, 0.0))
+        return;  // determined about equally well in every direction: ICP's minimum stands
+    const double angle = 0.5 * std::atan2(2 * b, a - c);
+    AlongLineSearchOptions search = options_.alongLine;
+    search.range = options_.weakDirectionRange;
+    const CPose2D moved =
+        alongLine_.search(referenceScan, currentScan, best.pose, {std::cos(angle), std::sin(angle)},
+                          search, options_.score);
+    if (!posesDistinct(moved, best.pose, 1e-3, 1e-4))
+        return;
+    // The moved pose competes with the others on the full score (decide() keeps the better
+    // of two coinciding poses, and weighs distinct ones for ambiguity).
+    Refined r;
+    r.pose = moved;
+    r.icp = best.icp;  // kept if scan-mode refinement is off
+    r.hypothesis = best.hypothesis;
+    polish(referenceScan, currentScan, r);
+    refined_.push_back(r);
+    decide();
+}
+
 const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
                                            const features::ScanFeatures& referenceFeatures,
                                            const PolarScan& currentScan,
@@ -324,6 +360,7 @@ const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
     r.retriedWithoutGuess = false;
     r.secondsGraph = r.secondsRansac = r.secondsRefine = r.secondsFallback = 0;
     refined_.clear();
+    weakDirectionSearched_.reset();
     auto t0 = cpuSeconds();
 
     current_.build(currentFeatures.segments, options_.minSegmentLength, options_.maxSegments);
@@ -364,6 +401,7 @@ const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
             addRefined(referenceScan, currentScan, hyps[h], h);
         polishCandidates(referenceScan, currentScan);
         decide();
+        searchWeakDirection(referenceScan, currentScan);
         t0 = cpuSeconds();
         r.secondsRefine = t0 - t2;
     }
@@ -387,6 +425,7 @@ const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
         r.hypotheses += poses.size();
         polishCandidates(referenceScan, currentScan);
         decide();
+        searchWeakDirection(referenceScan, currentScan);
         r.secondsFallback = cpuSeconds() - t0;
     }
     // A guess that pruned the truth away (odometry drifted beyond the windows): once more
@@ -479,6 +518,8 @@ void GraphMatcherOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
     read(c, s, "alongLine_peaks", alongLine.peaks);
     read(c, s, "alongLine_stride", alongLine.stride);
     read(c, s, "refineTop", refineTop);
+    read(c, s, "weakDirectionRange", weakDirectionRange);
+    read(c, s, "weakDirectionElongation", weakDirectionElongation);
     read(c, s, "screenStride", screenStride);
     read(c, s, "polishRatio", polishRatio);
     int fallback = houghFallback ? 1 : 0;

@@ -115,10 +115,14 @@ bool GraphScanMatcher::refine(const PolarScan& referenceScan, const PolarScan& c
             {cn.midpoint, cn.direction, rn.midpoint, rn.direction, std::min(cn.length, rn.length)});
     }
     const TransformEstimate fit = rigidTransformFromLines(lines_);
-    if (fit.valid && fit.conditioning > 0.01)
-        pose = fit.pose;
     const bool alongLine = fit.valid && fit.conditioning < options_.alongLineConditioning;
-    if (alongLine) {
+    // A pose from the points (HoughPoseSearch) on parallel lines has its position along them
+    // from the points: the lines' fit does not know it, and the search along them starts
+    // from there, not from where another hypothesis on the same lines went.
+    const bool keepPosition = alongLine && h.positionFromPoints;
+    if (fit.valid && fit.conditioning > 0.01 && !keepPosition)
+        pose = fit.pose;
+    if (alongLine && !keepPosition) {
         // A hypothesis on the same lines as one already searched along them (same rotation,
         // same position across them) would end where that one did.
         const CPose2D base = fit.valid ? fit.pose : pose;
@@ -156,7 +160,7 @@ bool GraphScanMatcher::refine(const PolarScan& referenceScan, const PolarScan& c
         search.range = std::min(search.range, longest);
         pose = alongLine_.search(referenceScan, currentScan, pose, fit.weakDirection, search,
                                  options_.score);
-        out.searchedAlongLine = true;
+        out.searchedAlongLine = !keepPosition;  // a search from the lines' own start
     }
     out.pose = pose;
     // Screening score: forward only, sparse, tolerant to the coarse pose's residual error.
@@ -418,6 +422,7 @@ const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
                                        options_.guessRotationWindow))
                 continue;
             fallback_.pose = poses[k].pose;
+            fallback_.positionFromPoints = true;
             RansacMatcher::consensus(current_, reference_, fallback_.pose, options_.ransac,
                                      &fallback_.consensus);
             addRefined(referenceScan, currentScan, fallback_, options_.refineTop + k);

@@ -247,12 +247,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const TCLAP::ArgException& e) {
-        std::cerr << "error: " << e.argId() << ": " << e.error() << "\n";
-    } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
-    }
-    return EXIT_FAILURE;
+    return toposlam::cli::runReportingErrors(run, argc, argv);
 }

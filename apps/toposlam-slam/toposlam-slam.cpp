@@ -11,11 +11,12 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
 
 namespace fs = std::filesystem;
 
-int main(int argc, char** argv) {
+namespace {
+
+int run(int argc, char** argv) {
     TCLAP::CmdLine cmd(
         "Laser SLAM over a robot log (MRPT rawlog in either format, or CARMEN log), configured "
         "like MRPT's icp-slam: [MappingApplication] and [ICP] take icp-slam's keys, "
@@ -33,39 +34,40 @@ int main(int argc, char** argv) {
     if (const auto exitCode = toposlam::cli::parseCommandLine(cmd, argc, argv))
         return *exitCode;
 
-    try {
-        if (!fs::is_regular_file(configArg.getValue())) {
-            throw toposlam::io::InputError(configArg.getValue(), "configuration file not found");
-        }
-        const mrpt::config::CConfigFile ini(configArg.getValue());
-        const toposlam::mapping::MappingResult result =
-            toposlam::mapping::mapLog(logArg.getValue(), ini);
-
-        const fs::path out(outArg.getValue());
-        fs::create_directories(out);
-        toposlam::io::saveTrajectory(result.trajectory, (out / "trajectory.txt").string());
-        toposlam::io::saveGridMap(result.grid, (out / "map.gridmap.gz").string());
-        toposlam::io::saveGridMap(result.grid, (out / "map.png").string());
-
-        std::printf("scans: %zu, log duration %.1f s, mapped in %.1f s (%.1fx real time)\n",
-                    result.scans, result.logDuration, result.wallSeconds,
-                    result.wallSeconds > 0 ? result.logDuration / result.wallSeconds : 0.0);
-        std::printf("grid: %u x %u cells of %.2f m, x [%.2f, %.2f] y [%.2f, %.2f] m\n",
-                    result.grid.getSizeX(), result.grid.getSizeY(), result.grid.getResolution(),
-                    result.grid.getXMin(), result.grid.getXMax(), result.grid.getYMin(),
-                    result.grid.getYMax());
-        if (result.wallAlignment != 0) {
-            std::printf(
-                "map turned by %.2f deg to line the walls up with the axes (wall "
-                "direction strength %.2f)\n",
-                result.wallAlignment * 180.0 / M_PI, result.wallDirectionStrength);
-        }
-        for (const char* f : {"trajectory.txt", "map.gridmap.gz", "map.png", "map.yaml"}) {
-            std::printf("wrote %s\n", (out / f).c_str());
-        }
-        return 0;
-    } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return 1;
+    if (!fs::is_regular_file(configArg.getValue())) {
+        throw toposlam::io::InputError(configArg.getValue(), "configuration file not found");
     }
+    const mrpt::config::CConfigFile ini(configArg.getValue());
+    const toposlam::mapping::MappingResult result =
+        toposlam::mapping::mapLog(logArg.getValue(), ini);
+
+    const fs::path out(outArg.getValue());
+    fs::create_directories(out);
+    toposlam::io::saveTrajectory(result.trajectory, (out / "trajectory.txt").string());
+    toposlam::io::saveGridMap(result.grid, (out / "map.gridmap.gz").string());
+    toposlam::io::saveGridMap(result.grid, (out / "map.png").string());
+
+    std::printf("scans: %zu, log duration %.1f s, mapped in %.1f s (%.1fx real time)\n",
+                result.scans, result.logDuration, result.wallSeconds,
+                result.wallSeconds > 0 ? result.logDuration / result.wallSeconds : 0.0);
+    std::printf("grid: %u x %u cells of %.2f m, x [%.2f, %.2f] y [%.2f, %.2f] m\n",
+                result.grid.getSizeX(), result.grid.getSizeY(), result.grid.getResolution(),
+                result.grid.getXMin(), result.grid.getXMax(), result.grid.getYMin(),
+                result.grid.getYMax());
+    if (result.wallAlignment != 0) {
+        std::printf(
+            "map turned by %.2f deg to line the walls up with the axes (wall "
+            "direction strength %.2f)\n",
+            result.wallAlignment * 180.0 / M_PI, result.wallDirectionStrength);
+    }
+    for (const char* f : {"trajectory.txt", "map.gridmap.gz", "map.png", "map.yaml"}) {
+        std::printf("wrote %s\n", (out / f).c_str());
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return toposlam::cli::runReportingErrors(run, argc, argv);
 }

@@ -56,4 +56,15 @@ std::vector<double> parseNumberList(const std::string& text, std::size_t count,
     return values;
 }
 
+int runReportingErrors(int (*run)(int, char**), int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const TCLAP::ArgException& e) {
+        std::cerr << "error: " << e.argId() << ": " << e.error() << "\n";
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+    }
+    return EXIT_FAILURE;
+}
+
 }  // namespace toposlam::cli

@@ -1,7 +1,8 @@
 #pragma once
 // What every TopoSLAM app does with its command line, in one place: TCLAP parsing that reports
 // errors as "error: ..." and tells --help apart from a mistake, and parsing of the
-// comma-separated number lists that options such as --origin x,y take.
+// comma-separated number lists that options such as --origin x,y take, and the one-line error
+// report when an app fails.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
 #include <cstddef>
@@ -21,5 +22,9 @@ std::optional<int> parseCommandLine(TCLAP::CmdLine& cmd, int argc, char** argv);
 /// exactly `count` finite numbers.
 std::vector<double> parseNumberList(const std::string& text, std::size_t count,
                                     const std::string& option);
+
+/// An app's main(): returns run(argc, argv); an exception escaping it is printed to stderr as
+/// "error: <what>" (bad input names its file, see io::InputError) and gives exit status 1.
+int runReportingErrors(int (*run)(int, char**), int argc, char** argv);
 
 }  // namespace toposlam::cli

@@ -27,6 +27,7 @@ TEST(ConfigIni, GraphMatcherIniEqualsTheDefaults) {
     fromFile.spgm.maxIterations = fromFile.icp.maxIterations = fromFile.scanIcp.maxIterations = -1;
     fromFile.ransac.maxHypotheses = fromFile.hough.maxRotations = 999;
     fromFile.minInlierFraction = fromFile.ambiguityMargin = fromFile.maxTranslationStd = -1;
+    fromFile.weakDirectionRange = fromFile.weakDirectionElongation = -1;
     fromFile.scanRefinement = fromFile.houghFallback = fromFile.symmetricScore = false;
     fromFile.guessFreeRetry = false;
     fromFile.loadFromConfigFile(ini, "GraphScanMatcher");
@@ -86,6 +87,8 @@ TEST(ConfigIni, GraphMatcherIniEqualsTheDefaults) {
     SAME(score.searchBeams);
     SAME(score.stride);
     SAME(score.maxJoinDistance);
+    SAME(weakDirectionRange);
+    SAME(weakDirectionElongation);
     SAME(houghFallback);
     SAME(houghRefineTop);
     SAME(hough.maxRotations);
@@ -120,7 +123,7 @@ TEST(ConfigIni, GraphMatcherIniEqualsTheDefaults) {
         key.erase(key.find_last_not_of(" \t") + 1);
         keys.insert(key);
     }
-    EXPECT_EQ(keys.size(), 72u) << "a key was added or removed: update this test and the file";
+    EXPECT_EQ(keys.size(), 74u) << "a key was added or removed: update this test and the file";
 }
 
 TEST(ConfigIni, BenchIcpIniLoads) {

@@ -2,7 +2,9 @@
 #include <gtest/gtest.h>
 #include <toposlam/matching/AlignmentScorer.h>
 #include <toposlam/matching/AttributedGraph.h>
+#include <toposlam/matching/GraphScanMatcher.h>
 #include <toposlam/matching/GreedyAssignment.h>
+#include <toposlam/matching/HoughPoseSearch.h>
 #include <toposlam/matching/RigidTransform2D.h>
 #include <toposlam/matching/Similarity.h>
 #include <toposlam/matching/SpgmSolver.h>
@@ -173,6 +175,44 @@ TEST(AlignmentScorer, InliersViolationsAndOcclusion) {
     const AlignmentScore bad = scoreAlignment(sa.polar, sb.polar, truth + CPose2D(0.4, 0, 0.2));
     EXPECT_GT(bad.violations, 20u);
     EXPECT_LT(bad.inlierFraction(), 0.5);
+}
+
+// Guess-free, from every segment pair: one of the candidates GraphScanMatcher refines is the
+// true motion to within a vote cell (0.1 m) and the rotation bins' weighted mean (in a room
+// of right angles a 90-degree turn of the truth may collect more votes; the refinement and
+// scoring decide).
+TEST(HoughPoseSearch, StrongCandidatesContainTheTrueMotion) {
+    const auto world = toposlam::test::asymmetricRoom();
+    const auto laser = toposlam::test::fullCircleLaser();
+    const CPose2D a(3, 2, 0.4);
+    const std::vector<CPose2D> motions = {{0.8, -0.5, 0.7}, {-1.2, 1.5, -2.0}, {0.3, 0.2, 3.0}};
+    const auto sa = toposlam::test::simulateWithSegments(world, laser, a);
+    AttributedGraph ga, gb;
+    ga.build(sa.features.segments);
+    HoughPoseSearch hough;
+    for (const CPose2D& motion : motions) {
+        SCOPED_TRACE(motion.asString());
+        const auto sb = toposlam::test::simulateWithSegments(world, laser, a + motion);
+        gb.build(sb.features.segments);
+        std::vector<ScoredAssignment> pairs;
+        for (std::uint32_t i = 0; i < gb.size(); ++i)
+            for (std::uint32_t j = 0; j < ga.size(); ++j)
+                pairs.push_back({i, j, 0.0});
+        const HoughPoseSearchOptions options;
+        const auto& candidates = hough.search(sa.polar, sb.polar, gb, ga, pairs, options);
+        std::size_t found = candidates.size();
+        for (std::size_t k = 0; k < candidates.size() && found == candidates.size(); ++k) {
+            const CPose2D& c = candidates[k].pose;
+            if (std::hypot(c.x() - motion.x(), c.y() - motion.y()) < 0.1 &&
+                std::abs(wrapAngle(c.phi() - motion.phi())) < 0.02)
+                found = k;
+        }
+        EXPECT_LT(found, GraphMatcherOptions().houghRefineTop);
+        // Votes count current points, each at most once per cell: a 3x3 peak sum has at most
+        // 9 votes per voting point (every stride-th beam).
+        for (const PoseCandidate& c : candidates)
+            EXPECT_LE(c.votes, 9.0 * double(sb.polar.size() / options.stride + 1));
+    }
 }
 
 TEST(PolarScan, BeamLookupAndWrapAround) {

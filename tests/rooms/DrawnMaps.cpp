@@ -204,4 +204,52 @@ DrawnMap openPlan() {
     return m;
 }
 
+DrawnMap cubicles() {
+    DrawnMap m;
+    m.image = cv::Mat(200, 300, CV_8U, cv::Scalar(128));
+    cv::Mat& img = m.image;
+    fill(img, 1, 1, 14.4, 9.2, 0);
+    fill(img, 1.2, 1.2, 14.2, 9, 255);
+    // Cubicles x in [1.2, 4.4], [4.5, 7.7], [7.8, 11.0], y in [6.6, 9]; partitions 0.1 m.
+    const double front = 6.5;  // front stubs y in [6.5, 6.6]
+    for (double x : {4.4, 7.7, 11.0})
+        fill(img, x, front, x + 0.1, 9, 0);
+    for (double x0 : {1.2, 4.5, 7.8}) {
+        const double x1 = x0 + 3.2;
+        fill(img, x0, front, x0 + 0.6, front + 0.1, 0);  // stubs on both sides of the opening
+        fill(img, x1 - 0.6, front, x1, front + 0.1, 0);
+        m.doors.push_back({{0.5 * (x0 + x1), front + 0.05}, 2.0});
+        m.rooms.push_back({0.5 * (x0 + x1), 8});
+    }
+    m.rooms.push_back({7, 3});
+    return m;
+}
+
+DrawnMap corridorWithOppositeDoors() {
+    DrawnMap m;
+    m.image = cv::Mat(220, 380, CV_8U, cv::Scalar(128));
+    cv::Mat& img = m.image;
+    fill(img, 1, 1, 17.8, 10, 0);
+    fill(img, 1.2, 1.2, 17.6, 9.8, 255);
+    // Corridor y in [4.4, 6.6], walls 0.2 m; partitions x in [6.6, 6.8] and [12.0, 12.2].
+    fill(img, 1, 4.2, 17.8, 4.4, 0);
+    fill(img, 1, 6.6, 17.8, 6.8, 0);
+    for (double x : {6.6, 12.0}) {
+        fill(img, x, 1, x + 0.2, 4.4, 0);
+        fill(img, x, 6.6, x + 0.2, 10, 0);
+    }
+    auto door = [&](double x0, double y0) {
+        fill(img, x0, y0, x0 + 1.0, y0 + 0.2, 255);
+        m.doors.push_back({{x0 + 0.5, y0 + 0.1}, 1.0});
+    };
+    for (double x : {6.8, 12.2}) {  // beside the partitions, above and below the corridor
+        door(x, 6.6);
+        door(x, 4.2);
+    }
+    door(3.0, 6.6);
+    door(3.0, 4.2);
+    m.rooms = {{9, 5.5}, {4, 8}, {9.4, 8}, {15, 8}, {4, 2.5}, {9.4, 2.5}, {15, 2.5}};
+    return m;
+}
+
 }  // namespace toposlam::rooms::test

@@ -45,6 +45,14 @@ DrawnMap noisyOffice(unsigned seed);
 DrawnMap rotated(const DrawnMap& map, double degrees);
 /// One 6 x 4 m room.
 DrawnMap singleRoom();
+/// A 13.2 x 8 m hall with a row of three 3.2 x 2.4 m cubicles along its top wall: 0.1 m
+/// partitions with 0.6 m stubs at the front, so each cubicle opens to the hall through 2.0 m
+/// framed by wall ends (wider than any door). 4 rooms, 3 openings.
+DrawnMap cubicles();
+/// A 2.2 m corridor between three rooms above and three below, each entered through a 1 m door
+/// beside a partition, the doors above and below opposite each other: the corridor's
+/// cross-section there is 2.2 m, framed by wall corners, and no room border. 7 rooms, 6 doors.
+DrawnMap corridorWithOppositeDoors();
 /// A 16 x 10 m open-plan hall: no walls inside, four pillars, desks; one room, no door.
 DrawnMap openPlan();
 

@@ -144,6 +144,26 @@ TEST(RoomSegmenter, OpenPlanHallIsOneRoom) {
     EXPECT_TRUE(result.map.doors.empty());
 }
 
+TEST(RoomSegmenter, CubicleFrontsWiderThanDoorsAreCut) {
+    const DrawnMap drawn = toposlam::rooms::test::cubicles();
+    const auto result = RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image));
+    EXPECT_EQ(result.wideOpenings.empty(), false);
+    expectMatchesDrawing(result.map, drawn, kDoorTolerance);
+    // Without the wide-opening pass they stay joined to the hall.
+    RoomSegmenter::Options narrowOnly;
+    narrowOnly.wide.enabled = false;
+    const auto joined =
+        RoomSegmenter(narrowOnly).segment(toposlam::rooms::test::gridOf(drawn.image));
+    EXPECT_EQ(joined.map.rooms.size(), 1u);
+}
+
+TEST(RoomSegmenter, CorridorBetweenOppositeDoorsIsNotCut) {
+    const DrawnMap drawn = toposlam::rooms::test::corridorWithOppositeDoors();
+    const auto result = RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image));
+    EXPECT_TRUE(result.wideOpenings.empty());
+    expectMatchesDrawing(result.map, drawn, kDoorTolerance);
+}
+
 TEST(RoomSegmenter, UnreachableFreeCellsBelongToNoRoom) {
     DrawnMap drawn = toposlam::rooms::test::singleRoom();
     drawn.image(cv::Rect(150, 5, 5, 5)) = 255;  // a free island outside the building

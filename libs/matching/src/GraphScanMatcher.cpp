@@ -115,10 +115,14 @@ bool GraphScanMatcher::refine(const PolarScan& referenceScan, const PolarScan& c
             {cn.midpoint, cn.direction, rn.midpoint, rn.direction, std::min(cn.length, rn.length)});
     }
     const TransformEstimate fit = rigidTransformFromLines(lines_);
-    if (fit.valid && fit.conditioning > 0.01)
-        pose = fit.pose;
     const bool alongLine = fit.valid && fit.conditioning < options_.alongLineConditioning;
-    if (alongLine) {
+    // A pose from the points (HoughPoseSearch) on parallel lines has its position along them
+    // from the points: the lines' fit does not know it, and the search along them starts
+    // from there, not from where another hypothesis on the same lines went.
+    const bool keepPosition = alongLine && h.positionFromPoints;
+    if (fit.valid && fit.conditioning > 0.01 && !keepPosition)
+        pose = fit.pose;
+    if (alongLine && !keepPosition) {
         // A hypothesis on the same lines as one already searched along them (same rotation,
         // same position across them) would end where that one did.
         const CPose2D base = fit.valid ? fit.pose : pose;
@@ -156,7 +160,7 @@ bool GraphScanMatcher::refine(const PolarScan& referenceScan, const PolarScan& c
         search.range = std::min(search.range, longest);
         pose = alongLine_.search(referenceScan, currentScan, pose, fit.weakDirection, search,
                                  options_.score);
-        out.searchedAlongLine = true;
+        out.searchedAlongLine = !keepPosition;  // a search from the lines' own start
     }
     out.pose = pose;
     // Screening score: forward only, sparse, tolerant to the coarse pose's residual error.
@@ -304,6 +308,42 @@ void GraphScanMatcher::decide() {
     }
 }
 
+void GraphScanMatcher::searchWeakDirection(const PolarScan& referenceScan,
+                                           const PolarScan& currentScan) {
+    if (refined_.empty() || options_.weakDirectionRange <= 0)
+        return;
+    const Refined& best = refined_.front();
+    if (weakDirectionSearched_ && !posesDistinct(*weakDirectionSearched_, best.pose, 1e-3, 1e-4))
+        return;  // the fallback kept the graph's best: searched already
+    weakDirectionSearched_ = best.pose;
+    // Eigen-decomposition of the translation covariance [a b; b c]: worst and best variances
+    // and the worst direction.
+    const mrpt::math::CMatrixDouble33& cov = best.icp.covariance;
+    const double a = cov(0, 0), b = cov(0, 1), c = cov(1, 1);
+    const double spread = std::sqrt(0.25 * (a - c) * (a - c) + b * b);
+    const double worst = 0.5 * (a + c) + spread, across = 0.5 * (a + c) - spread;
+    const double elongation = options_.weakDirectionElongation;
+    if (worst < elongation * elongation * std::max(across, 0.0))
+        return;  // determined about equally well in every direction: ICP's minimum stands
+    const double angle = 0.5 * std::atan2(2 * b, a - c);
+    AlongLineSearchOptions search = options_.alongLine;
+    search.range = options_.weakDirectionRange;
+    const CPose2D moved =
+        alongLine_.search(referenceScan, currentScan, best.pose, {std::cos(angle), std::sin(angle)},
+                          search, options_.score);
+    if (!posesDistinct(moved, best.pose, 1e-3, 1e-4))
+        return;
+    // The moved pose competes with the others on the full score (decide() keeps the better
+    // of two coinciding poses, and weighs distinct ones for ambiguity).
+    Refined r;
+    r.pose = moved;
+    r.icp = best.icp;  // kept if scan-mode refinement is off
+    r.hypothesis = best.hypothesis;
+    polish(referenceScan, currentScan, r);
+    refined_.push_back(r);
+    decide();
+}
+
 const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
                                            const features::ScanFeatures& referenceFeatures,
                                            const PolarScan& currentScan,
@@ -324,6 +364,7 @@ const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
     r.retriedWithoutGuess = false;
     r.secondsGraph = r.secondsRansac = r.secondsRefine = r.secondsFallback = 0;
     refined_.clear();
+    weakDirectionSearched_.reset();
     auto t0 = cpuSeconds();
 
     current_.build(currentFeatures.segments, options_.minSegmentLength, options_.maxSegments);
@@ -364,6 +405,7 @@ const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
             addRefined(referenceScan, currentScan, hyps[h], h);
         polishCandidates(referenceScan, currentScan);
         decide();
+        searchWeakDirection(referenceScan, currentScan);
         t0 = cpuSeconds();
         r.secondsRefine = t0 - t2;
     }
@@ -380,6 +422,7 @@ const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
                                        options_.guessRotationWindow))
                 continue;
             fallback_.pose = poses[k].pose;
+            fallback_.positionFromPoints = true;
             RansacMatcher::consensus(current_, reference_, fallback_.pose, options_.ransac,
                                      &fallback_.consensus);
             addRefined(referenceScan, currentScan, fallback_, options_.refineTop + k);
@@ -387,6 +430,7 @@ const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
         r.hypotheses += poses.size();
         polishCandidates(referenceScan, currentScan);
         decide();
+        searchWeakDirection(referenceScan, currentScan);
         r.secondsFallback = cpuSeconds() - t0;
     }
     // A guess that pruned the truth away (odometry drifted beyond the windows): once more
@@ -479,6 +523,8 @@ void GraphMatcherOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
     read(c, s, "alongLine_peaks", alongLine.peaks);
     read(c, s, "alongLine_stride", alongLine.stride);
     read(c, s, "refineTop", refineTop);
+    read(c, s, "weakDirectionRange", weakDirectionRange);
+    read(c, s, "weakDirectionElongation", weakDirectionElongation);
     read(c, s, "screenStride", screenStride);
     read(c, s, "polishRatio", polishRatio);
     int fallback = houghFallback ? 1 : 0;

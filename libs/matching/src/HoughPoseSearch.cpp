@@ -91,14 +91,23 @@ void HoughPoseSearch::vote(double phi, double cx, double cy, double window, doub
     const double minVotes = minPeakFraction * double(cur_.size());
     const double c = std::cos(phi), s = std::sin(phi);
     const double ox = cx - window, oy = cy - window;  // lower-left corner of the grid
+    // A cell counts current POINTS, not point pairs: a point votes once per cell however many
+    // reference points land there, so dense near-range clutter does not outvote far walls.
+    lastVoter_.assign(std::size_t(side * side), 0u);
+    std::uint32_t voter = 0;
     for (const mrpt::math::TPoint2D& p : cur_) {
+        ++voter;
         const double rx = c * p.x - s * p.y + ox, ry = s * p.x + c * p.y + oy;
         for (const mrpt::math::TPoint2D& q : ref_) {
             const long ix = long(std::floor((q.x - rx) * inv));
             const long iy = long(std::floor((q.y - ry) * inv));
             if (ix < 0 || iy < 0 || ix >= side || iy >= side)
                 continue;
-            std::uint16_t& v = votes_[std::size_t(iy * side + ix)];
+            const std::size_t cell = std::size_t(iy * side + ix);
+            if (lastVoter_[cell] == voter)
+                continue;
+            lastVoter_[cell] = voter;
+            std::uint16_t& v = votes_[cell];
             if (v < 65535)
                 ++v;
         }

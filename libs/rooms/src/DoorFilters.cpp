@@ -120,17 +120,36 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
             return a + b <= thickness + 1.0;
         return std::min(a, b) <= thickness && std::max(a, b) > 2 * thickness;
     };
-    doors.erase(
-        std::remove_if(doors.begin(), doors.end(),
-                       [&](const VirtualDoor& d) {
-                           const double ux = (d.jambB.x - d.jambA.x) / d.width;
-                           const double uy = (d.jambB.y - d.jambA.y) / d.width;
-                           return !onStructure(d.jambA) || !onStructure(d.jambB) ||
-                                  !onWall(d.jambA, ux, uy) || !onWall(d.jambB, ux, uy) ||
-                                  (options_.requireWallEnd &&
-                                   !(wallEnd(d.jambA, -ux, -uy) || wallEnd(d.jambB, ux, uy)));
-                       }),
-        doors.end());
+    // The sides of the door line (bit 0: (-uy, ux), bit 1: the other) to which a wall goes on
+    // from the jamb across the door line.
+    auto wallsAcross = [&](const cv::Point& jamb, double ux, double uy) {
+        return (wallRun(space.free, jamb, -uy, ux, length) >= length ? 1 : 0) |
+               (wallRun(space.free, jamb, uy, -ux, length) >= length ? 2 : 0);
+    };
+    // Both jambs framed by wall ends: neither in the middle of a wall that runs across the door
+    // line, and the two not on walls that go on to the same side (the two side walls of a
+    // corridor, with the cut across it).
+    auto framed = [&](const VirtualDoor& d, double ux, double uy) {
+        const int a = wallsAcross(d.jambA, ux, uy), b = wallsAcross(d.jambB, ux, uy);
+        return a != 3 && b != 3 && (a & b) == 0;
+    };
+    doors.erase(std::remove_if(doors.begin(), doors.end(),
+                               [&](const VirtualDoor& d) {
+                                   const double ux = (d.jambB.x - d.jambA.x) / d.width;
+                                   const double uy = (d.jambB.y - d.jambA.y) / d.width;
+                                   if (!onStructure(d.jambA) || !onStructure(d.jambB) ||
+                                       !onWall(d.jambA, ux, uy) || !onWall(d.jambB, ux, uy)) {
+                                       return true;
+                                   }
+                                   if (!options_.requireWallEnd)
+                                       return false;
+                                   const bool endA = wallEnd(d.jambA, -ux, -uy);
+                                   const bool endB = wallEnd(d.jambB, ux, uy);
+                                   if (!options_.requireBothWallEnds)
+                                       return !(endA || endB);
+                                   return !endA || !endB || !framed(d, ux, uy);
+                               }),
+                doors.end());
     return doors;
 }
 

@@ -89,6 +89,7 @@ RoomSegmenter::Options RoomSegmenter::Options::paperExact() {
     o.filters.requireWallJambs = false;
     o.filters.requireWallEnd = false;
     o.filters.requireConstriction = false;
+    o.wide.enabled = false;
     return o;
 }
 
@@ -112,6 +113,8 @@ void RoomSegmenter::Options::validate() const {
     require(filters.minWallExtent > 0, "minWallExtent must be > 0");
     require(filters.maxWallThickness > 0, "maxWallThickness must be > 0");
     require(filters.openingMargin >= 0, "openingMargin must be >= 0");
+    require(wide.maxWidth > 0, "maxOpeningWidth must be > 0");
+    require(wide.openingMargin >= 0, "wideOpeningMargin must be >= 0");
 }
 
 void RoomSegmenter::Options::loadFromConfigFile(const mrpt::config::CConfigFileBase& ini,
@@ -151,6 +154,9 @@ void RoomSegmenter::Options::loadFromConfigFile(const mrpt::config::CConfigFileB
     filters.requireConstriction =
         ini.read_bool(s, "requireConstriction", filters.requireConstriction);
     filters.openingMargin = ini.read_double(s, "openingMargin", filters.openingMargin);
+    wide.enabled = ini.read_bool(s, "wideOpenings", wide.enabled);
+    wide.maxWidth = ini.read_double(s, "maxOpeningWidth", wide.maxWidth);
+    wide.openingMargin = ini.read_double(s, "wideOpeningMargin", wide.openingMargin);
     validate();
 }
 
@@ -161,13 +167,15 @@ struct RoomSegmenter::Workspace {
           merger(o.lineMerge),
           voter({o.lineMerge.maxAngleDeg}),
           detector(o.door),
-          filters(o.filters) {}
+          filters(o.filters),
+          wide(o.wide, o.door, o.filters) {}
     FreeSpaceBinarizer binarizer;
     HoughLineExtractor hough;
     LineMerger merger;
     MainDirectionVoter voter;
     VirtualDoorDetector detector;
     DoorFilters filters;
+    WideOpeningDetector wide;
     FreeSpace space;
     Clearance clearance;
     RegionPartition partition;
@@ -253,6 +261,12 @@ RoomSegmenter::Result RoomSegmenter::segment(
     result.afterTests = ws.filters.constriction(
         space, ws.filters.wallJambs(space, result.candidates, result.lines), door.doorWidth);
     lap("door tests");
+    result.wideOpenings = ws.wide.detect(
+        space, ws.clearance, result.fromTrajectory ? result.searchCells : std::vector<cv::Point>{},
+        {result.directions.phi1, result.directions.phi2}, result.lines);
+    result.afterTests.insert(result.afterTests.end(), result.wideOpenings.begin(),
+                             result.wideOpenings.end());
+    lap("wide openings");
     result.afterDistance = ws.filters.distance(result.afterTests, res);
     lap("distance filter");
     ws.partition.compute(space.free, result.afterDistance);
@@ -301,6 +315,7 @@ RoomSegmenter::Result RoomSegmenter::segment(
     };
     shift(result.candidates);
     shift(result.afterTests);
+    shift(result.wideOpenings);
     shift(result.afterDistance);
     for (cv::Point& p : result.searchCells)
         p += roi.tl();

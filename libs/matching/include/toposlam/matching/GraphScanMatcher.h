@@ -17,8 +17,12 @@
 //                        reference scan's local lines;
 //   8. AlignmentScorer   free-space consistency of each polished pose, both ways (current on
 //                        reference and back), and the decision below;
-//   9. HoughPoseSearch   only when 1-8 found nothing reliable: rotations from segment pairs,
-//                        translations voted by all points, refined and judged the same way.
+//   9. AlongLineSearch   along the best pose's weakest direction when its covariance is
+//                        elongated (a corridor with a few door frames: ICP stops in the
+//                        nearest minimum); a pose found there competes with the others;
+//  10. HoughPoseSearch   only when 1-9 found nothing reliable: rotations from segment pairs,
+//                        translations voted by all points, refined and judged the same way
+//                        (and step 9 again on the new best).
 // With a guess that leads to no reliable match, the match is retried without it
 // (guessFreeRetry).
 // The result is the pose of the CURRENT scan's sensor in the REFERENCE scan's sensor frame
@@ -87,10 +91,16 @@ struct GraphMatcherOptions {
     /// scan-mode ICP and the full scoring.
     std::size_t screenStride = 3;
     double polishRatio = 0.8;
+    /// The best pose's least-determined direction (largest translation std of its ICP
+    /// covariance) is searched over +-weakDirectionRange (AlongLineSearch) when the std along
+    /// it is at least weakDirectionElongation times the std across it: along a corridor with a
+    /// few door frames, ICP stops in the nearest minimum. 0 = no search.
+    double weakDirectionRange = 0.8;  ///< m
+    double weakDirectionElongation = 2.5;
     /// When the graph gives nothing reliable, search with HoughPoseSearch (rotations from
     /// segment pairs, translations voted by all points) and refine its best houghRefineTop.
     bool houghFallback = true;
-    std::size_t houghRefineTop = 6;
+    std::size_t houghRefineTop = 12;
     HoughPoseSearchOptions hough;
     // Decision
     std::size_t minInliers = 30;
@@ -198,6 +208,9 @@ class GraphScanMatcher {
     /// Refines `h` and keeps it unless it ends on a pose already kept.
     void addRefined(const PolarScan& referenceScan, const PolarScan& currentScan,
                     const Hypothesis& h, std::size_t index);
+    /// Searches the best pose's weakest direction (weakDirectionRange) and re-decides when
+    /// that finds another pose.
+    void searchWeakDirection(const PolarScan& referenceScan, const PolarScan& currentScan);
     /// Picks the best refined pose and sets the result's status.
     void decide();
 
@@ -217,6 +230,7 @@ class GraphScanMatcher {
     std::vector<LinePair> lines_;
     std::vector<SegmentMatch> consensus_, best_;
     std::vector<Refined> refined_;
+    std::optional<mrpt::poses::CPose2D> weakDirectionSearched_;  // best pose searched last
     MatchResult result_;
 };
 

@@ -8,8 +8,11 @@
 //      weighted mean of their votes;
 //   2. translation voting (a Hough transform): for each candidate rotation R, every pair of a
 //      current point p and a reference point q votes for t = q - R p in a grid of cells over
-//      +-window; where the scans overlap, all points on shared surfaces vote for the true t,
-//      while other pairs spread their votes thinly;
+//      +-window, each current point at most once per cell, so that a cell counts the current
+//      points that translation t puts onto some reference point (an overlap in points; pair
+//      counts would let the dense readings of near clutter outvote far walls); where the
+//      scans overlap, all points on shared surfaces vote for the true t, while other pairs
+//      spread their votes thinly;
 //   3. the best few peaks of each grid (3x3 cell sums, with suppression around each peak) are
 //      the pose hypotheses, refined and scored by the caller like the graph's own.
 // Cost: (n/stride)^2 votes per rotation, a few hundred microseconds for ~10 rotations of
@@ -32,7 +35,7 @@ struct HoughPoseSearchOptions {
     double window = 5.0;             ///< m, translations searched in [-window, window]^2
     double cell = 0.10;              ///< m
     std::size_t stride = 2;          ///< use every stride-th beam of both scans
-    std::size_t peaksPerRotation = 2;
+    std::size_t peaksPerRotation = 3;
     double minPeakFraction = 0.1;  ///< of the voting current points, for a peak to count
 };
 
@@ -68,6 +71,7 @@ class HoughPoseSearch {
     std::vector<mrpt::math::TPoint2D> ref_, cur_;
     std::vector<std::uint16_t> votes_;
     std::vector<std::uint32_t> sums_;
+    std::vector<std::uint32_t> lastVoter_;  // per cell: the current point that voted last
     std::vector<PoseCandidate> out_;
 };
 

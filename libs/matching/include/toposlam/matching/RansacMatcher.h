@@ -69,6 +69,9 @@ struct Hypothesis {
     mrpt::poses::CPose2D pose;  ///< current sensor frame in the reference sensor frame
     double support = 0;         ///< m of agreeing observed segments
     std::vector<SegmentMatch> consensus;
+    /// The pose came from all points (HoughPoseSearch), not from segment lines: where the
+    /// agreeing lines are parallel, its position along them is kept as the start.
+    bool positionFromPoints = false;
 };
 
 class RansacMatcher {

@@ -58,6 +58,10 @@ class DoorFilters {
         double minWallExtent = 0.3;    ///< m
         /// Part of the wall-jamb test: at least one jamb must end the wall the door is in.
         bool requireWallEnd = true;
+        /// Stricter (WideOpeningDetector's openings): both jambs end the wall, neither lies
+        /// in the middle of a wall running across the door line, and the two do not lie on
+        /// walls that go on to the same side of it (a corridor's two side walls).
+        bool requireBothWallEnds = false;
         double maxWallThickness = 0.5;    ///< m
         bool requireConstriction = true;  ///< the constriction test (deviation, see above)
         double openingMargin = 0.3;       ///< m

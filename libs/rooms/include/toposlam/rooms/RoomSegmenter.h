@@ -9,6 +9,7 @@
 //   4 DoorSearchPaths,         door search from the trajectory cells (or the medial axis when
 //     VirtualDoorDetector      there is no trajectory) along the main directions (eq. 10)
 //   5 DoorFilters              distance, adjacency, minimum-area (+ TopoSLAM's two tests)
+//     WideOpeningDetector      TopoSLAM: openings wider than a door framed by wall ends
 //   6 RegionPartition          connected components after cutting the doors -> rooms
 // The result is a TopologicalMap (rooms = nodes, doors = edges).
 #include <toposlam/rooms/DoorFilters.h>
@@ -18,6 +19,7 @@
 #include <toposlam/rooms/MainDirectionVoter.h>
 #include <toposlam/rooms/TopologicalMap.h>
 #include <toposlam/rooms/VirtualDoorDetector.h>
+#include <toposlam/rooms/WideOpeningDetector.h>
 
 #include <mrpt/math/TPose2D.h>
 
@@ -45,6 +47,8 @@ class RoomSegmenter {
         LineMerger::Options lineMerge;
         VirtualDoorDetector::Options door;
         DoorFilters::Options filters;
+        /// Openings wider than a door that are room borders (deviation, WideOpeningDetector.h).
+        WideOpeningDetector::Options wide;
 
         /// The defaults: the paper plus TopoSLAM's documented deviations (DoorFilters.h).
         static Options improved() { return {}; }
@@ -69,6 +73,7 @@ class RoomSegmenter {
         std::vector<cv::Point> searchCells;      ///< pixels
         std::vector<VirtualDoor> candidates;     ///< step 4 output (pixels)
         std::vector<VirtualDoor> afterTests;     ///< after wall-jamb + constriction tests
+        std::vector<VirtualDoor> wideOpenings;   ///< WideOpeningDetector's (also in afterTests)
         std::vector<VirtualDoor> afterDistance;  ///< after the distance filter
         std::size_t afterAdjacency = 0;          ///< doors left by the adjacency filter
         double milliseconds = 0;                 ///< wall time of segment()

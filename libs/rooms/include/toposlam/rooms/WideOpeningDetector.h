@@ -1,0 +1,63 @@
+#pragma once
+// TopoSLAM's second door pass (a deviation from the paper, Options::enabled): openings wider
+// than the widest door, up to maxWidth, that are still a room border. The open fronts of
+// cubicles, the mouths of alcoves and 2-3 m passages between two rooms are drawn as room
+// borders by people, but eq. 10 with a door-width range cannot find them, and a wider range for
+// every door would cut corridors everywhere.
+//
+// A wide opening is searched like a door (step 4, from the search paths across the main
+// directions and the clearance ridge) and must pass stricter versions of step 5's tests,
+// because the wider the opening the more places look like one:
+//   - both jambs end the wall the opening is in (a door needs one), neither lies in the middle
+//     of a wall that runs across the door line, and the two are not on walls that go on to the
+//     same side of it: the opening is framed by wall ends, never a cross-section of a corridor
+//     between its side walls (DoorFilters::Options::requireBothWallEnds);
+//   - the constriction is probed up to maxWidth from the door line and must open by
+//     openingMargin on both sides: the opening is a waist between two wider spaces.
+// The found openings join the doors before the distance filter, which prefers the narrowest of
+// a group (a door in the same place wins), and the minimum-area filter, which merges through
+// the least door-like (widest) cut first.
+#include <toposlam/rooms/DoorFilters.h>
+#include <toposlam/rooms/DoorSearchPaths.h>
+#include <toposlam/rooms/FreeSpaceBinarizer.h>
+#include <toposlam/rooms/LineSegment.h>
+#include <toposlam/rooms/VirtualDoorDetector.h>
+
+#include <opencv2/core/mat.hpp>
+
+#include <vector>
+
+namespace toposlam::rooms {
+
+class WideOpeningDetector {
+  public:
+    struct Options {
+        bool enabled = true;
+        /// m: openings from the widest door (doorWidth + doorWidthTolerance) up to this.
+        double maxWidth = 3.0;
+        /// m: how much wider than the opening the free space must become on both sides.
+        double openingMargin = 0.5;
+    };
+
+    WideOpeningDetector() = default;
+    WideOpeningDetector(const Options& options, const VirtualDoorDetector::Options& door,
+                        const DoorFilters::Options& filters);
+
+    /// The wide openings of `space` (pixels). `pathCells`: the trajectory cells, or empty to
+    /// search the medial axis at the clearance of a wide opening's middle; `directions`: the
+    /// main directions; `walls`: step 2's segments. Empty when disabled.
+    std::vector<VirtualDoor> detect(const FreeSpace& space, const Clearance& clearance,
+                                    const std::vector<cv::Point>& pathCells,
+                                    const std::vector<double>& directions,
+                                    const std::vector<LineSegment>& walls) const;
+
+    const Options& options() const { return options_; }
+
+  private:
+    Options options_;
+    double minWidth_ = 0;  ///< m, the widest door
+    VirtualDoorDetector detector_;
+    DoorFilters filters_;
+};
+
+}  // namespace toposlam::rooms

@@ -1,0 +1,59 @@
+#include <toposlam/rooms/WideOpeningDetector.h>
+
+namespace toposlam::rooms {
+
+namespace {
+
+// Eq. 10's range for the wide openings: (widest door, maxWidth).
+VirtualDoorDetector::Options wideRange(const WideOpeningDetector::Options& o,
+                                       VirtualDoorDetector::Options door) {
+    const double lo = door.doorWidth + door.doorWidthTolerance;
+    door.doorWidth = 0.5 * (lo + o.maxWidth);
+    door.doorWidthTolerance = 0.5 * (o.maxWidth - lo);
+    return door;
+}
+
+// Step 5's tests, stricter: wall ends on both sides, constriction by the wide margin.
+DoorFilters::Options wideTests(const WideOpeningDetector::Options& o,
+                               DoorFilters::Options filters) {
+    filters.requireWallJambs = true;
+    filters.requireWallEnd = true;
+    filters.requireBothWallEnds = true;
+    filters.requireConstriction = true;
+    filters.openingMargin = o.openingMargin;
+    return filters;
+}
+
+}  // namespace
+
+WideOpeningDetector::WideOpeningDetector(const Options& options,
+                                         const VirtualDoorDetector::Options& door,
+                                         const DoorFilters::Options& filters)
+    : options_(options),
+      minWidth_(door.doorWidth + door.doorWidthTolerance),
+      detector_(wideRange(options, door)),
+      filters_(wideTests(options, filters)) {}
+
+std::vector<VirtualDoor> WideOpeningDetector::detect(const FreeSpace& space,
+                                                     const Clearance& clearance,
+                                                     const std::vector<cv::Point>& pathCells,
+                                                     const std::vector<double>& directions,
+                                                     const std::vector<LineSegment>& walls) const {
+    if (!options_.enabled || options_.maxWidth <= minWidth_)
+        return {};
+    const std::vector<cv::Point> cells =
+        pathCells.empty()
+            ? DoorSearchPaths::fromMedialAxis(space, clearance, minWidth_, options_.maxWidth)
+            : pathCells;
+    std::vector<double> local;
+    if (detector_.options().localDirection) {
+        local.reserve(cells.size());
+        for (const cv::Point& p : cells)
+            local.push_back(clearance.acrossRidge(p));
+    }
+    std::vector<VirtualDoor> openings = detector_.detect(space, cells, directions, local);
+    return filters_.constriction(space, filters_.wallJambs(space, std::move(openings), walls),
+                                 options_.maxWidth);
+}
+
+}  // namespace toposlam::rooms

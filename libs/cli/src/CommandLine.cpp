@@ -18,7 +18,10 @@ class ErrorReportingOutput : public TCLAP::StdOutput {
     bool failed = false;
     void failure(TCLAP::CmdLineInterface&, TCLAP::ArgException& e) override {
         failed = true;
-        std::cerr << "error: " << e.argId() << ": " << e.error() << " (see --help)\n";
+        // TCLAP names no argument (argId " ") when required ones are missing.
+        const std::string id = e.argId();
+        const bool named = id.find_first_not_of(' ') != std::string::npos;
+        std::cerr << "error: " << (named ? id + ": " : "") << e.error() << " (see --help)\n";
     }
 };
 

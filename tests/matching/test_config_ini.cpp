@@ -27,6 +27,7 @@ TEST(ConfigIni, GraphMatcherIniEqualsTheDefaults) {
     fromFile.spgm.maxIterations = fromFile.icp.maxIterations = fromFile.scanIcp.maxIterations = -1;
     fromFile.ransac.maxHypotheses = fromFile.hough.maxRotations = 999;
     fromFile.minInlierFraction = fromFile.ambiguityMargin = fromFile.maxTranslationStd = -1;
+    fromFile.minVisibleInlierRatio = -1;
     fromFile.weakDirectionRange = fromFile.weakDirectionElongation = -1;
     fromFile.scanRefinement = fromFile.houghFallback = fromFile.symmetricScore = false;
     fromFile.guessFreeRetry = false;
@@ -101,6 +102,7 @@ TEST(ConfigIni, GraphMatcherIniEqualsTheDefaults) {
     SAME(hough.minPeakFraction);
     SAME(minInliers);
     SAME(minInlierRatio);
+    SAME(minVisibleInlierRatio);
     SAME(minInlierFraction);
     SAME(maxTranslationStd);
     SAME(ambiguityMargin);
@@ -123,7 +125,7 @@ TEST(ConfigIni, GraphMatcherIniEqualsTheDefaults) {
         key.erase(key.find_last_not_of(" \t") + 1);
         keys.insert(key);
     }
-    EXPECT_EQ(keys.size(), 74u) << "a key was added or removed: update this test and the file";
+    EXPECT_EQ(keys.size(), 75u) << "a key was added or removed: update this test and the file";
 }
 
 TEST(ConfigIni, BenchIcpIniLoads) {

@@ -177,6 +177,22 @@ TEST(AlignmentScorer, InliersViolationsAndOcclusion) {
     EXPECT_LT(bad.inlierFraction(), 0.5);
 }
 
+// A 180-degree laser turned round at the same place sees nothing the reference could have
+// seen: those points are out of view (unverifiable, and counted apart for the overlap rule).
+TEST(AlignmentScorer, CountsPointsOutsideTheReferenceView) {
+    const auto world = toposlam::test::asymmetricRoom();
+    const toposlam::simulation::LaserModel laser;  // 361 beams over 180 degrees
+    const CPose2D a(3, 3, 0.3), b(3, 3, 0.3 + M_PI);
+    const auto sa = toposlam::test::simulateWithSegments(world, laser, a);
+    const auto sb = toposlam::test::simulateWithSegments(world, laser, b);
+    const AlignmentScore same = scoreAlignment(sa.polar, sa.polar, CPose2D());
+    EXPECT_EQ(same.outOfView, 0u);
+    const AlignmentScore turned = scoreAlignment(sa.polar, sb.polar, b - a);
+    EXPECT_LE(turned.outOfView, turned.unverifiable);
+    // All but the beams at the edges of both fields of view (+-90 degrees) fall behind.
+    EXPECT_GE(turned.outOfView + 4, sb.polar.validCount());
+}
+
 // Guess-free, from every segment pair: one of the candidates GraphScanMatcher refines is the
 // true motion to within a vote cell (0.1 m) and the rotation bins' weighted mean (in a room
 // of right angles a 90-degree turn of the truth may collect more votes; the refinement and

@@ -52,6 +52,7 @@ AlignmentScore scoreAlignment(const PolarScan& reference, const PolarScan& curre
         const long b = reference.beamAtPoint(qx, qy);
         if (b < 0) {
             ++s.unverifiable;
+            ++s.outOfView;
             continue;
         }
         double best = std::numeric_limits<double>::infinity();

@@ -273,6 +273,7 @@ void GraphScanMatcher::decide() {
         evidence.inliers += best.reverseScore.inliers;
         evidence.violations += best.reverseScore.violations;
         evidence.unverifiable += best.reverseScore.unverifiable;
+        evidence.outOfView += best.reverseScore.outOfView;
         evidence.inlierSquaredError += best.reverseScore.inlierSquaredError;
     }
     const double scored = double(evidence.verified() + evidence.unverifiable);
@@ -294,8 +295,12 @@ void GraphScanMatcher::decide() {
         lead = best.value - alt.value;
     }
 
-    if (best.score.inliers < options_.minInliers ||
-        double(evidence.inliers) < options_.minInlierRatio * scored ||
+    // Overlap: a share of all points, or most of those the other sensor could have seen.
+    const double visible = scored - double(evidence.outOfView);
+    const bool overlapping = double(evidence.inliers) >= options_.minInlierRatio * scored ||
+                             (options_.minVisibleInlierRatio > 0 &&
+                              double(evidence.inliers) >= options_.minVisibleInlierRatio * visible);
+    if (best.score.inliers < options_.minInliers || !overlapping ||
         evidence.inlierFraction() < options_.minInlierFraction) {
         r.status = MatchStatus::PoorFit;
     } else if (best.icp.pointsUsed < 3 ||
@@ -541,6 +546,7 @@ void GraphMatcherOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
     read(c, s, "hough_minPeakFraction", hough.minPeakFraction);
     read(c, s, "minInliers", minInliers);
     read(c, s, "minInlierRatio", minInlierRatio);
+    read(c, s, "minVisibleInlierRatio", minVisibleInlierRatio);
     read(c, s, "minInlierFraction", minInlierFraction);
     read(c, s, "maxTranslationStd", maxTranslationStd);
     read(c, s, "ambiguityMargin", ambiguityMargin);

@@ -11,6 +11,9 @@
 //                   is wrong there;
 //   - unverifiable  when it is outside the reference's field of view, behind a reference
 //                   reading (occluded from the reference), or the reference beam has no return.
+//                   Those outside the field of view are also counted apart (outOfView): the
+//                   reference could not have seen them at any range, so they say nothing about
+//                   how much of what both sensors could see the pose explains.
 // inlierFraction = inliers / (inliers + violations) is a quality in [0, 1] that does not
 // punish partial overlap; the inlier count says how much of the scan supports the pose.
 #include <mrpt/poses/CPose2D.h>
@@ -31,6 +34,7 @@ struct AlignmentScoreOptions {
 
 struct AlignmentScore {
     std::size_t inliers = 0, violations = 0, unverifiable = 0;
+    std::size_t outOfView = 0;      ///< of the unverifiable: outside the reference's field of view
     double inlierSquaredError = 0;  ///< sum over inliers of the squared distance (m^2)
 
     std::size_t verified() const { return inliers + violations; }

@@ -28,9 +28,11 @@
 // The result is the pose of the CURRENT scan's sensor in the REFERENCE scan's sensor frame
 // (what MRPT calls the pose of m2 relative to m1), its covariance and the evidence for it.
 // Decision: a pose is returned as reliable only when
-//   - enough of the scans land on each other's surface (inliers >= minInliers and >=
-//     minInlierRatio of the scored points) and little lands in space the other scan saw as
-//     free (inlier fraction >= minInlierFraction);
+//   - enough of the scans land on each other's surface (inliers >= minInliers, and >=
+//     minInlierRatio of the scored points or >= minVisibleInlierRatio of those inside the
+//     other sensor's field of view: where the robot turned round, the scans share a small
+//     part, but the pose must explain most of that part) and little lands in space the other
+//     scan saw as free (inlier fraction >= minInlierFraction);
 //   - the matched lines fix the pose (ICP's worst translation std <= maxTranslationStd):
 //     a single wall or a featureless corridor does not;
 //   - no clearly different pose (distinct by the RANSAC distinctness thresholds) explains the
@@ -104,7 +106,9 @@ struct GraphMatcherOptions {
     HoughPoseSearchOptions hough;
     // Decision
     std::size_t minInliers = 30;
-    double minInlierRatio = 0.25;     ///< of the current scan's valid points
+    double minInlierRatio = 0.25;  ///< of the current scan's valid points
+    /// ... or of the points inside the other sensor's field of view (0: off).
+    double minVisibleInlierRatio = 0;
     double minInlierFraction = 0.90;  ///< inliers / (inliers + free-space violations)
     double maxTranslationStd = 0.05;  ///< m
     /// The best pose must explain this fraction of the current scan's points more than any

@@ -164,7 +164,7 @@ TEST(RoomSegmenter, CorridorBetweenOppositeDoorsIsNotCut) {
     expectMatchesDrawing(result.map, drawn, kDoorTolerance);
 }
 
-TEST(RoomSegmenter, DoorInAWallThickerThanHalfAMetreIsCut) {
+TEST(RoomSegmenter, DoorInAThickWallIsCut) {
     const DrawnMap drawn = toposlam::rooms::test::thickWall();
     const auto grid = toposlam::rooms::test::gridOf(drawn.image);
     expectMatchesDrawing(RoomSegmenter().segment(grid).map, drawn, kDoorTolerance);

@@ -62,8 +62,8 @@ class DoorFilters {
         /// in the middle of a wall running across the door line, and the two do not lie on
         /// walls that go on to the same side of it (a corridor's two side walls).
         bool requireBothWallEnds = false;
-        /// m: the thickest inner wall (the drawn walls of B4's Freiburg52 are 0.55 m).
-        double maxWallThickness = 0.6;
+        /// m: the thickest inner wall (B4's drawn walls: 0.55 m in Freiburg52, 0.65 m in office_i).
+        double maxWallThickness = 0.65;
         /// m: how far from a wall-end jamb, along the door line, the wall must go on and is
         /// measured for its thickness (and the reach of the wide openings' framing test).
         double wallEndProbe = 0.55;

@@ -41,8 +41,8 @@ class DoorFilters {
   public:
     struct Options {
         /// N_d (m). The paper gives it in cells (N_d = 2 at 5 cm, fig. 5b), for SLAM maps whose
-        /// walls are a few cells thick; 0.5 m is more than the thickest wall, so the
-        /// cross-sections found all along one doorway count as one door on any map.
+        /// walls are a few cells thick. Groups are chained (closer pairs linked), so the
+        /// cross-sections found all along a doorway count as one door however thick the wall.
         double frameDistance = 0.5;
         double minRoomArea = 2.0;  ///< N_s (m^2)
         /// Distance filter: of a group of doors closer than N_d, keep the narrowest (the

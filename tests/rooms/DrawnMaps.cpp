@@ -188,6 +188,32 @@ DrawnMap singleRoom() {
     return m;
 }
 
+DrawnMap thickWall() {
+    DrawnMap m;
+    m.image = cv::Mat(140, 240, CV_8U, cv::Scalar(128));
+    cv::Mat& img = m.image;
+    fill(img, 1, 1, 10.8, 5.4, 0);
+    fill(img, 1.2, 1.2, 5.6, 5.2, 255);
+    fill(img, 6.15, 1.2, 10.6, 5.2, 255);
+    fill(img, 5.6, 2.7, 6.15, 3.7, 255);  // the door through the 0.55 m wall
+    m.rooms = {{3.4, 3.2}, {8.4, 3.2}};
+    m.doors = {{{5.875, 3.2}, 1.0}};
+    m.tour = {{3.4, 3.2}, {8.4, 3.2}};
+    return m;
+}
+
+DrawnMap deskRow() {
+    DrawnMap m;
+    m.image = cv::Mat(200, 320, CV_8U, cv::Scalar(128));
+    cv::Mat& img = m.image;
+    fill(img, 1, 1, 15.2, 9.2, 0);
+    fill(img, 1.2, 1.2, 15, 9, 255);
+    for (double x = 2.2; x < 14; x += 2.6)
+        fill(img, x, 4.75, x + 1.6, 5.45, 0);  // desks 1.6 x 0.7 m, 1 m apart
+    m.rooms = {{8, 2.5}};
+    return m;
+}
+
 DrawnMap openPlan() {
     DrawnMap m;
     m.image = cv::Mat(240, 360, CV_8U, cv::Scalar(128));

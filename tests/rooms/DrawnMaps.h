@@ -53,6 +53,13 @@ DrawnMap cubicles();
 /// beside a partition, the doors above and below opposite each other: the corridor's
 /// cross-section there is 2.2 m, framed by wall corners, and no room border. 7 rooms, 6 doors.
 DrawnMap corridorWithOppositeDoors();
+/// Two 4.4 x 4 m rooms either side of a 0.55 m thick wall (as thick as B4's Freiburg52 walls)
+/// with a 1 m door in it. 2 rooms, 1 door.
+DrawnMap thickWall();
+/// A 14 x 8 m hall with a free-standing row of desks 0.7 m deep across the middle, 1 m apart:
+/// the gaps are door-wide and framed by the desks' long edges (wall segments of step 2), but
+/// the desks are deeper than any wall. One room, no door.
+DrawnMap deskRow();
 /// A 16 x 10 m open-plan hall: no walls inside, four pillars, desks; one room, no door.
 DrawnMap openPlan();
 

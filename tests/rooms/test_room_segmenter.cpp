@@ -164,6 +164,28 @@ TEST(RoomSegmenter, CorridorBetweenOppositeDoorsIsNotCut) {
     expectMatchesDrawing(result.map, drawn, kDoorTolerance);
 }
 
+TEST(RoomSegmenter, DoorInAThickWallIsCut) {
+    const DrawnMap drawn = toposlam::rooms::test::thickWall();
+    const auto grid = toposlam::rooms::test::gridOf(drawn.image);
+    expectMatchesDrawing(RoomSegmenter().segment(grid).map, drawn, kDoorTolerance);
+    // A wall-end limit below the wall's 0.55 m takes neither jamb for a wall end.
+    RoomSegmenter::Options thin;
+    thin.filters.maxWallThickness = 0.5;
+    EXPECT_EQ(RoomSegmenter(thin).segment(grid).map.rooms.size(), 1u);
+}
+
+TEST(RoomSegmenter, GapsInARowOfDesksAreNotCut) {
+    const DrawnMap drawn = toposlam::rooms::test::deskRow();
+    const auto grid = toposlam::rooms::test::gridOf(drawn.image);
+    const auto result = RoomSegmenter().segment(grid);
+    EXPECT_EQ(result.map.rooms.size(), 1u);
+    EXPECT_TRUE(result.map.doors.empty());
+    // The desks are what rules the gaps out: as walls they would be.
+    RoomSegmenter::Options deep;
+    deep.filters.maxWallThickness = 0.8;
+    EXPECT_GT(RoomSegmenter(deep).segment(grid).map.rooms.size(), 1u);
+}
+
 TEST(RoomSegmenter, UnreachableFreeCellsBelongToNoRoom) {
     DrawnMap drawn = toposlam::rooms::test::singleRoom();
     drawn.image(cv::Rect(150, 5, 5, 5)) = 255;  // a free island outside the building

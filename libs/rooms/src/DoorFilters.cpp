@@ -98,12 +98,13 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
                wallRun(space.free, jamb, uy, -ux, extent) >= extent;
     };
     // The wall the door is in: from the jamb, away from the opening, the obstacle goes on for
-    // longer than any wall is thick (so this is not a walk through the thickness of a wall
-    // across the door line), and there it is a wall: free space on both sides of it at most
-    // maxWallThickness apart (an inner wall; not a desk), or on one side only with nothing free
-    // within twice that on the other (the edge of the mapped space).
+    // wallEndProbe (past the corner of the jamb), and there it is a wall: free space on both
+    // sides of it at most maxWallThickness apart (an inner wall; not a desk), or on one side
+    // only with nothing free within twice that on the other (the edge of the mapped space). A
+    // wall across the door line walked through instead runs on to both sides there: no wall end.
     const double thickness = detail::toCells(options_.maxWallThickness, space.frame.resolution);
-    const double length = std::max(extent, thickness + 1.0);
+    const double length =
+        std::max(extent, detail::toCells(options_.wallEndProbe, space.frame.resolution));
     auto isFree = [&](int x, int y) { return detail::isSet(space.free, x, y); };
     auto toFree = [&](const cv::Point& from, double ux, double uy) {
         cv::Point hit;

@@ -112,6 +112,7 @@ void RoomSegmenter::Options::validate() const {
     require(filters.minRoomArea >= 0, "minRoomArea must be >= 0");
     require(filters.minWallExtent > 0, "minWallExtent must be > 0");
     require(filters.maxWallThickness > 0, "maxWallThickness must be > 0");
+    require(filters.wallEndProbe > 0, "wallEndProbe must be > 0");
     require(filters.openingMargin >= 0, "openingMargin must be >= 0");
     require(wide.maxWidth > 0, "maxOpeningWidth must be > 0");
     require(wide.openingMargin >= 0, "wideOpeningMargin must be >= 0");
@@ -151,6 +152,7 @@ void RoomSegmenter::Options::loadFromConfigFile(const mrpt::config::CConfigFileB
     filters.minWallExtent = ini.read_double(s, "minWallExtent", filters.minWallExtent);
     filters.requireWallEnd = ini.read_bool(s, "requireWallEnd", filters.requireWallEnd);
     filters.maxWallThickness = ini.read_double(s, "maxWallThickness", filters.maxWallThickness);
+    filters.wallEndProbe = ini.read_double(s, "wallEndProbe", filters.wallEndProbe);
     filters.requireConstriction =
         ini.read_bool(s, "requireConstriction", filters.requireConstriction);
     filters.openingMargin = ini.read_double(s, "openingMargin", filters.openingMargin);

@@ -17,11 +17,11 @@
 //                 part of the building's structure (it reaches the edge of the map, or it
 //                 carries one of the wall segments of step 2) and extends at least
 //                 minWallExtent from the jamb along or across the door line; and at least one
-//                 jamb is the end of the wall the door is in: from it, away from the opening, the
-//                 obstacle goes on along the door line for longer than maxWallThickness and is
-//                 no thicker than that there (or is the edge of the mapped space, free on one
-//                 side only). Rules out chairs, bins
-//                 and plants as door frames, gaps between desks (too deep to be walls) and the
+//                 jamb is the end of the wall the door is in: from it, away from the opening,
+//                 the obstacle goes on along the door line for wallEndProbe and is no thicker
+//                 than maxWallThickness there (or is the edge of the mapped space, free on one
+//                 side only). Rules out chairs, bins and plants as door frames, gaps between
+//                 desks (too deep to be walls) and the
 //                 cross-sections of corridors between doors (both jambs on side walls);
 //   constriction: a door is a narrow place between two wider spaces: walking away from the door
 //                 line on each side, within one door width the free space along the door line
@@ -41,8 +41,8 @@ class DoorFilters {
   public:
     struct Options {
         /// N_d (m). The paper gives it in cells (N_d = 2 at 5 cm, fig. 5b), for SLAM maps whose
-        /// walls are a few cells thick; 0.5 m is more than the thickest wall, so the
-        /// cross-sections found all along one doorway count as one door on any map.
+        /// walls are a few cells thick. Groups are chained (closer pairs linked), so the
+        /// cross-sections found all along a doorway count as one door however thick the wall.
         double frameDistance = 0.5;
         double minRoomArea = 2.0;  ///< N_s (m^2)
         /// Distance filter: of a group of doors closer than N_d, keep the narrowest (the
@@ -62,7 +62,11 @@ class DoorFilters {
         /// in the middle of a wall running across the door line, and the two do not lie on
         /// walls that go on to the same side of it (a corridor's two side walls).
         bool requireBothWallEnds = false;
-        double maxWallThickness = 0.5;    ///< m
+        /// m: the thickest inner wall (B4's drawn walls: 0.55 m in Freiburg52, 0.65 m in office_i).
+        double maxWallThickness = 0.65;
+        /// m: how far from a wall-end jamb, along the door line, the wall must go on and is
+        /// measured for its thickness (and the reach of the wide openings' framing test).
+        double wallEndProbe = 0.55;
         bool requireConstriction = true;  ///< the constriction test (deviation, see above)
         double openingMargin = 0.3;       ///< m
     };

@@ -38,116 +38,112 @@ void run(const matchingbench::ScanPairs& pairs,
                                 });
     progress.finish();
 }
+int run(int argc, char** argv) {
+    TCLAP::CmdLine cmd(
+        "Benchmark B2: graph scan matcher vs MRPT CICP (classic, Levenberg-Marquardt) on "
+        "simulated and real (relation file) scan pairs; zero initial guess, then odometry "
+        "guess. Success: |ex|,|ey| < 0.1 m and |etheta| < 0.03 rad. Times: CPU time per pair "
+        "from the two raw scans (graph: feature extraction + matching).",
+        ' ', "0.1");
+    TCLAP::ValueArg<std::string> data("d", "data",
+                                      "folder with slam/<log>.clf and slam/<log>.relations "
+                                      "(default: ../shared/data of the source tree)",
+                                      false, TOPOSLAM_SHARED_DATA_DIR, "dir", cmd);
+    TCLAP::ValueArg<std::string> logs("l", "logs", "real logs to use (default intel,mit-csail)",
+                                      false, "intel,mit-csail", "names", cmd);
+    TCLAP::ValueArg<std::string> config(
+        "c", "config",
+        "ini with [GraphScanMatcher] (matcher options), the extractors' sections "
+        "([SplitAndMergeExtractor], [CornerExtractor], [SegmentExtractor]) and [ICP] (CICP "
+        "options for both CICP variants; ICP_algorithm is overridden). Default: built-in "
+        "defaults (config_ini/graph-matcher.ini, features.ini, bench-matching-icp.ini)",
+        false, "", "file.ini", cmd);
+    TCLAP::ValueArg<std::string> extractors(
+        "e", "extractors",
+        "feature extractors of the graph-matcher rows (default split-merge,corners,segments: "
+        "IEPF lines, the corner paper's segments, the graph paper's sec. 2.1 convex/concave "
+        "segments)",
+        false, "split-merge,corners,segments", "names", cmd);
+    TCLAP::ValueArg<std::size_t> simPairs("s", "sim-pairs",
+                                          "simulated pairs per room x offset x rotation "
+                                          "(2 x 4 x 4 cases; default 10, 0 = none)",
+                                          false, 10, "n", cmd);
+    TCLAP::ValueArg<std::size_t> maxReal("m", "max-real-pairs",
+                                         "relations used per log, evenly spaced (default 0 = "
+                                         "all)",
+                                         false, 0, "n", cmd);
+    TCLAP::SwitchArg noGuess("", "no-guess-run", "skip the odometry-guess run", cmd);
+    TCLAP::ValueArg<std::string> json("j", "json", "JSON output (default bench-matching.json)",
+                                      false, "bench-matching.json", "file", cmd);
+    if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
+        return *exitCode;
+
+    mrpt::config::CConfigFileMemory emptyIni;
+    std::unique_ptr<mrpt::config::CConfigFile> ini;
+    if (!config.getValue().empty()) {
+        if (!std::filesystem::exists(config.getValue()))
+            throw std::runtime_error("config file not found: " + config.getValue());
+        ini = std::make_unique<mrpt::config::CConfigFile>(config.getValue());
+    }
+    const mrpt::config::CConfigFileBase& cfg =
+        ini ? static_cast<const mrpt::config::CConfigFileBase&>(*ini) : emptyIni;
+
+    matching::GraphMatcherOptions graphOptions;
+    graphOptions.loadFromConfigFile(cfg, "GraphScanMatcher");
+    mrpt::slam::CICP::TConfigParams icpParams;
+    // Defaults = peers/icp-slam-benchmark.ini's [ICP] (the icp-slam peer of B3).
+    icpParams.maxIterations = 80;
+    icpParams.minAbsStep_trans = 1e-6f;
+    icpParams.minAbsStep_rot = 1e-6f;
+    icpParams.thresholdDist = 0.5f;
+    icpParams.thresholdAng = 0.15f * float(M_PI / 180.0);
+    icpParams.ALFA = 0.8f;
+    icpParams.smallestThresholdDist = 0.05f;
+    icpParams.onlyUniqueRobust = true;
+    icpParams.corresponding_points_decimation = 1;
+    if (ini)
+        icpParams.loadFromConfigFile(cfg, "ICP");
+
+    std::vector<std::unique_ptr<matchingbench::PairMatcher>> owned;
+    for (const std::string& e : splitComma(extractors.getValue()))
+        owned.push_back(std::make_unique<matchingbench::GraphPairMatcher>("graph (" + e + ")", e,
+                                                                          graphOptions, ini.get()));
+    auto classic = icpParams, lm = icpParams;
+    classic.ICP_algorithm = mrpt::slam::icpClassic;
+    lm.ICP_algorithm = mrpt::slam::icpLevenbergMarquardt;
+    owned.push_back(std::make_unique<matchingbench::CicpPairMatcher>("CICP classic", classic));
+    owned.push_back(std::make_unique<matchingbench::CicpPairMatcher>("CICP LM", lm));
+    std::vector<matchingbench::PairMatcher*> methods;
+    for (auto& m : owned)
+        methods.push_back(m.get());
+
+    matchingbench::ScanPairs pairs;
+    if (simPairs.getValue() > 0) {
+        matchingbench::SimulatedPairsOptions so;
+        so.pairsPerCase = simPairs.getValue();
+        pairs = matchingbench::makeSimulatedPairs(so);
+    }
+    for (const std::string& log : splitComma(logs.getValue())) {
+        const std::string base = data.getValue() + "/slam/" + log;
+        auto real = matchingbench::loadRelationPairs(base + ".clf", base + ".relations", log,
+                                                     maxReal.getValue());
+        pairs.insert(pairs.end(), real.begin(), real.end());
+    }
+    if (pairs.empty())
+        throw std::runtime_error("no pairs: give --sim-pairs > 0 or --logs");
+
+    matchingbench::BenchmarkReport report;
+    run(pairs, methods, false, "zero guess", report);
+    if (!noGuess.getValue())
+        run(pairs, methods, true, "odometry guess", report);
+    report.printTable(std::cout);
+    report.writeJson(json.getValue());
+    std::cout << "JSON: " << json.getValue() << "\n";
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    try {
-        TCLAP::CmdLine cmd(
-            "Benchmark B2: graph scan matcher vs MRPT CICP (classic, Levenberg-Marquardt) on "
-            "simulated and real (relation file) scan pairs; zero initial guess, then odometry "
-            "guess. Success: |ex|,|ey| < 0.1 m and |etheta| < 0.03 rad. Times: CPU time per pair "
-            "from the two raw scans (graph: feature extraction + matching).",
-            ' ', "0.1");
-        TCLAP::ValueArg<std::string> data("d", "data",
-                                          "folder with slam/<log>.clf and slam/<log>.relations "
-                                          "(default: ../shared/data of the source tree)",
-                                          false, TOPOSLAM_SHARED_DATA_DIR, "dir", cmd);
-        TCLAP::ValueArg<std::string> logs("l", "logs", "real logs to use (default intel,mit-csail)",
-                                          false, "intel,mit-csail", "names", cmd);
-        TCLAP::ValueArg<std::string> config(
-            "c", "config",
-            "ini with [GraphScanMatcher] (matcher options), the extractors' sections "
-            "([SplitAndMergeExtractor], [CornerExtractor], [SegmentExtractor]) and [ICP] (CICP "
-            "options for both CICP variants; ICP_algorithm is overridden). Default: built-in "
-            "defaults (config_ini/graph-matcher.ini, features.ini, bench-matching-icp.ini)",
-            false, "", "file.ini", cmd);
-        TCLAP::ValueArg<std::string> extractors(
-            "e", "extractors",
-            "feature extractors of the graph-matcher rows (default split-merge,corners,segments: "
-            "IEPF lines, the corner paper's segments, the graph paper's sec. 2.1 convex/concave "
-            "segments)",
-            false, "split-merge,corners,segments", "names", cmd);
-        TCLAP::ValueArg<std::size_t> simPairs("s", "sim-pairs",
-                                              "simulated pairs per room x offset x rotation "
-                                              "(2 x 4 x 4 cases; default 10, 0 = none)",
-                                              false, 10, "n", cmd);
-        TCLAP::ValueArg<std::size_t> maxReal("m", "max-real-pairs",
-                                             "relations used per log, evenly spaced (default 0 = "
-                                             "all)",
-                                             false, 0, "n", cmd);
-        TCLAP::SwitchArg noGuess("", "no-guess-run", "skip the odometry-guess run", cmd);
-        TCLAP::ValueArg<std::string> json("j", "json", "JSON output (default bench-matching.json)",
-                                          false, "bench-matching.json", "file", cmd);
-        if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
-            return *exitCode;
-
-        mrpt::config::CConfigFileMemory emptyIni;
-        std::unique_ptr<mrpt::config::CConfigFile> ini;
-        if (!config.getValue().empty()) {
-            if (!std::filesystem::exists(config.getValue()))
-                throw std::runtime_error("config file not found: " + config.getValue());
-            ini = std::make_unique<mrpt::config::CConfigFile>(config.getValue());
-        }
-        const mrpt::config::CConfigFileBase& cfg =
-            ini ? static_cast<const mrpt::config::CConfigFileBase&>(*ini) : emptyIni;
-
-        matching::GraphMatcherOptions graphOptions;
-        graphOptions.loadFromConfigFile(cfg, "GraphScanMatcher");
-        mrpt::slam::CICP::TConfigParams icpParams;
-        // Defaults = peers/icp-slam-benchmark.ini's [ICP] (the icp-slam peer of B3).
-        icpParams.maxIterations = 80;
-        icpParams.minAbsStep_trans = 1e-6f;
-        icpParams.minAbsStep_rot = 1e-6f;
-        icpParams.thresholdDist = 0.5f;
-        icpParams.thresholdAng = 0.15f * float(M_PI / 180.0);
-        icpParams.ALFA = 0.8f;
-        icpParams.smallestThresholdDist = 0.05f;
-        icpParams.onlyUniqueRobust = true;
-        icpParams.corresponding_points_decimation = 1;
-        if (ini)
-            icpParams.loadFromConfigFile(cfg, "ICP");
-
-        std::vector<std::unique_ptr<matchingbench::PairMatcher>> owned;
-        for (const std::string& e : splitComma(extractors.getValue()))
-            owned.push_back(std::make_unique<matchingbench::GraphPairMatcher>(
-                "graph (" + e + ")", e, graphOptions, ini.get()));
-        auto classic = icpParams, lm = icpParams;
-        classic.ICP_algorithm = mrpt::slam::icpClassic;
-        lm.ICP_algorithm = mrpt::slam::icpLevenbergMarquardt;
-        owned.push_back(std::make_unique<matchingbench::CicpPairMatcher>("CICP classic", classic));
-        owned.push_back(std::make_unique<matchingbench::CicpPairMatcher>("CICP LM", lm));
-        std::vector<matchingbench::PairMatcher*> methods;
-        for (auto& m : owned)
-            methods.push_back(m.get());
-
-        matchingbench::ScanPairs pairs;
-        if (simPairs.getValue() > 0) {
-            matchingbench::SimulatedPairsOptions so;
-            so.pairsPerCase = simPairs.getValue();
-            pairs = matchingbench::makeSimulatedPairs(so);
-        }
-        for (const std::string& log : splitComma(logs.getValue())) {
-            const std::string base = data.getValue() + "/slam/" + log;
-            auto real = matchingbench::loadRelationPairs(base + ".clf", base + ".relations", log,
-                                                         maxReal.getValue());
-            pairs.insert(pairs.end(), real.begin(), real.end());
-        }
-        if (pairs.empty())
-            throw std::runtime_error("no pairs: give --sim-pairs > 0 or --logs");
-
-        matchingbench::BenchmarkReport report;
-        run(pairs, methods, false, "zero guess", report);
-        if (!noGuess.getValue())
-            run(pairs, methods, true, "odometry guess", report);
-        report.printTable(std::cout);
-        report.writeJson(json.getValue());
-        std::cout << "JSON: " << json.getValue() << "\n";
-        return 0;
-    } catch (const TCLAP::ArgException& e) {
-        std::cerr << "error: " << e.error() << " (" << e.argId() << ")\n";
-        return 1;
-    } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return 1;
-    }
+    return toposlam::cli::runReportingErrors(run, argc, argv);
 }

@@ -64,6 +64,14 @@ double Clearance::acrossRidge(const cv::Point& p) const {
     return a;
 }
 
+std::vector<double> Clearance::acrossRidge(const std::vector<cv::Point>& cells) const {
+    std::vector<double> directions;
+    directions.reserve(cells.size());
+    for (const cv::Point& p : cells)
+        directions.push_back(acrossRidge(p));
+    return directions;
+}
+
 std::vector<cv::Point> DoorSearchPaths::fromMedialAxis(const FreeSpace& space,
                                                        const Clearance& clearance,
                                                        double minDoorWidth, double maxDoorWidth) {

@@ -247,12 +247,8 @@ RoomSegmenter::Result RoomSegmenter::segment(
                              : DoorSearchPaths::fromMedialAxis(
                                    space, ws.clearance, door.doorWidth - door.doorWidthTolerance,
                                    door.doorWidth + door.doorWidthTolerance);
-    std::vector<double> localDirections;
-    if (door.localDirection) {
-        localDirections.reserve(result.searchCells.size());
-        for (const cv::Point& p : result.searchCells)
-            localDirections.push_back(ws.clearance.acrossRidge(p));
-    }
+    const std::vector<double> localDirections =
+        door.localDirection ? ws.clearance.acrossRidge(result.searchCells) : std::vector<double>{};
     lap("search paths");
     result.candidates =
         ws.detector.detect(space, result.searchCells,
@@ -263,9 +259,10 @@ RoomSegmenter::Result RoomSegmenter::segment(
     result.afterTests = ws.filters.constriction(
         space, ws.filters.wallJambs(space, result.candidates, result.lines), door.doorWidth);
     lap("door tests");
-    result.wideOpenings = ws.wide.detect(
-        space, ws.clearance, result.fromTrajectory ? result.searchCells : std::vector<cv::Point>{},
-        {result.directions.phi1, result.directions.phi2}, result.lines);
+    const std::vector<cv::Point> noPath;  // the wide pass searches its own medial axis
+    result.wideOpenings =
+        ws.wide.detect(space, ws.clearance, result.fromTrajectory ? result.searchCells : noPath,
+                       {result.directions.phi1, result.directions.phi2}, result.lines);
     result.afterTests.insert(result.afterTests.end(), result.wideOpenings.begin(),
                              result.wideOpenings.end());
     lap("wide openings");

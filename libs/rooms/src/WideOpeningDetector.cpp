@@ -41,16 +41,13 @@ std::vector<VirtualDoor> WideOpeningDetector::detect(const FreeSpace& space,
                                                      const std::vector<LineSegment>& walls) const {
     if (!options_.enabled || options_.maxWidth <= minWidth_)
         return {};
-    const std::vector<cv::Point> cells =
-        pathCells.empty()
-            ? DoorSearchPaths::fromMedialAxis(space, clearance, minWidth_, options_.maxWidth)
-            : pathCells;
-    std::vector<double> local;
-    if (detector_.options().localDirection) {
-        local.reserve(cells.size());
-        for (const cv::Point& p : cells)
-            local.push_back(clearance.acrossRidge(p));
-    }
+    std::vector<cv::Point> medialAxis;
+    if (pathCells.empty())
+        medialAxis =
+            DoorSearchPaths::fromMedialAxis(space, clearance, minWidth_, options_.maxWidth);
+    const std::vector<cv::Point>& cells = pathCells.empty() ? medialAxis : pathCells;
+    const std::vector<double> local =
+        detector_.options().localDirection ? clearance.acrossRidge(cells) : std::vector<double>{};
     std::vector<VirtualDoor> openings = detector_.detect(space, cells, directions, local);
     return filters_.constriction(space, filters_.wallJambs(space, std::move(openings), walls),
                                  options_.maxWidth);

@@ -39,6 +39,8 @@ class Clearance {
     /// a doorway the clearance peaks between the jambs, so this is the door line, whatever the
     /// orientation of the wall.
     double acrossRidge(const cv::Point& p) const;
+    /// acrossRidge() of each cell, in order: the local door directions of a search path.
+    std::vector<double> acrossRidge(const std::vector<cv::Point>& cells) const;
 
   private:
     cv::Mat distance_;

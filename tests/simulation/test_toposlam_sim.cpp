@@ -234,14 +234,14 @@ TEST(ShareOffice, IsReproducedBitForBitByMakeOffice) {
         sb << b.rdbuf();
         EXPECT_TRUE(sa.str() == sb.str())
             << "share/office/" << name << " differs from what toposlam-sim --make-office makes "
-            << "now: regenerate share/office (README, \"Office floor plan\")";
+            << "now: regenerate share/office (share/doc/file-formats.md, \"Office floor plan\")";
         ++compared;
     }
     EXPECT_EQ(compared, 8u);
 }
 
 TEST(SimOfficeIni, SpellsOutTheBuiltInDefaultsExactly) {
-    // README and --help promise that config_ini/sim-office.ini holds the built-in defaults;
+    // share/doc/apps.md and --help promise that config_ini/sim-office.ini holds the built-in defaults;
     // bit for bit, so that share/office comes out the same with or without -c.
     SimulatorConfig fromFile;
     mrpt::config::CConfigFile ini(toposlam::test::shareDir() + "/../config_ini/sim-office.ini");

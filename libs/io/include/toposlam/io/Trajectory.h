@@ -2,7 +2,7 @@
 // Robot trajectories as text, one pose per line: "timestamp x y yaw"
 // (timestamp in seconds, x y in metres, yaw in radians; the map/world frame of whoever wrote
 // it). Fields are separated by blanks; '#' starts a comment line; blank lines are ignored.
-// This is the format every TopoSLAM app reads and writes (README, "File formats").
+// This is the format every TopoSLAM app reads and writes (share/doc/file-formats.md).
 #include <mrpt/math/TPose2D.h>
 
 #include <string>

@@ -1,7 +1,7 @@
 #pragma once
 // Topological maps on disk.
 //   .json     everything: frame, rooms (with outline), doors, adjacency and the label image
-//             (run-length encoded); schema in the README, section "Topological map (JSON)".
+//             (run-length encoded); schema in share/doc/file-formats.md, "Topological map".
 //   .graphml  the graph for graph tools (networkx, yEd, Gephi): rooms as nodes (name, area,
 //             centroid, anchor), doors as undirected edges (id, width, jambs). No label image.
 // Writers are atomic (no partial file on failure); readers throw toposlam::io::InputError

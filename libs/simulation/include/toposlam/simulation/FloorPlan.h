@@ -72,7 +72,7 @@ class FloorPlan {
     std::vector<std::uint8_t> roomLabels(const mrpt::maps::COccupancyGridMap2D& grid) const;
     /// Exact vector world of walls and furniture (for ground-truth corners and segments).
     PolygonWorld toPolygonWorld() const;
-    /// Rooms and doors as JSON (format in the README, "Office floor plan").
+    /// Rooms and doors as JSON (format in share/doc/file-formats.md, "Office floor plan").
     std::string toJson(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& mapFile,
                        const std::string& labelFile) const;
 

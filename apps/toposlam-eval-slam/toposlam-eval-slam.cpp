@@ -138,8 +138,8 @@ int run(int argc, char** argv) {
         "too) or else to the method with the lowest mean translational error",
         false, "", "out.png", cmd);
     TCLAP::ValueArg<std::string> json(
-        "", "json", "Write the results as JSON to this file (keys: see share/doc/apps.md)", false, "",
-        "out.json", cmd);
+        "", "json", "Write the results as JSON to this file (keys: see share/doc/apps.md)", false,
+        "", "out.json", cmd);
     if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
         return *exitCode;
 

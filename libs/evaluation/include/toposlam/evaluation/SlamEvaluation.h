@@ -60,7 +60,7 @@ MethodEvaluation evaluateMethod(const std::string& name, const std::string& sour
 /// of the translational error by relation separation.
 std::string formatEvaluationTable(const SlamEvaluation& evaluation);
 
-/// The whole evaluation as a JSON document (keys documented in share/doc/apps.md, toposlam-eval-slam).
+/// The whole evaluation as a JSON document (keys: share/doc/apps.md).
 std::string formatEvaluationJson(const SlamEvaluation& evaluation);
 
 /// Writes formatEvaluationJson() to `path` atomically (no partial file on failure).

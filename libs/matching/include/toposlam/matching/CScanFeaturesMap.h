@@ -8,10 +8,10 @@
 // Inserting a CObservation2DRangeScan REPLACES the content (the map holds one scan): its
 // readings are kept in the sensor frame (PolarScan), its features are extracted with the
 // configured extractor (libs/features: "split-merge" by default, the one the graph matcher
-// does best with on real scans, see share/doc/benchmarks.md, B2; "corners", "segments", ...), and the sensor's pose
-// in the map frame (robot pose given to insertObservation, default the origin, composed with the
-// scan's sensorPose) is remembered. Serialization stores the scan and the extractor name; the
-// features are extracted again on reading (extraction is deterministic).
+// does best with on real scans, see share/doc/benchmarks.md, B2; "corners", "segments", ...), and
+// the sensor's pose in the map frame (robot pose given to insertObservation, default the origin,
+// composed with the scan's sensorPose) is remembered. Serialization stores the scan and the
+// extractor name; the features are extracted again on reading (extraction is deterministic).
 // Registered with mrpt-rtti and MAP_DEFINITION_REGISTER ("toposlam::matching::CScanFeaturesMap",
 // short name "scanFeaturesMap") when libtoposlam-matching (or the plugin) is loaded.
 #include <mrpt/maps/CMetricMap.h>

@@ -2,7 +2,8 @@
 // relations and simulated pairs with exact truth.
 // Real: 40 relations of the mit-csail benchmark log, evenly spaced,
 // matched without a guess (split-merge segments). On all 1172 relations the matcher succeeds
-// on ~93 % and gives a confident wrong pose on ~2.4 % (share/doc/benchmarks.md, B2), so 40 pairs must give
+// on ~93 % and gives a confident wrong pose on ~2.4 % (share/doc/benchmarks.md, B2), so 40 pairs
+// must give
 // >= 80 % successes (> 3 sigma of binomial noise below) and at most 3 confident wrong poses.
 #include <gtest/gtest.h>
 #include <toposlam/matchingbench/MatchingBenchmark.h>

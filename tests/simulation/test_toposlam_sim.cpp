@@ -241,8 +241,8 @@ TEST(ShareOffice, IsReproducedBitForBitByMakeOffice) {
 }
 
 TEST(SimOfficeIni, SpellsOutTheBuiltInDefaultsExactly) {
-    // share/doc/apps.md and --help promise that config_ini/sim-office.ini holds the built-in defaults;
-    // bit for bit, so that share/office comes out the same with or without -c.
+    // share/doc/apps.md and --help promise that config_ini/sim-office.ini holds the built-in
+    // defaults; bit for bit, so that share/office comes out the same with or without -c.
     SimulatorConfig fromFile;
     mrpt::config::CConfigFile ini(toposlam::test::shareDir() + "/../config_ini/sim-office.ini");
     loadSimulatorConfig(ini, fromFile);

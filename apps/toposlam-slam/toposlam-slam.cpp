@@ -1,13 +1,13 @@
 // toposlam-slam: laser SLAM over a robot log, run like MRPT's icp-slam:
 //   toposlam-slam <config.ini> <log.{rawlog,clf}> [-o outdir]
-// Writes the trajectory (one pose per scan), the occupancy grid (.gridmap.gz, .png + .yaml)
-// and prints a summary. The algorithm lives in libs/mapping.
+// The algorithm lives in libs/mapping (mapLog, CGraphSlamBuilder); this app parses the
+// command line, shows progress and writes the outputs.
 #include <mrpt/config/CConfigFile.h>
 #include <toposlam/cli/CommandLine.h>
-#include <toposlam/io/GridMapIO.h>
 #include <toposlam/io/InputError.h>
-#include <toposlam/io/Trajectory.h>
+#include <toposlam/io/ProgressDisplay.h>
 #include <toposlam/mapping/LogMapper.h>
+#include <toposlam/mapping/MappingOutputs.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -18,12 +18,17 @@ namespace {
 
 int run(int argc, char** argv) {
     TCLAP::CmdLine cmd(
-        "Laser SLAM over a robot log (MRPT rawlog in either format, or CARMEN log), configured "
-        "like MRPT's icp-slam: [MappingApplication] and [ICP] take icp-slam's keys, "
-        "[OccupancyGrid] sets the output grid (see config_ini/toposlam-slam.ini). Writes "
-        "<outdir>/trajectory.txt (timestamp x y yaw per scan, stamps as in the log), "
-        "<outdir>/map.gridmap.gz and <outdir>/map.png + map.yaml.",
-        ' ', "0.1.0");
+        "Laser SLAM over a robot log (MRPT rawlog in either format, or CARMEN log). The default "
+        "engine is TopoSLAM's graph SLAM: scans registered against local submaps by "
+        "point-to-line ICP, the graph matcher where that fails, keyframes with corner "
+        "features, loop closure verified by the graph matcher, pose graph optimised by MRPT's "
+        "sparse Levenberg-Marquardt. '[Slam] engine = icp' runs MRPT's icp-slam engine "
+        "instead (configured by icp-slam's [MappingApplication] and [ICP] keys). See "
+        "config_ini/toposlam-slam.ini for every key. Writes into <outdir>: trajectory.txt "
+        "(timestamp x y yaw per scan, stamps as in the log), map.gridmap.gz, map.png + "
+        "map.yaml, keyframes.graph (MRPT .graph), keyframes.simplemap (scans + features), "
+        "summary.txt and summary.json.",
+        ' ', "0.2.0");
     TCLAP::UnlabeledValueArg<std::string> configArg("config", "configuration .ini file", true, "",
                                                     "config.ini", cmd);
     TCLAP::UnlabeledValueArg<std::string> logArg(
@@ -34,35 +39,23 @@ int run(int argc, char** argv) {
     if (const auto exitCode = toposlam::cli::parseCommandLine(cmd, argc, argv))
         return *exitCode;
 
-    if (!fs::is_regular_file(configArg.getValue())) {
+    if (!fs::is_regular_file(configArg.getValue()))
         throw toposlam::io::InputError(configArg.getValue(), "configuration file not found");
-    }
     const mrpt::config::CConfigFile ini(configArg.getValue());
-    const toposlam::mapping::MappingResult result =
-        toposlam::mapping::mapLog(logArg.getValue(), ini);
+    toposlam::io::ProgressDisplay progress(
+        "mapping " + fs::path(logArg.getValue()).filename().string(), "scans");
+    const toposlam::mapping::MappingResult result = toposlam::mapping::mapLog(
+        logArg.getValue(), ini,
+        [&](double fraction, std::size_t scans) { progress.update(fraction, scans); });
+    progress.finish();
 
-    const fs::path out(outArg.getValue());
-    fs::create_directories(out);
-    toposlam::io::saveTrajectory(result.trajectory, (out / "trajectory.txt").string());
-    toposlam::io::saveGridMap(result.grid, (out / "map.gridmap.gz").string());
-    toposlam::io::saveGridMap(result.grid, (out / "map.png").string());
-
-    std::printf("scans: %zu, log duration %.1f s, mapped in %.1f s (%.1fx real time)\n",
-                result.scans, result.logDuration, result.wallSeconds,
-                result.wallSeconds > 0 ? result.logDuration / result.wallSeconds : 0.0);
-    std::printf("grid: %u x %u cells of %.2f m, x [%.2f, %.2f] y [%.2f, %.2f] m\n",
-                result.grid.getSizeX(), result.grid.getSizeY(), result.grid.getResolution(),
-                result.grid.getXMin(), result.grid.getXMax(), result.grid.getYMin(),
-                result.grid.getYMax());
-    if (result.wallAlignment != 0) {
-        std::printf(
-            "map turned by %.2f deg to line the walls up with the axes (wall "
-            "direction strength %.2f)\n",
-            result.wallAlignment * 180.0 / M_PI, result.wallDirectionStrength);
-    }
-    for (const char* f : {"trajectory.txt", "map.gridmap.gz", "map.png", "map.yaml"}) {
-        std::printf("wrote %s\n", (out / f).c_str());
-    }
+    const auto files = toposlam::mapping::saveMappingOutputs(result, outArg.getValue());
+    const std::string summary = toposlam::mapping::formatSummary(result);
+    std::fputs(summary.c_str(), stdout);
+    if (toposlam::mapping::mostlyUnregistered(result))
+        std::fputs(("\n*** " + summary.substr(summary.find("WARNING")) + "\n").c_str(), stderr);
+    for (const std::string& f : files)
+        std::printf("wrote %s\n", f.c_str());
     return 0;
 }
 

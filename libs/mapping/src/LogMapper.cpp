@@ -1,62 +1,145 @@
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/poses/CPose3DPDF.h>
 #include <mrpt/system/datetime.h>
 #include <toposlam/io/InputError.h>
 #include <toposlam/io/LaserLogReader.h>
-#include <toposlam/io/ProgressDisplay.h>
+#include <toposlam/mapping/CGraphSlamBuilder.h>
 #include <toposlam/mapping/IcpSlam.h>
 #include <toposlam/mapping/LogMapper.h>
 #include <toposlam/mapping/ManhattanAlignment.h>
 #include <toposlam/mapping/OccupancyGridBuilder.h>
 
+#include <algorithm>
 #include <chrono>
-#include <filesystem>
+#include <ctime>
+#include <stdexcept>
 
 namespace toposlam::mapping {
 
-MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFileBase& ini) {
+using mrpt::poses::CPose2D;
+
+namespace {
+double processCpuSeconds() {
+    return double(std::clock()) / CLOCKS_PER_SEC;
+}
+
+/// Every record of the log, in order, to `consume`; progress reported on the way.
+template <typename Consume>
+void readLog(const std::string& logPath, const io::ProgressCallback& progress, Consume&& consume) {
+    io::LaserLogReader reader(logPath);
+    io::LaserLogRecord record;
+    std::size_t n = 0;
+    while (reader.next(record)) {
+        consume(record);
+        if (progress)
+            progress(reader.fractionRead(), ++n);
+    }
+}
+
+/// TopoSLAM's graph SLAM over the log; fills the poses of `scans` and the graph outputs.
+void runGraphEngine(const std::string& logPath, const mrpt::config::CConfigFileBase& ini,
+                    const io::ProgressCallback& progress, std::vector<PosedScan>& scans,
+                    io::Trajectory2D& trajectory, MappingResult& result) {
+    CGraphSlamBuilder builder;
+    builder.loadFromConfigFile(ini);
+    builder.initialize();
+    readLog(logPath, progress, [&](const io::LaserLogRecord& record) {
+        if (record.hasOdometry) {
+            auto odometry = mrpt::obs::CObservationOdometry::Create();
+            odometry->odometry = record.odometry;
+            odometry->timestamp = record.scan->timestamp;
+            odometry->sensorLabel = "ODOMETRY";
+            builder.processObservation(odometry);
+        }
+        builder.processObservation(record.scan);
+        trajectory.push_back({record.fileStamp, {}});
+        scans.push_back({record.scan, {}});
+    });
+    builder.finish();
+    const GraphSlam& slam = builder.slam();
+    for (std::size_t i = 0; i < scans.size(); ++i) {
+        scans[i].robotPose = slam.scanPose(i);
+        trajectory[i].pose = scans[i].robotPose.asTPose();
+    }
+    result.statistics = slam.statistics();
+    result.graph = slam.graph();
+    builder.getCurrentlyBuiltMap(result.keyframes);
+}
+
+/// MRPT's ICP map builder (icp-slam's engine) over the log.
+void runIcpEngine(const std::string& logPath, const mrpt::config::CConfigFileBase& ini,
+                  const io::ProgressCallback& progress, std::vector<PosedScan>& scans,
+                  io::Trajectory2D& trajectory) {
+    IcpSlam slam(ini);
+    readLog(logPath, progress, [&](const io::LaserLogRecord& record) {
+        const CPose2D pose = slam.process(record);
+        trajectory.push_back({record.fileStamp, pose.asTPose()});
+        scans.push_back({record.scan, pose});
+    });
+}
+
+/// Turns every output about the map origin so the dominant walls run along the axes.
+void alignWithWalls(const mrpt::config::CConfigFileBase& ini, std::vector<PosedScan>& scans,
+                    MappingResult& result) {
+    if (!ini.read_bool("OccupancyGrid", "alignWithWalls", true))
+        return;
+    const double minStrength = ini.read_double("OccupancyGrid", "minWallDirectionStrength", 0.2);
+    const auto walls = estimateWallDirection(scans);
+    if (!walls)
+        return;
+    result.wallDirectionStrength = walls->strength;
+    if (walls->strength < minStrength)
+        return;
+    result.wallAlignment = -walls->angle;
+    const CPose2D turn(0, 0, result.wallAlignment);
+    for (std::size_t i = 0; i < scans.size(); ++i) {
+        scans[i].robotPose = turn + scans[i].robotPose;
+        result.trajectory[i].pose = scans[i].robotPose.asTPose();
+    }
+    if (result.graph)
+        result.graph->transformNodes(turn);
+    for (std::size_t i = 0; i < result.keyframes.size(); ++i)
+        result.keyframes.getAsPair(i).pose->changeCoordinatesReference(mrpt::poses::CPose3D(turn));
+}
+}  // namespace
+
+MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFileBase& ini,
+                     const io::ProgressCallback& progress) {
     const auto start = std::chrono::steady_clock::now();
+    const double cpuStart = processCpuSeconds();
+    MappingResult result;
+    result.engine = ini.read_string("Slam", "engine", "graph");
     OccupancyGridOptions gridOptions;
     gridOptions.loadFromConfigFile(ini, "OccupancyGrid");
-    IcpSlam slam(ini);
 
-    io::LaserLogReader reader(logPath);
-    io::ProgressDisplay progress("mapping " + std::filesystem::path(logPath).filename().string(),
-                                 "scans");
-    MappingResult result;
-    std::vector<PosedScan> posedScans;
-    io::LaserLogRecord record;
-    while (reader.next(record)) {
-        const mrpt::poses::CPose2D pose = slam.process(record);
-        result.trajectory.push_back({record.fileStamp, pose.asTPose()});
-        posedScans.push_back({record.scan, pose});
-        progress.update(reader.fractionRead(), posedScans.size());
-    }
-    progress.finish();
-    if (posedScans.empty())
+    std::vector<PosedScan> scans;
+    if (result.engine == "graph")
+        runGraphEngine(logPath, ini, progress, scans, result.trajectory, result);
+    else if (result.engine == "icp")
+        runIcpEngine(logPath, ini, progress, scans, result.trajectory);
+    else
+        throw std::invalid_argument("[Slam] engine = " + result.engine +
+                                    ": unknown engine (graph or icp)");
+    if (scans.empty())
         throw io::InputError(logPath, "the log contains no laser scans");
+    const bool anyReading = std::any_of(scans.begin(), scans.end(), [](const PosedScan& s) {
+        for (std::size_t b = 0; b < s.scan->getScanSize(); ++b)
+            if (s.scan->getScanRangeValidity(b))
+                return true;
+        return false;
+    });
+    if (!anyReading)
+        throw io::InputError(logPath, "none of its " + std::to_string(scans.size()) +
+                                          " laser scans has a valid reading");
 
-    if (ini.read_bool("OccupancyGrid", "alignWithWalls", true)) {
-        const double minStrength =
-            ini.read_double("OccupancyGrid", "minWallDirectionStrength", 0.2);
-        const auto walls = estimateWallDirection(posedScans);
-        if (walls && walls->strength >= minStrength) {
-            result.wallAlignment = -walls->angle;
-            result.wallDirectionStrength = walls->strength;
-            const mrpt::poses::CPose2D turn(0, 0, result.wallAlignment);
-            for (std::size_t i = 0; i < posedScans.size(); ++i) {
-                posedScans[i].robotPose = turn + posedScans[i].robotPose;
-                result.trajectory[i].pose = posedScans[i].robotPose.asTPose();
-            }
-        } else if (walls) {
-            result.wallDirectionStrength = walls->strength;
-        }
-    }
-
-    result.scans = posedScans.size();
-    result.logDuration = mrpt::system::timeDifference(posedScans.front().scan->timestamp,
-                                                      posedScans.back().scan->timestamp);
-    result.grid = buildOccupancyGrid(posedScans, gridOptions);
+    alignWithWalls(ini, scans, result);
+    result.scans = scans.size();
+    result.logDuration =
+        mrpt::system::timeDifference(scans.front().scan->timestamp, scans.back().scan->timestamp);
+    result.grid = buildOccupancyGrid(scans, gridOptions);
     result.wallSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.cpuSeconds = processCpuSeconds() - cpuStart;
     return result;
 }
 

@@ -1,4 +1,5 @@
 #include <mrpt/config/CConfigFileBase.h>
+#include <toposlam/io/CpuTime.h>
 #include <toposlam/matching/GraphScanMatcher.h>
 
 #include <algorithm>
@@ -28,14 +29,7 @@ const char* toString(MatchStatus s) {
     return "?";
 }
 
-namespace {
-/// CPU time of the calling thread (s): stage timings that other processes do not inflate.
-double cpuSeconds() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
-}  // namespace
+using io::threadCpuSeconds;
 
 GraphScanMatcher::GraphScanMatcher(const GraphMatcherOptions& options) : options_(options) {}
 
@@ -370,7 +364,7 @@ const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
     r.secondsGraph = r.secondsRansac = r.secondsRefine = r.secondsFallback = 0;
     refined_.clear();
     weakDirectionSearched_.reset();
-    auto t0 = cpuSeconds();
+    auto t0 = threadCpuSeconds();
 
     current_.build(currentFeatures.segments, options_.minSegmentLength, options_.maxSegments);
     reference_.build(referenceFeatures.segments, options_.minSegmentLength, options_.maxSegments);
@@ -397,21 +391,21 @@ const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
         for (std::size_t k = 0; k < p.size(); ++k)
             scored_[k].probability = p[k];
         greedy_.solve(candidates_, p, rows.size(), cols.size());
-        const double t1 = cpuSeconds();
+        const double t1 = threadCpuSeconds();
         r.secondsGraph = t1 - t0;
 
         buildPool();
         const std::vector<Hypothesis>& hyps =
             ransac_.run(current_, reference_, pool_, options_.ransac, guess);
         r.hypotheses = ransac_.evaluated();
-        const double t2 = cpuSeconds();
+        const double t2 = threadCpuSeconds();
         r.secondsRansac = t2 - t1;
         for (std::size_t h = 0; h < hyps.size() && h < options_.refineTop; ++h)
             addRefined(referenceScan, currentScan, hyps[h], h);
         polishCandidates(referenceScan, currentScan);
         decide();
         searchWeakDirection(referenceScan, currentScan);
-        t0 = cpuSeconds();
+        t0 = threadCpuSeconds();
         r.secondsRefine = t0 - t2;
     }
 
@@ -436,7 +430,7 @@ const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
         polishCandidates(referenceScan, currentScan);
         decide();
         searchWeakDirection(referenceScan, currentScan);
-        r.secondsFallback = cpuSeconds() - t0;
+        r.secondsFallback = threadCpuSeconds() - t0;
     }
     // A guess that pruned the truth away (odometry drifted beyond the windows): once more
     // without it, keeping the result only if that one is reliable.

@@ -44,9 +44,6 @@ struct PointToLineIcp::Accumulator {
 };
 
 namespace {
-/// Largest minor/major eigenvalue ratio of a neighbourhood that is still read as a line:
-/// 1 cm noise on 5 points 20 cm apart gives ~0.01; a right-angle corner ~0.3.
-constexpr double kMaxFlatness = 0.05;
 /// Smallest association gate of scan-mode ICP's second stage (m).
 constexpr double kMinGate = 0.02;
 
@@ -116,46 +113,10 @@ IcpResult PointToLineIcp::refine(const PolarScan& current, const AttributedGraph
 
 void PointToLineIcp::prepareReference(const PolarScan& reference, double maxJoinDistance) {
     const std::size_t n = reference.size();
-    lines_.assign(n, LocalLine());
-    const double stepArc = std::abs(reference.bearingStep());
+    lines_.assign(n, std::nullopt);
     for (std::size_t b = 0; b < n; ++b) {
-        if (!reference.valid(b))
-            continue;
-        const mrpt::math::TPoint2D& p = reference.point(b);
-        const double join = maxJoinDistance + 3 * stepArc * reference.range(b);
-        // Neighbours within +-2 beams, walking outwards and stopping at a jump.
-        double sx = p.x, sy = p.y, sxx = p.x * p.x, sxy = p.x * p.y, syy = p.y * p.y;
-        int count = 1;
-        for (long dir : {-1L, 1L}) {
-            mrpt::math::TPoint2D last = p;
-            for (long k = 1; k <= 2; ++k) {
-                const long q = reference.neighbour(long(b), dir * k);
-                if (q < 0 || !reference.valid(std::size_t(q)))
-                    break;
-                const mrpt::math::TPoint2D& o = reference.point(std::size_t(q));
-                if (std::hypot(o.x - last.x, o.y - last.y) > join)
-                    break;
-                sx += o.x, sy += o.y, sxx += o.x * o.x, sxy += o.x * o.y, syy += o.y * o.y;
-                ++count;
-                last = o;
-            }
-        }
-        if (count < 3)
-            continue;
-        // Principal direction of the neighbourhood; the normal is the minor axis.
-        const double mx = sx / count, my = sy / count;
-        const double cxx = sxx / count - mx * mx, cxy = sxy / count - mx * my,
-                     cyy = syy / count - my * my;
-        const double theta = 0.5 * std::atan2(2 * cxy, cxx - cyy);  // major axis
-        // Not a line where the neighbourhood bends (a corner, a leg): minor / major spread.
-        const double mean = 0.5 * (cxx + cyy), radius = std::hypot(0.5 * (cxx - cyy), cxy);
-        if (mean - radius > kMaxFlatness * (mean + radius))
-            continue;
-        LocalLine& l = lines_[b];
-        l.nx = -std::sin(theta);
-        l.ny = std::cos(theta);
-        l.offset = l.nx * mx + l.ny * my;
-        l.valid = true;
+        if (reference.valid(b))
+            lines_[b] = fitLocalLine(reference, b, maxJoinDistance);
     }
 }
 
@@ -188,7 +149,7 @@ IcpResult PointToLineIcp::refineOnScan(const PolarScan& reference, const PolarSc
             double bestD2 = gate2;
             for (long o = -searchBeams; o <= searchBeams; ++o) {
                 const long k = reference.neighbour(b, o);
-                if (k < 0 || !lines_[std::size_t(k)].valid)
+                if (k < 0 || !lines_[std::size_t(k)])
                     continue;
                 const mrpt::math::TPoint2D& q = reference.point(std::size_t(k));
                 const double d2 = (qx - q.x) * (qx - q.x) + (qy - q.y) * (qy - q.y);
@@ -197,7 +158,7 @@ IcpResult PointToLineIcp::refineOnScan(const PolarScan& reference, const PolarSc
             }
             if (best < 0)
                 continue;
-            const LocalLine& l = lines_[std::size_t(best)];
+            const LocalLine& l = *lines_[std::size_t(best)];
             const double r = l.nx * qx + l.ny * qy - l.offset;
             if (r * r > gate2)
                 continue;
@@ -218,6 +179,55 @@ IcpResult PointToLineIcp::refineOnScan(const PolarScan& reference, const PolarSc
             const double sigma = std::sqrt(acc.weightedSq / std::max(1.0, acc.weightSum));
             const double gate = std::clamp(3 * sigma, kMinGate, options.maxDistance);
             gate2 = gate * gate;
+            stride = 1;
+        }
+    }
+    out.pose = mrpt::poses::CPose2D(x, y, phi);
+    finish(out, acc, options);
+    return out;
+}
+
+IcpResult PointToLineIcp::refineOnMap(const LineMap& map, const PolarScan& current,
+                                      const mrpt::poses::CPose2D& initial,
+                                      const IcpOptions& options) {
+    IcpResult out;
+    double x = initial.x(), y = initial.y(), phi = initial.phi();
+    std::size_t stride = std::max<std::size_t>(1, options.stride);
+    const double c2 = options.robustScale * options.robustScale;
+    double gate = std::min(options.maxDistance, map.options().radius);
+    bool tightened = false;
+    Accumulator acc;
+    for (int it = 0; it < options.maxIterations; ++it) {
+        acc = Accumulator();
+        const double c = std::cos(phi), s = std::sin(phi);
+        const double gate2 = gate * gate;
+        for (std::size_t i = 0; i < current.size(); i += stride) {
+            if (!current.valid(i))
+                continue;
+            const mrpt::math::TPoint2D& p = current.point(i);
+            const double rx = c * p.x - s * p.y, ry = s * p.x + c * p.y;
+            const double qx = rx + x, qy = ry + y;
+            const MapPoint* m = map.nearest(qx, qy);
+            if (!m)
+                continue;
+            const double dx = qx - m->x, dy = qy - m->y;
+            if (dx * dx + dy * dy > gate2)
+                continue;
+            const double r = m->nx * dx + m->ny * dy;
+            acc.add(m->nx, m->ny, r, rx, ry, c2);
+        }
+        out.iterations = it + 1;
+        if (acc.used < 3)
+            break;
+        if (acc.step(x, y, phi, options)) {
+            if (tightened) {
+                out.converged = true;
+                break;
+            }
+            // As in scan mode: once more with a gate of 3 sigma of the residuals.
+            tightened = true;
+            const double sigma = std::sqrt(acc.weightedSq / std::max(1.0, acc.weightSum));
+            gate = std::clamp(3 * sigma, kMinGate, gate);
             stride = 1;
         }
     }

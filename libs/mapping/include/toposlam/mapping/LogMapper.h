@@ -1,18 +1,29 @@
 #pragma once
-// SLAM over a whole laser log: read every scan (any format io::LaserLogReader accepts), track
-// it with the front end, and produce the trajectory and the occupancy grid.
+// SLAM over a whole laser log: read every scan (any format io::LaserLogReader accepts), run
+// the configured engine, and produce the trajectory, the occupancy grid and, for the graph
+// engine, the keyframe graph and keyframes.
+//   engine = graph  TopoSLAM's graph SLAM (CGraphSlamBuilder: our features, point-to-line
+//                   registration, graph matcher, loop closure, pose-graph optimisation)
+//   engine = icp    MRPT's CMetricMapBuilderICP, the engine of icp-slam (IcpSlam), kept as
+//                   the comparison row
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/maps/CSimpleMap.h>
+#include <toposlam/io/ProgressCallback.h>
 #include <toposlam/io/Trajectory.h>
+#include <toposlam/mapping/PoseGraph.h>
+#include <toposlam/mapping/SlamStatistics.h>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 
 namespace toposlam::mapping {
 
 struct MappingResult {
+    std::string engine;  ///< "graph" or "icp"
     /// Robot pose at every scan: stamp = the scan's fileStamp (as in the log, so relation
-    /// files match), pose in the map frame (m, rad): the odometry frame of the first scan,
+    /// files match), pose in the map frame (m, rad): the robot frame at the first scan,
     /// turned about its origin by wallAlignment.
     io::Trajectory2D trajectory;
     mrpt::maps::COccupancyGridMap2D grid;
@@ -22,15 +33,22 @@ struct MappingResult {
     double wallDirectionStrength = 0;  ///< see WallDirection::strength
     std::size_t scans = 0;
     double logDuration = 0;  ///< s, last minus first scan time
-    double wallSeconds = 0;  ///< s spent mapping (reading included)
+    double wallSeconds = 0;  ///< s spent mapping (reading and the grid included)
+    double cpuSeconds = 0;   ///< CPU time of the process spent on it (s)
+    // Graph engine only (map frame, like the trajectory):
+    std::optional<SlamStatistics> statistics;
+    std::optional<PoseGraph> graph;    ///< keyframe pose graph, optimised
+    mrpt::maps::CSimpleMap keyframes;  ///< each keyframe's scan and features at its pose
 };
 
-/// Runs SLAM on `logPath` with the settings in `ini`: sections [MappingApplication] and
-/// [ICP] (icp-slam's keys, see IcpSlam) and [OccupancyGrid] (OccupancyGridOptions, plus
-/// alignWithWalls (default 1) and minWallDirectionStrength (default 0.2): turn the map so its
-/// dominant walls run along the axes, when they are that dominant; see ManhattanAlignment.h).
-/// Shows progress on a terminal. Throws io::InputError for unreadable or malformed logs,
-/// and for a log without scans.
-MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFileBase& ini);
+/// Runs SLAM on `logPath` with the settings in `ini`: [Slam] engine (graph, the default, or
+/// icp); the graph engine's sections (CGraphSlamBuilder.h) or icp-slam's [MappingApplication]
+/// and [ICP] (IcpSlam.h); and [OccupancyGrid] (OccupancyGridOptions, plus alignWithWalls
+/// (default 1) and minWallDirectionStrength (default 0.2): turn the map so its dominant walls
+/// run along the axes, when they are that dominant; see ManhattanAlignment.h). Reports progress
+/// through `progress` (fraction of the file read, scans). Throws io::InputError for unreadable
+/// or malformed logs and for a log without scans, std::invalid_argument for a bad engine name.
+MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFileBase& ini,
+                     const io::ProgressCallback& progress = {});
 
 }  // namespace toposlam::mapping

@@ -26,10 +26,13 @@
 #include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/poses/CPose2D.h>
 #include <toposlam/matching/AttributedGraph.h>
+#include <toposlam/matching/LineMap.h>
+#include <toposlam/matching/LocalLine.h>
 #include <toposlam/matching/PolarScan.h>
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace toposlam::matching {
@@ -82,16 +85,21 @@ class PointToLineIcp {
                            const mrpt::poses::CPose2D& initial, const IcpOptions& options = {},
                            long searchBeams = 3);
 
+    /// Map mode: every valid current point against the local line of the map point nearest
+    /// to it (LineMap lookup, O(1)); `initial` and the result are the current SENSOR pose in
+    /// the map frame. Two stages as in scan mode (every stride-th point with the wide gate,
+    /// then all points with a gate of 3 sigma of the residuals); options.maxDistance must not
+    /// exceed the map's radius. IcpResult::pointsUsed counts the points of the last
+    /// iteration (the inliers of the tight gate).
+    IcpResult refineOnMap(const LineMap& map, const PolarScan& current,
+                          const mrpt::poses::CPose2D& initial, const IcpOptions& options = {});
+
   private:
     struct Accumulator;
     void finish(IcpResult& out, const Accumulator& acc, const IcpOptions& options) const;
 
     std::vector<SegmentMatch> sorted_;
-    struct LocalLine {
-        double nx = 0, ny = 0, offset = 0;
-        bool valid = false;
-    };
-    std::vector<LocalLine> lines_;
+    std::vector<std::optional<LocalLine>> lines_;  // per reference beam
 };
 
 }  // namespace toposlam::matching

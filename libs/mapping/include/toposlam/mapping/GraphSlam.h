@@ -1,0 +1,110 @@
+#pragma once
+// Graph SLAM on TopoSLAM's own features and matchers (the engine behind CGraphSlamBuilder):
+//   front end  every scan is registered against the local submap (ScanRegistration:
+//              point-to-line ICP from the odometry prediction, the graph matcher where that
+//              fails, odometry where both fail); keyframes (distance / angle / overlap rule)
+//              carry their features, extracted once, and build the submaps (Submap);
+//   loops      each keyframe is matched against older ones inside the gate of its propagated
+//              uncertainty, and periodically guess-free (LoopCloser);
+//   back end   the keyframe pose graph (PoseGraph), optimised by MRPT's sparse
+//              Levenberg-Marquardt when a loop disagrees with it, and at the end.
+// Every scan's pose is its keyframe's optimised pose composed with the scan's registered
+// offset from it. World frame: the robot frame at the first scan (or the initial pose given);
+// poses are ROBOT poses (m, rad).
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose2D.h>
+#include <toposlam/features/CObservationLaserFeatures.h>
+#include <toposlam/features/FeatureExtractor.h>
+#include <toposlam/mapping/GraphSlamOptions.h>
+#include <toposlam/mapping/Keyframe.h>
+#include <toposlam/mapping/LoopCloser.h>
+#include <toposlam/mapping/PoseGraph.h>
+#include <toposlam/mapping/ScanRegistration.h>
+#include <toposlam/mapping/SlamStatistics.h>
+#include <toposlam/mapping/Submap.h>
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace toposlam::mapping {
+
+class GraphSlam {
+  public:
+    /// `extractor`: the keyframes' feature extractor (the graph matcher works on its
+    /// segments).
+    GraphSlam(const GraphSlamOptions& options, const matching::GraphMatcherOptions& matcherOptions,
+              std::unique_ptr<features::FeatureExtractor> extractor,
+              const mrpt::poses::CPose2D& initialPose = {});
+
+    /// Processes one scan. `odometryIncrement`: the robot's motion since the previous scan by
+    /// odometry (in the previous robot frame), nullopt when unknown. `storedFeatures`: the
+    /// scan's features when the log already has them (used instead of extracting again).
+    void processScan(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
+                     const std::optional<mrpt::poses::CPose2D>& odometryIncrement,
+                     const features::CObservationLaserFeatures::Ptr& storedFeatures = nullptr);
+    /// Optimises the graph once more (loops still waiting for an optimisation). Call at the end.
+    void finish();
+
+    std::size_t scanCount() const { return scans_.size(); }
+    /// Pose of scan i (0-based, in processing order) at the current graph estimate.
+    mrpt::poses::CPose2D scanPose(std::size_t i) const;
+    /// Pose of the last scan.
+    mrpt::poses::CPose2D currentPose() const { return current_; }
+    /// Covariance of the last scan's pose relative to its keyframe (m^2, rad^2).
+    const mrpt::math::CMatrixDouble33& currentCovariance() const { return currentCovariance_; }
+
+    const std::vector<Keyframe>& keyframes() const { return keyframes_; }
+    const PoseGraph& graph() const { return graph_; }
+    const SlamStatistics& statistics() const { return stats_; }
+    const GraphSlamOptions& options() const { return options_; }
+
+  private:
+    struct ScanRecord {
+        std::size_t keyframe;               ///< the keyframe it hangs off
+        mrpt::poses::CPose2D fromKeyframe;  ///< its robot pose in that keyframe's frame
+    };
+    void processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
+                          const std::optional<mrpt::poses::CPose2D>& odometryIncrement,
+                          const features::CObservationLaserFeatures::Ptr& storedFeatures);
+    Prediction predict(const std::optional<mrpt::poses::CPose2D>& odometryIncrement);
+    bool isKeyframe(const Registration& r, const mrpt::poses::CPose2D& pose) const;
+    void addKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan, const Registration& r,
+                     const mrpt::poses::CPose2D& pose,
+                     features::CObservationLaserFeatures::Ptr features);
+    /// The edges that place a new keyframe (registration or fallback).
+    void addKeyframeEdges(const Registration& r, const Keyframe& kf);
+    void updateSubmaps(const Keyframe& kf);
+    std::size_t firstActiveKeyframe() const;
+    /// Optimises after loops were accepted, over the window or the whole graph (see
+    /// GraphSlamOptions::optimize*).
+    void scheduleOptimization(const LoopClosureOutcome& loops);
+    /// Optimises nodes from `firstFree` on; withdraws loops the result shows to be wrong.
+    void optimize(std::size_t firstFree);
+    void rebuildActiveSubmaps();
+
+    GraphSlamOptions options_;
+    std::unique_ptr<features::FeatureExtractor> extractor_;
+    ScanRegistration registration_;
+    LoopCloser loopCloser_;
+    PoseGraph graph_;
+    std::vector<Keyframe> keyframes_;
+    std::vector<Submap> submaps_;
+    std::size_t firstActiveSubmap_ = 0;
+    std::vector<ScanRecord> scans_;
+    SlamStatistics stats_;
+    mrpt::poses::CPose2D initialPose_;
+    mrpt::poses::CPose2D current_;  ///< last scan's robot pose, world frame
+    mrpt::math::CMatrixDouble33 currentCovariance_;
+    double travelled_ = 0;                    ///< m along the estimated trajectory
+    double turned_ = 0;                       ///< rad turned along it (absolute)
+    double odometrySinceKeyframe_ = 0;        ///< m by odometry since the last keyframe
+    double turnSinceKeyframe_ = 0;            ///< rad by odometry since the last keyframe
+    std::size_t loopsWaiting_ = 0;            ///< accepted loops not yet optimised
+    std::size_t lastGlobalOptimization_ = 0;  ///< newest keyframe at the last global one
+    matching::PolarScan polar_;               ///< the current scan (workspace)
+    features::ScanFeatures features_;         ///< the current scan's features (workspace)
+};
+
+}  // namespace toposlam::mapping

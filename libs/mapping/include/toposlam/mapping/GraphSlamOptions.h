@@ -1,0 +1,118 @@
+#pragma once
+// Settings of the graph SLAM (CGraphSlamBuilder), one .ini section ([GraphSlam] in
+// config_ini/toposlam-slam.ini, every key commented there). Units: m, and degrees in the file
+// (keys ending in _deg), radians in code.
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <cstddef>
+#include <string>
+
+namespace toposlam::mapping {
+
+struct GraphSlamOptions : public mrpt::config::CLoadableOptions {
+    // --- Front end: keyframes and local submaps ---
+    double keyframeDistance = 0.3;  ///< m travelled since the last keyframe
+    double keyframeAngle = 0.2618;  ///< rad turned since the last keyframe (15 deg)
+    /// A scan becomes a keyframe when less than this share of its points lies on the local
+    /// map (new ground comes into view), even before the distance/angle rule.
+    double keyframeMinOverlap = 0.6;
+    /// Keyframes per submap. Two submaps are active and overlap by half: a scan is matched
+    /// against the older (fuller) one, keyframes go into both.
+    std::size_t submapKeyframes = 20;
+    double mapResolution = 0.05;    ///< m, lookup cells of the submaps' line maps
+    double mapFuseDistance = 0.05;  ///< m, observations this close to a map point are fused
+    double mapMaxRange = 20;        ///< m, farther readings are not put into submaps
+
+    // --- Front end: registration ---
+    int icpMaxIterations = 20;
+    double icpMaxDistance = 0.4;   ///< m, association gate of the first stage
+    double icpRobustScale = 0.05;  ///< m, Cauchy kernel scale
+    std::size_t icpStride = 2;     ///< every stride-th point in the first stage
+    /// A registration is good when at least this share of the scan's valid points ends on
+    /// the local map...
+    double minInlierRatio = 0.35;
+    /// ... and the correction of the prediction stays within these bounds.
+    double maxCorrectionDistance = 0.5;  ///< m
+    double maxCorrectionAngle = 0.35;    ///< rad (20 deg)
+    /// Odometry increments larger than this between two scans are jumps, not motion: the
+    /// prediction is then the previous pose and the graph matcher registers the scan.
+    double odometryJumpDistance = 0.5;  ///< m
+    double odometryJumpAngle = 0.7854;  ///< rad (45 deg)
+    /// Odometry noise (standard deviations) for edges that only odometry supports: a floor,
+    /// plus a share of the distance travelled and of the angle turned.
+    double odometrySigmaXY = 0.02;           ///< m
+    double odometrySigmaXYPerMetre = 0.05;   ///< m per m
+    double odometrySigmaPhi = 0.0175;        ///< rad (1 deg)
+    double odometrySigmaPhiPerRadian = 0.1;  ///< rad per rad
+    /// Smallest standard deviations of a registration edge: ICP's own covariance is far too
+    /// confident (it ignores the map's errors).
+    double edgeMinSigmaXY = 0.01;     ///< m
+    double edgeMinSigmaPhi = 0.0035;  ///< rad (0.2 deg)
+
+    // --- Loop closure ---
+    bool loopClosure = true;
+    /// Older keyframes are candidates only beyond this much travel along the trajectory and
+    /// outside the active submaps.
+    double loopMinTravel = 5;  ///< m
+    /// Keyframes within this distance see enough of the same place to be matched.
+    double loopOverlapDistance = 3;     ///< m
+    double loopGateSigmas = 3;          ///< Mahalanobis gate of the relative pose uncertainty
+    std::size_t loopMaxCandidates = 3;  ///< candidates verified per keyframe (nearest first)
+    /// Loop search runs on every this-many-th keyframe (consecutive keyframes see the same
+    /// place; one loop every few is as good as one on each, at a fraction of the cost).
+    std::size_t loopSearchEvery = 2;
+    /// Drift model of the uncertainty propagated through the graph (PathUncertainty.h): an
+    /// edge of length l adds the variances (a l)^2 to position and (b l)^2 to heading, and at
+    /// least its own covariance.
+    double driftSigmaXYPerMetre = 0.03;     ///< a, m per metre
+    double driftSigmaPhiPerMetre = 0.0087;  ///< b, rad per metre (0.5 deg)
+    /// Guess-free search against the keyframes outside the gate every this many keyframes
+    /// (0 = off), matching the globalSearchCandidates most similar ones.
+    std::size_t globalSearchEvery = 10;
+    std::size_t globalSearchCandidates = 4;
+    /// Smallest standard deviations of a loop edge (the graph matcher's covariance is as
+    /// confident as ICP's).
+    double loopMinSigmaXY = 0.03;     ///< m
+    double loopMinSigmaPhi = 0.0087;  ///< rad (0.5 deg)
+    /// Candidates chosen for verification are at least this far apart, so that look-alike
+    /// places inside the gate are tried too and an ambiguity shows.
+    double loopCandidateSpacing = 1.0;  ///< m
+    /// Chi-square (3 degrees of freedom) bound on a loop's disagreement with the graph, before
+    /// (gate) and after optimisation (outlier removal). 16.27 = 99.9 %.
+    double loopChi2 = 16.27;
+    /// Guess-free loops must be confirmed by another guess-free or gated loop within this
+    /// many keyframes that agrees with them (pairwise consistency).
+    std::size_t loopConfirmWindow = 20;
+    double loopPairTolerance = 0.3;          ///< m, disagreement of two loops around their cycle
+    double loopPairAngleTolerance = 0.0873;  ///< rad (5 deg)
+
+    // --- Back end ---
+    /// Loop edges carry a Cauchy loss of this scale (in standard deviations), so one wrong
+    /// loop cannot drag the graph far before it is withdrawn; 0 = plain least squares.
+    double loopLossScale = 3;
+    int optimizeMaxIterations = 10;
+    /// A loop that disagrees with the graph by more than optimizeTrigger* is optimised at
+    /// once over the last optimizeWindow keyframes (older ones hold still: cheap, and right
+    /// while the old map is sound); one that disagrees by more than optimizeGlobal* (the
+    /// first closure of a long loop) over the whole graph. Loops that agree wait for
+    /// optimizeEveryLoops of them. The whole graph is optimised every optimizeGlobalEvery
+    /// keyframes that added loops, and at the end.
+    double optimizeTriggerDistance = 0.05;  ///< m
+    double optimizeTriggerAngle = 0.0175;   ///< rad (1 deg)
+    double optimizeGlobalDistance = 0.3;    ///< m
+    double optimizeGlobalAngle = 0.0524;    ///< rad (3 deg)
+    std::size_t optimizeEveryLoops = 30;
+    std::size_t optimizeWindow = 200;       ///< keyframes
+    std::size_t optimizeGlobalEvery = 500;  ///< keyframes
+
+    /// Feature extractor of the keyframes (features::featureExtractorNames()); its options
+    /// come from its own section of the same file.
+    std::string extractor = "corners";
+
+    void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                            const std::string& section) override;
+    void saveToConfigFile(mrpt::config::CConfigFileBase& cfg,
+                          const std::string& section) const override;
+};
+
+}  // namespace toposlam::mapping

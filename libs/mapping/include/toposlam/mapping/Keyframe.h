@@ -1,0 +1,36 @@
+#pragma once
+// A keyframe of the graph SLAM: a scan kept for good, with what the back end and the loop
+// closer need of it, computed once when it is made.
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose2D.h>
+#include <toposlam/features/CObservationLaserFeatures.h>
+#include <toposlam/matching/PolarScan.h>
+
+#include <array>
+#include <cstddef>
+
+namespace toposlam::mapping {
+
+/// Rotation-tolerant summary of a scan for ranking guess-free loop candidates cheaply: the
+/// share of valid readings per range band (0.5 m bands up to 8 m, the rest in the last).
+using ScanSignature = std::array<float, 17>;
+
+struct Keyframe {
+    std::size_t id = 0;         ///< graph node id (= index in the keyframe list)
+    std::size_t scanIndex = 0;  ///< index of its scan among all scans processed
+    mrpt::obs::CObservation2DRangeScan::Ptr scan;
+    matching::PolarScan polar;  ///< the scan's readings, sensor frame
+    /// Its features (sensor frame), extracted once (or taken from the log when it has them).
+    features::CObservationLaserFeatures::Ptr features;
+    mrpt::poses::CPose2D sensorOnRobot;  ///< the laser's pose on the robot (2D part)
+    double travelled = 0;                ///< m along the estimated trajectory at this keyframe
+    double turned = 0;                   ///< rad turned (absolute) along it
+    ScanSignature signature{};
+};
+
+/// The signature of a scan (see ScanSignature).
+ScanSignature scanSignature(const matching::PolarScan& scan);
+/// L1 distance of two signatures, in [0, 2].
+double signatureDistance(const ScanSignature& a, const ScanSignature& b);
+
+}  // namespace toposlam::mapping

@@ -1,0 +1,84 @@
+#pragma once
+// Loop closure for each new keyframe: which older keyframes may show the same place, whether
+// they do, and whether the graph can believe it.
+//  - Gated candidates: older keyframes (beyond loopMinTravel of travel, outside the active
+//    submaps) whose estimated position is within loopOverlapDistance + loopGateSigmas sigma
+//    of the current one, sigma from the relative uncertainty propagated through the graph
+//    (PathUncertainty). The nearest are verified, at least loopCandidateSpacing apart.
+//  - Guess-free search every globalSearchEvery keyframes, against the keyframes outside the
+//    gate whose scan signature is most similar (the graph matcher needs no guess: that is
+//    what finds a loop after drift larger than any gate).
+//  - Verification: the graph matcher (reliable status, its ambiguity margin), guided by the
+//    graph's relative pose for gated candidates, guess-free for the others.
+//  - Consistency: a gated match must agree with the graph within the chi-square bound of
+//    their combined covariance; when two reliable matches inside the gate put the robot in
+//    clearly different places (identical rooms), all of them are rejected; a guess-free match
+//    is accepted only once another loop within loopConfirmWindow keyframes agrees with it
+//    around their common cycle (pairwise consistency). After optimisation the builder
+//    withdraws loops whose residual still exceeds the bound (withdrawOutliers).
+#include <toposlam/mapping/GraphSlamOptions.h>
+#include <toposlam/mapping/Keyframe.h>
+#include <toposlam/mapping/PathUncertainty.h>
+#include <toposlam/mapping/PoseGraph.h>
+#include <toposlam/mapping/SlamStatistics.h>
+#include <toposlam/matching/GraphScanMatcher.h>
+
+#include <cstddef>
+#include <deque>
+#include <optional>
+#include <vector>
+
+namespace toposlam::mapping {
+
+struct LoopClosureOutcome {
+    std::size_t accepted = 0;
+    /// Largest disagreement of an accepted loop with the graph before optimising (m, rad).
+    double maxDistanceError = 0, maxAngleError = 0;
+};
+
+class LoopCloser {
+  public:
+    LoopCloser(const GraphSlamOptions& options,
+               const matching::GraphMatcherOptions& matcherOptions);
+
+    /// Looks for loops of keyframe `current` against keyframes older than `firstActive` (the
+    /// first keyframe of the active submaps) and adds the accepted ones to `graph`.
+    LoopClosureOutcome closeLoops(std::size_t current, std::size_t firstActive,
+                                  const std::vector<Keyframe>& keyframes, PoseGraph& graph,
+                                  SlamStatistics& stats);
+
+    /// After optimisation: withdraws the loop edge with the largest chi-square above the
+    /// bound; true when one was withdrawn (optimise again).
+    bool withdrawWorstOutlier(PoseGraph& graph, SlamStatistics& stats) const;
+
+  private:
+    struct Measurement {
+        std::size_t older = 0, current = 0;
+        mrpt::poses::CPose2D pose;  ///< current robot in the older robot frame
+        mrpt::math::CMatrixDouble33 covariance;
+    };
+    std::vector<std::size_t> gatedCandidates(std::size_t current, std::size_t firstActive,
+                                             const std::vector<Keyframe>& keyframes,
+                                             const PoseGraph& graph);
+    std::vector<std::size_t> globalCandidates(std::size_t current, std::size_t firstActive,
+                                              const std::vector<Keyframe>& keyframes,
+                                              const std::vector<std::size_t>& exclude) const;
+    std::optional<Measurement> verify(const Keyframe& older, const Keyframe& current,
+                                      const PoseGraph& graph, bool guided);
+    /// Gated matches that agree with the graph (none when they contradict each other).
+    std::vector<Measurement> consistentGated(const std::vector<Measurement>& matches,
+                                             const PoseGraph& graph, SlamStatistics& stats) const;
+    /// True when the two loops agree around the cycle they close with the graph.
+    bool pairConsistent(const Measurement& a, const Measurement& b, const PoseGraph& graph) const;
+    void accept(const Measurement& m, PoseGraph& graph, LoopClosureOutcome& outcome,
+                SlamStatistics& stats);
+
+    const GraphSlamOptions& options_;
+    PathUncertainty uncertainty_;
+    matching::GraphScanMatcher guided_, free_;
+    const std::vector<PathVariance>* variances_ = nullptr;  // of the current query
+    std::deque<Measurement> pending_;  // guess-free matches awaiting confirmation
+    std::deque<Measurement> recent_;   // accepted loops, for confirming guess-free ones
+};
+
+}  // namespace toposlam::mapping

@@ -1,0 +1,40 @@
+#pragma once
+// What toposlam-slam writes of a SLAM run, and its summary.
+//   trajectory.txt       every scan's robot pose, 'timestamp x y yaw' (stamps as in the log)
+//   map.gridmap.gz       the occupancy grid (MRPT serialization)
+//   map.png + map.yaml   the grid as an image and its ROS map_server description
+//   keyframes.graph      the keyframe pose graph, MRPT's .graph text format (graph engine)
+//   keyframes.simplemap  the keyframes: pose + sensory frame with the scan and its
+//                        CObservationLaserFeatures, gzip (graph engine; observations2map and
+//                        RawLogViewer read it with TopoSLAM's plugin loaded)
+//   summary.txt          the summary below
+//   summary.json         the same as JSON (keys: see share/doc/apps.md, toposlam-slam)
+// Every file is written atomically (temporary file, then rename).
+#include <toposlam/mapping/LogMapper.h>
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace toposlam::mapping {
+
+/// The run in a few lines: scans, keyframes, how scans were registered, loops, optimisation
+/// and wall time, real-time factor; a loud WARNING line when most scans could not be
+/// registered (the trajectory is then mostly odometry and must not be taken for a map).
+std::string formatSummary(const MappingResult& result);
+
+/// The summary as JSON: engine, scans, log_duration_s, wall_s, cpu_s, real_time_factor,
+/// wall_alignment_deg; graph engine also keyframes, submaps, registration {icp,
+/// graph_matcher, failed, odometry_jumps, registered_share}, loops {candidates, accepted,
+/// guess_free_accepted, unmatched, rejected, withdrawn}, cpu_by_stage_s {front_end,
+/// loop_search, optimization}, optimizations, mostly_unregistered.
+nlohmann::json summaryJson(const MappingResult& result);
+
+/// True when fewer than half of the scans were registered (graph engine).
+bool mostlyUnregistered(const MappingResult& result);
+
+/// Writes the files above into `directory` (created); returns their paths in that order.
+std::vector<std::string> saveMappingOutputs(const MappingResult& result,
+                                            const std::string& directory);
+
+}  // namespace toposlam::mapping

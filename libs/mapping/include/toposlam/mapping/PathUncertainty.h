@@ -1,0 +1,40 @@
+#pragma once
+// How uncertain the relative pose of the current keyframe and each earlier one is, propagated
+// through the pose graph: the least uncertain chain of edges between the two. Along a chain
+// the variances of position and heading add up (a random walk); the heading variance v_phi
+// at the source turns into a position variance v_phi d^2 at distance d. Each edge contributes its
+// own covariance, but at least the drift model's (a l)^2 and (b l)^2 for its length l: scan
+// matching's covariance ignores the map's own errors, which are what makes a trajectory drift.
+// After a loop closure the chain through the loop edge is short, so the gate shrinks there.
+// Dijkstra over all keyframes with a scalar cost (position variance + heading variance times a
+// lever arm of kLeverArm); linear in the graph's size per query, no allocation after the first.
+#include <toposlam/mapping/PoseGraph.h>
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace toposlam::mapping {
+
+struct PathVariance {
+    double position = 0;  ///< m^2, isotropic
+    double heading = 0;   ///< rad^2
+    bool reached = false;
+    /// Position variance (m^2) of a point at distance d (m) from the source.
+    double at(double d) const { return position + heading * d * d; }
+};
+
+class PathUncertainty {
+  public:
+    PathUncertainty(double driftSigmaXYPerMetre, double driftSigmaPhiPerMetre);
+    /// Variances of every node's pose relative to `source`, through the active edges.
+    const std::vector<PathVariance>& from(const PoseGraph& graph, std::size_t source);
+
+  private:
+    double driftXY_, driftPhi_;
+    std::vector<PathVariance> variance_;
+    std::vector<double> cost_;
+    std::vector<std::pair<double, std::size_t>> heap_;
+};
+
+}  // namespace toposlam::mapping

@@ -1,0 +1,105 @@
+#pragma once
+// The front end's decision for one scan: where was the robot? In order:
+//  1. point-to-line ICP of the scan against the local submap's line map, from the odometry
+//     prediction (PointToLineIcp::refineOnMap); good when enough of the scan lands on the map
+//     and the correction of the prediction is plausible;
+//  2. otherwise (poor overlap, a correction too large to trust, or an odometry jump) the graph
+//     matcher, guess-free, against the last keyframe;
+//  3. if both fail, the odometry prediction, with the odometry model's covariance.
+// Poses are ROBOT poses (the laser's mounting offset is applied here), in the frame of the
+// reference keyframe the result names (m, rad).
+#include <mrpt/math/CMatrixFixed.h>
+#include <mrpt/poses/CPose2D.h>
+#include <toposlam/features/FeatureExtractor.h>
+#include <toposlam/mapping/GraphSlamOptions.h>
+#include <toposlam/mapping/Keyframe.h>
+#include <toposlam/mapping/Submap.h>
+#include <toposlam/matching/GraphScanMatcher.h>
+#include <toposlam/matching/PointToLineIcp.h>
+
+#include <cstddef>
+
+namespace toposlam::mapping {
+
+enum class RegistrationMethod { Icp, GraphMatcher, Odometry };
+
+struct Registration {
+    RegistrationMethod method = RegistrationMethod::Odometry;
+    std::size_t reference = 0;  ///< keyframe whose robot frame `pose` is in
+    mrpt::poses::CPose2D pose;  ///< robot pose in the reference keyframe's frame
+    /// Of pose (x, y, phi), m^2 and rad^2, made usable as a graph edge over the motion since
+    /// the last keyframe (see edgeCovariance).
+    mrpt::math::CMatrixDouble33 covariance;
+    /// The matcher's own covariance, before that (ICP and graph matcher).
+    mrpt::math::CMatrixDouble33 rawCovariance;
+    double overlap = 0;  ///< share of the scan's valid points on the map (ICP), else 0
+};
+
+/// Where the scan is expected from odometry, in the frames the registration works in.
+struct Prediction {
+    const Submap* submap = nullptr;  ///< matched against (nullptr: none yet)
+    mrpt::poses::CPose2D inSubmap;   ///< robot pose in the submap's frame
+    const Keyframe* lastKeyframe = nullptr;
+    mrpt::poses::CPose2D fromLastKeyframe;  ///< robot pose in the last keyframe's frame
+    double distanceFromLastKeyframe = 0;    ///< m travelled by odometry since then
+    double turnFromLastKeyframe = 0;        ///< rad turned by odometry since then
+    bool odometryJumped = false;
+};
+
+class ScanRegistration {
+  public:
+    ScanRegistration(const GraphSlamOptions& options,
+                     const matching::GraphMatcherOptions& matcherOptions);
+
+    /// Registers `scan` (its readings; the laser at `sensorOnRobot` on the robot).
+    /// `extractFeatures` is called only if the graph matcher is needed, to fill `features`.
+    template <typename ExtractFeatures>
+    Registration registerScan(const matching::PolarScan& scan,
+                              const mrpt::poses::CPose2D& sensorOnRobot,
+                              const Prediction& prediction, ExtractFeatures&& extractFeatures,
+                              features::ScanFeatures& features);
+
+    /// Covariance the odometry model gives a motion of `distance` m and `turn` rad.
+    mrpt::math::CMatrixDouble33 odometryCovariance(double distance, double turn) const;
+    /// ICP's covariance made usable as a graph edge: at least the edge floor, and along
+    /// directions the map did not determine at most the odometry model's.
+    mrpt::math::CMatrixDouble33 edgeCovariance(const mrpt::math::CMatrixDouble33& icp,
+                                               double distance, double turn) const;
+
+  private:
+    bool tryIcp(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
+                const Prediction& prediction, Registration& out);
+    bool tryGraphMatcher(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
+                         const Prediction& prediction, const features::ScanFeatures& features,
+                         Registration& out);
+
+    const GraphSlamOptions& options_;
+    matching::PointToLineIcp icp_;
+    matching::IcpOptions icpOptions_;
+    matching::GraphScanMatcher matcher_;
+};
+
+template <typename ExtractFeatures>
+Registration ScanRegistration::registerScan(const matching::PolarScan& scan,
+                                            const mrpt::poses::CPose2D& sensorOnRobot,
+                                            const Prediction& prediction,
+                                            ExtractFeatures&& extractFeatures,
+                                            features::ScanFeatures& features) {
+    Registration out;
+    if (!prediction.odometryJumped && tryIcp(scan, sensorOnRobot, prediction, out))
+        return out;
+    if (prediction.lastKeyframe) {
+        extractFeatures(features);
+        if (tryGraphMatcher(scan, sensorOnRobot, prediction, features, out))
+            return out;
+    }
+    out.method = RegistrationMethod::Odometry;
+    out.reference = prediction.lastKeyframe ? prediction.lastKeyframe->id : 0;
+    out.pose = prediction.fromLastKeyframe;
+    out.covariance =
+        odometryCovariance(prediction.distanceFromLastKeyframe, prediction.turnFromLastKeyframe);
+    out.rawCovariance = out.covariance;
+    return out;
+}
+
+}  // namespace toposlam::mapping

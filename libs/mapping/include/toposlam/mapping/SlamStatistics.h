@@ -1,0 +1,40 @@
+#pragma once
+// What a graph SLAM run did, for its summary: how scans were registered, how many keyframes
+// and loops, where the time went.
+#include <cstddef>
+
+namespace toposlam::mapping {
+
+struct SlamStatistics {
+    std::size_t scans = 0;
+    std::size_t keyframes = 0;
+    std::size_t submaps = 0;
+    // Registration of each scan (the first scan is the origin and counts in none of them).
+    std::size_t registeredByIcp = 0;           ///< point-to-line ICP against the local submap
+    std::size_t registeredByGraphMatcher = 0;  ///< ICP was poor; the graph matcher succeeded
+    std::size_t registrationFailed = 0;        ///< both failed: odometry prediction kept
+    std::size_t odometryJumps = 0;             ///< odometry increments rejected as jumps
+    // Loop closure
+    std::size_t loopCandidates = 0;     ///< candidate pairs verified by the graph matcher
+    std::size_t loopsUnmatched = 0;     ///< the matcher found no reliable match
+    std::size_t loopsGateRejected = 0;  ///< reliable match, but disagrees with the graph
+    std::size_t loopsAccepted = 0;      ///< added to the graph
+    std::size_t loopsWithdrawn = 0;     ///< accepted, then removed as outliers after optimising
+    std::size_t globalSearches = 0;     ///< guess-free searches run
+    std::size_t globalHypotheses = 0;   ///< reliable guess-free matches awaiting confirmation
+    std::size_t globalConfirmed = 0;    ///< of those, confirmed and accepted
+    // Back end
+    std::size_t optimizations = 0;
+    // CPU time (s) of the calling thread, by stage
+    double frontEndSeconds = 0;      ///< registration, keyframes, submaps
+    double loopSeconds = 0;          ///< loop-closure search and verification
+    double optimizationSeconds = 0;  ///< the optimiser
+
+    std::size_t registered() const { return registeredByIcp + registeredByGraphMatcher; }
+    /// Share of the scans after the first that were registered (ICP or graph matcher).
+    double registeredShare() const {
+        return scans > 1 ? double(registered()) / double(scans - 1) : 1.0;
+    }
+};
+
+}  // namespace toposlam::mapping

@@ -1,0 +1,280 @@
+#include <mrpt/math/wrap2pi.h>
+#include <toposlam/io/CpuTime.h>
+#include <toposlam/mapping/GraphSlam.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace toposlam::mapping {
+
+using mrpt::poses::CPose2D;
+
+namespace {
+EdgeKind edgeKind(RegistrationMethod m) {
+    switch (m) {
+        case RegistrationMethod::Icp:
+            return EdgeKind::Registration;
+        case RegistrationMethod::GraphMatcher:
+            return EdgeKind::GraphMatch;
+        case RegistrationMethod::Odometry:
+            break;
+    }
+    return EdgeKind::Odometry;
+}
+
+matching::LineMapOptions lineMapOptions(const GraphSlamOptions& o) {
+    matching::LineMapOptions m;
+    m.resolution = o.mapResolution;
+    m.radius = o.icpMaxDistance;
+    m.fuseDistance = o.mapFuseDistance;
+    m.maxRange = o.mapMaxRange;
+    return m;
+}
+}  // namespace
+
+GraphSlam::GraphSlam(const GraphSlamOptions& options,
+                     const matching::GraphMatcherOptions& matcherOptions,
+                     std::unique_ptr<features::FeatureExtractor> extractor,
+                     const CPose2D& initialPose)
+    : options_(options),
+      extractor_(std::move(extractor)),
+      registration_(options_, matcherOptions),
+      loopCloser_(options_, matcherOptions),
+      graph_(options.loopLossScale),
+      initialPose_(initialPose),
+      current_(initialPose) {
+    currentCovariance_.setZero();
+}
+
+CPose2D GraphSlam::scanPose(std::size_t i) const {
+    return graph_.pose(scans_[i].keyframe) + scans_[i].fromKeyframe;
+}
+
+Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
+    Prediction p;
+    CPose2D increment = odometryIncrement.value_or(CPose2D());
+    const double turn = std::abs(mrpt::math::wrapToPi(increment.phi()));
+    if (increment.norm() > options_.odometryJumpDistance || turn > options_.odometryJumpAngle) {
+        // Wheels do not teleport: predict no motion, and let the graph matcher find it.
+        p.odometryJumped = true;
+        ++stats_.odometryJumps;
+        odometrySinceKeyframe_ += increment.norm();
+        turnSinceKeyframe_ += turn;
+        increment = CPose2D();
+    } else {
+        odometrySinceKeyframe_ += increment.norm();
+        turnSinceKeyframe_ += turn;
+    }
+    const CPose2D predicted = current_ + increment;
+    const Keyframe& last = keyframes_.back();
+    p.lastKeyframe = &last;
+    p.fromLastKeyframe = predicted - graph_.pose(last.id);
+    p.distanceFromLastKeyframe = odometrySinceKeyframe_;
+    p.turnFromLastKeyframe = turnSinceKeyframe_;
+    if (firstActiveSubmap_ < submaps_.size()) {
+        p.submap = &submaps_[firstActiveSubmap_];
+        p.inSubmap = predicted - graph_.pose(p.submap->anchor());
+    }
+    return p;
+}
+
+bool GraphSlam::isKeyframe(const Registration& r, const CPose2D& pose) const {
+    const CPose2D sinceKeyframe = pose - graph_.pose(keyframes_.back().id);
+    return sinceKeyframe.norm() >= options_.keyframeDistance ||
+           std::abs(mrpt::math::wrapToPi(sinceKeyframe.phi())) >= options_.keyframeAngle ||
+           (r.method == RegistrationMethod::Icp && r.overlap < options_.keyframeMinOverlap);
+}
+
+void GraphSlam::processScan(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
+                            const std::optional<CPose2D>& odometryIncrement,
+                            const features::CObservationLaserFeatures::Ptr& storedFeatures) {
+    ++stats_.scans;
+    const double start = io::threadCpuSeconds();
+    const double backEndBefore = stats_.loopSeconds + stats_.optimizationSeconds;
+    processScanTimed(scan, odometryIncrement, storedFeatures);
+    stats_.frontEndSeconds += io::threadCpuSeconds() - start -
+                              (stats_.loopSeconds + stats_.optimizationSeconds - backEndBefore);
+}
+
+void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
+                                 const std::optional<CPose2D>& odometryIncrement,
+                                 const features::CObservationLaserFeatures::Ptr& storedFeatures) {
+    polar_.assign(*scan);
+    bool haveFeatures = false;
+    const auto extract = [&](features::ScanFeatures& f) {
+        if (haveFeatures)
+            return;
+        if (storedFeatures)
+            f = storedFeatures->features;
+        else
+            extractor_->extract(*scan, f);
+        haveFeatures = true;
+    };
+    if (keyframes_.empty()) {  // the first scan is the origin
+        extract(features_);
+        addKeyframe(scan, Registration(), initialPose_, storedFeatures);
+        return;
+    }
+    const Prediction prediction = predict(odometryIncrement);
+    const CPose2D sensorOnRobot(scan->sensorPose);
+    const Registration r =
+        registration_.registerScan(polar_, sensorOnRobot, prediction, extract, features_);
+    switch (r.method) {
+        case RegistrationMethod::Icp:
+            ++stats_.registeredByIcp;
+            break;
+        case RegistrationMethod::GraphMatcher:
+            ++stats_.registeredByGraphMatcher;
+            break;
+        case RegistrationMethod::Odometry:
+            ++stats_.registrationFailed;
+            break;
+    }
+    const CPose2D pose = graph_.pose(r.reference) + r.pose;
+    const CPose2D step = pose - current_;
+    travelled_ += step.norm();
+    turned_ += std::abs(mrpt::math::wrapToPi(step.phi()));
+    current_ = pose;
+    currentCovariance_ = r.covariance;
+    if (isKeyframe(r, pose)) {
+        extract(features_);
+        addKeyframe(scan, r, pose, storedFeatures);
+    } else {
+        const std::size_t kf = keyframes_.back().id;
+        scans_.push_back({kf, pose - graph_.pose(kf)});
+    }
+}
+
+void GraphSlam::addKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
+                            const Registration& r, const CPose2D& pose,
+                            features::CObservationLaserFeatures::Ptr stored) {
+    Keyframe kf;
+    kf.id = graph_.addNode(pose);
+    kf.scanIndex = scans_.size();
+    kf.scan = scan;
+    kf.polar = polar_;
+    kf.sensorOnRobot = CPose2D(scan->sensorPose);
+    kf.travelled = travelled_;
+    kf.turned = turned_;
+    kf.signature = scanSignature(polar_);
+    kf.features = stored;
+    if (!kf.features) {
+        kf.features = features::CObservationLaserFeatures::Create();
+        kf.features->features = features_;
+        kf.features->sensorPose = scan->sensorPose;
+        kf.features->extractor = extractor_->name();
+        kf.features->scanLabel = scan->sensorLabel;
+        kf.features->sensorLabel = scan->sensorLabel + "_FEATURES";
+        kf.features->timestamp = scan->timestamp;
+    }
+    keyframes_.push_back(std::move(kf));
+    if (keyframes_.size() > 1)
+        addKeyframeEdges(r, keyframes_.back());
+    scans_.push_back({keyframes_.back().id, CPose2D()});
+    odometrySinceKeyframe_ = turnSinceKeyframe_ = 0;
+    ++stats_.keyframes;
+    updateSubmaps(keyframes_.back());
+
+    const std::size_t every = std::max<std::size_t>(1, options_.loopSearchEvery);
+    if (options_.loopClosure && keyframes_.size() > 1 && keyframes_.back().id % every == 0) {
+        const LoopClosureOutcome loops = loopCloser_.closeLoops(
+            keyframes_.back().id, firstActiveKeyframe(), keyframes_, graph_, stats_);
+        loopsWaiting_ += loops.accepted;
+        scheduleOptimization(loops);
+    }
+}
+
+void GraphSlam::scheduleOptimization(const LoopClosureOutcome& loops) {
+    const std::size_t newest = keyframes_.back().id;
+    if (loops.maxDistanceError > options_.optimizeGlobalDistance ||
+        loops.maxAngleError > options_.optimizeGlobalAngle ||
+        (loopsWaiting_ > 0 && newest >= lastGlobalOptimization_ + options_.optimizeGlobalEvery)) {
+        optimize(1);
+    } else if (loops.maxDistanceError > options_.optimizeTriggerDistance ||
+               loops.maxAngleError > options_.optimizeTriggerAngle ||
+               loopsWaiting_ >= options_.optimizeEveryLoops) {
+        optimize(newest > options_.optimizeWindow ? newest - options_.optimizeWindow : 1);
+    }
+}
+
+void GraphSlam::addKeyframeEdges(const Registration& r, const Keyframe& kf) {
+    const Keyframe& previous = keyframes_[kf.id - 1];
+    if (r.method != RegistrationMethod::Icp) {  // relative to the previous keyframe
+        graph_.addEdge(r.reference, kf.id, r.pose, r.covariance, edgeKind(r.method));
+        return;
+    }
+    // To the submap's anchor: what ties the keyframes of a submap rigidly together. Where the
+    // map did not determine the pose (a corridor), odometry since the anchor is all there is.
+    const Keyframe& anchor = keyframes_[r.reference];
+    graph_.addEdge(anchor.id, kf.id, r.pose,
+                   registration_.edgeCovariance(r.rawCovariance, kf.travelled - anchor.travelled,
+                                                kf.turned - anchor.turned),
+                   EdgeKind::Registration);
+    // To the previous keyframe: in those directions, odometry over one keyframe's motion is
+    // far better than since the anchor, and keeps neighbours together when loops pull.
+    if (previous.id != anchor.id)
+        graph_.addEdge(previous.id, kf.id, graph_.pose(kf.id) - graph_.pose(previous.id),
+                       r.covariance, EdgeKind::Registration);
+}
+
+void GraphSlam::updateSubmaps(const Keyframe& kf) {
+    const std::size_t perSubmap = std::max<std::size_t>(2, options_.submapKeyframes);
+    if (submaps_.empty()) {
+        submaps_.emplace_back(kf.id, lineMapOptions(options_));
+        submaps_.back().insert(kf, CPose2D());
+        stats_.submaps = 1;
+        return;
+    }
+    for (std::size_t s = firstActiveSubmap_; s < submaps_.size(); ++s)
+        submaps_[s].insert(kf, graph_.pose(kf.id) - graph_.pose(submaps_[s].anchor()));
+    if (submaps_[firstActiveSubmap_].keyframes().size() >= perSubmap &&
+        firstActiveSubmap_ + 1 < submaps_.size()) {
+        submaps_[firstActiveSubmap_].finish();
+        ++firstActiveSubmap_;
+    }
+    if (submaps_.back().keyframes().size() >= perSubmap / 2) {
+        submaps_.emplace_back(kf.id, lineMapOptions(options_));
+        submaps_.back().insert(kf, CPose2D());
+        stats_.submaps = submaps_.size();
+    }
+}
+
+std::size_t GraphSlam::firstActiveKeyframe() const {
+    return submaps_[firstActiveSubmap_].anchor();
+}
+
+void GraphSlam::optimize(std::size_t firstFree) {
+    if (firstFree <= 1)
+        lastGlobalOptimization_ = keyframes_.back().id;
+    for (int round = 0;; ++round) {
+        const OptimizationResult r = graph_.optimize(options_.optimizeMaxIterations, firstFree);
+        ++stats_.optimizations;
+        stats_.optimizationSeconds += r.seconds;
+        // A loop the optimised graph still cannot explain was wrong: withdraw it, once
+        // at a time (the worst first: one false loop strains the true ones around it too).
+        if (round >= 2 || !loopCloser_.withdrawWorstOutlier(graph_, stats_))
+            break;
+    }
+    loopsWaiting_ = 0;
+    rebuildActiveSubmaps();
+    current_ = scanPose(scans_.size() - 1);
+}
+
+void GraphSlam::rebuildActiveSubmaps() {
+    for (std::size_t s = firstActiveSubmap_; s < submaps_.size(); ++s) {
+        Submap& submap = submaps_[s];
+        const std::vector<std::size_t> members = submap.keyframes();
+        const CPose2D anchor = graph_.pose(submap.anchor());
+        submap.clear();
+        for (std::size_t id : members)
+            submap.insert(keyframes_[id], graph_.pose(id) - anchor);
+    }
+}
+
+void GraphSlam::finish() {
+    if (stats_.loopsAccepted > 0)
+        optimize(1);
+}
+
+}  // namespace toposlam::mapping

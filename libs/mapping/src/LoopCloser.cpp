@@ -1,0 +1,255 @@
+#include <mrpt/math/wrap2pi.h>
+#include <toposlam/io/CpuTime.h>
+#include <toposlam/mapping/LoopCloser.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace toposlam::mapping {
+
+using mrpt::math::CMatrixDouble33;
+using mrpt::poses::CPose2D;
+
+namespace {
+matching::GraphMatcherOptions withoutRetry(matching::GraphMatcherOptions o) {
+    o.guessFreeRetry = false;  // a gated candidate that fails guided is not this loop
+    return o;
+}
+
+/// Whether the two keyframes' lasers can see the same things: with less than a full circle
+/// of view, sensors facing apart by more than half the aperture (plus margin) share little.
+bool viewsOverlap(const Keyframe& a, const Keyframe& b, const PoseGraph& graph) {
+    const double aperture = std::min(std::abs(a.polar.bearingStep()) * double(a.polar.size()),
+                                     std::abs(b.polar.bearingStep()) * double(b.polar.size()));
+    if (aperture >= 1.75 * M_PI)
+        return true;
+    const double ha = (graph.pose(a.id) + a.sensorOnRobot).phi();
+    const double hb = (graph.pose(b.id) + b.sensorOnRobot).phi();
+    return std::abs(mrpt::math::wrapToPi(ha - hb)) <= 0.5 * aperture + M_PI / 8;
+}
+
+/// Error of pose b against pose a: a^-1 (+) b as (distance, |angle|).
+std::pair<double, double> disagreement(const CPose2D& a, const CPose2D& b) {
+    const CPose2D e = b - a;
+    return {e.norm(), std::abs(mrpt::math::wrapToPi(e.phi()))};
+}
+}  // namespace
+
+LoopCloser::LoopCloser(const GraphSlamOptions& options,
+                       const matching::GraphMatcherOptions& matcherOptions)
+    : options_(options),
+      uncertainty_(options.driftSigmaXYPerMetre, options.driftSigmaPhiPerMetre),
+      guided_(withoutRetry(matcherOptions)),
+      free_(matcherOptions) {}
+
+std::vector<std::size_t> LoopCloser::gatedCandidates(std::size_t current, std::size_t firstActive,
+                                                     const std::vector<Keyframe>& keyframes,
+                                                     const PoseGraph& graph) {
+    variances_ = &uncertainty_.from(graph, current);
+    const CPose2D& here = graph.pose(current);
+    std::vector<std::pair<double, std::size_t>> inGate;
+    for (std::size_t j = 0; j < firstActive && j < current; ++j) {
+        if (keyframes[current].travelled - keyframes[j].travelled < options_.loopMinTravel)
+            continue;
+        const PathVariance& v = (*variances_)[j];
+        if (!v.reached || !viewsOverlap(keyframes[j], keyframes[current], graph))
+            continue;
+        const double d = std::hypot(graph.pose(j).x() - here.x(), graph.pose(j).y() - here.y());
+        if (d <= options_.loopOverlapDistance + options_.loopGateSigmas * std::sqrt(v.at(d)))
+            inGate.push_back({d, j});
+    }
+    std::sort(inGate.begin(), inGate.end());
+    // Nearest first, spread out so that look-alike places in the gate get tried as well.
+    std::vector<std::size_t> chosen;
+    for (const auto& [d, j] : inGate) {
+        if (chosen.size() >= options_.loopMaxCandidates)
+            break;
+        const bool spaced = std::all_of(chosen.begin(), chosen.end(), [&](std::size_t c) {
+            return std::hypot(graph.pose(c).x() - graph.pose(j).x(),
+                              graph.pose(c).y() - graph.pose(j).y()) >=
+                   options_.loopCandidateSpacing;
+        });
+        if (spaced)
+            chosen.push_back(j);
+    }
+    return chosen;
+}
+
+std::vector<std::size_t> LoopCloser::globalCandidates(
+    std::size_t current, std::size_t firstActive, const std::vector<Keyframe>& keyframes,
+    const std::vector<std::size_t>& exclude) const {
+    std::vector<std::pair<double, std::size_t>> ranked;
+    for (std::size_t j = 0; j < firstActive && j < current; ++j) {
+        if (keyframes[current].travelled - keyframes[j].travelled < options_.loopMinTravel)
+            continue;
+        if (std::find(exclude.begin(), exclude.end(), j) != exclude.end())
+            continue;
+        ranked.push_back(
+            {signatureDistance(keyframes[current].signature, keyframes[j].signature), j});
+    }
+    const std::size_t k = std::min(options_.globalSearchCandidates, ranked.size());
+    std::partial_sort(ranked.begin(), ranked.begin() + long(k), ranked.end());
+    std::vector<std::size_t> out;
+    for (std::size_t i = 0; i < k; ++i)
+        out.push_back(ranked[i].second);
+    return out;
+}
+
+std::optional<LoopCloser::Measurement> LoopCloser::verify(const Keyframe& older,
+                                                          const Keyframe& current,
+                                                          const PoseGraph& graph, bool guided) {
+    std::optional<CPose2D> guess;
+    if (guided) {  // current sensor in the older sensor's frame, as the graph has it
+        guess = (graph.pose(current.id) + current.sensorOnRobot) -
+                (graph.pose(older.id) + older.sensorOnRobot);
+    }
+    matching::GraphScanMatcher& matcher = guided ? guided_ : free_;
+    const matching::MatchResult& m = matcher.match(
+        older.polar, older.features->features, current.polar, current.features->features, guess);
+    if (!m.reliable())
+        return std::nullopt;
+    Measurement out;
+    out.older = older.id;
+    out.current = current.id;
+    out.pose = older.sensorOnRobot + m.pose + (-current.sensorOnRobot);
+    out.covariance = m.covariance;
+    const double sxy = options_.loopMinSigmaXY * options_.loopMinSigmaXY;
+    const double sphi = options_.loopMinSigmaPhi * options_.loopMinSigmaPhi;
+    out.covariance(0, 0) += sxy, out.covariance(1, 1) += sxy, out.covariance(2, 2) += sphi;
+    return out;
+}
+
+std::vector<LoopCloser::Measurement> LoopCloser::consistentGated(
+    const std::vector<Measurement>& matches, const PoseGraph& graph, SlamStatistics& stats) const {
+    // Where each match puts the current robot in the world: two clearly different places mean
+    // the scans fit look-alike places, and nothing here says which is right.
+    for (std::size_t a = 0; a < matches.size(); ++a)
+        for (std::size_t b = a + 1; b < matches.size(); ++b) {
+            if (!pairConsistent(matches[a], matches[b], graph)) {
+                stats.loopsGateRejected += matches.size();
+                return {};
+            }
+        }
+    std::vector<Measurement> out;
+    for (const Measurement& m : matches) {
+        const PathVariance& v = (*variances_)[m.older];
+        CMatrixDouble33 combined = m.covariance;
+        const double d = m.pose.norm();
+        combined(0, 0) += v.at(d), combined(1, 1) += v.at(d), combined(2, 2) += v.heading;
+        if (getenv("TOPOSLAM_DEBUG_LOOPS"))
+            fprintf(stderr,
+                    "gated %zu->%zu z=(%.2f %.2f %.1f) graph=(%.2f %.2f %.1f) var.pos=%.4f "
+                    "var.head=%.5f d=%.2f chi2=%.2f\n",
+                    m.older, m.current, m.pose.x(), m.pose.y(), m.pose.phi() * 57.3,
+                    (graph.pose(m.current) - graph.pose(m.older)).x(),
+                    (graph.pose(m.current) - graph.pose(m.older)).y(),
+                    (graph.pose(m.current) - graph.pose(m.older)).phi() * 57.3, v.position,
+                    v.heading, d, graph.chi2(m.older, m.current, m.pose, combined));
+        if (graph.chi2(m.older, m.current, m.pose, combined) <= options_.loopChi2)
+            out.push_back(m);
+        else
+            ++stats.loopsGateRejected;
+    }
+    return out;
+}
+
+bool LoopCloser::pairConsistent(const Measurement& a, const Measurement& b,
+                                const PoseGraph& graph) const {
+    // b's current keyframe in a's older frame, two ways round the cycle:
+    // a's loop then the graph from a.current to b.current, or the graph from a.older to
+    // b.older then b's loop.
+    const CPose2D viaA = a.pose + (graph.pose(b.current) - graph.pose(a.current));
+    const CPose2D viaB = (graph.pose(b.older) - graph.pose(a.older)) + b.pose;
+    const auto [d, phi] = disagreement(viaA, viaB);
+    return d <= options_.loopPairTolerance && phi <= options_.loopPairAngleTolerance;
+}
+
+void LoopCloser::accept(const Measurement& m, PoseGraph& graph, LoopClosureOutcome& outcome,
+                        SlamStatistics& stats) {
+    const auto [d, phi] = disagreement(m.pose, graph.pose(m.current) - graph.pose(m.older));
+    outcome.maxDistanceError = std::max(outcome.maxDistanceError, d);
+    outcome.maxAngleError = std::max(outcome.maxAngleError, phi);
+    graph.addEdge(m.older, m.current, m.pose, m.covariance, EdgeKind::Loop);
+    ++outcome.accepted;
+    ++stats.loopsAccepted;
+    recent_.push_back(m);
+}
+
+LoopClosureOutcome LoopCloser::closeLoops(std::size_t current, std::size_t firstActive,
+                                          const std::vector<Keyframe>& keyframes, PoseGraph& graph,
+                                          SlamStatistics& stats) {
+    const double start = io::threadCpuSeconds();
+    LoopClosureOutcome outcome;
+    while (!recent_.empty() && recent_.front().current + options_.loopConfirmWindow < current)
+        recent_.pop_front();
+    while (!pending_.empty() && pending_.front().current + options_.loopConfirmWindow < current)
+        pending_.pop_front();
+
+    const std::vector<std::size_t> gated = gatedCandidates(current, firstActive, keyframes, graph);
+    std::vector<Measurement> matches;
+    for (std::size_t j : gated) {
+        ++stats.loopCandidates;
+        if (auto m = verify(keyframes[j], keyframes[current], graph, true))
+            matches.push_back(*m);
+        else
+            ++stats.loopsUnmatched;
+    }
+    for (const Measurement& m : consistentGated(matches, graph, stats))
+        accept(m, graph, outcome, stats);
+
+    if (options_.globalSearchEvery > 0 && current % options_.globalSearchEvery == 0) {
+        ++stats.globalSearches;
+        for (std::size_t j : globalCandidates(current, firstActive, keyframes, gated)) {
+            ++stats.loopCandidates;
+            auto m = verify(keyframes[j], keyframes[current], graph, false);
+            if (!m) {
+                ++stats.loopsUnmatched;
+                continue;
+            }
+            ++stats.globalHypotheses;
+            if (getenv("TOPOSLAM_DEBUG_LOOPS"))
+                fprintf(stderr, "global %zu->%zu z=(%.2f %.2f %.1f) graph=(%.2f %.2f %.1f)\n",
+                        m->older, m->current, m->pose.x(), m->pose.y(), m->pose.phi() * 57.3,
+                        (graph.pose(m->current) - graph.pose(m->older)).x(),
+                        (graph.pose(m->current) - graph.pose(m->older)).y(),
+                        (graph.pose(m->current) - graph.pose(m->older)).phi() * 57.3);
+            const auto agrees = [&](const Measurement& o) { return pairConsistent(o, *m, graph); };
+            auto confirmed = std::find_if(pending_.begin(), pending_.end(), agrees);
+            if (confirmed != pending_.end()) {
+                accept(*confirmed, graph, outcome, stats);
+                pending_.erase(confirmed);
+                stats.globalConfirmed += 2;
+                accept(*m, graph, outcome, stats);
+            } else if (std::any_of(recent_.begin(), recent_.end(), agrees)) {
+                ++stats.globalConfirmed;
+                accept(*m, graph, outcome, stats);
+            } else {
+                pending_.push_back(*m);
+            }
+        }
+    }
+    stats.loopSeconds += io::threadCpuSeconds() - start;
+    return outcome;
+}
+
+bool LoopCloser::withdrawWorstOutlier(PoseGraph& graph, SlamStatistics& stats) const {
+    double worst = options_.loopChi2;
+    std::optional<std::size_t> worstEdge;
+    for (std::size_t e = 0; e < graph.edges().size(); ++e) {
+        const PoseGraphEdge& edge = graph.edges()[e];
+        if (!edge.active || edge.kind != EdgeKind::Loop)
+            continue;
+        const double c = graph.chi2(e);
+        if (c > worst)
+            worst = c, worstEdge = e;
+    }
+    if (!worstEdge)
+        return false;
+    graph.withdrawEdge(*worstEdge);
+    ++stats.loopsWithdrawn;
+    return true;
+}
+
+}  // namespace toposlam::mapping

@@ -1,0 +1,143 @@
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/serialization/CArchive.h>
+#include <toposlam/io/AtomicFile.h>
+#include <toposlam/io/GridMapIO.h>
+#include <toposlam/mapping/MappingOutputs.h>
+
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+namespace toposlam::mapping {
+
+namespace {
+std::string line(const char* format, ...) __attribute__((format(printf, 1, 2)));
+std::string line(const char* format, ...) {
+    char buffer[512];
+    va_list args;
+    va_start(args, format);
+    std::vsnprintf(buffer, sizeof buffer, format, args);
+    va_end(args);
+    return std::string(buffer) + "\n";
+}
+
+double percent(std::size_t part, std::size_t whole) {
+    return whole > 0 ? 100.0 * double(part) / double(whole) : 0.0;
+}
+}  // namespace
+
+bool mostlyUnregistered(const MappingResult& result) {
+    return result.statistics && result.statistics->registeredShare() < 0.5;
+}
+
+std::string formatSummary(const MappingResult& r) {
+    std::string s;
+    s += line("engine: %s", r.engine.c_str());
+    s += line(
+        "scans: %zu, log duration %.1f s, mapped in %.2f s wall, %.2f s CPU (%.1fx real "
+        "time)",
+        r.scans, r.logDuration, r.wallSeconds, r.cpuSeconds,
+        r.wallSeconds > 0 ? r.logDuration / r.wallSeconds : 0.0);
+    if (const auto& st = r.statistics) {
+        const std::size_t n = st->scans > 1 ? st->scans - 1 : 0;
+        s += line("keyframes: %zu in %zu submaps", st->keyframes, st->submaps);
+        s += line(
+            "registration: %zu by ICP (%.1f %%), %zu by the graph matcher (%.1f %%), %zu "
+            "failed (%.1f %%, odometry kept); %zu odometry jumps",
+            st->registeredByIcp, percent(st->registeredByIcp, n), st->registeredByGraphMatcher,
+            percent(st->registeredByGraphMatcher, n), st->registrationFailed,
+            percent(st->registrationFailed, n), st->odometryJumps);
+        s += line(
+            "loop closures: %zu candidates verified, %zu accepted (%zu of them guess-free), "
+            "%zu not matched, %zu rejected by the consistency checks, %zu withdrawn after "
+            "optimisation",
+            st->loopCandidates, st->loopsAccepted, st->globalConfirmed, st->loopsUnmatched,
+            st->loopsGateRejected, st->loopsWithdrawn);
+        s += line("CPU time: front end %.2f s, loop search %.2f s, optimisation %.2f s (%zu runs)",
+                  st->frontEndSeconds, st->loopSeconds, st->optimizationSeconds, st->optimizations);
+    }
+    s += line("grid: %u x %u cells of %.2f m, x [%.2f, %.2f] y [%.2f, %.2f] m", r.grid.getSizeX(),
+              r.grid.getSizeY(), r.grid.getResolution(), r.grid.getXMin(), r.grid.getXMax(),
+              r.grid.getYMin(), r.grid.getYMax());
+    if (r.wallAlignment != 0)
+        s += line(
+            "map turned by %.2f deg to line the walls up with the axes (wall direction "
+            "strength %.2f)",
+            r.wallAlignment * 180.0 / M_PI, r.wallDirectionStrength);
+    if (mostlyUnregistered(r))
+        s += line(
+            "WARNING: only %.1f %% of the scans could be registered: the trajectory is "
+            "mostly raw odometry and the map is not reliable",
+            100.0 * r.statistics->registeredShare());
+    return s;
+}
+
+nlohmann::json summaryJson(const MappingResult& r) {
+    nlohmann::json j = {
+        {"engine", r.engine},
+        {"scans", r.scans},
+        {"log_duration_s", r.logDuration},
+        {"wall_s", r.wallSeconds},
+        {"cpu_s", r.cpuSeconds},
+        {"real_time_factor", r.wallSeconds > 0 ? r.logDuration / r.wallSeconds : 0.0},
+        {"wall_alignment_deg", r.wallAlignment * 180.0 / M_PI}};
+    if (const auto& st = r.statistics) {
+        j["keyframes"] = st->keyframes;
+        j["submaps"] = st->submaps;
+        j["registration"] = {{"icp", st->registeredByIcp},
+                             {"graph_matcher", st->registeredByGraphMatcher},
+                             {"failed", st->registrationFailed},
+                             {"odometry_jumps", st->odometryJumps},
+                             {"registered_share", st->registeredShare()}};
+        j["loops"] = {
+            {"candidates", st->loopCandidates},           {"accepted", st->loopsAccepted},
+            {"guess_free_accepted", st->globalConfirmed}, {"unmatched", st->loopsUnmatched},
+            {"rejected", st->loopsGateRejected},          {"withdrawn", st->loopsWithdrawn}};
+        j["cpu_by_stage_s"] = {{"front_end", st->frontEndSeconds},
+                               {"loop_search", st->loopSeconds},
+                               {"optimization", st->optimizationSeconds}};
+        j["optimizations"] = st->optimizations;
+        j["mostly_unregistered"] = mostlyUnregistered(r);
+    }
+    return j;
+}
+
+std::vector<std::string> saveMappingOutputs(const MappingResult& result,
+                                            const std::string& directory) {
+    namespace fs = std::filesystem;
+    const fs::path out(directory);
+    fs::create_directories(out);
+    std::vector<std::string> files;
+    const auto path = [&](const char* name) {
+        files.push_back((out / name).string());
+        return files.back();
+    };
+    io::saveTrajectory(result.trajectory, path("trajectory.txt"));
+    io::saveGridMap(result.grid, path("map.gridmap.gz"));
+    io::saveGridMap(result.grid, path("map.png"));
+    files.push_back((out / "map.yaml").string());
+    if (result.graph)
+        result.graph->save(path("keyframes.graph"));
+    if (!result.keyframes.empty()) {
+        io::writeFileAtomically(path("keyframes.simplemap"), [&](const std::string& tmp) {
+            mrpt::io::CFileGZOutputStream f(tmp);
+            mrpt::serialization::archiveFrom(f) << result.keyframes;
+        });
+    }
+    const auto writeText = [&](const char* name, const std::string& text) {
+        io::writeFileAtomically(path(name), [&](const std::string& tmp) {
+            std::ofstream f(tmp);
+            f << text;
+            if (!f)
+                throw std::runtime_error(tmp + ": cannot write");
+        });
+    };
+    writeText("summary.txt", formatSummary(result));
+    writeText("summary.json", summaryJson(result).dump(2) + "\n");
+    return files;
+}
+
+}  // namespace toposlam::mapping

@@ -1,0 +1,122 @@
+#include <mrpt/math/wrap2pi.h>
+#include <toposlam/mapping/ScanRegistration.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace toposlam::mapping {
+
+using mrpt::math::CMatrixDouble33;
+using mrpt::poses::CPose2D;
+
+namespace {
+/// The covariance with every eigenvalue clamped to [lo, hi] (per eigen-direction of position
+/// and heading together; position and heading are in different units, but ICP's covariance is
+/// nearly block-diagonal, so this clamps each block).
+CMatrixDouble33 clampEigen(const CMatrixDouble33& c, const Eigen::Vector3d& floor,
+                           const Eigen::Vector3d& ceiling) {
+    // Scale to unit floor so one eigen-decomposition treats m and rad alike.
+    const Eigen::Vector3d s = floor.cwiseSqrt();
+    const Eigen::Matrix3d scaled =
+        s.cwiseInverse().asDiagonal() * c.asEigen() * s.cwiseInverse().asDiagonal();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 * (scaled + scaled.transpose()));
+    const Eigen::Vector3d hi = ceiling.cwiseQuotient(floor);
+    const double cap = hi.minCoeff();
+    Eigen::Vector3d v = eig.eigenvalues();
+    for (int k = 0; k < 3; ++k)
+        v[k] = std::clamp(v[k], 1.0, std::max(1.0, cap));
+    const Eigen::Matrix3d clamped =
+        eig.eigenvectors() * v.asDiagonal() * eig.eigenvectors().transpose();
+    CMatrixDouble33 out;
+    out.asEigen() = s.asDiagonal() * clamped * s.asDiagonal();
+    return out;
+}
+}  // namespace
+
+ScanRegistration::ScanRegistration(const GraphSlamOptions& options,
+                                   const matching::GraphMatcherOptions& matcherOptions)
+    : options_(options), matcher_(matcherOptions) {
+    icpOptions_.maxIterations = options.icpMaxIterations;
+    icpOptions_.maxDistance = options.icpMaxDistance;
+    icpOptions_.robustScale = options.icpRobustScale;
+    icpOptions_.stride = options.icpStride;
+    icpOptions_.translationTolerance = 1e-4;
+    icpOptions_.rotationTolerance = 1e-5;
+}
+
+CMatrixDouble33 ScanRegistration::odometryCovariance(double distance, double turn) const {
+    const double sxy = options_.odometrySigmaXY + options_.odometrySigmaXYPerMetre * distance;
+    const double sphi = options_.odometrySigmaPhi + options_.odometrySigmaPhiPerRadian * turn;
+    CMatrixDouble33 c;
+    c.setZero();
+    c(0, 0) = c(1, 1) = sxy * sxy;
+    c(2, 2) = sphi * sphi;
+    return c;
+}
+
+CMatrixDouble33 ScanRegistration::edgeCovariance(const CMatrixDouble33& icp, double distance,
+                                                 double turn) const {
+    const CMatrixDouble33 odo = odometryCovariance(distance, turn);
+    const Eigen::Vector3d floor(options_.edgeMinSigmaXY * options_.edgeMinSigmaXY,
+                                options_.edgeMinSigmaXY * options_.edgeMinSigmaXY,
+                                options_.edgeMinSigmaPhi * options_.edgeMinSigmaPhi);
+    const Eigen::Vector3d ceiling(odo(0, 0), odo(1, 1), odo(2, 2));
+    return clampEigen(icp, floor, ceiling.cwiseMax(floor));
+}
+
+bool ScanRegistration::tryIcp(const matching::PolarScan& scan, const CPose2D& sensorOnRobot,
+                              const Prediction& prediction, Registration& out) {
+    if (!prediction.submap || prediction.submap->map().size() == 0 || scan.validCount() == 0)
+        return false;
+    const matching::IcpResult icp = icp_.refineOnMap(
+        prediction.submap->map(), scan, prediction.inSubmap + sensorOnRobot, icpOptions_);
+    const CPose2D robot = icp.pose + (-sensorOnRobot);  // sensor pose (+) mounting^-1
+    const CPose2D correction = robot - prediction.inSubmap;
+    // Share of the readings the map could hold (within its range) that landed on it.
+    std::size_t mappable = 0;
+    for (std::size_t b = 0; b < scan.size(); ++b)
+        mappable += scan.valid(b) && scan.range(b) <= options_.mapMaxRange;
+    out.overlap = double(icp.pointsUsed) / double(std::max<std::size_t>(1, mappable));
+    if (out.overlap < options_.minInlierRatio ||
+        correction.norm() > options_.maxCorrectionDistance ||
+        std::abs(mrpt::math::wrapToPi(correction.phi())) > options_.maxCorrectionAngle)
+        return false;
+    out.method = RegistrationMethod::Icp;
+    out.reference = prediction.submap->anchor();
+    out.pose = robot;
+    out.rawCovariance = icp.covariance;
+    // Undetermined directions (a corridor) fall back on odometry since the last keyframe.
+    out.covariance = edgeCovariance(icp.covariance, prediction.distanceFromLastKeyframe,
+                                    prediction.turnFromLastKeyframe);
+    return true;
+}
+
+bool ScanRegistration::tryGraphMatcher(const matching::PolarScan& scan,
+                                       const CPose2D& sensorOnRobot, const Prediction& prediction,
+                                       const features::ScanFeatures& features, Registration& out) {
+    const Keyframe& kf = *prediction.lastKeyframe;
+    const matching::MatchResult& m =
+        matcher_.match(kf.polar, kf.features->features, scan, features, std::nullopt);
+    if (getenv("TOPOSLAM_DEBUG_LOOPS"))
+        fprintf(stderr,
+                "graph-matcher vs kf %zu: %s pose (%.2f %.2f %.1f) prediction (%.2f %.2f %.1f) "
+                "ambiguity %.2f quality %.2f\n",
+                kf.id, matching::toString(m.status), m.pose.x(), m.pose.y(), m.pose.phi() * 57.3,
+                prediction.fromLastKeyframe.x(), prediction.fromLastKeyframe.y(),
+                prediction.fromLastKeyframe.phi() * 57.3, m.ambiguity, m.quality);
+    if (!m.reliable())
+        return false;
+    out.method = RegistrationMethod::GraphMatcher;
+    out.reference = kf.id;
+    out.pose = kf.sensorOnRobot + m.pose + (-sensorOnRobot);
+    out.rawCovariance = m.covariance;
+    out.covariance = edgeCovariance(m.covariance, prediction.distanceFromLastKeyframe,
+                                    prediction.turnFromLastKeyframe);
+    out.overlap = 0;
+    return true;
+}
+
+}  // namespace toposlam::mapping

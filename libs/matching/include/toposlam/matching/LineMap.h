@@ -1,0 +1,83 @@
+#pragma once
+// A map of local lines built from many scans, for point-to-line registration against a local
+// map instead of a single scan (PointToLineIcp::refineOnMap). Every map point carries the unit
+// normal of the surface it lies on (fitLocalLine of its scan). Repeated observations of the
+// same surface are fused into the point already there (running mean of position and normal),
+// so walls seen from twenty poses stay one thin line of points rather than a noisy band.
+// A dense lookup grid stores, for every cell within `radius` of a map point, the map point
+// nearest to that cell's centre: association is one array read per point and ICP iteration,
+// with no search tree and no allocation. The grid grows as points arrive.
+// All coordinates are in the map's own frame (m).
+#include <mrpt/poses/CPose2D.h>
+#include <toposlam/matching/PolarScan.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace toposlam::matching {
+
+struct MapPoint {
+    float x = 0, y = 0;    ///< m, map frame
+    float nx = 0, ny = 0;  ///< unit normal, towards the sensors that saw it
+    float weight = 0;      ///< observations fused into it
+};
+
+struct LineMapOptions {
+    double resolution = 0.05;  ///< m, lookup cell size
+    double radius = 0.4;       ///< m, largest association distance the lookup supports
+    /// m: a new observation within this distance of a map point with a similar normal is
+    /// fused into it instead of added.
+    double fuseDistance = 0.05;
+    double maxRange = 20.0;        ///< m, farther readings are not inserted
+    double maxJoinDistance = 0.3;  ///< m, fitLocalLine's jump distance
+};
+
+class LineMap {
+  public:
+    explicit LineMap(const LineMapOptions& options = {});
+
+    const LineMapOptions& options() const { return options_; }
+    /// Empties the map (keeps its memory).
+    void clear();
+    /// Adds every valid reading of `scan` that has a local line, seen from `sensorPose` (the
+    /// scan's sensor in the map frame).
+    void insertScan(const PolarScan& scan, const mrpt::poses::CPose2D& sensorPose);
+    /// Adds one point (fused into a close one with a similar normal).
+    void insert(const MapPoint& p);
+
+    /// The map point nearest to (x, y)'s lookup cell, or nullptr when none is within radius.
+    const MapPoint* nearest(double x, double y) const {
+        const long cx = long(std::floor((x - x0_) * inverseResolution_));
+        const long cy = long(std::floor((y - y0_) * inverseResolution_));
+        if (cx < 0 || cy < 0 || cx >= width_ || cy >= height_)
+            return nullptr;
+        const std::uint32_t i = cells_[std::size_t(cy * width_ + cx)].point;
+        return i == kNone ? nullptr : &points_[i];
+    }
+
+    std::size_t size() const { return points_.size(); }
+    const std::vector<MapPoint>& points() const { return points_; }
+
+  private:
+    static constexpr std::uint32_t kNone = 0xffffffffu;
+    struct Cell {
+        std::uint32_t point = kNone;
+        float distance2 = 0;  ///< squared distance of that point to the cell centre
+    };
+    /// Makes the grid cover (x, y) +- radius, keeping what is stamped.
+    void cover(double x, double y);
+    /// Writes point i into every cell within radius whose current point is farther.
+    void stamp(std::uint32_t i);
+
+    LineMapOptions options_;
+    std::vector<MapPoint> points_;
+    std::vector<Cell> cells_;
+    long width_ = 0, height_ = 0;
+    double x0_ = 0, y0_ = 0;  ///< corner of cell (0, 0), m
+    double inverseResolution_ = 20;
+    long stampRadius_ = 8;  ///< radius in cells
+};
+
+}  // namespace toposlam::matching

@@ -1,0 +1,130 @@
+#include <toposlam/matching/LineMap.h>
+#include <toposlam/matching/LocalLine.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace toposlam::matching {
+
+namespace {
+/// Normals closer than this (cosine) belong to the same surface when fusing: 25 deg.
+constexpr float kSameSurfaceCos = 0.9f;
+/// The grid grows by at least this many cells on the side it grows (fewer re-copies).
+constexpr long kGrowCells = 200;
+}  // namespace
+
+LineMap::LineMap(const LineMapOptions& options)
+    : options_(options),
+      inverseResolution_(1.0 / options.resolution),
+      stampRadius_(long(std::ceil(options.radius / options.resolution))) {}
+
+void LineMap::clear() {
+    points_.clear();
+    std::fill(cells_.begin(), cells_.end(), Cell());
+}
+
+void LineMap::insertScan(const PolarScan& scan, const mrpt::poses::CPose2D& sensorPose) {
+    const double c = std::cos(sensorPose.phi()), s = std::sin(sensorPose.phi());
+    for (std::size_t b = 0; b < scan.size(); ++b) {
+        if (!scan.valid(b) || scan.range(b) > options_.maxRange)
+            continue;
+        const auto line = fitLocalLine(scan, b, options_.maxJoinDistance);
+        if (!line)
+            continue;
+        const mrpt::math::TPoint2D& p = scan.point(b);
+        MapPoint m;
+        m.x = float(sensorPose.x() + c * p.x - s * p.y);
+        m.y = float(sensorPose.y() + s * p.x + c * p.y);
+        m.nx = float(c * line->nx - s * line->ny);
+        m.ny = float(s * line->nx + c * line->ny);
+        m.weight = 1;
+        insert(m);
+    }
+}
+
+void LineMap::insert(const MapPoint& p) {
+    cover(p.x, p.y);
+    if (const MapPoint* near = nearest(p.x, p.y)) {
+        const float dx = near->x - p.x, dy = near->y - p.y;
+        const float fuse = float(options_.fuseDistance);
+        if (dx * dx + dy * dy < fuse * fuse &&
+            near->nx * p.nx + near->ny * p.ny > kSameSurfaceCos) {
+            // Running mean; the point moves by less than fuseDistance, so the cells it was
+            // stamped into still hold it (their stored distances are at most that stale).
+            MapPoint& m = points_[std::size_t(near - points_.data())];
+            const float w = m.weight + p.weight;
+            m.x = (m.x * m.weight + p.x * p.weight) / w;
+            m.y = (m.y * m.weight + p.y * p.weight) / w;
+            const float nx = m.nx * m.weight + p.nx * p.weight;
+            const float ny = m.ny * m.weight + p.ny * p.weight;
+            const float norm = std::hypot(nx, ny);
+            m.nx = nx / norm, m.ny = ny / norm;
+            m.weight = w;
+            return;
+        }
+    }
+    points_.push_back(p);
+    stamp(std::uint32_t(points_.size() - 1));
+}
+
+void LineMap::cover(double x, double y) {
+    const double margin = options_.radius + options_.resolution;
+    const double res = options_.resolution;
+    if (width_ > 0 && x - margin >= x0_ && y - margin >= y0_ && x + margin < x0_ + width_ * res &&
+        y + margin < y0_ + height_ * res)
+        return;
+    // New extent: the old one plus the point, grown generously on the sides that grow.
+    const double growth = kGrowCells * res;
+    double minX = x0_, minY = y0_, maxX = x0_ + width_ * res, maxY = y0_ + height_ * res;
+    if (width_ == 0) {
+        minX = x - margin - growth / 2, maxX = x + margin + growth / 2;
+        minY = y - margin - growth / 2, maxY = y + margin + growth / 2;
+    } else {
+        if (x - margin < minX)
+            minX = x - margin - growth;
+        if (x + margin >= maxX)
+            maxX = x + margin + growth;
+        if (y - margin < minY)
+            minY = y - margin - growth;
+        if (y + margin >= maxY)
+            maxY = y + margin + growth;
+    }
+    // Keep the cell lattice: new corner on a whole number of cells from the old one.
+    const long shiftX = width_ > 0 ? long(std::ceil((x0_ - minX) / res)) : 0;
+    const long shiftY = width_ > 0 ? long(std::ceil((y0_ - minY) / res)) : 0;
+    const double newX0 = width_ > 0 ? x0_ - shiftX * res : minX;
+    const double newY0 = width_ > 0 ? y0_ - shiftY * res : minY;
+    const long newWidth = long(std::ceil((maxX - newX0) / res)) + 1;
+    const long newHeight = long(std::ceil((maxY - newY0) / res)) + 1;
+    std::vector<Cell> cells(std::size_t(newWidth * newHeight));
+    for (long cy = 0; cy < height_; ++cy)
+        std::copy_n(cells_.begin() + cy * width_, width_,
+                    cells.begin() + (cy + shiftY) * newWidth + shiftX);
+    cells_.swap(cells);
+    x0_ = newX0, y0_ = newY0, width_ = newWidth, height_ = newHeight;
+}
+
+void LineMap::stamp(std::uint32_t i) {
+    const MapPoint& p = points_[i];
+    const double res = options_.resolution;
+    const long px = long(std::floor((p.x - x0_) * inverseResolution_));
+    const long py = long(std::floor((p.y - y0_) * inverseResolution_));
+    const float r2 = float(options_.radius * options_.radius);
+    for (long cy = std::max(0L, py - stampRadius_); cy <= std::min(height_ - 1, py + stampRadius_);
+         ++cy) {
+        const float dy = float(y0_ + (cy + 0.5) * res) - p.y;
+        Cell* row = &cells_[std::size_t(cy * width_)];
+        for (long cx = std::max(0L, px - stampRadius_);
+             cx <= std::min(width_ - 1, px + stampRadius_); ++cx) {
+            const float dx = float(x0_ + (cx + 0.5) * res) - p.x;
+            const float d2 = dx * dx + dy * dy;
+            if (d2 > r2)
+                continue;
+            Cell& cell = row[cx];
+            if (cell.point == kNone || d2 < cell.distance2)
+                cell = {i, d2};
+        }
+    }
+}
+
+}  // namespace toposlam::matching

@@ -9,25 +9,32 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace {
 
 using namespace toposlam;
 
 const char* const kDescription =
-    "Extracts the features of every scan of a laser log and writes an MRPT rawlog "
-    "(observations format) where each scan is followed by a "
-    "toposlam::features::CObservationLaserFeatures holding its segments, corners and "
-    "convex/concave/jump endpoints (sensor frame, label <scan label>_FEATURES), and, with "
-    "--bearing-range, its corners as a CObservationBearingRange (label <scan label>_CORNERS; "
-    "range, yaw and their covariance per corner, landmark id -1) for MRPT's landmark SLAM. The "
-    "odometry of the log is kept (CObservationOdometry).\n"
+    "Extracts the features of every scan of a laser log and writes an MRPT rawlog where each "
+    "scan comes with a toposlam::features::CObservationLaserFeatures holding its segments, "
+    "corners and convex/concave/jump endpoints (sensor frame, label <scan label>_FEATURES) "
+    "and, with --bearing-range, its corners as a CObservationBearingRange (label <scan "
+    "label>_CORNERS; range, yaw and their covariance per corner, landmark id -1) for MRPT's "
+    "landmark SLAM.\n"
+    "--format obs (default): observations format, the log's odometry kept as "
+    "CObservationOdometry. --format sf: actions + sensory frames, what MRPT's kf-slam and "
+    "rbpf-slam read: per scan a CActionRobotMovement2D (the odometry increment, with the "
+    "Gaussian noise of --odometry-noise) and a sensory frame {scan, features, corners}; the "
+    "corners are always written in this format.\n"
     "The input is any log TopoSLAM reads: CARMEN (.clf/.log) or an MRPT rawlog of either format, "
     "gzip or not, detected from the content.\n"
     "MRPT's tools need the TopoSLAM plugin to read the output, e.g.\n"
@@ -37,8 +44,63 @@ const char* const kDescription =
     "  toposlam-annotate-features intel.clf -o intel_features.rawlog.gz\n"
     "  toposlam-annotate-features run.rawlog -o run_corners.rawlog -e corners --bearing-range\n"
     "  toposlam-annotate-features run.rawlog -o out.rawlog -c config_ini/features.ini\n"
-    "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input or options; no "
-    "output file is written unless the whole log is processed.";
+    "  toposlam-annotate-features share/office/office.rawlog -o corners_sf.rawlog --format sf\n"
+    "  kf-slam config_ini/kf-slam-corners.ini corners_sf.rawlog </dev/null\n"
+    "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input; 2 for a bad option "
+    "value; no output file is written unless the whole log is processed.";
+
+/// A bad option value: reported as "error: ..." with exit status 2.
+struct UsageError : std::invalid_argument {
+    using std::invalid_argument::invalid_argument;
+};
+
+io::RawlogFormat parseFormat(const std::string& text) {
+    if (text == "obs")
+        return io::RawlogFormat::Observations;
+    if (text == "sf")
+        return io::RawlogFormat::SensoryFrames;
+    throw UsageError("--format: '" + text + "' is not obs or sf");
+}
+
+features::MotionNoise parseMotionNoise(const std::string& text) {
+    std::vector<double> v;
+    try {
+        v = cli::parseNumberList(text, 6, "--odometry-noise");
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+    features::MotionNoise n{v[0], v[1], v[2], v[3], v[4], v[5]};
+    try {
+        n.validate();
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--odometry-noise: ") + e.what());
+    }
+    return n;
+}
+
+/// Runs the annotation with the parsed options and prints the summary.
+int annotate(const std::string& input, const std::string& output, features::FeatureExtractor& ex,
+             features::LogAnnotationOptions& options, bool quiet) {
+    io::ProgressDisplay progress("annotating " + std::filesystem::path(input).filename().string(),
+                                 "scans", !quiet && ::isatty(2) == 1);
+    options.progress = [&](double fraction, std::size_t scans) {
+        progress.update(fraction, scans);
+    };
+    const auto s = features::annotateLog(input, output, ex, options);
+    progress.finish();
+    if (!quiet) {
+        const double n = static_cast<double>(s.scans);
+        std::printf(
+            "%s: %zu scans (%s); %s: %.1f segments, %.1f corners, %.1f endpoints per scan, "
+            "%.1f us per scan\ncorner noise (RMS of the corners' own): range %.4f m, bearing "
+            "%.3f deg\nwrote %s (%s format, %zu objects)\n",
+            input.c_str(), s.scans, io::toString(s.inputFormat), ex.name().c_str(), s.segments / n,
+            s.corners / n, s.endpoints / n, 1e6 * s.extractionSeconds / n, s.cornerRangeStd,
+            s.cornerBearingStd * 180 / M_PI, output.c_str(), io::toString(options.format),
+            s.objects);
+    }
+    return EXIT_SUCCESS;
+}
 
 int run(int argc, char** argv) {
     TCLAP::CmdLine cmd(kDescription, ' ', "0.1");
@@ -68,8 +130,23 @@ int run(int argc, char** argv) {
         "Section of the .ini file. Default: the extractor's (CornerExtractor, SegmentExtractor, "
         "SplitAndMergeExtractor)",
         false, "", "name", cmd);
-    TCLAP::SwitchArg bearingRange(
-        "", "bearing-range", "Also write each scan's corners as a CObservationBearingRange", cmd);
+    TCLAP::SwitchArg bearingRange("", "bearing-range",
+                                  "Also write each scan's corners as a CObservationBearingRange "
+                                  "(always done with --format sf)",
+                                  cmd);
+    TCLAP::ValueArg<std::string> format(
+        "", "format",
+        "Output rawlog format: obs = observations (odometry as CObservationOdometry); sf = "
+        "actions + sensory frames (odometry increments as CActionRobotMovement2D), for kf-slam "
+        "and rbpf-slam. Default: obs",
+        false, "obs", "obs|sf", cmd);
+    TCLAP::ValueArg<std::string> odometryNoise(
+        "", "odometry-noise",
+        "--format sf: noise of each odometry increment of length d (m) and turn a (deg), MRPT's "
+        "Gaussian motion model: std(x), std(y) = minXY + a1*d + a2*a (m); std(yaw) = minPhi + "
+        "a3*d + a4*a (deg). Given as a1,a2,a3,a4,minXY,minPhi in m/m, m/deg, deg/m, deg/deg, m, "
+        "deg. Default: MRPT's, 0.01,0.001,1,0.05,0.01,0.2",
+        false, "0.01,0.001,1,0.05,0.01,0.2", "a1,a2,a3,a4,minXY,minPhi", cmd);
     TCLAP::ValueArg<std::string> label(
         "", "label", "Only scans with this sensor label. Default: all 2D laser scans", false, "",
         "label", cmd);
@@ -105,24 +182,14 @@ int run(int argc, char** argv) {
     options.read.carmenDefaultMaxRange = static_cast<float>(maxRange.getValue());
     options.bearingRange = bearingRange.getValue();
     options.maxScans = maxScans.getValue();
-    io::ProgressDisplay progress(
-        "annotating " + std::filesystem::path(input.getValue()).filename().string(), "scans",
-        !quiet.getValue() && ::isatty(2) == 1);
-    options.progress = [&](double fraction, std::size_t scans) {
-        progress.update(fraction, scans);
-    };
-    const auto s = features::annotateLog(input.getValue(), output.getValue(), *ex, options);
-    progress.finish();
-    if (!quiet.getValue()) {
-        const double n = static_cast<double>(s.scans);
-        std::printf(
-            "%s: %zu scans (%s); %s: %.1f segments, %.1f corners, %.1f endpoints per scan, "
-            "%.1f us per scan\nwrote %s (%zu objects)\n",
-            input.getValue().c_str(), s.scans, io::toString(s.inputFormat), ex->name().c_str(),
-            s.segments / n, s.corners / n, s.endpoints / n, 1e6 * s.extractionSeconds / n,
-            output.getValue().c_str(), s.objects);
+    try {
+        options.format = parseFormat(format.getValue());
+        options.motionNoise = parseMotionNoise(odometryNoise.getValue());
+    } catch (const UsageError& e) {
+        std::cerr << "error: " << e.what() << " (see --help)\n";
+        return 2;
     }
-    return EXIT_SUCCESS;
+    return annotate(input.getValue(), output.getValue(), *ex, options, quiet.getValue());
 }
 
 }  // namespace

@@ -94,11 +94,18 @@ TEST(FeatureMap, AccumulatesEveryScanIntoOneMapOnTheWalls) {
     EXPECT_EQ(m.keyframes().size(), roomPoses().size());
     ASSERT_GE(map.confirmedSegments(), 10u) << m.asString();
 
+    // Every point of every piece (10 cm apart) lies on a wall.
     for (const MapSegment& s : map.segments()) {
         if (!map.confirmed(s))
             continue;
-        EXPECT_LT(distanceToWorld(s.start, world), 0.03) << s.start.x << "," << s.start.y;
-        EXPECT_LT(distanceToWorld(s.end, world), 0.03) << s.end.x << "," << s.end.y;
+        for (const SegmentPiece& p : s.pieces) {
+            const int n = static_cast<int>(p.length() / 0.1) + 1;
+            for (int k = 0; k <= n; ++k) {
+                const TPoint2D q(p.start.x + (p.end.x - p.start.x) * k / n,
+                                 p.start.y + (p.end.y - p.start.y) * k / n);
+                EXPECT_LT(distanceToWorld(q, world), 0.03) << q.x << "," << q.y;
+            }
+        }
     }
     // The hall's 6 walls (the first polygon: its first 6 edges).
     for (std::size_t w = 0; w < 6; ++w) {
@@ -106,10 +113,12 @@ TEST(FeatureMap, AccumulatesEveryScanIntoOneMapOnTheWalls) {
         const double wallLength = std::hypot(wall.b.x - wall.a.x, wall.b.y - wall.a.y);
         double covered = 0;
         for (const MapSegment& s : map.segments()) {
-            if (map.confirmed(s) && lineAngleError(s, wall) < 1 * kDeg &&
-                pointToSegmentDistance(s.start, wall.a, wall.b) < 0.03 &&
-                pointToSegmentDistance(s.end, wall.a, wall.b) < 0.03)
-                covered = std::max(covered, s.length());
+            if (!map.confirmed(s) || lineAngleError(s, wall) > 1 * kDeg)
+                continue;
+            for (const SegmentPiece& p : s.pieces)
+                if (pointToSegmentDistance(p.start, wall.a, wall.b) < 0.03 &&
+                    pointToSegmentDistance(p.end, wall.a, wall.b) < 0.03)
+                    covered = std::max(covered, p.length());
         }
         EXPECT_GT(covered, 0.6 * wallLength) << "hall wall " << w;
     }
@@ -178,7 +187,7 @@ TEST(FeatureMap, TheTwoFacesOfAThinWallStaySeparate) {
     EXPECT_EQ(south, 1);
 }
 
-// Two collinear walls with a 0.9 m doorway between them: two segments, none across the door.
+// Two collinear walls with a 0.9 m doorway between them: two pieces, none across the door.
 TEST(FeatureMap, CollinearWallsAcrossADoorStaySeparate) {
     sim::PolygonWorld world;
     world.addSegment({-4, 2}, {-0.45, 2});
@@ -187,15 +196,52 @@ TEST(FeatureMap, CollinearWallsAcrossADoorStaySeparate) {
     CScanFeaturesMap m("split-merge");
     for (const CPose2D& p : {CPose2D(-1, 0, 0.3), CPose2D(1, 0, 0.1), CPose2D(0, 0.5, 1.0)})
         m.insertScan(sim::simulateScan(world, noisyLaser(), p, rng), p);
-    int pieces = 0;
-    for (const MapSegment& s : m.featureMap().segments()) {
-        if (!m.featureMap().confirmed(s))
-            continue;
-        ++pieces;
-        EXPECT_FALSE(std::min(s.start.x, s.end.x) < -0.3 && std::max(s.start.x, s.end.x) > 0.3)
-            << "a segment spans the doorway: " << s.start.x << " .. " << s.end.x;
+    EXPECT_EQ(m.featureMap().confirmedPieces(), 2u);
+    for (const MapSegment& s : m.featureMap().segments())
+        for (const SegmentPiece& p : s.pieces)
+            EXPECT_FALSE(std::min(p.start.x, p.end.x) < -0.3 && std::max(p.start.x, p.end.x) > 0.3)
+                << "a piece spans the doorway: " << p.start.x << " .. " << p.end.x;
+}
+
+// A scan looking along a wall at a grazing angle steps over a door without a beam through it:
+// its segment bridges the door. The line is then shared, but the door stays open, because the
+// scans that faced the wall covered it densely on both sides and not at all in between.
+TEST(FeatureMap, AGrazingViewDoesNotCloseADoor) {
+    sim::PolygonWorld world;
+    world.addSegment({-4, 2}, {-0.45, 2});
+    world.addSegment({0.45, 2}, {4, 2});
+    std::mt19937 rng(4);
+    FeatureMap map;
+    const auto extractor = toposlam::features::makeFeatureExtractor("split-merge");
+    toposlam::features::ScanFeatures f;
+    for (const CPose2D& p : {CPose2D(-2, 0.5, 1.3), CPose2D(2, 0.5, 1.8), CPose2D(-2.2, 0.3, 1.5),
+                             CPose2D(2.2, 0.3, 1.6)}) {
+        extractor->extract(sim::simulateScan(world, noisyLaser(), p, rng), f);
+        map.insert(f, p);
     }
-    EXPECT_EQ(pieces, 2);
+    ASSERT_EQ(map.confirmedPieces(), 2u);
+    // The grazing views, three times: one segment of 8 beams from x = -3.8 to 3.8 (sensor at
+    // (-6, 1.9) looking along +x; the door is between beams).
+    toposlam::features::ScanFeatures grazing;
+    toposlam::features::LineSegment s;
+    s.start = {2.2, 0.1};
+    s.end = {9.8, 0.1};
+    s.firstBeam = 100;
+    s.lastBeam = 107;
+    grazing.segments.push_back(s);
+    for (int k = 0; k < 3; ++k)
+        map.insert(grazing, CPose2D(-6, 1.9, 0));
+    std::size_t lines = 0;
+    for (const MapSegment& line : map.segments()) {
+        if (!map.confirmed(line))
+            continue;
+        ++lines;
+        for (const SegmentPiece& p : line.pieces)
+            EXPECT_FALSE(std::min(p.start.x, p.end.x) < -0.3 && std::max(p.start.x, p.end.x) > 0.3)
+                << "a piece spans the doorway: " << p.start.x << " .. " << p.end.x;
+    }
+    EXPECT_EQ(lines, 1u) << "the bridging view joined both walls into one line";
+    EXPECT_EQ(map.confirmedPieces(), 2u);
 }
 
 // The SLAM back-end path: insert at drifting odometry poses, then move the keyframes to the
@@ -362,7 +408,7 @@ TEST(CScanFeaturesMap, SavesTextFilesAndAPictureAndDrawsIn3D) {
     std::size_t lines = 0;
     for (std::string line; std::getline(segments, line);)
         lines += line.empty() || line[0] == '#' ? 0 : 1;
-    EXPECT_EQ(lines, m.featureMap().confirmedSegments());
+    EXPECT_EQ(lines, m.featureMap().confirmedPieces());
     EXPECT_TRUE(std::filesystem::exists(prefix + "_corners.txt"));
     EXPECT_TRUE(std::filesystem::exists(prefix + "_endpoints.txt"));
     mrpt::img::CImage png;
@@ -381,6 +427,6 @@ TEST(CScanFeaturesMap, SavesTextFilesAndAPictureAndDrawsIn3D) {
             c && c->getPointSize() > 6)
             cornerPoints += c->size();
     }
-    EXPECT_EQ(segmentLines, m.featureMap().confirmedSegments());
+    EXPECT_EQ(segmentLines, m.featureMap().confirmedPieces());
     EXPECT_EQ(cornerPoints, m.featureMap().confirmedCorners());
 }

@@ -177,6 +177,8 @@ LogAnnotationSummary annotateLog(const std::string& inputPath, const std::string
             summary.extractionSeconds +=
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             summary.objects += writer.write(record);
+            if (options.onScan)
+                options.onScan(record, f);
             ++summary.scans;
             summary.segments += f.segments.size();
             summary.corners += f.corners.size();

@@ -329,11 +329,15 @@ void writeTextFile(const std::string& path, const std::string& content) {
 void CScanFeaturesMap::saveMetricMapRepresentationToFile(const std::string& prefix) const {
     std::ostringstream segments, corners, endpoints;
     segments << "# confirmed wall segments, map frame (m); the wall was seen from the left of "
-                "start->end\n# x0 y0 x1 y1 length observations\n";
-    for (const MapSegment& s : map_.segments()) {
-        if (map_.confirmed(s))
-            segments << s.start.x << " " << s.start.y << " " << s.end.x << " " << s.end.y << " "
-                     << s.length() << " " << s.observations << "\n";
+                "start->end;\n# pieces of one line (walls on both sides of a door) share its "
+                "line number\n# x0 y0 x1 y1 length line observations\n";
+    for (std::size_t i = 0; i < map_.segments().size(); ++i) {
+        const MapSegment& s = map_.segments()[i];
+        if (!map_.confirmed(s))
+            continue;
+        for (const SegmentPiece& p : s.pieces)
+            segments << p.start.x << " " << p.start.y << " " << p.end.x << " " << p.end.y << " "
+                     << p.length() << " " << i << " " << s.observations << "\n";
     }
     corners << "# confirmed corners, map frame (m)\n"
                "# x y type angle_deg std_x std_y observations\n";

@@ -76,6 +76,7 @@ void refit(MapSegment& s, const TPoint2D* extra, std::size_t extraCount) {
 void mergeSegmentInto(MapSegment& into, const MapSegment& from) {
     into.moments.add(from.moments);
     into.observations += from.observations;
+    into.seen.insert(into.seen.end(), from.seen.begin(), from.seen.end());
     const TPoint2D ends[2] = {from.start, from.end};
     refit(into, ends, 2);
 }
@@ -105,6 +106,8 @@ void FeatureMapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
     cornerMergeRadius = cfg.read_double(section, "cornerMergeRadius", cornerMergeRadius);
     endpointMergeRadius = cfg.read_double(section, "endpointMergeRadius", endpointMergeRadius);
     poseStd = cfg.read_double(section, "poseStd", poseStd);
+    minCoverageRatio = cfg.read_double(section, "minCoverageRatio", minCoverageRatio);
+    minPieceLength = cfg.read_double(section, "minPieceLength", minPieceLength);
     const int minObs = cfg.read_int(section, "minObservations", static_cast<int>(minObservations));
     if (minObs < 1)
         throw std::invalid_argument("FeatureMap option minObservations must be >= 1, not " +
@@ -121,6 +124,10 @@ void FeatureMapOptions::validate() const {
     requirePositive(cornerMergeRadius, "cornerMergeRadius");
     requirePositive(endpointMergeRadius, "endpointMergeRadius");
     requirePositive(poseStd, "poseStd");
+    requireNonNegative(minCoverageRatio, "minCoverageRatio");
+    if (minCoverageRatio > 1)
+        throw std::invalid_argument("FeatureMap option minCoverageRatio must be <= 1");
+    requireNonNegative(minPieceLength, "minPieceLength");
     if (minObservations < 1)
         throw std::invalid_argument("FeatureMap option minObservations must be >= 1");
 }
@@ -133,7 +140,9 @@ void FeatureMapOptions::dumpToTextStream(std::ostream& out) const {
         << "cornerMergeRadius   = " << cornerMergeRadius << "\n"
         << "endpointMergeRadius = " << endpointMergeRadius << "\n"
         << "poseStd             = " << poseStd << "\n"
-        << "minObservations     = " << minObservations << "\n";
+        << "minObservations     = " << minObservations << "\n"
+        << "minCoverageRatio    = " << minCoverageRatio << "\n"
+        << "minPieceLength      = " << minPieceLength << "\n";
 }
 
 // --- moments -------------------------------------------------------------------------------
@@ -171,6 +180,10 @@ double SegmentMoments::principalDirection() const {
 
 // --- segments and points -------------------------------------------------------------------
 
+double SegmentPiece::length() const {
+    return std::hypot(end.x - start.x, end.y - start.y);
+}
+
 double MapSegment::length() const {
     return std::hypot(end.x - start.x, end.y - start.y);
 }
@@ -202,6 +215,13 @@ bool FeatureMap::empty() const {
 std::size_t FeatureMap::confirmedSegments() const {
     return static_cast<std::size_t>(std::count_if(
         segments_.begin(), segments_.end(), [&](const MapSegment& s) { return confirmed(s); }));
+}
+
+std::size_t FeatureMap::confirmedPieces() const {
+    std::size_t n = 0;
+    for (const MapSegment& s : segments_)
+        n += confirmed(s) ? s.pieces.size() : 0;
+    return n;
 }
 
 std::size_t FeatureMap::confirmedCorners() const {
@@ -250,7 +270,8 @@ void FeatureMap::insert(const features::ScanFeatures& f, const mrpt::poses::CPos
 
 void FeatureMap::insertSegment(TPoint2D a, TPoint2D b, const TPoint2D& sensor, double weight) {
     const TPoint2D ab = b - a;
-    if (std::hypot(ab.x, ab.y) < std::max(options.minSegmentLength, 1e-9))
+    const double length = std::hypot(ab.x, ab.y);
+    if (length < std::max(options.minSegmentLength, 1e-9))
         return;
     // Orient a -> b so that the sensor is on the left.
     if (dot({-ab.y, ab.x}, sensor - a) < 0)
@@ -274,12 +295,59 @@ void FeatureMap::insertSegment(TPoint2D a, TPoint2D b, const TPoint2D& sensor, d
     observed.end = b;
     observed.observations = 1;
     observed.moments.add(a, b, weight);
+    observed.seen.push_back({a, b, weight / length});
     if (best == segments_.size()) {
-        segments_.push_back(observed);
+        updatePieces(observed);
+        segments_.push_back(std::move(observed));
         return;
     }
     mergeSegmentInto(segments_[best], observed);
-    absorbSegments(best);
+    const std::size_t i = absorbSegments(best);
+    updatePieces(segments_[i]);
+}
+
+void FeatureMap::updatePieces(MapSegment& s) const {
+    constexpr double kBin = 0.05;  // m
+    s.pieces.clear();
+    const double length = s.length();
+    if (length <= 0)
+        return;
+    const TPoint2D d((s.end.x - s.start.x) / length, (s.end.y - s.start.y) / length);
+    const std::size_t bins = static_cast<std::size_t>(std::ceil(length / kBin));
+    std::vector<double> beams(bins, 0.0);
+    for (const SegmentObservation& o : s.seen) {
+        double t0 = dot(o.a - s.start, d), t1 = dot(o.b - s.start, d);
+        if (t0 > t1)
+            std::swap(t0, t1);
+        t0 = std::max(t0, 0.0);
+        t1 = std::min(t1, length);
+        for (auto k = static_cast<std::size_t>(t0 / kBin); k < bins && k * kBin < t1; ++k) {
+            const double overlap = std::min(t1, (k + 1) * kBin) - std::max(t0, k * kBin);
+            beams[k] += o.beamsPerMetre * std::max(0.0, overlap);
+        }
+    }
+    std::vector<double> nonEmpty;
+    for (double b : beams)
+        if (b > 0)
+            nonEmpty.push_back(b);
+    if (nonEmpty.empty())
+        return;
+    std::nth_element(nonEmpty.begin(), nonEmpty.begin() + nonEmpty.size() / 2, nonEmpty.end());
+    const double threshold = options.minCoverageRatio * nonEmpty[nonEmpty.size() / 2];
+    const auto at = [&](double t) { return TPoint2D(s.start.x + t * d.x, s.start.y + t * d.y); };
+    for (std::size_t k = 0; k < bins;) {
+        if (beams[k] <= 0 || beams[k] < threshold) {
+            ++k;
+            continue;
+        }
+        std::size_t e = k;
+        while (e < bins && beams[e] > 0 && beams[e] >= threshold)
+            ++e;
+        const double t0 = k * kBin, t1 = std::min(length, e * kBin);
+        if (t1 - t0 >= options.minPieceLength)
+            s.pieces.push_back({at(t0), at(t1)});
+        k = e;
+    }
 }
 
 std::size_t FeatureMap::absorbSegments(std::size_t i) {
@@ -405,7 +473,8 @@ double FeatureMap::distanceToSegments(const TPoint2D& p, double maxDistance) con
             p.x > std::max(s.start.x, s.end.x) + best ||
             p.y < std::min(s.start.y, s.end.y) - best || p.y > std::max(s.start.y, s.end.y) + best)
             continue;
-        best = std::min(best, pointToSegmentDistance(p, s.start, s.end));
+        for (const SegmentPiece& piece : s.pieces)
+            best = std::min(best, pointToSegmentDistance(p, piece.start, piece.end));
     }
     return best;
 }

@@ -42,8 +42,10 @@ void appendFeatureMapVisualization(const FeatureMap& map, mrpt::opengl::CSetOfOb
     lines->setLineWidth(3.0f);
     lines->setColor(kSegment.r, kSegment.g, kSegment.b);
     for (const MapSegment& s : map.segments()) {
-        if (map.confirmed(s))
-            lines->appendLine(s.start.x, s.start.y, 0.0, s.end.x, s.end.y, 0.0);
+        if (!map.confirmed(s))
+            continue;
+        for (const SegmentPiece& p : s.pieces)
+            lines->appendLine(p.start.x, p.start.y, 0.0, p.end.x, p.end.y, 0.0);
     }
     // Corners large, endpoints small, slightly above the lines so they are not hidden.
     auto corners = mrpt::opengl::CPointCloudColoured::Create();
@@ -77,9 +79,11 @@ mrpt::img::CImage drawFeatureMap(const FeatureMap& map, double metresPerPixel) {
         yMax = std::max(yMax, p.y);
     };
     for (const MapSegment& s : map.segments()) {
-        if (map.confirmed(s)) {
-            extend(s.start);
-            extend(s.end);
+        if (!map.confirmed(s))
+            continue;
+        for (const SegmentPiece& p : s.pieces) {
+            extend(p.start);
+            extend(p.end);
         }
     }
     for (const auto* points : {&map.corners(), &map.endpoints()})
@@ -106,8 +110,10 @@ mrpt::img::CImage drawFeatureMap(const FeatureMap& map, double metresPerPixel) {
         return static_cast<int>(std::lround((yMax - y) / scale));  // y up
     };
     for (const MapSegment& s : map.segments()) {
-        if (map.confirmed(s))
-            img.line(px(s.start.x), py(s.start.y), px(s.end.x), py(s.end.y), toColour(kSegment), 2);
+        if (!map.confirmed(s))
+            continue;
+        for (const SegmentPiece& p : s.pieces)
+            img.line(px(p.start.x), py(p.start.y), px(p.end.x), py(p.end.y), toColour(kSegment), 2);
     }
     for (const MapPoint& p : map.endpoints()) {
         if (map.confirmed(p))

@@ -58,6 +58,9 @@ struct LogAnnotationOptions {
     std::size_t maxScans = 0;  ///< 0 = all
     /// Called after each scan with (fraction of the input read, scans so far).
     std::function<void(double, std::size_t)> progress;
+    /// Called after each scan's extraction with the scan's record and its features (sensor
+    /// frame), e.g. to build a feature map on the way.
+    std::function<void(const io::LaserLogRecord&, const ScanFeatures&)> onScan;
 };
 
 struct LogAnnotationSummary {

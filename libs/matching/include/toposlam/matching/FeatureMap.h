@@ -6,9 +6,16 @@
 //    the sensor saw them from, within mergeAngle), its ends lie within mergeDistance of the
 //    map segment's line and the two overlap or leave a gap of at most mergeGap along it. The
 //    map segment's line is then the total-least-squares line of every segment merged into
-//    it, each spread evenly along its length and weighted by its number of beams; its extent
-//    covers them all. Merging can join two map segments (a wall seen in pieces); the two
-//    faces of a thin wall never merge (they face opposite ways).
+//    it, each spread evenly along its length and weighted by its number of beams. Merging can
+//    join two map segments (a wall seen in pieces); the two faces of a thin wall never merge
+//    (they face opposite ways).
+//  - Where the wall is: one wall LINE can hold several PIECES (collinear walls on both sides of
+//    a door). A scan looking along a wall at a grazing angle may step over a door without a
+//    single beam through it, so its segment bridges the door; a scan facing the wall shows
+//    the opening. Each observation therefore counts its beams per metre along the line (5 cm
+//    bins), and the pieces are the runs of bins with at least minCoverageRatio times the
+//    line's median beam count (pieces shorter than minPieceLength are dropped): a door seen
+//    only by grazing beams stays open, a wall seen only from afar stays whole.
 //  - Corners (convex, concave) and endpoints (convex, concave, jump; open ends are not
 //    physical points and are left out): an observation joins the nearest map point of the
 //    same kind within the merge radius; corners are fused by their covariances (information
@@ -43,6 +50,8 @@ struct FeatureMapOptions {
     /// covariance before fusing (the extractor's covariance knows nothing of the pose).
     double poseStd = 0.02;
     std::uint32_t minObservations = 2;  ///< observations that make a feature confirmed
+    double minCoverageRatio = 0.2;      ///< of the line's median beams per bin: a gap below it
+    double minPieceLength = 0.1;        ///< m: shorter pieces of a line are dropped
 
     /// Keys as the member names, angles in degrees: mergeAngle_deg. Throws
     /// std::invalid_argument for a negative, zero (where it matters) or non-finite value.
@@ -64,12 +73,28 @@ struct SegmentMoments {
     double principalDirection() const;
 };
 
-/// One wall face of the map.
-struct MapSegment {
-    /// Ends (map frame, m). The side the wall was seen from is on the LEFT of start -> end.
+/// A part of a map segment's line where there is wall (map frame, m; seen side on the left).
+struct SegmentPiece {
     mrpt::math::TPoint2D start, end;
-    std::uint32_t observations = 0;  ///< scan segments merged into it
-    SegmentMoments moments;          ///< of every merged observation
+    double length() const;
+};
+
+/// One observed segment as merged into the map: its ends and how densely beams covered it.
+struct SegmentObservation {
+    mrpt::math::TPoint2D a, b;  ///< map frame, m
+    double beamsPerMetre = 0;
+};
+
+/// One wall face of the map: a line and the pieces of it where wall was seen.
+struct MapSegment {
+    /// Extent of everything merged (map frame, m). The side the wall was seen from is on the
+    /// LEFT of start -> end.
+    mrpt::math::TPoint2D start, end;
+    /// The parts of start-end with wall (see the file comment), in order from start.
+    std::vector<SegmentPiece> pieces;
+    std::uint32_t observations = 0;        ///< scan segments merged into it
+    SegmentMoments moments;                ///< of every merged observation
+    std::vector<SegmentObservation> seen;  ///< every merged observation
 
     double length() const;
     /// Direction (rad) of the normal pointing to the side the wall was seen from.
@@ -107,13 +132,15 @@ class FeatureMap {
     bool confirmed(const MapSegment& s) const { return s.observations >= options.minObservations; }
     bool confirmed(const MapPoint& p) const { return p.observations >= options.minObservations; }
     std::size_t confirmedSegments() const;
+    /// Pieces of the confirmed segments (what pictures and files show as wall segments).
+    std::size_t confirmedPieces() const;
     std::size_t confirmedCorners() const;
     std::size_t confirmedEndpoints() const;
     /// No feature at all (confirmed or not).
     bool empty() const;
 
-    /// Distance (m) from `p` (map frame) to the nearest confirmed segment, or `maxDistance`
-    /// when none is nearer.
+    /// Distance (m) from `p` (map frame) to the nearest piece of a confirmed segment, or
+    /// `maxDistance` when none is nearer.
     double distanceToSegments(const mrpt::math::TPoint2D& p, double maxDistance) const;
 
   private:
@@ -121,6 +148,8 @@ class FeatureMap {
                        const mrpt::math::TPoint2D& sensor, double weight);
     /// Merges into segments_[i] every other segment that now qualifies; returns i's new index.
     std::size_t absorbSegments(std::size_t i);
+    /// Recomputes the pieces of `s` from its observations.
+    void updatePieces(MapSegment& s) const;
     void insertPoint(std::vector<MapPoint>& points, const MapPoint& observation, double radius,
                      bool fuseByCovariance);
 

@@ -19,6 +19,7 @@
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <toposlam/features/FeatureExtractor.h>
 #include <toposlam/io/LaserLogReader.h>
+#include <toposlam/io/ProgressCallback.h>
 #include <toposlam/io/RawlogWriter.h>
 
 #include <cstddef>
@@ -57,7 +58,7 @@ struct LogAnnotationOptions {
     std::string cornersLabelSuffix = "_CORNERS";
     std::size_t maxScans = 0;  ///< 0 = all
     /// Called after each scan with (fraction of the input read, scans so far).
-    std::function<void(double, std::size_t)> progress;
+    io::ProgressCallback progress;
     /// Called after each scan's extraction with the scan's record and its features (sensor
     /// frame), e.g. to build a feature map on the way.
     std::function<void(const io::LaserLogRecord&, const ScanFeatures&)> onScan;

@@ -161,3 +161,37 @@ TEST(KfSlamCorners, KfSlamProcessesEveryStepAndPutsItsLandmarksOnTheCorners) {
               << near << " within 0.10 m of a true corner; final position error " << finalError
               << " m (odometry " << odometryError << " m)\n";
 }
+
+// The target on real data: kf-slam runs to the end of intel's first 2000 scans (the
+// corners of a cluttered lab, 1.2 per scan) with the same configuration.
+TEST(KfSlamCorners, RunsToTheEndOfIntelsFirst2000Scans) {
+    TOPOSLAM_SHARED_DATA_OR_SKIP(intel, "slam/intel.clf");
+    if (test::runCommand("command -v kf-slam").exitCode != 0)
+        GTEST_SKIP() << "kf-slam (mrpt-apps) not installed";
+#ifdef TOPOSLAM_SANITIZED_BUILD
+    GTEST_SKIP() << "the plugin is built with AddressSanitizer and MRPT's kf-slam is not";
+#endif
+    test::TempDir dir;
+    const auto annotate =
+        test::runApp("toposlam-annotate-features", "'" + intel + "' -o '" + dir.file("sf.rawlog") +
+                                                       "' --format sf --max-scans 2000 -q");
+    ASSERT_EQ(annotate.exitCode, 0) << annotate.output;
+    std::ifstream iniIn(test::shareDir() + "/../config_ini/kf-slam-corners.ini");
+    std::stringstream ini;
+    ini << iniIn.rdbuf();
+    std::string text = std::regex_replace(ini.str(), std::regex("logOutput_dir = .*"),
+                                          "logOutput_dir = " + dir.file("out"));
+    // No per-step dumps: only the step count matters here.
+    text = std::regex_replace(text, std::regex("SAVE_LOG_FREQUENCY = .*"),
+                              "SAVE_LOG_FREQUENCY = 100000");
+    std::ofstream(dir.file("kf.ini")) << text;
+    const auto run = test::runCommand("LD_PRELOAD='" + pluginPath() + "' kf-slam '" +
+                                      dir.file("kf.ini") + "' '" + dir.file("sf.rawlog") + "'");
+    std::size_t steps = 0;
+    for (std::size_t at = run.output.find("Mean pose:"); at != std::string::npos;
+         at = run.output.find("Mean pose:", at + 1))
+        ++steps;
+    EXPECT_EQ(steps, 2000u) << run.output.substr(run.output.size() > 3000 ? run.output.size() - 3000
+                                                                          : 0);
+    EXPECT_NE(run.output.find("KF-SLAM finished"), std::string::npos);
+}

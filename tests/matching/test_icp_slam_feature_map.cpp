@@ -213,4 +213,24 @@ TEST(IcpSlamFeatureMap, OfficeFeatureMapMatchesTheDrawnPlan) {
               << " m); icp-slam ATE " << ate.position.rms << " m\n";
     EXPECT_EQ(matched, walls);
     EXPECT_EQ(far, 0u);
+
+    // MRPT's observations2map rebuilds the same feature map from icp-slam's keyframes.
+    if (toposlam::test::runCommand("command -v observations2map").exitCode != 0)
+        return;
+    const auto rebuilt = toposlam::test::runCommand(
+        "LD_PRELOAD='" + plugin + "' observations2map '" + dir.file("icp.ini") + "' '" +
+        dir.file("out") + "/_finalmap_.simplemap' '" + dir.file("o2m") + "'");
+    std::string rebuiltFile;
+    for (const auto& e : std::filesystem::directory_iterator(dir.path()))
+        if (std::regex_search(e.path().filename().string(),
+                              std::regex("^o2m_.*CScanFeaturesMap_[0-9]+_segments\\.txt$")))
+            rebuiltFile = e.path().string();
+    ASSERT_FALSE(rebuiltFile.empty()) << rebuilt.output;
+    const auto slurp = [](const std::string& f) {
+        std::ifstream in(f);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        return ss.str();
+    };
+    EXPECT_EQ(slurp(rebuiltFile), slurp(segmentsFile));
 }

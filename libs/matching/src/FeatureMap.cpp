@@ -42,6 +42,13 @@ struct SegmentLine {
 /// Whether the piece a-b (facing `facing`) may merge into map segment `s`.
 bool mergeable(const MapSegment& s, const TPoint2D& a, const TPoint2D& b, double facing,
                const FeatureMapOptions& o) {
+    // Bounding boxes first (cheap, and most map segments are far away).
+    const double margin = o.mergeGap + o.mergeDistance;
+    if (std::max(a.x, b.x) < std::min(s.start.x, s.end.x) - margin ||
+        std::min(a.x, b.x) > std::max(s.start.x, s.end.x) + margin ||
+        std::max(a.y, b.y) < std::min(s.start.y, s.end.y) - margin ||
+        std::min(a.y, b.y) > std::max(s.start.y, s.end.y) + margin)
+        return false;
     if (std::abs(wrapToPi(facing - s.facing())) > o.mergeAngle)
         return false;
     const SegmentLine line(s);
@@ -76,7 +83,7 @@ void refit(MapSegment& s, const TPoint2D* extra, std::size_t extraCount) {
 void mergeSegmentInto(MapSegment& into, const MapSegment& from) {
     into.moments.add(from.moments);
     into.observations += from.observations;
-    into.seen.insert(into.seen.end(), from.seen.begin(), from.seen.end());
+    into.coverage.add(from.coverage);
     const TPoint2D ends[2] = {from.start, from.end};
     refit(into, ends, 2);
 }
@@ -295,7 +302,9 @@ void FeatureMap::insertSegment(TPoint2D a, TPoint2D b, const TPoint2D& sensor, d
     observed.end = b;
     observed.observations = 1;
     observed.moments.add(a, b, weight);
-    observed.seen.push_back({a, b, weight / length});
+    observed.coverage.origin = a;
+    observed.coverage.direction = {ab.x / length, ab.y / length};
+    observed.coverage.add(a, b, weight / length);
     if (best == segments_.size()) {
         updatePieces(observed);
         segments_.push_back(std::move(observed));
@@ -307,46 +316,96 @@ void FeatureMap::insertSegment(TPoint2D a, TPoint2D b, const TPoint2D& sensor, d
 }
 
 void FeatureMap::updatePieces(MapSegment& s) const {
-    constexpr double kBin = 0.05;  // m
     s.pieces.clear();
-    const double length = s.length();
-    if (length <= 0)
-        return;
-    const TPoint2D d((s.end.x - s.start.x) / length, (s.end.y - s.start.y) / length);
-    const std::size_t bins = static_cast<std::size_t>(std::ceil(length / kBin));
-    std::vector<double> beams(bins, 0.0);
-    for (const SegmentObservation& o : s.seen) {
-        double t0 = dot(o.a - s.start, d), t1 = dot(o.b - s.start, d);
-        if (t0 > t1)
-            std::swap(t0, t1);
-        t0 = std::max(t0, 0.0);
-        t1 = std::min(t1, length);
-        for (auto k = static_cast<std::size_t>(t0 / kBin); k < bins && k * kBin < t1; ++k) {
-            const double overlap = std::min(t1, (k + 1) * kBin) - std::max(t0, k * kBin);
-            beams[k] += o.beamsPerMetre * std::max(0.0, overlap);
-        }
-    }
+    const LineCoverage& c = s.coverage;
     std::vector<double> nonEmpty;
-    for (double b : beams)
+    for (double b : c.beams)
         if (b > 0)
             nonEmpty.push_back(b);
     if (nonEmpty.empty())
         return;
     std::nth_element(nonEmpty.begin(), nonEmpty.begin() + nonEmpty.size() / 2, nonEmpty.end());
-    const double threshold = options.minCoverageRatio * nonEmpty[nonEmpty.size() / 2];
-    const auto at = [&](double t) { return TPoint2D(s.start.x + t * d.x, s.start.y + t * d.y); };
-    for (std::size_t k = 0; k < bins;) {
-        if (beams[k] <= 0 || beams[k] < threshold) {
+    const double threshold =
+        std::max(options.minCoverageRatio * nonEmpty[nonEmpty.size() / 2], 1e-12);
+    // Pieces run along the fitted line: bin edges are projected onto it, within its extent.
+    const SegmentLine line(s);
+    const double tStart = line.along(s.start), tEnd = line.along(s.end);
+    const auto onLine = [&](long bin) {
+        const double t = static_cast<double>(bin) * LineCoverage::kBin;
+        const TPoint2D axis(c.origin.x + t * c.direction.x, c.origin.y + t * c.direction.y);
+        return std::clamp(line.along(axis), std::min(tStart, tEnd), std::max(tStart, tEnd));
+    };
+    const auto at = [&](double t) {
+        return TPoint2D(line.origin.x + t * line.direction.x, line.origin.y + t * line.direction.y);
+    };
+    const long n = static_cast<long>(c.beams.size());
+    for (long k = 0; k < n;) {
+        if (c.beams[k] < threshold) {
             ++k;
             continue;
         }
-        std::size_t e = k;
-        while (e < bins && beams[e] > 0 && beams[e] >= threshold)
+        long e = k;
+        while (e < n && c.beams[e] >= threshold)
             ++e;
-        const double t0 = k * kBin, t1 = std::min(length, e * kBin);
+        double t0 = onLine(c.firstBin + k), t1 = onLine(c.firstBin + e);
+        if (t0 > t1)
+            std::swap(t0, t1);
         if (t1 - t0 >= options.minPieceLength)
             s.pieces.push_back({at(t0), at(t1)});
         k = e;
+    }
+    // In start -> end order.
+    if (tStart > tEnd)
+        std::reverse(s.pieces.begin(), s.pieces.end());
+    for (SegmentPiece& p : s.pieces)
+        if (line.along(p.start) > line.along(p.end))
+            std::swap(p.start, p.end);
+}
+
+// --- coverage ------------------------------------------------------------------------------
+
+double LineCoverage::along(const TPoint2D& p) const {
+    return dot(p - origin, direction);
+}
+
+void LineCoverage::reserveBins(long first, long last) {
+    if (beams.empty()) {
+        firstBin = first;
+        beams.assign(static_cast<std::size_t>(last - first + 1), 0.0);
+        return;
+    }
+    if (first < firstBin) {
+        beams.insert(beams.begin(), static_cast<std::size_t>(firstBin - first), 0.0);
+        firstBin = first;
+    }
+    const long end = firstBin + static_cast<long>(beams.size());
+    if (last >= end)
+        beams.resize(beams.size() + static_cast<std::size_t>(last - end + 1), 0.0);
+}
+
+void LineCoverage::add(const TPoint2D& a, const TPoint2D& b, double beamsPerMetre) {
+    double t0 = along(a), t1 = along(b);
+    if (t0 > t1)
+        std::swap(t0, t1);
+    const long k0 = static_cast<long>(std::floor(t0 / kBin));
+    const long k1 = static_cast<long>(std::floor(t1 / kBin));
+    reserveBins(k0, k1);
+    for (long k = k0; k <= k1; ++k) {
+        const double lo = std::max(t0, k * kBin), hi = std::min(t1, (k + 1) * kBin);
+        beams[static_cast<std::size_t>(k - firstBin)] += beamsPerMetre * std::max(0.0, hi - lo);
+    }
+}
+
+void LineCoverage::add(const LineCoverage& other) {
+    for (std::size_t i = 0; i < other.beams.size(); ++i) {
+        if (other.beams[i] <= 0)
+            continue;
+        const double t = (static_cast<double>(other.firstBin + static_cast<long>(i)) + 0.5) * kBin;
+        const TPoint2D centre(other.origin.x + t * other.direction.x,
+                              other.origin.y + t * other.direction.y);
+        const long k = static_cast<long>(std::floor(along(centre) / kBin));
+        reserveBins(k, k);
+        beams[static_cast<std::size_t>(k - firstBin)] += other.beams[i];
     }
 }
 
@@ -429,7 +488,10 @@ void FeatureMap::insertPoint(std::vector<MapPoint>& points, const MapPoint& obse
         for (std::size_t i = 0; i < points.size(); ++i) {
             if (i == skip || points[i].type != obs.type)
                 continue;
-            const double d = std::hypot(points[i].position.x - p.x, points[i].position.y - p.y);
+            const double dx = points[i].position.x - p.x, dy = points[i].position.y - p.y;
+            if (std::abs(dx) > bestDistance || std::abs(dy) > bestDistance)
+                continue;
+            const double d = std::hypot(dx, dy);
             if (d <= bestDistance) {
                 best = i;
                 bestDistance = d;

@@ -79,10 +79,25 @@ struct SegmentPiece {
     double length() const;
 };
 
-/// One observed segment as merged into the map: its ends and how densely beams covered it.
-struct SegmentObservation {
-    mrpt::math::TPoint2D a, b;  ///< map frame, m
-    double beamsPerMetre = 0;
+/// How many beams fell on each 5 cm of a line: a histogram along a fixed axis (the direction
+/// of the line's first observation, through its start). Adding an observation costs its own
+/// length in bins, whatever the line already holds.
+struct LineCoverage {
+    static constexpr double kBin = 0.05;   ///< m
+    mrpt::math::TPoint2D origin;           ///< map frame, m
+    mrpt::math::TPoint2D direction{1, 0};  ///< unit
+    long firstBin = 0;                     ///< index of beams[0] (bins before origin < 0)
+    std::vector<double> beams;             ///< expected beam hits per bin
+
+    /// Adds the segment a-b covered by `beamsPerMetre` beams per metre.
+    void add(const mrpt::math::TPoint2D& a, const mrpt::math::TPoint2D& b, double beamsPerMetre);
+    /// Adds another line's coverage, bin by bin at its bins' centres.
+    void add(const LineCoverage& other);
+    /// Position (m) of the point along the axis.
+    double along(const mrpt::math::TPoint2D& p) const;
+
+  private:
+    void reserveBins(long first, long last);
 };
 
 /// One wall face of the map: a line and the pieces of it where wall was seen.
@@ -92,9 +107,9 @@ struct MapSegment {
     mrpt::math::TPoint2D start, end;
     /// The parts of start-end with wall (see the file comment), in order from start.
     std::vector<SegmentPiece> pieces;
-    std::uint32_t observations = 0;        ///< scan segments merged into it
-    SegmentMoments moments;                ///< of every merged observation
-    std::vector<SegmentObservation> seen;  ///< every merged observation
+    std::uint32_t observations = 0;  ///< scan segments merged into it
+    SegmentMoments moments;          ///< of every merged observation
+    LineCoverage coverage;           ///< of every merged observation
 
     double length() const;
     /// Direction (rad) of the normal pointing to the side the wall was seen from.

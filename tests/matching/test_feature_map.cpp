@@ -430,3 +430,43 @@ TEST(CScanFeaturesMap, SavesTextFilesAndAPictureAndDrawsIn3D) {
     EXPECT_EQ(segmentLines, m.featureMap().confirmedPieces());
     EXPECT_EQ(cornerPoints, m.featureMap().confirmedCorners());
 }
+
+// RawLogViewer's "Raw map" dialog, without the GUI: the configuration text that
+// share/doc/mrpt-tools.md tells the user to type into the dialog, read the way the dialog
+// reads it (CConfigFileMemory, section "map"), and the observations inserted as the dialog
+// inserts an observations-format rawlog (each CObservationOdometry sets the pose, every
+// observation is inserted at it). "Preview map in 3D" shows getVisualization().
+TEST(CScanFeaturesMap, RawLogViewersRawMapDialogBuildsAndDrawsIt) {
+    const char* dialogText =
+        "[map]\n"
+        "pointsMap_count=0\n"
+        "scanFeaturesMap_count=1\n"
+        "[map_scanFeaturesMap_00_creationOpts]\n"
+        "extractor=split-merge\n";
+    mrpt::config::CConfigFileMemory cfg(dialogText);
+    mrpt::maps::TSetOfMetricMapInitializers defs;
+    defs.loadFromConfigFile(cfg, "map");
+    mrpt::maps::CMultiMetricMap theMap;
+    theMap.setListOfMaps(defs);
+    ASSERT_EQ(theMap.maps.size(), 1u);
+
+    const auto world = toposlam::test::asymmetricRoom();
+    const auto scans = roomScans(world, roomPoses());
+    for (std::size_t i = 0; i < scans.size(); ++i) {
+        mrpt::obs::CObservationOdometry odometry;
+        odometry.odometry = roomPoses()[i];
+        const CPose3D curPose(odometry.odometry);
+        theMap.insertObservation(odometry, curPose);
+        theMap.insertObservation(scans[i], curPose);
+    }
+    const auto m = theMap.mapByClass<CScanFeaturesMap>();
+    ASSERT_TRUE(m);
+    EXPECT_EQ(m->keyframes().size(), scans.size());
+    const auto scene = theMap.getVisualization();
+    std::size_t lines = 0;
+    for (const auto& obj : *scene)
+        if (const auto l = std::dynamic_pointer_cast<mrpt::opengl::CSetOfLines>(obj))
+            lines += l->size();
+    EXPECT_EQ(lines, m->featureMap().confirmedPieces());
+    EXPECT_GE(lines, 10u);
+}

@@ -92,9 +92,8 @@ mrpt::maps::CMetricMap* CScanFeaturesMap::internal_CreateFromMapDefinition(
 
 IMPLEMENTS_SERIALIZABLE(CScanFeaturesMap, CMetricMap, toposlam::matching)
 
-CScanFeaturesMap::CScanFeaturesMap(const std::string& extractor) : extractor_(extractor) {
-    features::makeFeatureExtractor(extractor_);  // throws for an unknown name
-}
+CScanFeaturesMap::CScanFeaturesMap(const std::string& extractor)
+    : extractor_(extractor), extractorObject_(features::makeFeatureExtractor(extractor)) {}
 
 uint8_t CScanFeaturesMap::serializeGetVersion() const {
     return 1;
@@ -123,6 +122,7 @@ void CScanFeaturesMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t 
         case 0: {  // one scan: extractor, hasScan, robot pose, scan
             CPose2D robotPose;
             in >> extractor_ >> hasScan_ >> robotPose;
+            extractorObject_ = features::makeFeatureExtractor(extractor_);  // validates the name
             if (hasScan_) {
                 in >> scan_;
                 insertScan(scan_, robotPose);
@@ -138,6 +138,7 @@ void CScanFeaturesMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t 
             in >> likelihoodOptions.sigma_dist >> likelihoodOptions.max_corr_distance >> decimation;
             if (source > 1 || decimation < 1)
                 throw std::runtime_error("CScanFeaturesMap: corrupt options");
+            extractorObject_ = features::makeFeatureExtractor(extractor_);  // validates the name
             o.validate();
             insertionOptions.source = static_cast<Source>(source);
             likelihoodOptions.decimation = decimation;
@@ -178,8 +179,10 @@ void CScanFeaturesMap::keepScan(const mrpt::obs::CObservation2DRangeScan& scan,
     sensorPose_ = robotPose + CPose2D(scan.sensorPose);
     polar_.assign(scan_);
     hasScan_ = true;
-    // Extractors keep workspaces; one per scan is cheap next to the extraction itself.
-    features::makeFeatureExtractor(extractor_)->extract(scan_, scanFeatures_);
+    // One extractor per map, made on first use (it keeps its workspaces between scans).
+    if (!extractorObject_)
+        extractorObject_ = features::makeFeatureExtractor(extractor_);
+    extractorObject_->extract(scan_, scanFeatures_);
 }
 
 void CScanFeaturesMap::insertScan(const mrpt::obs::CObservation2DRangeScan& scan,
@@ -222,7 +225,7 @@ void CScanFeaturesMap::rebuildMap() {
 }
 
 void CScanFeaturesMap::setExtractor(const std::string& name) {
-    features::makeFeatureExtractor(name);  // validates
+    extractorObject_ = features::makeFeatureExtractor(name);  // validates
     extractor_ = name;
     if (hasScan_)
         keepScan(scan_, scanRobotPose_);

@@ -45,10 +45,12 @@
 #include <mrpt/maps/TMetricMapInitializer.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
+#include <toposlam/features/FeatureExtractor.h>
 #include <toposlam/features/ScanFeatures.h>
 #include <toposlam/matching/FeatureMap.h>
 #include <toposlam/matching/PolarScan.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -154,6 +156,8 @@ class CScanFeaturesMap : public mrpt::maps::CMetricMap {
     void rebuildMap();
 
     std::string extractor_ = "split-merge";
+    /// Shared by copies (MRPT clones maps, e.g. per particle); used by one thread at a time.
+    std::shared_ptr<features::FeatureExtractor> extractorObject_;
     FeatureMap map_;
     std::vector<FeatureKeyframe> keyframes_;
     // The last scan.

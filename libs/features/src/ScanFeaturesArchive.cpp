@@ -28,9 +28,9 @@ void readType(CArchive& in, EndpointType& t) {
 }
 
 /// A list size read from a file: a corrupt or hostile count must not allocate gigabytes. No
-/// scan has anywhere near this many features (one per beam at most).
+/// 2D scan has anywhere near this many features (one per beam at most).
 std::uint32_t readCount(CArchive& in, const char* what) {
-    constexpr std::uint32_t kMaxCount = 1u << 20;
+    constexpr std::uint32_t kMaxCount = 1u << 16;
     std::uint32_t n = 0;
     in >> n;
     if (n > kMaxCount)

@@ -32,7 +32,7 @@ void LineMap::insertScan(const PolarScan& scan, const mrpt::poses::CPose2D& sens
         if (!line)
             continue;
         const mrpt::math::TPoint2D& p = scan.point(b);
-        MapPoint m;
+        LineMapPoint m;
         m.x = float(sensorPose.x() + c * p.x - s * p.y);
         m.y = float(sensorPose.y() + s * p.x + c * p.y);
         m.nx = float(c * line->nx - s * line->ny);
@@ -42,16 +42,16 @@ void LineMap::insertScan(const PolarScan& scan, const mrpt::poses::CPose2D& sens
     }
 }
 
-void LineMap::insert(const MapPoint& p) {
+void LineMap::insert(const LineMapPoint& p) {
     cover(p.x, p.y);
-    if (const MapPoint* near = nearest(p.x, p.y)) {
+    if (const LineMapPoint* near = nearest(p.x, p.y)) {
         const float dx = near->x - p.x, dy = near->y - p.y;
         const float fuse = float(options_.fuseDistance);
         if (dx * dx + dy * dy < fuse * fuse &&
             near->nx * p.nx + near->ny * p.ny > kSameSurfaceCos) {
             // Running mean; the point moves by less than fuseDistance, so the cells it was
             // stamped into still hold it (their stored distances are at most that stale).
-            MapPoint& m = points_[std::size_t(near - points_.data())];
+            LineMapPoint& m = points_[std::size_t(near - points_.data())];
             const float w = m.weight + p.weight;
             m.x = (m.x * m.weight + p.x * p.weight) / w;
             m.y = (m.y * m.weight + p.y * p.weight) / w;
@@ -105,7 +105,7 @@ void LineMap::cover(double x, double y) {
 }
 
 void LineMap::stamp(std::uint32_t i) {
-    const MapPoint& p = points_[i];
+    const LineMapPoint& p = points_[i];
     const double res = options_.resolution;
     const long px = long(std::floor((p.x - x0_) * inverseResolution_));
     const long py = long(std::floor((p.y - y0_) * inverseResolution_));

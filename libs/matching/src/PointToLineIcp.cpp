@@ -207,7 +207,7 @@ IcpResult PointToLineIcp::refineOnMap(const LineMap& map, const PolarScan& curre
             const mrpt::math::TPoint2D& p = current.point(i);
             const double rx = c * p.x - s * p.y, ry = s * p.x + c * p.y;
             const double qx = rx + x, qy = ry + y;
-            const MapPoint* m = map.nearest(qx, qy);
+            const LineMapPoint* m = map.nearest(qx, qy);
             if (!m)
                 continue;
             const double dx = qx - m->x, dy = qy - m->y;

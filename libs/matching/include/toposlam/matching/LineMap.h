@@ -18,7 +18,7 @@
 
 namespace toposlam::matching {
 
-struct MapPoint {
+struct LineMapPoint {
     float x = 0, y = 0;    ///< m, map frame
     float nx = 0, ny = 0;  ///< unit normal, towards the sensors that saw it
     float weight = 0;      ///< observations fused into it
@@ -45,10 +45,10 @@ class LineMap {
     /// scan's sensor in the map frame).
     void insertScan(const PolarScan& scan, const mrpt::poses::CPose2D& sensorPose);
     /// Adds one point (fused into a close one with a similar normal).
-    void insert(const MapPoint& p);
+    void insert(const LineMapPoint& p);
 
     /// The map point nearest to (x, y)'s lookup cell, or nullptr when none is within radius.
-    const MapPoint* nearest(double x, double y) const {
+    const LineMapPoint* nearest(double x, double y) const {
         const long cx = long(std::floor((x - x0_) * inverseResolution_));
         const long cy = long(std::floor((y - y0_) * inverseResolution_));
         if (cx < 0 || cy < 0 || cx >= width_ || cy >= height_)
@@ -58,7 +58,7 @@ class LineMap {
     }
 
     std::size_t size() const { return points_.size(); }
-    const std::vector<MapPoint>& points() const { return points_; }
+    const std::vector<LineMapPoint>& points() const { return points_; }
 
   private:
     static constexpr std::uint32_t kNone = 0xffffffffu;
@@ -72,7 +72,7 @@ class LineMap {
     void stamp(std::uint32_t i);
 
     LineMapOptions options_;
-    std::vector<MapPoint> points_;
+    std::vector<LineMapPoint> points_;
     std::vector<Cell> cells_;
     long width_ = 0, height_ = 0;
     double x0_ = 0, y0_ = 0;  ///< corner of cell (0, 0), m

@@ -1,0 +1,200 @@
+// toposlam-bench-slam: benchmark B3 in one command. TopoSLAM's graph SLAM, its icp engine and
+// MRPT's stock icp-slam on every public log with relations and on the simulated office, one
+// run after the other, scored with the relation metric of Kümmerle et al. 2009. The work is
+// done by libs/evaluation (SlamBenchmark); this app reads the options and prints.
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <toposlam/cli/CommandLine.h>
+#include <toposlam/evaluation/ChildProcess.h>
+#include <toposlam/evaluation/SlamBenchmark.h>
+#include <toposlam/evaluation/SlamBenchmarkReport.h>
+#include <toposlam/io/InputError.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace toposlam;
+
+constexpr int kUsageError = 2;
+
+const char* const kDescription =
+    "Benchmark B3 in one run: SLAM accuracy and cost of TopoSLAM's graph SLAM (toposlam-slam, "
+    "engine = graph), of its icp engine (the same configuration with [Slam] engine = icp: "
+    "MRPT's CMetricMapBuilderICP) and of MRPT's stock icp-slam (when installed, Debian package "
+    "mrpt-apps; its configuration is the peer one of the benchmarks, on the log converted to a "
+    "rawlog by toposlam-convert), on every log of --data that has a .relations file (Kuemmerle "
+    "et al. 2009: intel, fr079, mit-csail) and on the simulated office (share/office, scored "
+    "against its ground truth: derived relations and ATE). Runs are sequential child processes, "
+    "so each one's wall time, CPU time (user + system) and peak RSS are its own. Prints a "
+    "Markdown table (relations matched, translational and rotational error mean +- std, "
+    "squared errors, maxima, ATE, wall and CPU time, real-time factor = log duration / wall "
+    "time and / CPU time, peak RSS, loop closures accepted / rejected / withdrawn) and numbered "
+    "notes on failed or skipped runs; progress goes to stderr.\n"
+    "Examples:\n"
+    "  toposlam-bench-slam --json b3.json --images b3-img\n"
+    "  toposlam-bench-slam --logs intel,office --engines graph,icp-slam --keep b3-runs\n"
+    "Exit status: 0 when every run succeeded (or, with 'B3 skipped: ...' on stderr, when the "
+    "benchmark logs are not there); 1 when a run failed (the table says which and why) or on "
+    "bad input (missing configuration); 2 for bad usage (unknown option, log or engine).";
+
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> items;
+    std::stringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ',')) {
+        if (!item.empty())
+            items.push_back(item);
+    }
+    return items;
+}
+
+std::vector<evaluation::SlamEngine> parseEngines(const std::string& text) {
+    std::vector<evaluation::SlamEngine> engines;
+    for (const std::string& name : splitList(text)) {
+        const auto engine = evaluation::engineFromName(name);
+        if (!engine)
+            throw std::invalid_argument("--engines: unknown engine '" + name +
+                                        "' (graph, icp, icp-slam)");
+        engines.push_back(*engine);
+    }
+    return engines;
+}
+
+// The programs this one runs live beside it in bin/.
+std::string besideMe(const std::string& program) {
+    const fs::path path = fs::read_symlink("/proc/self/exe").parent_path() / program;
+    if (evaluation::findExecutable(path.string()).empty())
+        throw std::runtime_error(path.string() + ": not found (build it: it runs the benchmark)");
+    return path.string();
+}
+
+// The command line; TCLAP's arguments register with `cmd`, declared first.
+struct Arguments {
+    Arguments();
+    TCLAP::CmdLine cmd;
+    TCLAP::ValueArg<std::string> data, logs, engines, config, icpSlam, icpSlamConfig, keep, images,
+        json;
+    TCLAP::ValueArg<double> timeout;
+};
+
+Arguments::Arguments()
+    : cmd(kDescription, ' ', "0.1"),
+      data("d", "data",
+           "Folder of the public logs: every <name>.relations with its "
+           "<name>.clf/.log/.rawlog[.gz]; absent: prints 'B3 skipped' and exits 0. "
+           "Default: " TOPOSLAM_SHARED_DATA_DIR "/slam",
+           false, TOPOSLAM_SHARED_DATA_DIR "/slam", "dir", cmd),
+      logs("", "logs",
+           "Comma-separated logs to run, in this order: names of --data's logs (intel, fr079, "
+           "mit-csail) and 'office' (the simulated office). Default: all; 'office' alone needs "
+           "no --data",
+           false, "", "list", cmd),
+      engines("", "engines",
+              "Comma-separated engines (table rows per log): graph, icp, icp-slam. Default: all "
+              "three",
+              false, "graph,icp,icp-slam", "list", cmd),
+      config("c", "config",
+             "toposlam-slam configuration of the graph and icp rows ([Slam] engine is set per "
+             "row in a copy). Default: " TOPOSLAM_SOURCE_DIR "/config_ini/toposlam-slam.ini",
+             false, TOPOSLAM_SOURCE_DIR "/config_ini/toposlam-slam.ini", "file.ini", cmd),
+      icpSlam("", "icp-slam",
+              "MRPT's icp-slam executable (a name is looked up in PATH); when not found, its "
+              "rows are reported as not run. Default: icp-slam",
+              false, "icp-slam", "program", cmd),
+      icpSlamConfig("", "icp-slam-config",
+                    "icp-slam configuration (logOutput_dir is replaced in a copy). "
+                    "Default: " TOPOSLAM_SHARED_DATA_DIR "/../peers/icp-slam-benchmark.ini",
+                    false, TOPOSLAM_SHARED_DATA_DIR "/../peers/icp-slam-benchmark.ini", "file.ini",
+                    cmd),
+      keep("", "keep",
+           "Keep every run's folder under this one (<log>/<engine>/: the configuration written "
+           "for it, the engine's outputs in out/, stdout.txt, stderr.txt). Default: a temporary "
+           "folder, removed at the end",
+           false, "", "dir", cmd),
+      images("", "images",
+             "Write <log>-maps.png (each engine's occupancy grid side by side, same scale) and "
+             "<log>-trajectories.png (the trajectories, aligned) into this folder",
+             false, "", "dir", cmd),
+      json("", "json", "Write the results as JSON to this file (keys: share/doc/apps.md)", false,
+           "", "out.json", cmd),
+      timeout("", "timeout",
+              "Kill a run after this many seconds of wall time (0: no limit, the default)", false,
+              0.0, "seconds", cmd) {}
+
+// The benchmark options from the command line. Throws std::invalid_argument for bad usage.
+evaluation::SlamBenchmarkOptions benchmarkOptions(Arguments& a) {
+    evaluation::SlamBenchmarkOptions options;
+    options.dataDir = a.data.getValue();
+    options.simulatedLogs.push_back({"office", TOPOSLAM_SOURCE_DIR "/share/office/office.rawlog",
+                                     "", TOPOSLAM_SOURCE_DIR "/share/office/office_gt.txt"});
+    options.logs = splitList(a.logs.getValue());
+    options.engines = parseEngines(a.engines.getValue());
+    options.keepDir = a.keep.getValue();
+    options.imageDir = a.images.getValue();
+    if (!(a.timeout.getValue() >= 0))
+        throw std::invalid_argument("--timeout must be >= 0");
+    evaluation::SlamEngineSetup& setup = options.setup;
+    setup.timeoutSeconds = a.timeout.getValue();
+    setup.slamConfig = a.config.getValue();
+    setup.icpSlamConfig = a.icpSlamConfig.getValue();
+    setup.icpSlam = evaluation::findExecutable(a.icpSlam.getValue());
+    if (setup.icpSlam.empty())
+        std::cerr << "note: " << a.icpSlam.getValue() << " not found: its rows are not run\n";
+    setup.toposlamSlam = besideMe("toposlam-slam");
+    setup.toposlamConvert = besideMe("toposlam-convert");
+    return options;
+}
+
+int run(int argc, char** argv) {
+    Arguments a;
+    if (const auto exitCode = cli::parseCommandLine(a.cmd, argc, argv))
+        return *exitCode == 0 ? 0 : kUsageError;
+    std::optional<evaluation::SlamBenchmark> bench;
+    try {
+        bench.emplace(benchmarkOptions(a));
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "error: " << e.what() << " (see --help)\n";
+        return kUsageError;
+    }
+    if (!bench->skipReason().empty()) {
+        std::cerr << "B3 skipped: " << bench->skipReason()
+                  << "; get shared/data/slam or pass --data\n";
+        return EXIT_SUCCESS;
+    }
+    if (!fs::is_regular_file(a.config.getValue()))
+        throw io::InputError(a.config.getValue(), "configuration file not found");
+
+    const auto runs = bench->runs();
+    const auto result = bench->run([&](double, std::size_t done) {
+        if (done < runs.size()) {
+            std::cerr << "[" << done + 1 << "/" << runs.size() << "] " << runs[done].first << " "
+                      << evaluation::engineName(runs[done].second) << " ..." << std::endl;
+        }
+    });
+    std::cout << evaluation::formatSlamBenchmarkTable(result);
+    if (a.json.isSet()) {
+        evaluation::saveSlamBenchmarkJson(result, a.json.getValue());
+        std::cerr << "wrote " << a.json.getValue() << "\n";
+    }
+    for (const auto& log : result.logs) {
+        for (const std::string& image : log.images)
+            std::cerr << "wrote " << image << "\n";
+    }
+    if (!result.workDirectory.empty())
+        std::cerr << "runs kept in " << result.workDirectory << "\n";
+    return result.anyFailed() ? EXIT_FAILURE : EXIT_SUCCESS;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return cli::runReportingErrors(run, argc, argv);
+}

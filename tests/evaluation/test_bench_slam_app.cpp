@@ -1,0 +1,170 @@
+// End-to-end tests of toposlam-bench-slam (benchmark B3) on the simulated office, whose ground
+// truth is exact: every engine's row, the JSON, the pictures, and the exit statuses.
+#include <gtest/gtest.h>
+#include <toposlam/evaluation/ChildProcess.h>
+#include <nlohmann/json.hpp>
+
+#include <TestSupport.h>
+
+#include <filesystem>
+#include <fstream>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <string>
+
+using toposlam::test::runApp;
+using toposlam::test::runCommand;
+using toposlam::test::TempDir;
+namespace fs = std::filesystem;
+
+namespace {
+
+bool contains(const std::string& text, const std::string& what) {
+    return text.find(what) != std::string::npos;
+}
+
+nlohmann::json readJson(const std::string& path) {
+    std::ifstream in(path);
+    return nlohmann::json::parse(in);
+}
+
+std::string bench() {
+    return "'" + toposlam::test::binDir() + "/toposlam-bench-slam' ";
+}
+
+// A run that finished on the office: its relations all matched, sensible resource figures.
+void expectScored(const nlohmann::json& run, std::size_t relations, double maxAte) {
+    SCOPED_TRACE(run.value("engine", "?"));
+    ASSERT_EQ(run["status"], "ok") << run.dump(2);
+    const nlohmann::json& accuracy = run["accuracy"];
+    EXPECT_EQ(accuracy["relations_total"], relations);
+    EXPECT_EQ(accuracy["relations_matched"], relations);
+    EXPECT_LT(accuracy["ate"]["position_m"]["rms"].get<double>(), maxAte);
+    EXPECT_LT(accuracy["translation_m"]["mean"].get<double>(), 0.05);
+    const nlohmann::json& process = run["process"];
+    EXPECT_EQ(process["exit_code"], 0);
+    EXPECT_GT(process["cpu_s"].get<double>(), 0.0);
+    EXPECT_GT(process["wall_s"].get<double>(), 0.0);
+    // An MRPT SLAM process holding a 368-scan log and its map: tens to hundreds of MiB.
+    EXPECT_GT(process["peak_rss_mib"].get<double>(), 10.0);
+    EXPECT_LT(process["peak_rss_mib"].get<double>(), 2000.0);
+}
+
+}  // namespace
+
+TEST(BenchSlamApp, HelpExplainsEveryOption) {
+    const auto r = runApp("toposlam-bench-slam", "--help");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    for (const char* option :
+         {"--data", "--logs", "--engines", "--config", "--icp-slam", "--icp-slam-config", "--keep",
+          "--images", "--json", "--timeout", "Kuemmerle", "icp-slam", "office"}) {
+        EXPECT_TRUE(contains(r.output, option)) << option;
+    }
+}
+
+TEST(BenchSlamApp, OfficeEveryEngineScoredAgainstGroundTruth) {
+    TempDir dir;
+    const std::string tmp = dir.file("tmp"), json = dir.file("b3.json"), images = dir.file("img");
+    fs::create_directories(tmp);
+    const auto r = runCommand("TMPDIR='" + tmp + "' " + bench() + "--logs office --json " + json +
+                              " --images " + images);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* row : {"| office | graph |", "| office | icp |", "| office | icp-slam |",
+                            "[1/", "office graph ...", "ATE RMSE"}) {
+        EXPECT_TRUE(contains(r.output, row)) << row << "\n" << r.output;
+    }
+    EXPECT_TRUE(fs::is_empty(tmp)) << "the runs' temporary folder was left behind";
+
+    const nlohmann::json j = readJson(json);
+    ASSERT_EQ(j["logs"].size(), 1u);
+    const nlohmann::json& office = j["logs"][0];
+    EXPECT_EQ(office["name"], "office");
+    EXPECT_EQ(office["reference"]["kind"], "ground_truth");
+    EXPECT_EQ(office["scans"], 368);
+    const std::size_t relations = office["reference"]["relations"];
+    EXPECT_GT(relations, 368u);  // every consecutive pair + the multi-scale ones
+    ASSERT_EQ(office["runs"].size(), 3u);
+    const nlohmann::json& graph = office["runs"][0];
+    EXPECT_EQ(graph["engine"], "graph");
+    // Graph SLAM on a simulated log with 1 cm laser noise: centimetres, not decimetres.
+    expectScored(graph, relations, 0.1);
+    EXPECT_EQ(graph["summary"]["engine"], "graph");
+    EXPECT_EQ(graph["summary"]["scans"], 368);
+    EXPECT_TRUE(graph["summary"]["loops"].contains("accepted"));
+    // MRPT's ICP builder, our wrapper and the stock app: no loop closure, so looser.
+    EXPECT_EQ(office["runs"][1]["engine"], "icp");
+    expectScored(office["runs"][1], relations, 0.2);
+    const nlohmann::json& icpSlam = office["runs"][2];
+    EXPECT_EQ(icpSlam["engine"], "icp-slam");
+    if (toposlam::evaluation::findExecutable("icp-slam").empty()) {
+        EXPECT_EQ(icpSlam["status"], "skipped");
+    } else {
+        expectScored(icpSlam, relations, 0.2);
+        EXPECT_EQ(icpSlam["conversion"]["exit_code"], 0);
+    }
+    for (const char* picture : {"office-maps.png", "office-trajectories.png"}) {
+        const cv::Mat image = cv::imread(images + "/" + picture);
+        ASSERT_FALSE(image.empty()) << picture;
+        EXPECT_GT(image.cols, 300) << picture;
+    }
+}
+
+TEST(BenchSlamApp, KeepKeepsEveryRunsFolder) {
+    TempDir dir;
+    const std::string keep = dir.file("runs");
+    const auto r = runApp("toposlam-bench-slam", "--logs office --engines icp --keep " + keep);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const std::string run = keep + "/office/icp";
+    std::ifstream ini(run + "/toposlam-slam.ini");
+    const std::string text((std::istreambuf_iterator<char>(ini)), std::istreambuf_iterator<char>());
+    EXPECT_TRUE(contains(text, "engine=icp") || contains(text, "engine = icp")) << text;
+    for (const char* file :
+         {"out/trajectory.txt", "out/map.png", "out/summary.json", "stdout.txt", "stderr.txt"}) {
+        EXPECT_TRUE(fs::is_regular_file(run + "/" + file)) << file;
+    }
+}
+
+TEST(BenchSlamApp, MissingDataIsSkipped) {
+    TempDir dir;
+    const auto r = runApp("toposlam-bench-slam",
+                          "--data " + dir.file("absent") + " --json " + dir.file("b3.json"));
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(contains(r.output, "B3 skipped")) << r.output;
+    EXPECT_FALSE(fs::exists(dir.file("b3.json")));
+}
+
+TEST(BenchSlamApp, BadUsageExits2) {
+    for (const char* args : {"--no-such-option", "--logs office --engines graph,cartographer",
+                             "--logs office,office", "--logs office --timeout -1"}) {
+        const auto r = runApp("toposlam-bench-slam", args);
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
+        EXPECT_TRUE(contains(r.output, "error: ")) << args << "\n" << r.output;
+    }
+}
+
+TEST(BenchSlamApp, MissingConfigIsBadInput) {
+    const auto r = runApp("toposlam-bench-slam", "--logs office --config /nonexistent/slam.ini");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_TRUE(contains(r.output, "error: /nonexistent/slam.ini: configuration file not found"))
+        << r.output;
+}
+
+TEST(BenchSlamApp, FailingRunIsReportedInItsRowAndExits1) {
+    TempDir dir;
+    const std::string json = dir.file("b3.json");
+    const auto r = runApp("toposlam-bench-slam",
+                          "--logs office --engines icp-slam --icp-slam /bin/false --json " + json);
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_TRUE(contains(r.output, "| office | icp-slam | FAILED [1] |")) << r.output;
+    EXPECT_TRUE(contains(r.output, "[1] office icp-slam: icp-slam: exit status 1")) << r.output;
+    const nlohmann::json j = readJson(json);
+    EXPECT_EQ(j["logs"][0]["runs"][0]["status"], "failed");
+}
+
+TEST(BenchSlamApp, AbsentIcpSlamIsNotRun) {
+    const auto r = runApp("toposlam-bench-slam",
+                          "--logs office --engines icp-slam --icp-slam /nonexistent/icp-slam");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(contains(r.output, "| office | icp-slam | not run [1] |")) << r.output;
+    EXPECT_TRUE(contains(r.output, "not installed")) << r.output;
+}

@@ -129,12 +129,18 @@ Arguments::Arguments()
               "Kill a run after this many seconds of wall time (0: no limit, the default)", false,
               0.0, "seconds", cmd) {}
 
+// "/work/wt/../shared/data" -> "/work/shared/data": shorter names in the table.
+std::string tidy(const std::string& path) {
+    return fs::path(path).lexically_normal().string();
+}
+
 // The benchmark options from the command line. Throws std::invalid_argument for bad usage.
 evaluation::SlamBenchmarkOptions benchmarkOptions(Arguments& a) {
     evaluation::SlamBenchmarkOptions options;
-    options.dataDir = a.data.getValue();
-    options.simulatedLogs.push_back({"office", TOPOSLAM_SOURCE_DIR "/share/office/office.rawlog",
-                                     "", TOPOSLAM_SOURCE_DIR "/share/office/office_gt.txt"});
+    options.dataDir = tidy(a.data.getValue());
+    options.simulatedLogs.push_back({"office",
+                                     tidy(TOPOSLAM_SOURCE_DIR "/share/office/office.rawlog"), "",
+                                     tidy(TOPOSLAM_SOURCE_DIR "/share/office/office_gt.txt")});
     options.logs = splitList(a.logs.getValue());
     options.engines = parseEngines(a.engines.getValue());
     options.keepDir = a.keep.getValue();
@@ -143,8 +149,8 @@ evaluation::SlamBenchmarkOptions benchmarkOptions(Arguments& a) {
         throw std::invalid_argument("--timeout must be >= 0");
     evaluation::SlamEngineSetup& setup = options.setup;
     setup.timeoutSeconds = a.timeout.getValue();
-    setup.slamConfig = a.config.getValue();
-    setup.icpSlamConfig = a.icpSlamConfig.getValue();
+    setup.slamConfig = tidy(a.config.getValue());
+    setup.icpSlamConfig = tidy(a.icpSlamConfig.getValue());
     setup.icpSlam = evaluation::findExecutable(a.icpSlam.getValue());
     if (setup.icpSlam.empty())
         std::cerr << "note: " << a.icpSlam.getValue() << " not found: its rows are not run\n";

@@ -9,10 +9,12 @@
 #include <toposlam/evaluation/SlamBenchmark.h>
 #include <toposlam/evaluation/SlamBenchmarkLog.h>
 #include <toposlam/evaluation/SlamBenchmarkReport.h>
+#include <toposlam/evaluation/TrajectoryPlot.h>
 #include <toposlam/io/InputError.h>
 
 #include <TestSupport.h>
 
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -220,18 +222,54 @@ TEST(MapComparisonImage, PanelsSideBySideAtOneScale) {
     cv::imwrite(dir.file("fine.png"), fine);
     cv::imwrite(dir.file("coarse.png"), coarse);
     const std::string out = dir.file("maps.png");
-    saveMapComparison({{"fine", dir.file("fine.png"), 0.05, ""},
-                       {"coarse", dir.file("coarse.png"), 0.10, ""},
-                       {"failed", "", 0.05, "failed: exit status 1"}},
+    saveMapComparison({{"fine", dir.file("fine.png"), 0.05},
+                       {"coarse", dir.file("coarse.png"), 0.10},
+                       {"failed", "", 0.05, 0, "failed: exit status 1"}},
                       "heading", out);
     const cv::Mat image = cv::imread(out);
     ASSERT_FALSE(image.empty());
     // Each mapped part (100 x 50 px at 0.05 m) plus its 10 px border, and the grey box.
     EXPECT_GE(image.cols, 2 * 120 + 300);
     EXPECT_GE(image.rows, 70);
-    EXPECT_THROW(saveMapComparison({{"x", dir.file("none.png"), 0.05, ""}}, "h", out),
+    EXPECT_THROW(saveMapComparison({{"x", dir.file("none.png"), 0.05}}, "h", out),
                  std::runtime_error);
     EXPECT_THROW(saveMapComparison({}, "h", out), std::invalid_argument);
+}
+
+TEST(MapComparisonImage, AlignmentBetweenTwoFramesOfOneTrajectory) {
+    // The same path in a frame turned by 30 deg and moved by (1, 2): the alignment undoes it.
+    const mrpt::math::TPose2D frame(1, 2, M_PI / 6);
+    toposlam::io::Trajectory2D reference, moved;
+    for (int i = 0; i < 20; ++i) {
+        const mrpt::math::TPose2D p(0.3 * i, std::sin(0.5 * i), 0.1 * i);
+        reference.push_back({100.0 + i, p});
+        moved.push_back({100.0 + i, frame + p});
+    }
+    const mrpt::math::TPose2D back = alignmentTo(reference, moved, 1e-5);
+    EXPECT_NEAR(back.phi, -M_PI / 6, 1e-9);
+    const mrpt::math::TPose2D first = back + moved[5].pose;
+    EXPECT_NEAR(first.x, reference[5].pose.x, 1e-9);
+    EXPECT_NEAR(first.y, reference[5].pose.y, 1e-9);
+    moved.resize(1);  // one stamp in common: nothing to align
+    EXPECT_EQ(alignmentTo(reference, moved, 1e-5).phi, 0.0);
+}
+
+TEST(MapComparisonImage, TurnsPicturesBeforeCropping) {
+    TempDir dir;
+    cv::Mat bar(200, 200, CV_8UC1, cv::Scalar(128));
+    bar(cv::Rect(50, 90, 100, 20)).setTo(255);  // 100 px wide, 20 px high
+    cv::imwrite(dir.file("bar.png"), bar);
+    const std::string out = dir.file("turned.png");
+    saveMapComparison({{"t", dir.file("bar.png"), 0.05, 0.0}}, "", out);
+    const cv::Mat flat = cv::imread(out);
+    saveMapComparison({{"t", dir.file("bar.png"), 0.05, M_PI / 2}}, "", out);
+    const cv::Mat upright = cv::imread(out);
+    ASSERT_FALSE(flat.empty());
+    ASSERT_FALSE(upright.empty());
+    // Turned a quarter: the mapped part is 20 px wide and 100 px high (+ borders and titles).
+    EXPECT_GT(flat.cols, 100);
+    EXPECT_LT(upright.cols, 100);
+    EXPECT_GT(upright.rows, flat.rows + 60);
 }
 
 // ---- report -------------------------------------------------------------------------------

@@ -2,6 +2,7 @@
 #include <toposlam/io/AtomicFile.h>
 
 #include <algorithm>
+#include <cmath>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -17,12 +18,33 @@ constexpr int kGap = 20;            // px between and around panels
 constexpr int kTitleHeight = 32;    // px of a panel title line
 constexpr int kHeadingHeight = 40;  // px of the heading line
 
-// The picture cut down to its mapped part: the pixels that differ from the unknown-space
-// grey found in its corner, plus a small border.
-cv::Mat croppedMap(const std::string& file) {
-    const cv::Mat image = cv::imread(file, cv::IMREAD_GRAYSCALE);
-    if (image.empty())
+// The picture turned by `rotation` (rad, counter-clockwise) on a canvas large enough for all
+// of it, the new corners filled with the unknown-space grey.
+cv::Mat rotated(const cv::Mat& image, double rotation) {
+    if (rotation == 0)
+        return image;
+    const double degrees = rotation * 180.0 / M_PI;
+    const cv::Point2f centre(0.5f * float(image.cols), 0.5f * float(image.rows));
+    cv::Mat transform = cv::getRotationMatrix2D(centre, degrees, 1.0);
+    const cv::Rect2f bounds =
+        cv::RotatedRect(centre, image.size(), float(degrees)).boundingRect2f();
+    transform.at<double>(0, 2) += 0.5 * bounds.width - centre.x;
+    transform.at<double>(1, 2) += 0.5 * bounds.height - centre.y;
+    cv::Mat turned;
+    cv::warpAffine(image, turned, transform,
+                   cv::Size(int(std::ceil(bounds.width)), int(std::ceil(bounds.height))),
+                   cv::INTER_LINEAR, cv::BORDER_CONSTANT,
+                   cv::Scalar(image.at<unsigned char>(0, 0)));
+    return turned;
+}
+
+// The picture turned, then cut down to its mapped part: the pixels that differ from the
+// unknown-space grey found in its corner, plus a small border.
+cv::Mat croppedMap(const std::string& file, double rotation) {
+    const cv::Mat original = cv::imread(file, cv::IMREAD_GRAYSCALE);
+    if (original.empty())
         throw std::runtime_error(file + ": cannot read the map picture");
+    const cv::Mat image = rotated(original, rotation);
     cv::Mat difference;
     cv::absdiff(image, cv::Scalar(image.at<unsigned char>(0, 0)), difference);
     const cv::Rect mapped = cv::boundingRect(difference > 8);
@@ -45,7 +67,7 @@ std::vector<cv::Mat> scaledPanels(const std::vector<MapPanel>& panels, int maxPa
     for (std::size_t i = 0; i < panels.size(); ++i) {
         if (panels[i].imageFile.empty())
             continue;
-        maps[i] = croppedMap(panels[i].imageFile);
+        maps[i] = croppedMap(panels[i].imageFile, panels[i].rotation);
         const double resolution = panels[i].metresPerPixel;
         finest = finest > 0 ? std::min(finest, resolution) : resolution;
         largest = std::max(largest, resolution * std::max(maps[i].cols, maps[i].rows));

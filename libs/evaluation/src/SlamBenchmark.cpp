@@ -2,6 +2,7 @@
 #include <toposlam/evaluation/LogOdometry.h>
 #include <toposlam/evaluation/MapComparisonImage.h>
 #include <toposlam/evaluation/SlamBenchmark.h>
+#include <toposlam/evaluation/TrajectoryPlot.h>
 #include <toposlam/io/InputError.h>
 
 #include <stdlib.h>
@@ -85,8 +86,10 @@ std::string shortened(const std::string& text, std::size_t length) {
     return text.size() > length ? text.substr(0, length) + "..." : text;
 }
 
-MapPanel mapPanel(const SlamBenchmarkRow& row) {
+// The row's map picture; `rotation` (rad) turns it into the frame of the first engine's.
+MapPanel mapPanel(const SlamBenchmarkRow& row, double rotation) {
     MapPanel panel;
+    panel.rotation = rotation;
     panel.title = engineName(row.run.engine);
     const SlamEngineRun& run = row.run;
     if (row.evaluation && row.evaluation->relative.matchedRelations > 0)
@@ -258,16 +261,24 @@ void SlamBenchmark::writeImages(SlamBenchmarkLogResult& result,
         result.log.groundTruthFile.empty() ? result.log.relationsFile : result.log.groundTruthFile;
     evaluation.stampTolerance = options_.stampTolerance;
     std::vector<io::Trajectory2D> estimates;
+    const io::Trajectory2D* frame = nullptr;  // the first scored engine's: all maps turned to it
     for (const SlamBenchmarkRow& row : result.rows) {
-        panels.push_back(mapPanel(row));
+        if (!frame && row.evaluation)
+            frame = &row.run.trajectory;
+        const double rotation =
+            frame && row.evaluation
+                ? alignmentTo(*frame, row.run.trajectory, options_.stampTolerance).phi
+                : 0.0;
+        panels.push_back(mapPanel(row, rotation));
         if (row.evaluation) {
             evaluation.methods.push_back(*row.evaluation);
             estimates.push_back(row.run.trajectory);
         }
     }
-    const std::string heading = "B3 " + result.log.name + " (" + std::to_string(result.scans) +
-                                " scans, " + fixed(result.durationSeconds, 0) +
-                                " s): each engine's occupancy grid, same scale";
+    const std::string heading =
+        "B3 " + result.log.name + " (" + std::to_string(result.scans) + " scans, " +
+        fixed(result.durationSeconds, 0) +
+        " s): each engine's occupancy grid, one scale, turned to the first one's frame";
     const fs::path maps = directory / (result.log.name + "-maps.png");
     saveMapComparison(panels, heading, maps.string());
     result.images.push_back(maps.string());

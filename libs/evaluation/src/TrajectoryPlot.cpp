@@ -13,21 +13,24 @@
 
 namespace toposlam::evaluation {
 
+mrpt::math::TPose2D alignmentTo(const io::Trajectory2D& reference,
+                                const io::Trajectory2D& trajectory, double stampTolerance) {
+    const StampedPoseLookup referenceAt(reference, stampTolerance);
+    std::vector<mrpt::math::TPoint2D> from, to;
+    for (const io::TimedPose2D& p : trajectory) {
+        if (const auto r = referenceAt.find(p.stamp)) {
+            from.push_back(p.pose.translation());
+            to.push_back(reference[*r].pose.translation());
+        }
+    }
+    return from.size() < 2 ? mrpt::math::TPose2D(0, 0, 0) : alignRigid2D(from, to);
+}
+
 std::vector<PlottedTrajectory> alignedTo(const io::Trajectory2D& reference,
                                          std::vector<PlottedTrajectory> trajectories,
                                          double stampTolerance) {
-    const StampedPoseLookup referenceAt(reference, stampTolerance);
     for (PlottedTrajectory& t : trajectories) {
-        std::vector<mrpt::math::TPoint2D> from, to;
-        for (const io::TimedPose2D& p : t.poses) {
-            if (const auto r = referenceAt.find(p.stamp)) {
-                from.push_back(p.pose.translation());
-                to.push_back(reference[*r].pose.translation());
-            }
-        }
-        if (from.size() < 2)
-            continue;
-        const mrpt::math::TPose2D transform = alignRigid2D(from, to);
+        const mrpt::math::TPose2D transform = alignmentTo(reference, t.poses, stampTolerance);
         for (io::TimedPose2D& p : t.poses)
             p.pose = transform + p.pose;
     }

@@ -1,6 +1,7 @@
 #pragma once
 // A picture of several trajectories on one map-like plot (PNG), for a look at what the numbers
 // of an evaluation mean: where a method drifts, where a corridor got bent.
+#include <mrpt/math/TPose2D.h>
 #include <toposlam/io/Trajectory.h>
 
 #include <string>
@@ -12,6 +13,12 @@ struct PlottedTrajectory {
     std::string label;  ///< legend text
     io::Trajectory2D poses;
 };
+
+/// The rigid 2D transform (trajectory frame -> reference frame) that best aligns the positions
+/// of `trajectory` with those of `reference` at the same stamps (within `stampTolerance`, s);
+/// the identity when they have fewer than 2 stamps in common.
+mrpt::math::TPose2D alignmentTo(const io::Trajectory2D& reference,
+                                const io::Trajectory2D& trajectory, double stampTolerance);
 
 /// Moves each trajectory by the rigid 2D transform that best aligns its positions with those of
 /// `reference` at the same stamps (within `stampTolerance`, s), so that all are drawn in the

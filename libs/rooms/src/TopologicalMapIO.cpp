@@ -1,14 +1,17 @@
-#include <toposlam/io/AtomicFile.h>
 #include <toposlam/io/InputError.h>
+#include <toposlam/io/JsonFile.h>
+#include <toposlam/io/TextFile.h>
 #include <toposlam/rooms/TopologicalMapIO.h>
 
-#include "JsonReader.h"
-#include "JsonWriter.h"
+#include <tinyxml2.h>
 
 #include <algorithm>
-#include <fstream>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <map>
-#include <sstream>
 #include <stdexcept>
 
 namespace toposlam::rooms {
@@ -17,27 +20,14 @@ namespace {
 
 constexpr const char* kFormat = "toposlam-topological-map";
 constexpr int kVersion = 1;
+constexpr long long kMaxSide = 1 << 20;  // cells per grid row or column
+constexpr long long kMaxId = 1 << 30;
 
-std::string readText(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw io::InputError(path, "cannot open the file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad())
-        throw io::InputError(path, "read error");
-    return text.str();
-}
-
-void writeText(const std::string& path, const std::string& text) {
-    io::writeFileAtomically(path, [&](const std::string& tmp) {
-        std::ofstream out(tmp, std::ios::binary);
-        out << text;
-        out.close();
-        if (!out)
-            throw std::runtime_error(path + ": cannot write the file");
-    });
-}
+/// What is wrong inside a file; the public functions add the file name (io::InputError).
+class FormatError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
 
 bool endsWith(const std::string& s, const std::string& suffix) {
     return s.size() >= suffix.size() &&
@@ -45,465 +35,554 @@ bool endsWith(const std::string& s, const std::string& suffix) {
                       [](char a, char b) { return std::tolower(a) == std::tolower(b); });
 }
 
-void point(detail::JsonWriter& j, const std::string& key, const mrpt::math::TPoint2D& p) {
-    j.key(key).beginInlineArray().value(p.x).value(p.y).endArray();
+// ---- the label image as runs, shared by both formats ----------------------------------------
+
+// Row-major runs "value, count, value, count, ..." over rows x cols cells, row 0 at the top.
+std::vector<long long> labelRuns(const TopologicalMap& map) {
+    std::vector<long long> runs;
+    if (map.labels.empty()) {
+        if (map.frame.rows > 0 && map.frame.cols > 0)  // no label image: all "no room"
+            runs = {0, static_cast<long long>(map.frame.rows) * map.frame.cols};
+        return runs;
+    }
+    int current = map.labels.at<int>(0, 0);
+    long long count = 0;
+    for (int r = 0; r < map.labels.rows; ++r) {
+        const int* row = map.labels.ptr<int>(r);
+        for (int c = 0; c < map.labels.cols; ++c) {
+            if (row[c] == current) {
+                ++count;
+                continue;
+            }
+            runs.insert(runs.end(), {current, count});
+            current = row[c];
+            count = 1;
+        }
+    }
+    runs.insert(runs.end(), {current, count});
+    return runs;
 }
 
-mrpt::math::TPoint2D readPoint(const detail::JsonValue& v, const std::string& what) {
-    const auto& a = v.array(what);
-    if (a.size() != 2)
-        throw detail::JsonError(what + " must be [x, y]");
-    return {a[0].number(what + "[0]"), a[1].number(what + "[1]")};
+cv::Mat labelsFromRuns(const GridImageFrame& frame, const std::vector<long long>& runs,
+                       int roomCount, const std::string& what) {
+    const long long cells = static_cast<long long>(frame.rows) * frame.cols;
+    if (runs.size() % 2 != 0)
+        throw FormatError(what + " must hold value, count pairs");
+    if (cells == 0)
+        return cv::Mat();
+    cv::Mat labels(frame.rows, frame.cols, CV_32S);
+    long long at = 0;
+    for (std::size_t k = 0; k < runs.size(); k += 2) {
+        if (runs[k] < 0 || runs[k] > roomCount) {
+            throw FormatError(what + ": label " + std::to_string(runs[k]) + " is not a room (0.." +
+                              std::to_string(roomCount) + ")");
+        }
+        if (runs[k + 1] < 1 || runs[k + 1] > cells - at)
+            throw FormatError(what + " cover more than rows x cols cells");
+        std::fill_n(labels.ptr<int>() + at, runs[k + 1], static_cast<int>(runs[k]));
+        at += runs[k + 1];
+    }
+    if (at != cells) {
+        throw FormatError(what + " cover " + std::to_string(at) + " cells, rows x cols is " +
+                          std::to_string(cells));
+    }
+    return labels;
+}
+
+void checkFrame(const GridImageFrame& frame) {
+    if (!(frame.resolution > 0) || !std::isfinite(frame.resolution))
+        throw FormatError("frame.resolution must be > 0");
+    if (!std::isfinite(frame.xMin) || !std::isfinite(frame.yMin))
+        throw FormatError("frame.x_min and frame.y_min must be finite");
+}
+
+// ---- JSON: typed access with messages that name the value ------------------------------------
+
+using io::Json;
+
+const Json& member(const Json& object, const std::string& key, const std::string& where) {
+    if (!object.is_object())
+        throw FormatError(where + " must be an object");
+    const auto it = object.find(key);
+    if (it == object.end())
+        throw FormatError(where + " has no \"" + key + "\"");
+    return *it;
+}
+
+double number(const Json& v, const std::string& what) {
+    if (!v.is_number())
+        throw FormatError(what + " must be a number");
+    const double x = v.get<double>();
+    if (!std::isfinite(x))
+        throw FormatError(what + " must be finite");
+    return x;
+}
+
+long long integer(const Json& v, const std::string& what, long long lo, long long hi) {
+    const double x = v.is_number() ? v.get<double>() : NAN;
+    if (!(x == std::floor(x) && x >= static_cast<double>(lo) && x <= static_cast<double>(hi))) {
+        throw FormatError(what + " must be an integer in [" + std::to_string(lo) + ", " +
+                          std::to_string(hi) + "]");
+    }
+    return v.is_number_integer() ? v.get<long long>() : static_cast<long long>(x);
+}
+
+const Json& array(const Json& v, const std::string& what) {
+    if (!v.is_array())
+        throw FormatError(what + " must be an array");
+    return v;
+}
+
+std::string text(const Json& v, const std::string& what) {
+    if (!v.is_string())
+        throw FormatError(what + " must be a string");
+    return v.get<std::string>();
+}
+
+mrpt::math::TPoint2D point(const Json& v, const std::string& what) {
+    if (!v.is_array() || v.size() != 2)
+        throw FormatError(what + " must be [x, y]");
+    return {number(v[0], what + "[0]"), number(v[1], what + "[1]")};
+}
+
+Json pointJson(const mrpt::math::TPoint2D& p) {
+    return Json::array({p.x, p.y});
+}
+
+Json roomJson(const Room& r) {
+    Json outline = Json::array();
+    for (const auto& p : r.outline)
+        outline.insert(outline.end(), {p.x, p.y});
+    return {{"id", r.id},
+            {"name", r.name},
+            {"area", r.area},
+            {"centroid", pointJson(r.centroid)},
+            {"anchor", pointJson(r.anchor)},
+            {"outline", outline}};
+}
+
+Room roomFromJson(const Json& v, std::size_t index) {
+    const std::string w = "rooms[" + std::to_string(index) + "]";
+    Room r;
+    r.id = static_cast<int>(integer(member(v, "id", w), w + ".id", 1, kMaxId));
+    if (r.id != static_cast<int>(index) + 1)
+        throw FormatError(w + ".id must be " + std::to_string(index + 1));
+    if (v.contains("name"))
+        r.name = text(v["name"], w + ".name");
+    r.area = number(member(v, "area", w), w + ".area");
+    r.centroid = point(member(v, "centroid", w), w + ".centroid");
+    r.anchor = point(member(v, "anchor", w), w + ".anchor");
+    const Json& outline = array(member(v, "outline", w), w + ".outline");
+    if (outline.size() % 2 != 0)
+        throw FormatError(w + ".outline must hold x, y pairs");
+    for (std::size_t k = 0; k < outline.size(); k += 2)
+        r.outline.push_back(
+            {number(outline[k], w + ".outline"), number(outline[k + 1], w + ".outline")});
+    return r;
+}
+
+Door doorFromJson(const Json& v, std::size_t index, int roomCount) {
+    const std::string w = "doors[" + std::to_string(index) + "]";
+    Door d;
+    d.id = static_cast<int>(integer(member(v, "id", w), w + ".id", 1, kMaxId));
+    if (d.id != static_cast<int>(index) + 1)
+        throw FormatError(w + ".id must be " + std::to_string(index + 1));
+    const Json& pair = array(member(v, "rooms", w), w + ".rooms");
+    if (pair.size() != 2)
+        throw FormatError(w + ".rooms must be [roomA, roomB]");
+    d.roomA = static_cast<int>(integer(pair[0], w + ".rooms[0]", 1, roomCount));
+    d.roomB = static_cast<int>(integer(pair[1], w + ".rooms[1]", 1, roomCount));
+    if (d.roomA == d.roomB)
+        throw FormatError(w + " joins room " + std::to_string(d.roomA) + " to itself");
+    d.jambA = point(member(v, "jamb_a", w), w + ".jamb_a");
+    d.jambB = point(member(v, "jamb_b", w), w + ".jamb_b");
+    d.width = number(member(v, "width", w), w + ".width");
+    return d;
+}
+
+GridImageFrame frameFromJson(const Json& v) {
+    GridImageFrame frame;
+    frame.resolution = number(member(v, "resolution", "frame"), "frame.resolution");
+    frame.xMin = number(member(v, "x_min", "frame"), "frame.x_min");
+    frame.yMin = number(member(v, "y_min", "frame"), "frame.y_min");
+    frame.cols = static_cast<int>(integer(member(v, "cols", "frame"), "frame.cols", 0, kMaxSide));
+    frame.rows = static_cast<int>(integer(member(v, "rows", "frame"), "frame.rows", 0, kMaxSide));
+    checkFrame(frame);
+    return frame;
+}
+
+TopologicalMap mapFromJson(const Json& doc) {
+    if (text(member(doc, "format", "the document"), "format") != kFormat)
+        throw FormatError(std::string("format must be \"") + kFormat + "\"");
+    const long long version = integer(member(doc, "version", "the document"), "version", 1, 1000);
+    if (version != kVersion) {
+        throw FormatError("version " + std::to_string(version) +
+                          " is not supported (this reader: " + std::to_string(kVersion) + ")");
+    }
+    TopologicalMap map;
+    map.frame = frameFromJson(member(doc, "frame", "the document"));
+    const Json& rooms = array(member(doc, "rooms", "the document"), "rooms");
+    for (std::size_t i = 0; i < rooms.size(); ++i)
+        map.rooms.push_back(roomFromJson(rooms[i], i));
+    const int roomCount = static_cast<int>(map.rooms.size());
+    const Json& doors = array(member(doc, "doors", "the document"), "doors");
+    for (std::size_t i = 0; i < doors.size(); ++i)
+        map.doors.push_back(doorFromJson(doors[i], i, roomCount));
+
+    const Json& labels = member(doc, "labels", "the document");
+    if (text(member(labels, "encoding", "labels"), "labels.encoding") != "runs")
+        throw FormatError("labels.encoding must be \"runs\"");
+    const Json& runsJson = array(member(labels, "runs", "labels"), "labels.runs");
+    std::vector<long long> runs;
+    runs.reserve(runsJson.size());
+    for (const Json& v : runsJson)
+        runs.push_back(integer(v, "labels.runs", 0, kMaxSide * kMaxSide));
+    map.labels = labelsFromRuns(map.frame, runs, roomCount, "labels.runs");
+    return map;
 }
 
 }  // namespace
 
 std::string topologicalMapToJson(const TopologicalMap& map) {
-    detail::JsonWriter j;
-    j.beginObject();
-    j.field("format", kFormat).field("version", kVersion);
-    j.key("frame").beginObject();
-    j.field("resolution", map.frame.resolution).field("x_min", map.frame.xMin);
-    j.field("y_min", map.frame.yMin).field("cols", map.frame.cols).field("rows", map.frame.rows);
-    j.endObject();
-    j.key("rooms").beginArray();
-    for (const Room& r : map.rooms) {
-        j.beginObject();
-        j.field("id", r.id).field("name", r.name).field("area", r.area);
-        point(j, "centroid", r.centroid);
-        point(j, "anchor", r.anchor);
-        j.key("outline").beginInlineArray();
-        for (const auto& p : r.outline)
-            j.value(p.x).value(p.y);
-        j.endArray();
-        j.endObject();
-    }
-    j.endArray();
-    j.key("doors").beginArray();
+    Json rooms = Json::array(), doors = Json::array(), adjacency = Json::array();
+    for (const Room& r : map.rooms)
+        rooms.push_back(roomJson(r));
     for (const Door& d : map.doors) {
-        j.beginObject();
-        j.field("id", d.id);
-        j.key("rooms").beginInlineArray().value(d.roomA).value(d.roomB).endArray();
-        point(j, "jamb_a", d.jambA);
-        point(j, "jamb_b", d.jambB);
-        j.field("width", d.width);
-        j.endObject();
+        doors.push_back({{"id", d.id},
+                         {"rooms", {d.roomA, d.roomB}},
+                         {"jamb_a", pointJson(d.jambA)},
+                         {"jamb_b", pointJson(d.jambB)},
+                         {"width", d.width}});
     }
-    j.endArray();
-    j.key("adjacency").beginInlineArray();
     for (const auto& [a, b] : map.adjacency())
-        j.value(a).value(b);
-    j.endArray();
-    // Labels: row-major runs "value, count, value, count, ..." over rows x cols cells, row 0 at
-    // the top (largest y).
-    j.key("labels").beginObject();
-    j.field("encoding", "runs");
-    j.key("runs").beginInlineArray();
-    if (!map.labels.empty()) {
-        int current = map.labels.at<int>(0, 0);
-        long long count = 0;
-        for (int r = 0; r < map.labels.rows; ++r) {
-            const int* row = map.labels.ptr<int>(r);
-            for (int c = 0; c < map.labels.cols; ++c) {
-                if (row[c] == current) {
-                    ++count;
-                    continue;
-                }
-                j.value(current).value(count);
-                current = row[c];
-                count = 1;
-            }
-        }
-        j.value(current).value(count);
-    } else if (map.frame.rows > 0 && map.frame.cols > 0) {
-        j.value(0).value(static_cast<long long>(map.frame.rows) *
-                         map.frame.cols);  // no label image
-    }
-    j.endArray();
-    j.endObject();
-    j.endObject();
-    return j.str();
+        adjacency.insert(adjacency.end(), {a, b});
+    const Json frame = {{"resolution", map.frame.resolution},
+                        {"x_min", map.frame.xMin},
+                        {"y_min", map.frame.yMin},
+                        {"cols", map.frame.cols},
+                        {"rows", map.frame.rows}};
+    return io::formatJson({{"format", kFormat},
+                           {"version", kVersion},
+                           {"frame", frame},
+                           {"rooms", rooms},
+                           {"doors", doors},
+                           {"adjacency", adjacency},
+                           {"labels", {{"encoding", "runs"}, {"runs", labelRuns(map)}}}});
 }
 
 TopologicalMap topologicalMapFromJson(const std::string& text, const std::string& sourceName) {
+    const Json doc = io::parseJson(text, sourceName);
     try {
-        const detail::JsonValue doc = detail::JsonValue::parse(text);
-        if (doc.at("format", "the document").string("format") != kFormat) {
-            throw detail::JsonError(std::string("format must be \"") + kFormat + "\"");
-        }
-        const long long version = doc.at("version", "the document").integer("version", 1, 1000);
-        if (version != kVersion) {
-            throw detail::JsonError("version " + std::to_string(version) +
-                                    " is not supported (this reader: " + std::to_string(kVersion) +
-                                    ")");
-        }
-        TopologicalMap map;
-        const auto& frame = doc.at("frame", "the document");
-        map.frame.resolution = frame.at("resolution", "frame").number("frame.resolution");
-        map.frame.xMin = frame.at("x_min", "frame").number("frame.x_min");
-        map.frame.yMin = frame.at("y_min", "frame").number("frame.y_min");
-        map.frame.cols =
-            static_cast<int>(frame.at("cols", "frame").integer("frame.cols", 0, 1 << 20));
-        map.frame.rows =
-            static_cast<int>(frame.at("rows", "frame").integer("frame.rows", 0, 1 << 20));
-        if (!(map.frame.resolution > 0))
-            throw detail::JsonError("frame.resolution must be > 0");
-
-        const auto& rooms = doc.at("rooms", "the document").array("rooms");
-        for (std::size_t i = 0; i < rooms.size(); ++i) {
-            const std::string w = "rooms[" + std::to_string(i) + "]";
-            Room r;
-            r.id = static_cast<int>(rooms[i].at("id", w).integer(w + ".id", 1, 1 << 30));
-            if (r.id != static_cast<int>(i) + 1)
-                throw detail::JsonError(w + ".id must be " + std::to_string(i + 1));
-            if (const auto* name = rooms[i].find("name"))
-                r.name = name->string(w + ".name");
-            r.area = rooms[i].at("area", w).number(w + ".area");
-            r.centroid = readPoint(rooms[i].at("centroid", w), w + ".centroid");
-            r.anchor = readPoint(rooms[i].at("anchor", w), w + ".anchor");
-            const auto& outline = rooms[i].at("outline", w).array(w + ".outline");
-            if (outline.size() % 2 != 0)
-                throw detail::JsonError(w + ".outline must hold x, y pairs");
-            for (std::size_t k = 0; k < outline.size(); k += 2) {
-                r.outline.push_back(
-                    {outline[k].number(w + ".outline"), outline[k + 1].number(w + ".outline")});
-            }
-            map.rooms.push_back(std::move(r));
-        }
-        const int roomCount = static_cast<int>(map.rooms.size());
-        const auto& doors = doc.at("doors", "the document").array("doors");
-        for (std::size_t i = 0; i < doors.size(); ++i) {
-            const std::string w = "doors[" + std::to_string(i) + "]";
-            Door d;
-            d.id = static_cast<int>(doors[i].at("id", w).integer(w + ".id", 1, 1 << 30));
-            if (d.id != static_cast<int>(i) + 1)
-                throw detail::JsonError(w + ".id must be " + std::to_string(i + 1));
-            const auto& pair = doors[i].at("rooms", w).array(w + ".rooms");
-            if (pair.size() != 2)
-                throw detail::JsonError(w + ".rooms must be [roomA, roomB]");
-            d.roomA = static_cast<int>(pair[0].integer(w + ".rooms[0]", 1, roomCount));
-            d.roomB = static_cast<int>(pair[1].integer(w + ".rooms[1]", 1, roomCount));
-            if (d.roomA == d.roomB)
-                throw detail::JsonError(w + " joins room " + std::to_string(d.roomA) +
-                                        " to itself");
-            d.jambA = readPoint(doors[i].at("jamb_a", w), w + ".jamb_a");
-            d.jambB = readPoint(doors[i].at("jamb_b", w), w + ".jamb_b");
-            d.width = doors[i].at("width", w).number(w + ".width");
-            map.doors.push_back(d);
-        }
-        const auto& labels = doc.at("labels", "the document");
-        if (labels.at("encoding", "labels").string("labels.encoding") != "runs") {
-            throw detail::JsonError("labels.encoding must be \"runs\"");
-        }
-        const auto& runs = labels.at("runs", "labels").array("labels.runs");
-        const long long cells = static_cast<long long>(map.frame.rows) * map.frame.cols;
-        if (runs.size() % 2 != 0)
-            throw detail::JsonError("labels.runs must hold value, count pairs");
-        map.labels = cv::Mat(map.frame.rows, map.frame.cols, CV_32S);
-        long long at = 0;
-        for (std::size_t k = 0; k < runs.size(); k += 2) {
-            const int value =
-                static_cast<int>(runs[k].integer("labels.runs (value)", 0, roomCount));
-            const long long count = runs[k + 1].integer("labels.runs (count)", 1, cells);
-            if (at + count > cells)
-                throw detail::JsonError("labels.runs cover more than rows x cols cells");
-            std::fill_n(map.labels.ptr<int>() + at, count, value);
-            at += count;
-        }
-        if (at != cells) {
-            throw detail::JsonError("labels.runs cover " + std::to_string(at) +
-                                    " cells, rows x cols is " + std::to_string(cells));
-        }
-        if (cells == 0)
-            map.labels = cv::Mat();
-        return map;
-    } catch (const detail::JsonError& e) {
+        return mapFromJson(doc);
+    } catch (const FormatError& e) {
         throw io::InputError(sourceName, e.what());
     }
 }
 
 void saveTopologicalMapJson(const TopologicalMap& map, const std::string& path) {
-    writeText(path, topologicalMapToJson(map));
+    io::saveTextFile(topologicalMapToJson(map), path);
 }
 
 TopologicalMap loadTopologicalMapJson(const std::string& path) {
-    return topologicalMapFromJson(readText(path), path);
+    return topologicalMapFromJson(io::loadTextFile(path), path);
 }
 
-// ---- GraphML --------------------------------------------------------------------------------
+// ---- GraphML (tinyxml2) -----------------------------------------------------------------------
 
 namespace {
 
-std::string xmlEscape(const std::string& s) {
-    std::string out;
-    for (const char c : s) {
-        switch (c) {
-            case '&':
-                out += "&amp;";
-                break;
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            case '\'':
-                out += "&apos;";
-                break;
-            default:
-                out += c;
-        }
-    }
-    return out;
-}
-
-std::string xmlUnescape(const std::string& s) {
-    std::string out;
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        if (s[i] != '&') {
-            out += s[i];
-            continue;
-        }
-        const std::size_t end = s.find(';', i);
-        if (end == std::string::npos)
-            throw std::runtime_error("bad entity in text");
-        const std::string e = s.substr(i + 1, end - i - 1);
-        if (e == "amp")
-            out += '&';
-        else if (e == "lt")
-            out += '<';
-        else if (e == "gt")
-            out += '>';
-        else if (e == "quot")
-            out += '"';
-        else if (e == "apos")
-            out += '\'';
-        else if (!e.empty() && e[0] == '#')
-            out += static_cast<char>(
-                std::stoi(e[1] == 'x' ? "0" + e.substr(1) : e.substr(1), nullptr, 0));
-        else
-            throw std::runtime_error("unknown entity &" + e + ";");
-        i = end;
-    }
-    return out;
-}
-
-std::string number(double v) {
-    std::ostringstream o;
-    o.precision(17);
-    o << v;
-    return o.str();
-}
-
-struct Tag {
-    std::string name;  // without '/' for closing tags
-    bool closing = false, selfClosing = false;
-    std::map<std::string, std::string> attributes;
+struct GraphMLKey {
+    const char* id;
+    const char* domain;  // "graph", "node" or "edge"
+    const char* name;    // attr.name: what readers look for
+    const char* type;
 };
 
-// Parses the tag starting at text[i] == '<'; returns the index after '>'.
-std::size_t parseTag(const std::string& text, std::size_t i, Tag& tag) {
-    const std::size_t end = text.find('>', i);
-    if (end == std::string::npos)
-        throw std::runtime_error("unterminated tag");
-    std::string body = text.substr(i + 1, end - i - 1);
-    tag = Tag{};
-    if (!body.empty() && body.back() == '/') {
-        tag.selfClosing = true;
-        body.pop_back();
-    }
-    std::size_t k = 0;
-    if (!body.empty() && body[0] == '/') {
-        tag.closing = true;
-        k = 1;
-    }
-    while (k < body.size() && !std::isspace(static_cast<unsigned char>(body[k])))
-        tag.name += body[k++];
-    while (k < body.size()) {
-        while (k < body.size() && std::isspace(static_cast<unsigned char>(body[k])))
-            ++k;
-        std::string key;
-        while (k < body.size() && body[k] != '=' &&
-               !std::isspace(static_cast<unsigned char>(body[k])))
-            key += body[k++];
-        while (k < body.size() &&
-               (body[k] == '=' || std::isspace(static_cast<unsigned char>(body[k]))))
-            ++k;
-        if (key.empty())
-            break;
-        if (k >= body.size() || (body[k] != '"' && body[k] != '\''))
-            throw std::runtime_error("attribute " + key + " without a quoted value");
-        const char quote = body[k++];
-        const std::size_t close = body.find(quote, k);
-        if (close == std::string::npos)
-            throw std::runtime_error("unterminated attribute " + key);
-        tag.attributes[key] = xmlUnescape(body.substr(k, close - k));
-        k = close + 1;
-    }
-    return end + 1;
+// The map's geometry rides along as graph attributes (frame and run-length label image, same
+// meaning as in JSON) and node outlines, so a GraphML file plans as well as rooms.json.
+constexpr GraphMLKey kGraphMLKeys[] = {
+    {"resolution", "graph", "resolution_m", "double"},
+    {"x_min", "graph", "x_min_m", "double"},
+    {"y_min", "graph", "y_min_m", "double"},
+    {"cols", "graph", "cols", "int"},
+    {"rows", "graph", "rows", "int"},
+    {"label_runs", "graph", "label_runs", "string"},
+    {"room_id", "node", "room_id", "int"},
+    {"name", "node", "name", "string"},
+    {"area", "node", "area_m2", "double"},
+    {"cx", "node", "centroid_x", "double"},
+    {"cy", "node", "centroid_y", "double"},
+    {"ax", "node", "anchor_x", "double"},
+    {"ay", "node", "anchor_y", "double"},
+    {"outline", "node", "outline", "string"},
+    {"door_id", "edge", "door_id", "int"},
+    {"width", "edge", "width_m", "double"},
+    {"jax", "edge", "jamb_a_x", "double"},
+    {"jay", "edge", "jamb_a_y", "double"},
+    {"jbx", "edge", "jamb_b_x", "double"},
+    {"jby", "edge", "jamb_b_y", "double"},
+};
+
+// The shortest text that reads back as exactly `v` (0.05, not 0.050000000000000003).
+std::string exact(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.15g", v);
+    if (std::strtod(buf, nullptr) != v)
+        std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+std::string exact(long long v) {
+    return std::to_string(v);
+}
+
+template <typename T>
+std::string joined(const std::vector<T>& values) {
+    std::string out;
+    for (std::size_t i = 0; i < values.size(); ++i)
+        out += (i ? " " : "") + exact(values[i]);
+    return out;
+}
+
+void data(tinyxml2::XMLPrinter& xml, const char* key, const std::string& value) {
+    xml.OpenElement("data");
+    xml.PushAttribute("key", key);
+    xml.PushText(value.c_str());
+    xml.CloseElement();
+}
+
+void writeRoom(tinyxml2::XMLPrinter& xml, const Room& r) {
+    xml.OpenElement("node");
+    xml.PushAttribute("id", ("r" + std::to_string(r.id)).c_str());
+    data(xml, "room_id", std::to_string(r.id));
+    data(xml, "name", r.name);
+    data(xml, "area", exact(r.area));
+    data(xml, "cx", exact(r.centroid.x));
+    data(xml, "cy", exact(r.centroid.y));
+    data(xml, "ax", exact(r.anchor.x));
+    data(xml, "ay", exact(r.anchor.y));
+    std::vector<double> outline;
+    for (const auto& p : r.outline)
+        outline.insert(outline.end(), {p.x, p.y});
+    data(xml, "outline", joined(outline));
+    xml.CloseElement();
+}
+
+void writeDoor(tinyxml2::XMLPrinter& xml, const Door& d) {
+    xml.OpenElement("edge");
+    xml.PushAttribute("id", ("d" + std::to_string(d.id)).c_str());
+    xml.PushAttribute("source", ("r" + std::to_string(d.roomA)).c_str());
+    xml.PushAttribute("target", ("r" + std::to_string(d.roomB)).c_str());
+    data(xml, "door_id", std::to_string(d.id));
+    data(xml, "width", exact(d.width));
+    data(xml, "jax", exact(d.jambA.x));
+    data(xml, "jay", exact(d.jambA.y));
+    data(xml, "jbx", exact(d.jambB.x));
+    data(xml, "jby", exact(d.jambB.y));
+    xml.CloseElement();
 }
 
 }  // namespace
 
 std::string topologicalMapToGraphML(const TopologicalMap& map) {
-    std::ostringstream o;
-    o << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<graphml xmlns=\"http://graphml.graphdrawing.org/xmlns\"\n"
-      << "         xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\"\n"
-      << "         xsi:schemaLocation=\"http://graphml.graphdrawing.org/xmlns "
-         "http://graphml.graphdrawing.org/xmlns/1.0/graphml.xsd\">\n";
-    const char* nodeKeys[][3] = {{"room_id", "room_id", "int"},  {"name", "name", "string"},
-                                 {"area", "area_m2", "double"},  {"cx", "centroid_x", "double"},
-                                 {"cy", "centroid_y", "double"}, {"ax", "anchor_x", "double"},
-                                 {"ay", "anchor_y", "double"}};
-    const char* edgeKeys[][3] = {{"door_id", "door_id", "int"}, {"width", "width_m", "double"},
-                                 {"jax", "jamb_a_x", "double"}, {"jay", "jamb_a_y", "double"},
-                                 {"jbx", "jamb_b_x", "double"}, {"jby", "jamb_b_y", "double"}};
-    for (const auto& k : nodeKeys) {
-        o << "  <key id=\"" << k[0] << "\" for=\"node\" attr.name=\"" << k[1] << "\" attr.type=\""
-          << k[2] << "\"/>\n";
+    tinyxml2::XMLPrinter xml;
+    xml.PushDeclaration("xml version=\"1.0\" encoding=\"UTF-8\"");
+    xml.OpenElement("graphml");
+    xml.PushAttribute("xmlns", "http://graphml.graphdrawing.org/xmlns");
+    xml.PushAttribute("xmlns:xsi", "http://www.w3.org/2001/XMLSchema-instance");
+    xml.PushAttribute("xsi:schemaLocation",
+                      "http://graphml.graphdrawing.org/xmlns "
+                      "http://graphml.graphdrawing.org/xmlns/1.0/graphml.xsd");
+    for (const GraphMLKey& k : kGraphMLKeys) {
+        xml.OpenElement("key");
+        xml.PushAttribute("id", k.id);
+        xml.PushAttribute("for", k.domain);
+        xml.PushAttribute("attr.name", k.name);
+        xml.PushAttribute("attr.type", k.type);
+        xml.CloseElement();
     }
-    for (const auto& k : edgeKeys) {
-        o << "  <key id=\"" << k[0] << "\" for=\"edge\" attr.name=\"" << k[1] << "\" attr.type=\""
-          << k[2] << "\"/>\n";
-    }
-    o << "  <graph id=\"rooms\" edgedefault=\"undirected\">\n";
-    for (const Room& r : map.rooms) {
-        o << "    <node id=\"r" << r.id << "\">"
-          << "<data key=\"room_id\">" << r.id << "</data>"
-          << "<data key=\"name\">" << xmlEscape(r.name) << "</data>"
-          << "<data key=\"area\">" << number(r.area) << "</data>"
-          << "<data key=\"cx\">" << number(r.centroid.x) << "</data>"
-          << "<data key=\"cy\">" << number(r.centroid.y) << "</data>"
-          << "<data key=\"ax\">" << number(r.anchor.x) << "</data>"
-          << "<data key=\"ay\">" << number(r.anchor.y) << "</data></node>\n";
-    }
-    for (const Door& d : map.doors) {
-        o << "    <edge id=\"d" << d.id << "\" source=\"r" << d.roomA << "\" target=\"r" << d.roomB
-          << "\">"
-          << "<data key=\"door_id\">" << d.id << "</data>"
-          << "<data key=\"width\">" << number(d.width) << "</data>"
-          << "<data key=\"jax\">" << number(d.jambA.x) << "</data>"
-          << "<data key=\"jay\">" << number(d.jambA.y) << "</data>"
-          << "<data key=\"jbx\">" << number(d.jambB.x) << "</data>"
-          << "<data key=\"jby\">" << number(d.jambB.y) << "</data></edge>\n";
-    }
-    o << "  </graph>\n</graphml>\n";
-    return o.str();
+    xml.OpenElement("graph");
+    xml.PushAttribute("id", "rooms");
+    xml.PushAttribute("edgedefault", "undirected");
+    data(xml, "resolution", exact(map.frame.resolution));
+    data(xml, "x_min", exact(map.frame.xMin));
+    data(xml, "y_min", exact(map.frame.yMin));
+    data(xml, "cols", std::to_string(map.frame.cols));
+    data(xml, "rows", std::to_string(map.frame.rows));
+    data(xml, "label_runs", joined(labelRuns(map)));
+    for (const Room& r : map.rooms)
+        writeRoom(xml, r);
+    for (const Door& d : map.doors)
+        writeDoor(xml, d);
+    xml.CloseElement();  // graph
+    xml.CloseElement();  // graphml
+    return xml.CStr();
 }
 
+namespace {
+
+// The <data> of one element, by attribute name (attr.name of its <key>, else the key id).
+class GraphMLData {
+  public:
+    GraphMLData(const tinyxml2::XMLElement& element,
+                const std::map<std::string, std::string>& keyNames) {
+        for (auto* d = element.FirstChildElement("data"); d; d = d->NextSiblingElement("data")) {
+            const char* key = d->Attribute("key");
+            if (!key)
+                throw FormatError("<data> without key on line " + std::to_string(d->GetLineNum()));
+            const auto name = keyNames.find(key);
+            values_[name == keyNames.end() ? key : name->second] = d->GetText() ? d->GetText() : "";
+        }
+    }
+    bool has(const std::string& name) const { return values_.count(name) > 0; }
+    std::string text(const std::string& name) const {
+        const auto it = values_.find(name);
+        return it == values_.end() ? std::string() : it->second;
+    }
+    /// All numbers of a blank-separated list (empty when absent).
+    std::vector<double> numbers(const std::string& name) const {
+        std::vector<double> out;
+        const std::string s = text(name);
+        const char* p = s.c_str();
+        for (;;) {
+            while (*p == ' ' || *p == '\t' || *p == '\n' || *p == '\r')
+                ++p;
+            if (*p == '\0')
+                return out;
+            char* end = nullptr;
+            errno = 0;
+            const double v = std::strtod(p, &end);
+            if (end == p || errno == ERANGE || !std::isfinite(v) ||
+                (*end != '\0' && !std::isspace(static_cast<unsigned char>(*end))))
+                throw FormatError("'" + s.substr(0, 40) + "' is not a list of numbers (" + name +
+                                  ")");
+            out.push_back(v);
+            p = end;
+        }
+    }
+    /// One number; `fallback` when absent (graphs from other writers may leave some out).
+    double real(const std::string& name, double fallback = 0) const {
+        if (!has(name))
+            return fallback;
+        const auto v = numbers(name);
+        if (v.size() != 1)
+            throw FormatError("'" + text(name) + "' is not a number (" + name + ")");
+        return v[0];
+    }
+
+  private:
+    std::map<std::string, std::string> values_;
+};
+
+std::vector<long long> integers(const std::vector<double>& values, const std::string& what) {
+    std::vector<long long> out;
+    out.reserve(values.size());
+    for (const double v : values) {
+        if (v != std::floor(v) || std::abs(v) > static_cast<double>(kMaxSide * kMaxSide))
+            throw FormatError(what + " must hold integers");
+        out.push_back(static_cast<long long>(v));
+    }
+    return out;
+}
+
+// The frame and label image, when the file has them (TopoSLAM's writer does).
+void readGeometry(const GraphMLData& graph, TopologicalMap& map) {
+    if (!graph.has("cols") && !graph.has("rows"))
+        return;
+    map.frame.resolution = graph.real("resolution_m", NAN);
+    map.frame.xMin = graph.real("x_min_m", NAN);
+    map.frame.yMin = graph.real("y_min_m", NAN);
+    const double cols = graph.real("cols", -1), rows = graph.real("rows", -1);
+    if (!(cols >= 0 && cols <= kMaxSide && rows >= 0 && rows <= kMaxSide) ||
+        cols != std::floor(cols) || rows != std::floor(rows))
+        throw FormatError("graph cols and rows must be integers in [0, " +
+                          std::to_string(kMaxSide) + "]");
+    map.frame.cols = static_cast<int>(cols);
+    map.frame.rows = static_cast<int>(rows);
+    checkFrame(map.frame);
+    if (graph.has("label_runs")) {
+        map.labels = labelsFromRuns(map.frame, integers(graph.numbers("label_runs"), "label_runs"),
+                                    static_cast<int>(map.rooms.size()), "label_runs");
+    }
+}
+
+Room roomFromGraphML(const GraphMLData& n, int id) {
+    Room r;
+    r.id = id;
+    r.name = n.text("name");
+    r.area = n.real("area_m2");
+    r.centroid = {n.real("centroid_x"), n.real("centroid_y")};
+    r.anchor = {n.real("anchor_x"), n.real("anchor_y")};
+    const auto outline = n.numbers("outline");
+    if (outline.size() % 2 != 0)
+        throw FormatError("outline of room " + std::to_string(id) + " must hold x, y pairs");
+    for (std::size_t k = 0; k < outline.size(); k += 2)
+        r.outline.push_back({outline[k], outline[k + 1]});
+    return r;
+}
+
+TopologicalMap mapFromGraphML(const tinyxml2::XMLDocument& doc) {
+    const tinyxml2::XMLElement* root = doc.RootElement();
+    const tinyxml2::XMLElement* graph = root ? root->FirstChildElement("graph") : nullptr;
+    if (!graph)
+        throw FormatError("no <graph> element: not a GraphML file");
+    std::map<std::string, std::string> keyNames;  // key id -> attr.name
+    for (auto* k = root->FirstChildElement("key"); k; k = k->NextSiblingElement("key")) {
+        if (const char* id = k->Attribute("id"))
+            keyNames[id] = k->Attribute("attr.name") ? k->Attribute("attr.name") : id;
+    }
+    TopologicalMap map;
+    std::map<std::string, int> roomOfNode;
+    for (auto* n = graph->FirstChildElement("node"); n; n = n->NextSiblingElement("node")) {
+        const std::string id = n->Attribute("id") ? n->Attribute("id") : "";
+        const int roomId = static_cast<int>(map.rooms.size()) + 1;
+        if (!roomOfNode.emplace(id, roomId).second)
+            throw FormatError("duplicate node id '" + id + "'");
+        map.rooms.push_back(roomFromGraphML(GraphMLData(*n, keyNames), roomId));
+    }
+    for (auto* e = graph->FirstChildElement("edge"); e; e = e->NextSiblingElement("edge")) {
+        const std::string id = e->Attribute("id") ? e->Attribute("id") : "";
+        const auto a = roomOfNode.find(e->Attribute("source") ? e->Attribute("source") : "");
+        const auto b = roomOfNode.find(e->Attribute("target") ? e->Attribute("target") : "");
+        if (a == roomOfNode.end() || b == roomOfNode.end())
+            throw FormatError("edge '" + id + "' joins unknown nodes");
+        if (a->second == b->second)
+            throw FormatError("edge '" + id + "' is a loop");
+        const GraphMLData data(*e, keyNames);
+        Door d;
+        d.id = static_cast<int>(map.doors.size()) + 1;
+        d.roomA = std::min(a->second, b->second);
+        d.roomB = std::max(a->second, b->second);
+        d.width = data.real("width_m");
+        d.jambA = {data.real("jamb_a_x"), data.real("jamb_a_y")};
+        d.jambB = {data.real("jamb_b_x"), data.real("jamb_b_y")};
+        map.doors.push_back(d);
+    }
+    readGeometry(GraphMLData(*graph, keyNames), map);
+    return map;
+}
+
+}  // namespace
+
 TopologicalMap topologicalMapFromGraphML(const std::string& text, const std::string& sourceName) {
+    tinyxml2::XMLDocument doc;
+    if (doc.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
+        throw io::InputError(sourceName, std::string("GraphML: XML error on line ") +
+                                             std::to_string(doc.ErrorLineNum()) + ": " +
+                                             doc.ErrorName());
+    }
     try {
-        std::map<std::string, std::string> keyName;  // key id -> attr.name
-        struct Element {
-            std::string id, source, target;
-            std::map<std::string, std::string> data;  // attr.name -> text
-        };
-        std::vector<Element> nodes, edges;
-        Element* current = nullptr;
-        std::string dataKey;
-        bool sawGraph = false;
-        std::size_t i = 0;
-        while ((i = text.find('<', i)) != std::string::npos) {
-            if (text.compare(i, 4, "<!--") == 0) {
-                const std::size_t end = text.find("-->", i);
-                if (end == std::string::npos)
-                    throw std::runtime_error("unterminated comment");
-                i = end + 3;
-                continue;
-            }
-            if (text.compare(i, 2, "<?") == 0) {
-                const std::size_t end = text.find("?>", i);
-                if (end == std::string::npos)
-                    throw std::runtime_error("unterminated declaration");
-                i = end + 2;
-                continue;
-            }
-            Tag tag;
-            const std::size_t after = parseTag(text, i, tag);
-            if (tag.name == "graph" && !tag.closing)
-                sawGraph = true;
-            if (tag.name == "key" && !tag.closing) {
-                keyName[tag.attributes["id"]] = tag.attributes.count("attr.name")
-                                                    ? tag.attributes["attr.name"]
-                                                    : tag.attributes["id"];
-            } else if ((tag.name == "node" || tag.name == "edge") && !tag.closing) {
-                auto& list = tag.name == "node" ? nodes : edges;
-                list.push_back(
-                    {tag.attributes["id"], tag.attributes["source"], tag.attributes["target"], {}});
-                current = tag.selfClosing ? nullptr : &list.back();
-            } else if ((tag.name == "node" || tag.name == "edge") && tag.closing) {
-                current = nullptr;
-            } else if (tag.name == "data" && !tag.closing && current != nullptr) {
-                dataKey = tag.attributes["key"];
-                const std::size_t close = text.find("</data>", after);
-                if (close == std::string::npos)
-                    throw std::runtime_error("unterminated <data>");
-                const std::string name = keyName.count(dataKey) ? keyName[dataKey] : dataKey;
-                current->data[name] = xmlUnescape(text.substr(after, close - after));
-                i = close + 7;
-                continue;
-            }
-            i = after;
-        }
-        if (!sawGraph)
-            throw std::runtime_error("no <graph> element: not a GraphML file");
-        TopologicalMap map;
-        std::map<std::string, int> roomOfNode;
-        auto real = [](const Element& e, const std::string& name) {
-            auto it = e.data.find(name);
-            if (it == e.data.end())
-                return 0.0;
-            std::size_t used = 0;
-            const double v = std::stod(it->second, &used);
-            if (used != it->second.size())
-                throw std::runtime_error("'" + it->second + "' is not a number (" + name + ")");
-            return v;
-        };
-        for (const Element& n : nodes) {
-            Room r;
-            r.id = static_cast<int>(map.rooms.size()) + 1;
-            if (!roomOfNode.emplace(n.id, r.id).second)
-                throw std::runtime_error("duplicate node id '" + n.id + "'");
-            if (auto it = n.data.find("name"); it != n.data.end())
-                r.name = it->second;
-            r.area = real(n, "area_m2");
-            r.centroid = {real(n, "centroid_x"), real(n, "centroid_y")};
-            r.anchor = {real(n, "anchor_x"), real(n, "anchor_y")};
-            map.rooms.push_back(r);
-        }
-        for (const Element& e : edges) {
-            Door d;
-            d.id = static_cast<int>(map.doors.size()) + 1;
-            auto a = roomOfNode.find(e.source), b = roomOfNode.find(e.target);
-            if (a == roomOfNode.end() || b == roomOfNode.end()) {
-                throw std::runtime_error("edge '" + e.id + "' joins unknown nodes '" + e.source +
-                                         "', '" + e.target + "'");
-            }
-            if (a->second == b->second)
-                throw std::runtime_error("edge '" + e.id + "' is a loop");
-            d.roomA = std::min(a->second, b->second);
-            d.roomB = std::max(a->second, b->second);
-            d.width = real(e, "width_m");
-            d.jambA = {real(e, "jamb_a_x"), real(e, "jamb_a_y")};
-            d.jambB = {real(e, "jamb_b_x"), real(e, "jamb_b_y")};
-            map.doors.push_back(d);
-        }
-        return map;
-    } catch (const std::exception& e) {
+        return mapFromGraphML(doc);
+    } catch (const FormatError& e) {
         throw io::InputError(sourceName, std::string("GraphML: ") + e.what());
     }
 }
 
 void saveTopologicalMapGraphML(const TopologicalMap& map, const std::string& path) {
-    writeText(path, topologicalMapToGraphML(map));
+    io::saveTextFile(topologicalMapToGraphML(map), path);
 }
 
 TopologicalMap loadTopologicalMapGraphML(const std::string& path) {
-    return topologicalMapFromGraphML(readText(path), path);
+    return topologicalMapFromGraphML(io::loadTextFile(path), path);
 }
 
 void saveTopologicalMap(const TopologicalMap& map, const std::string& path) {

@@ -3,6 +3,7 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFile.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/cli/NumberArg.h>
 #include <toposlam/features/FeatureExtractor.h>
 #include <toposlam/features/LogAnnotation.h>
 #include <toposlam/io/ProgressDisplay.h>
@@ -37,7 +38,7 @@ const char* const kDescription =
     "  toposlam-annotate-features intel.clf -o intel_features.rawlog.gz\n"
     "  toposlam-annotate-features run.rawlog -o run_corners.rawlog -e corners --bearing-range\n"
     "  toposlam-annotate-features run.rawlog -o out.rawlog -c config_ini/features.ini\n"
-    "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input or options; no "
+    "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input, 2 for bad options; no "
     "output file is written unless the whole log is processed.";
 
 int run(int argc, char** argv) {
@@ -73,13 +74,14 @@ int run(int argc, char** argv) {
     TCLAP::ValueArg<std::string> label(
         "", "label", "Only scans with this sensor label. Default: all 2D laser scans", false, "",
         "label", cmd);
-    TCLAP::ValueArg<double> maxRange(
+    cli::NumberArg<double> maxRange(
         "", "carmen-max-range",
         "CARMEN: maximum range in m when no PARAM line gives one; readings at or beyond it are "
         "invalid. Default: 81",
-        false, 81.0, "m", cmd);
-    TCLAP::ValueArg<std::size_t> maxScans(
-        "", "max-scans", "Process only the first N scans. Default: 0 = all", false, 0, "N", cmd);
+        81.0, cli::NumberRange<double>::positive(1000), "m", cmd);
+    cli::NumberArg<std::size_t> maxScans(
+        "", "max-scans", "Process only the first N scans. Default: 0 = all", 0,
+        cli::NumberRange<std::size_t>::nonNegative(1000000000), "N", cmd);
     TCLAP::SwitchArg printOptions("", "print-options",
                                   "Print the extractor's options (as .ini lines) and exit", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "No progress display and no summary", cmd);

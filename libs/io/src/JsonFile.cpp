@@ -20,8 +20,12 @@ std::string describeJsonError(const nlohmann::json::exception& e) {
         message.erase(0, bracket + 2);
     }
     const std::string prefix = "parse error ";
-    if (message.rfind(prefix, 0) == 0)
-        return "JSON syntax error " + message.substr(prefix.size());
+    if (message.rfind(prefix, 0) == 0) {
+        message.erase(0, prefix.size());  // "at line 1, column 5: syntax error while ..."
+        if (const auto said = message.find(": syntax error "); said != std::string::npos)
+            message.erase(said + 2, std::string("syntax error ").size());
+        return "JSON syntax error " + message;
+    }
     return "JSON: " + message;
 }
 

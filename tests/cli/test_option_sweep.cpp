@@ -79,6 +79,7 @@ const ListOption kListOptions[] = {
     {"toposlam-sim", "--origin", {"1", "nan,0", "0,1e300", "x,y"}},
     {"toposlam-sim", "--start", {"1", "1,2,3,4", "nan,1", "1,2,inf", "a,b"}},
     {"toposlam-convert", "--laser-offset", {"1,2", "0,0,nan", "a,b,c"}},
+    {"toposlam-annotate-features", "--odometry-noise", {"1,2", "0,0,0,0,0,nan", "-1,0,0,0,0,0"}},
 };
 
 // A command line each app would accept apart from the option under test, writing only under

@@ -56,12 +56,13 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
     CPose2D increment = odometryIncrement.value_or(CPose2D());
     const double turn = std::abs(mrpt::math::wrapToPi(increment.phi()));
     if (increment.norm() > options_.odometryJumpDistance || turn > options_.odometryJumpAngle) {
-        // Wheels do not teleport: predict no motion, and let the graph matcher find it.
+        // Wheels do not teleport: predict the motion of the last scan instead (a stalled
+        // odometry that catches up in one step jumps; the robot kept moving meanwhile).
         p.odometryJumped = true;
         ++stats_.odometryJumps;
         odometrySinceKeyframe_ += increment.norm();
         turnSinceKeyframe_ += turn;
-        increment = CPose2D();
+        increment = lastMotion_;
     } else {
         odometrySinceKeyframe_ += increment.norm();
         turnSinceKeyframe_ += turn;
@@ -75,6 +76,7 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
     if (firstActiveSubmap_ < submaps_.size()) {
         p.submap = &submaps_[firstActiveSubmap_];
         p.inSubmap = predicted - graph_.pose(p.submap->anchor());
+
     }
     return p;
 }
@@ -132,7 +134,11 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
             break;
     }
     const CPose2D pose = graph_.pose(r.reference) + r.pose;
+    if (getenv("TOPOSLAM_DEBUG_REG"))
+        fprintf(stderr, "scan %zu t=%.2f method %d kf %zu prev (%.3f %.3f %.2f) inc (%.3f %.3f %.2f) now (%.3f %.3f %.2f)\n", scans_.size(), mrpt::Clock::toDouble(scan->timestamp), int(r.method), keyframes_.size(),
+                current_.x(), current_.y(), current_.phi()*57.3, odometryIncrement ? odometryIncrement->x() : -99., odometryIncrement ? odometryIncrement->y() : -99., odometryIncrement ? odometryIncrement->phi()*57.3 : -99., pose.x(), pose.y(), pose.phi()*57.3);
     const CPose2D step = pose - current_;
+    lastMotion_ = step;
     travelled_ += step.norm();
     turned_ += std::abs(mrpt::math::wrapToPi(step.phi()));
     current_ = pose;

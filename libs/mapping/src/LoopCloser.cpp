@@ -40,7 +40,7 @@ std::pair<double, double> disagreement(const CPose2D& a, const CPose2D& b) {
 LoopCloser::LoopCloser(const GraphSlamOptions& options,
                        const matching::GraphMatcherOptions& matcherOptions)
     : options_(options),
-      uncertainty_(options.driftSigmaXYPerMetre, options.driftSigmaPhiPerMetre),
+      uncertainty_(options.driftSigmaXY, options.driftSigmaPhi, options.driftSigmaPhiPerTurn),
       guided_(withoutRetry(matcherOptions)),
       free_(matcherOptions) {}
 
@@ -59,6 +59,16 @@ std::vector<std::size_t> LoopCloser::gatedCandidates(std::size_t current, std::s
         const double d = std::hypot(graph.pose(j).x() - here.x(), graph.pose(j).y() - here.y());
         if (d <= options_.loopOverlapDistance + options_.loopGateSigmas * std::sqrt(v.at(d)))
             inGate.push_back({d, j});
+    }
+    if (getenv("TOPOSLAM_DEBUG_GATE")) {
+        double best = 1e9, bestSigma = 0; std::size_t bestJ = 0;
+        for (std::size_t j = 0; j < firstActive && j < current; ++j) {
+            if (keyframes[current].travelled - keyframes[j].travelled < options_.loopMinTravel) continue;
+            const double d = std::hypot(graph.pose(j).x() - here.x(), graph.pose(j).y() - here.y());
+            if (d < best) best = d, bestJ = j, bestSigma = std::sqrt((*variances_)[j].at(d));
+        }
+        fprintf(stderr, "gate kf %zu t=%.2f inGate %zu nearest %zu d=%.2f sigma=%.2f\n", current,
+                mrpt::Clock::toDouble(keyframes[current].scan->timestamp), inGate.size(), bestJ, best, bestSigma);
     }
     std::sort(inGate.begin(), inGate.end());
     // Nearest first, spread out so that look-alike places in the gate get tried as well.
@@ -139,20 +149,39 @@ std::vector<LoopCloser::Measurement> LoopCloser::consistentGated(
         const double d = m.pose.norm();
         combined(0, 0) += v.at(d), combined(1, 1) += v.at(d), combined(2, 2) += v.heading;
         if (getenv("TOPOSLAM_DEBUG_LOOPS"))
-            fprintf(stderr,
-                    "gated %zu->%zu z=(%.2f %.2f %.1f) graph=(%.2f %.2f %.1f) var.pos=%.4f "
-                    "var.head=%.5f d=%.2f chi2=%.2f\n",
+            fprintf(stderr, "gated %zu->%zu z=(%.2f %.2f %.1f) graph=(%.2f %.2f %.1f) sigma=%.3f chi2=%.2f chi2meas=%.2f\n",
                     m.older, m.current, m.pose.x(), m.pose.y(), m.pose.phi() * 57.3,
-                    (graph.pose(m.current) - graph.pose(m.older)).x(),
-                    (graph.pose(m.current) - graph.pose(m.older)).y(),
-                    (graph.pose(m.current) - graph.pose(m.older)).phi() * 57.3, v.position,
-                    v.heading, d, graph.chi2(m.older, m.current, m.pose, combined));
+                    (graph.pose(m.current) - graph.pose(m.older)).x(), (graph.pose(m.current) - graph.pose(m.older)).y(),
+                    (graph.pose(m.current) - graph.pose(m.older)).phi() * 57.3, std::sqrt(v.at(d)),
+                    graph.chi2(m.older, m.current, m.pose, combined), graph.chi2(m.older, m.current, m.pose, m.covariance));
         if (graph.chi2(m.older, m.current, m.pose, combined) <= options_.loopChi2)
             out.push_back(m);
         else
             ++stats.loopsGateRejected;
     }
     return out;
+}
+
+bool LoopCloser::agreesWithGraph(const Measurement& m, const PoseGraph& graph) const {
+    return graph.chi2(m.older, m.current, m.pose, m.covariance) <= options_.loopChi2;
+}
+
+void LoopCloser::acceptWithSupport(const Measurement& m, const PoseGraph& graph,
+                                   std::vector<Measurement>& accepted) {
+    // Support is another loop from another keyframe that closes the same cycle consistently.
+    const auto supports = [&](const Measurement& o) {
+        return o.current != m.current && pairConsistent(o, m, graph);
+    };
+    const auto pending = std::find_if(pending_.begin(), pending_.end(), supports);
+    if (pending != pending_.end()) {
+        accepted.push_back(*pending);
+        pending_.erase(pending);
+        accepted.push_back(m);
+    } else if (std::any_of(recent_.begin(), recent_.end(), supports)) {
+        accepted.push_back(m);
+    } else {
+        pending_.push_back(m);
+    }
 }
 
 bool LoopCloser::pairConsistent(const Measurement& a, const Measurement& b,
@@ -172,6 +201,9 @@ void LoopCloser::accept(const Measurement& m, PoseGraph& graph, LoopClosureOutco
     outcome.maxDistanceError = std::max(outcome.maxDistanceError, d);
     outcome.maxAngleError = std::max(outcome.maxAngleError, phi);
     graph.addEdge(m.older, m.current, m.pose, m.covariance, EdgeKind::Loop);
+    if (getenv("TOPOSLAM_DEBUG_ACCEPT"))
+        fprintf(stderr, "accept %zu %zu %.4f %.4f %.5f %.6f %.6f\n", (*debugKeyframes_)[m.older].scanIndex,
+                (*debugKeyframes_)[m.current].scanIndex, m.pose.x(), m.pose.y(), m.pose.phi(), d, phi);
     ++outcome.accepted;
     ++stats.loopsAccepted;
     recent_.push_back(m);
@@ -181,12 +213,15 @@ LoopClosureOutcome LoopCloser::closeLoops(std::size_t current, std::size_t first
                                           const std::vector<Keyframe>& keyframes, PoseGraph& graph,
                                           SlamStatistics& stats) {
     const double start = io::threadCpuSeconds();
+    debugKeyframes_ = &keyframes;
     LoopClosureOutcome outcome;
     while (!recent_.empty() && recent_.front().current + options_.loopConfirmWindow < current)
         recent_.pop_front();
-    while (!pending_.empty() && pending_.front().current + options_.loopConfirmWindow < current)
+    while (!pending_.empty() && pending_.front().current + options_.loopConfirmWindow < current) {
+        ++stats.loopsUnconfirmed;
         pending_.pop_front();
-
+    }
+    std::vector<Measurement> accepted;
     const std::vector<std::size_t> gated = gatedCandidates(current, firstActive, keyframes, graph);
     std::vector<Measurement> matches;
     for (std::size_t j : gated) {
@@ -196,40 +231,33 @@ LoopClosureOutcome LoopCloser::closeLoops(std::size_t current, std::size_t first
         else
             ++stats.loopsUnmatched;
     }
-    for (const Measurement& m : consistentGated(matches, graph, stats))
-        accept(m, graph, outcome, stats);
-
+    const std::vector<Measurement> consistent = consistentGated(matches, graph, stats);
+    // Loops that agree with the graph cannot hurt; a loop that corrects it needs a second,
+    // independent match that agrees with it: from another older keyframe now, or from a
+    // later keyframe (pending).
+    const bool corroborated = consistent.size() >= 2;
+    for (const Measurement& m : consistent) {
+        if (corroborated || agreesWithGraph(m, graph))
+            accepted.push_back(m);
+        else
+            acceptWithSupport(m, graph, accepted);
+    }
     if (options_.globalSearchEvery > 0 && current % options_.globalSearchEvery == 0) {
         ++stats.globalSearches;
         for (std::size_t j : globalCandidates(current, firstActive, keyframes, gated)) {
             ++stats.loopCandidates;
-            auto m = verify(keyframes[j], keyframes[current], graph, false);
-            if (!m) {
-                ++stats.loopsUnmatched;
-                continue;
-            }
-            ++stats.globalHypotheses;
-            if (getenv("TOPOSLAM_DEBUG_LOOPS"))
-                fprintf(stderr, "global %zu->%zu z=(%.2f %.2f %.1f) graph=(%.2f %.2f %.1f)\n",
-                        m->older, m->current, m->pose.x(), m->pose.y(), m->pose.phi() * 57.3,
-                        (graph.pose(m->current) - graph.pose(m->older)).x(),
-                        (graph.pose(m->current) - graph.pose(m->older)).y(),
-                        (graph.pose(m->current) - graph.pose(m->older)).phi() * 57.3);
-            const auto agrees = [&](const Measurement& o) { return pairConsistent(o, *m, graph); };
-            auto confirmed = std::find_if(pending_.begin(), pending_.end(), agrees);
-            if (confirmed != pending_.end()) {
-                accept(*confirmed, graph, outcome, stats);
-                pending_.erase(confirmed);
-                stats.globalConfirmed += 2;
-                accept(*m, graph, outcome, stats);
-            } else if (std::any_of(recent_.begin(), recent_.end(), agrees)) {
-                ++stats.globalConfirmed;
-                accept(*m, graph, outcome, stats);
+            if (auto m = verify(keyframes[j], keyframes[current], graph, false)) {
+                ++stats.globalHypotheses;
+                const std::size_t before = accepted.size();
+                acceptWithSupport(*m, graph, accepted);
+                stats.globalConfirmed += accepted.size() - before;
             } else {
-                pending_.push_back(*m);
+                ++stats.loopsUnmatched;
             }
         }
     }
+    for (const Measurement& m : accepted)
+        accept(m, graph, outcome, stats);
     stats.loopSeconds += io::threadCpuSeconds() - start;
     return outcome;
 }

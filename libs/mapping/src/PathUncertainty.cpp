@@ -1,3 +1,4 @@
+#include <mrpt/math/wrap2pi.h>
 #include <toposlam/mapping/PathUncertainty.h>
 
 #include <algorithm>
@@ -11,8 +12,9 @@ namespace {
 constexpr double kLeverArm = 5.0;
 }  // namespace
 
-PathUncertainty::PathUncertainty(double driftSigmaXYPerMetre, double driftSigmaPhiPerMetre)
-    : driftXY_(driftSigmaXYPerMetre), driftPhi_(driftSigmaPhiPerMetre) {}
+PathUncertainty::PathUncertainty(double driftSigmaXY, double driftSigmaPhi,
+                                 double driftSigmaPhiPerTurn)
+    : driftXY_(driftSigmaXY), driftPhi_(driftSigmaPhi), driftTurn_(driftSigmaPhiPerTurn) {}
 
 const std::vector<PathVariance>& PathUncertainty::from(const PoseGraph& graph, std::size_t source) {
     const std::size_t n = graph.nodeCount();

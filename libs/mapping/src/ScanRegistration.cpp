@@ -67,29 +67,39 @@ CMatrixDouble33 ScanRegistration::edgeCovariance(const CMatrixDouble33& icp, dou
     return clampEigen(icp, floor, ceiling.cwiseMax(floor));
 }
 
-bool ScanRegistration::tryIcp(const matching::PolarScan& scan, const CPose2D& sensorOnRobot,
-                              const Prediction& prediction, Registration& out) {
-    if (!prediction.submap || prediction.submap->map().size() == 0 || scan.validCount() == 0)
-        return false;
-    const matching::IcpResult icp = icp_.refineOnMap(
-        prediction.submap->map(), scan, prediction.inSubmap + sensorOnRobot, icpOptions_);
-    const CPose2D robot = icp.pose + (-sensorOnRobot);  // sensor pose (+) mounting^-1
-    const CPose2D correction = robot - prediction.inSubmap;
+ScanRegistration::IcpAttempt ScanRegistration::icpFrom(const matching::PolarScan& scan,
+                                                       const CPose2D& sensorOnRobot,
+                                                       const Submap& submap,
+                                                       const CPose2D& start) {
+    IcpAttempt a;
+    a.icp = icp_.refineOnMap(submap.map(), scan, start + sensorOnRobot, icpOptions_);
+    a.robot = a.icp.pose + (-sensorOnRobot);  // sensor pose (+) mounting^-1
     // Share of the readings the map could hold (within its range) that landed on it.
     std::size_t mappable = 0;
     for (std::size_t b = 0; b < scan.size(); ++b)
         mappable += scan.valid(b) && scan.range(b) <= options_.mapMaxRange;
-    out.overlap = double(icp.pointsUsed) / double(std::max<std::size_t>(1, mappable));
-    if (out.overlap < options_.minInlierRatio ||
-        correction.norm() > options_.maxCorrectionDistance ||
-        std::abs(mrpt::math::wrapToPi(correction.phi())) > options_.maxCorrectionAngle)
+    a.overlap = double(a.icp.pointsUsed) / double(std::max<std::size_t>(1, mappable));
+    return a;
+}
+
+bool ScanRegistration::tryIcp(const matching::PolarScan& scan, const CPose2D& sensorOnRobot,
+                              const Prediction& prediction, Registration& out) {
+    if (!prediction.submap || prediction.submap->map().size() == 0 || scan.validCount() == 0)
+        return false;
+    IcpAttempt best = icpFrom(scan, sensorOnRobot, *prediction.submap, prediction.inSubmap);
+    out.overlap = best.overlap;
+    const CPose2D correction = best.robot - prediction.inSubmap;
+    const bool plausible =
+        correction.norm() <= options_.maxCorrectionDistance &&
+        std::abs(mrpt::math::wrapToPi(correction.phi())) <= options_.maxCorrectionAngle;
+    if (best.overlap < options_.minInlierRatio || !plausible)
         return false;
     out.method = RegistrationMethod::Icp;
     out.reference = prediction.submap->anchor();
-    out.pose = robot;
-    out.rawCovariance = icp.covariance;
+    out.pose = best.robot;
+    out.rawCovariance = best.icp.covariance;
     // Undetermined directions (a corridor) fall back on odometry since the last keyframe.
-    out.covariance = edgeCovariance(icp.covariance, prediction.distanceFromLastKeyframe,
+    out.covariance = edgeCovariance(best.icp.covariance, prediction.distanceFromLastKeyframe,
                                     prediction.turnFromLastKeyframe);
     return true;
 }
@@ -98,8 +108,11 @@ bool ScanRegistration::tryGraphMatcher(const matching::PolarScan& scan,
                                        const CPose2D& sensorOnRobot, const Prediction& prediction,
                                        const features::ScanFeatures& features, Registration& out) {
     const Keyframe& kf = *prediction.lastKeyframe;
+    // The prediction as a guess (the matcher retries guess-free when it leads nowhere).
+    const CPose2D guess =
+        (prediction.fromLastKeyframe + sensorOnRobot) - (CPose2D() + kf.sensorOnRobot);
     const matching::MatchResult& m =
-        matcher_.match(kf.polar, kf.features->features, scan, features, std::nullopt);
+        matcher_.match(kf.polar, kf.features->features, scan, features, guess);
     if (getenv("TOPOSLAM_DEBUG_LOOPS"))
         fprintf(stderr,
                 "graph-matcher vs kf %zu: %s pose (%.2f %.2f %.1f) prediction (%.2f %.2f %.1f) "

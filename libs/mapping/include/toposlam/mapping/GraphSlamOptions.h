@@ -24,7 +24,7 @@ struct GraphSlamOptions : public mrpt::config::CLoadableOptions {
     double mapMaxRange = 20;        ///< m, farther readings are not put into submaps
 
     // --- Front end: registration ---
-    int icpMaxIterations = 20;
+    int icpMaxIterations = 30;
     double icpMaxDistance = 0.4;   ///< m, association gate of the first stage
     double icpRobustScale = 0.05;  ///< m, Cauchy kernel scale
     std::size_t icpStride = 2;     ///< every stride-th point in the first stage
@@ -62,10 +62,11 @@ struct GraphSlamOptions : public mrpt::config::CLoadableOptions {
     /// place; one loop every few is as good as one on each, at a fraction of the cost).
     std::size_t loopSearchEvery = 2;
     /// Drift model of the uncertainty propagated through the graph (PathUncertainty.h): an
-    /// edge of length l adds the variances (a l)^2 to position and (b l)^2 to heading, and at
-    /// least its own covariance.
-    double driftSigmaXYPerMetre = 0.03;     ///< a, m per metre
-    double driftSigmaPhiPerMetre = 0.0087;  ///< b, rad per metre (0.5 deg)
+    /// edge of length l turning by t adds the variances a^2 l to position and b^2 l + c^2 t
+    /// to heading (a random walk), and at least its own covariance.
+    double driftSigmaXY = 0.05;         ///< a, m per sqrt(m)
+    double driftSigmaPhi = 0.01;        ///< b, rad per sqrt(m) (0.57 deg)
+    double driftSigmaPhiPerTurn = 0.02;  ///< c, rad per sqrt(rad) (1.15 deg)
     /// Guess-free search against the keyframes outside the gate every this many keyframes
     /// (0 = off), matching the globalSearchCandidates most similar ones.
     std::size_t globalSearchEvery = 10;

@@ -12,10 +12,13 @@
 //    graph's relative pose for gated candidates, guess-free for the others.
 //  - Consistency: a gated match must agree with the graph within the chi-square bound of
 //    their combined covariance; when two reliable matches inside the gate put the robot in
-//    clearly different places (identical rooms), all of them are rejected; a guess-free match
-//    is accepted only once another loop within loopConfirmWindow keyframes agrees with it
-//    around their common cycle (pairwise consistency). After optimisation the builder
-//    withdraws loops whose residual still exceeds the bound (withdrawOutliers).
+//    clearly different places (identical rooms), all of them are rejected. A match that the
+//    graph already agrees with (within the match's own covariance) is accepted; one that
+//    would correct the graph needs support: a second match to another older keyframe in the
+//    same search, or a loop within loopConfirmWindow keyframes that agrees with it around
+//    their common cycle (pairwise consistency); guess-free matches always need support.
+//    After optimisation the builder withdraws loops whose residual still exceeds the bound
+//    (withdrawWorstOutlier).
 #include <toposlam/mapping/GraphSlamOptions.h>
 #include <toposlam/mapping/Keyframe.h>
 #include <toposlam/mapping/PathUncertainty.h>
@@ -68,6 +71,12 @@ class LoopCloser {
     /// Gated matches that agree with the graph (none when they contradict each other).
     std::vector<Measurement> consistentGated(const std::vector<Measurement>& matches,
                                              const PoseGraph& graph, SlamStatistics& stats) const;
+    /// True when the graph already agrees with the loop within the loop's own covariance.
+    bool agreesWithGraph(const Measurement& m, const PoseGraph& graph) const;
+    /// Accepts `m` (into `accepted`) when another loop from another keyframe supports it
+    /// (pending or recently accepted), else keeps it pending.
+    void acceptWithSupport(const Measurement& m, const PoseGraph& graph,
+                           std::vector<Measurement>& accepted);
     /// True when the two loops agree around the cycle they close with the graph.
     bool pairConsistent(const Measurement& a, const Measurement& b, const PoseGraph& graph) const;
     void accept(const Measurement& m, PoseGraph& graph, LoopClosureOutcome& outcome,
@@ -79,6 +88,7 @@ class LoopCloser {
     const std::vector<PathVariance>* variances_ = nullptr;  // of the current query
     std::deque<Measurement> pending_;  // guess-free matches awaiting confirmation
     std::deque<Measurement> recent_;   // accepted loops, for confirming guess-free ones
+    const std::vector<Keyframe>* debugKeyframes_ = nullptr;
 };
 
 }  // namespace toposlam::mapping

@@ -26,12 +26,13 @@ struct PathVariance {
 
 class PathUncertainty {
   public:
-    PathUncertainty(double driftSigmaXYPerMetre, double driftSigmaPhiPerMetre);
+    /// a (m per sqrt(m)), b (rad per sqrt(m)) and c (rad per sqrt(rad)) of the drift model.
+    PathUncertainty(double driftSigmaXY, double driftSigmaPhi, double driftSigmaPhiPerTurn);
     /// Variances of every node's pose relative to `source`, through the active edges.
     const std::vector<PathVariance>& from(const PoseGraph& graph, std::size_t source);
 
   private:
-    double driftXY_, driftPhi_;
+    double driftXY_, driftPhi_, driftTurn_;
     std::vector<PathVariance> variance_;
     std::vector<double> cost_;
     std::vector<std::pair<double, std::size_t>> heap_;

@@ -2,9 +2,10 @@
 // The front end's decision for one scan: where was the robot? In order:
 //  1. point-to-line ICP of the scan against the local submap's line map, from the odometry
 //     prediction (PointToLineIcp::refineOnMap); good when enough of the scan lands on the map
-//     and the correction of the prediction is plausible;
+//     and the correction of the prediction is plausible. After an odometry jump the
+//     prediction is the last scan's motion instead, and this step is skipped;
 //  2. otherwise (poor overlap, a correction too large to trust, or an odometry jump) the graph
-//     matcher, guess-free, against the last keyframe;
+//     matcher against the last keyframe, from the prediction and, failing that, guess-free;
 //  3. if both fail, the odometry prediction, with the odometry model's covariance.
 // Poses are ROBOT poses (the laser's mounting offset is applied here), in the frame of the
 // reference keyframe the result names (m, rad).
@@ -18,6 +19,7 @@
 #include <toposlam/matching/PointToLineIcp.h>
 
 #include <cstddef>
+#include <optional>
 
 namespace toposlam::mapping {
 
@@ -67,6 +69,13 @@ class ScanRegistration {
                                                double distance, double turn) const;
 
   private:
+    struct IcpAttempt {
+        matching::IcpResult icp;
+        mrpt::poses::CPose2D robot;  ///< robot pose in the submap frame
+        double overlap = 0;
+    };
+    IcpAttempt icpFrom(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
+                       const Submap& submap, const mrpt::poses::CPose2D& start);
     bool tryIcp(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                 const Prediction& prediction, Registration& out);
     bool tryGraphMatcher(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,

@@ -4,11 +4,14 @@
 // done by libs/evaluation (SlamBenchmark); this app reads the options and prints.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/cli/NumberArg.h>
+#include <toposlam/cli/UsageError.h>
 #include <toposlam/evaluation/ChildProcess.h>
 #include <toposlam/evaluation/SlamBenchmark.h>
 #include <toposlam/evaluation/SlamBenchmarkReport.h>
 #include <toposlam/io/InputError.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -22,8 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace toposlam;
-
-constexpr int kUsageError = 2;
 
 const char* const kDescription =
     "Benchmark B3 in one run: SLAM accuracy and cost of TopoSLAM's graph SLAM (toposlam-slam, "
@@ -61,10 +62,14 @@ std::vector<evaluation::SlamEngine> parseEngines(const std::string& text) {
     for (const std::string& name : splitList(text)) {
         const auto engine = evaluation::engineFromName(name);
         if (!engine)
-            throw std::invalid_argument("--engines: unknown engine '" + name +
-                                        "' (graph, icp, icp-slam)");
+            throw cli::UsageError("--engines: unknown engine '" + name +
+                                  "' (graph, icp, icp-slam)");
+        if (std::find(engines.begin(), engines.end(), *engine) != engines.end())
+            throw cli::UsageError("--engines: '" + name + "' given twice");
         engines.push_back(*engine);
     }
+    if (engines.empty())
+        throw cli::UsageError("--engines: no engine given");
     return engines;
 }
 
@@ -82,7 +87,7 @@ struct Arguments {
     TCLAP::CmdLine cmd;
     TCLAP::ValueArg<std::string> data, logs, engines, config, icpSlam, icpSlamConfig, keep, images,
         json;
-    TCLAP::ValueArg<double> timeout;
+    cli::NumberArg<double> timeout;
 };
 
 Arguments::Arguments()
@@ -126,15 +131,15 @@ Arguments::Arguments()
       json("", "json", "Write the results as JSON to this file (keys: share/doc/apps.md)", false,
            "", "out.json", cmd),
       timeout("", "timeout",
-              "Kill a run after this many seconds of wall time (0: no limit, the default)", false,
-              0.0, "seconds", cmd) {}
+              "Kill a run after this many seconds of wall time (0: no limit, the default).", 0.0,
+              cli::NumberRange<double>::nonNegative(1e6), "seconds", cmd) {}
 
 // "/work/wt/../shared/data" -> "/work/shared/data": shorter names in the table.
 std::string tidy(const std::string& path) {
     return fs::path(path).lexically_normal().string();
 }
 
-// The benchmark options from the command line. Throws std::invalid_argument for bad usage.
+// The benchmark options from the command line. Throws cli::UsageError for bad usage.
 evaluation::SlamBenchmarkOptions benchmarkOptions(Arguments& a) {
     evaluation::SlamBenchmarkOptions options;
     options.dataDir = tidy(a.data.getValue());
@@ -145,8 +150,6 @@ evaluation::SlamBenchmarkOptions benchmarkOptions(Arguments& a) {
     options.engines = parseEngines(a.engines.getValue());
     options.keepDir = a.keep.getValue();
     options.imageDir = a.images.getValue();
-    if (!(a.timeout.getValue() >= 0))
-        throw std::invalid_argument("--timeout must be >= 0");
     evaluation::SlamEngineSetup& setup = options.setup;
     setup.timeoutSeconds = a.timeout.getValue();
     setup.slamConfig = tidy(a.config.getValue());
@@ -162,13 +165,14 @@ evaluation::SlamBenchmarkOptions benchmarkOptions(Arguments& a) {
 int run(int argc, char** argv) {
     Arguments a;
     if (const auto exitCode = cli::parseCommandLine(a.cmd, argc, argv))
-        return *exitCode == 0 ? 0 : kUsageError;
+        return *exitCode;
     std::optional<evaluation::SlamBenchmark> bench;
     try {
         bench.emplace(benchmarkOptions(a));
-    } catch (const std::invalid_argument& e) {
-        std::cerr << "error: " << e.what() << " (see --help)\n";
-        return kUsageError;
+    } catch (const cli::UsageError&) {
+        throw;
+    } catch (const std::invalid_argument& e) {  // the log selection (engines are checked here)
+        throw cli::UsageError(std::string("--logs: ") + e.what());
     }
     if (!bench->skipReason().empty()) {
         std::cerr << "B3 skipped: " << bench->skipReason()

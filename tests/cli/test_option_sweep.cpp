@@ -42,6 +42,7 @@ const NumericOption kNumericOptions[] = {
     {"toposlam-bench-planning", "--time", 0, 3600, true, false},
     {"toposlam-bench-planning", "--attempts", 1, 1000, false, true},
     {"toposlam-bench-rooms", "--repeats", 1, 1000, false, true},
+    {"toposlam-bench-slam", "--timeout", 0, 1e6, false, false},
     {"toposlam-convert", "--carmen-max-range", 0, 1000, true, false},
     {"toposlam-convert", "--max-scans", 0, 1e9, false, true},
     {"toposlam-convert", "--resolution", 0, 100, true, false},
@@ -100,6 +101,8 @@ std::string validArguments(const std::string& app, const std::string& out) {
         return "--json " + o + "b5.json'";
     if (app == "toposlam-bench-rooms")
         return "-o " + o + "b4.json'";
+    if (app == "toposlam-bench-slam")
+        return "--logs office --json " + o + "b3.json' --images " + o + "img'";
     if (app == "toposlam-convert")
         return log + " -o " + o + "c.rawlog' -q";
     if (app == "toposlam-eval-slam")
@@ -202,9 +205,9 @@ TEST_P(EveryApp, HelpShowsTheRangesAndTheTableHasEveryNumericOption) {
 INSTANTIATE_TEST_SUITE_P(Apps, EveryApp,
                          testing::Values("toposlam-annotate-features", "toposlam-bench-features",
                                          "toposlam-bench-matching", "toposlam-bench-planning",
-                                         "toposlam-bench-rooms", "toposlam-convert",
-                                         "toposlam-eval-slam", "toposlam-plan", "toposlam-rooms",
-                                         "toposlam-sim", "toposlam-slam"),
+                                         "toposlam-bench-rooms", "toposlam-bench-slam",
+                                         "toposlam-convert", "toposlam-eval-slam", "toposlam-plan",
+                                         "toposlam-rooms", "toposlam-sim", "toposlam-slam"),
                          [](const testing::TestParamInfo<std::string>& info) {
                              std::string name = info.param.substr(9);  // after "toposlam-"
                              for (char& c : name)

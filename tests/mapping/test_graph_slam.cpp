@@ -46,13 +46,6 @@ SlamRun runSlam(const test::SimulatedDrive& drive) {
     run.slam->finish();
     for (std::size_t i = 0; i < drive.scans.size(); ++i)
         run.poses.push_back(run.slam->scanPose(i));
-    if (const char* dump = getenv("TOPOSLAM_DUMP")) {
-        std::ofstream f(dump);
-        for (std::size_t i = 0; i < drive.scans.size(); ++i)
-            f << i << " " << drive.truth[i].x() << " " << drive.truth[i].y() << " "
-              << run.poses[i].x() << " " << run.poses[i].y() << " " << drive.odometry[i].x() << " "
-              << drive.odometry[i].y() << "\n";
-    }
     return run;
 }
 

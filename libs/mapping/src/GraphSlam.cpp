@@ -134,8 +134,6 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
             break;
     }
     const CPose2D pose = graph_.pose(r.reference) + r.pose;
-    if (getenv("TOPOSLAM_DEBUG_REG"))
-        fprintf(stderr, "scan %zu t=%.2f method %d kf %zu prev (%.3f %.3f %.2f) inc (%.3f %.3f %.2f) now (%.3f %.3f %.2f)\n", scans_.size(), mrpt::Clock::toDouble(scan->timestamp), int(r.method), keyframes_.size(),
                 current_.x(), current_.y(), current_.phi()*57.3, odometryIncrement ? odometryIncrement->x() : -99., odometryIncrement ? odometryIncrement->y() : -99., odometryIncrement ? odometryIncrement->phi()*57.3 : -99., pose.x(), pose.y(), pose.phi()*57.3);
     const CPose2D step = pose - current_;
     lastMotion_ = step;

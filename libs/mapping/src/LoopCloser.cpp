@@ -60,16 +60,6 @@ std::vector<std::size_t> LoopCloser::gatedCandidates(std::size_t current, std::s
         if (d <= options_.loopOverlapDistance + options_.loopGateSigmas * std::sqrt(v.at(d)))
             inGate.push_back({d, j});
     }
-    if (getenv("TOPOSLAM_DEBUG_GATE")) {
-        double best = 1e9, bestSigma = 0; std::size_t bestJ = 0;
-        for (std::size_t j = 0; j < firstActive && j < current; ++j) {
-            if (keyframes[current].travelled - keyframes[j].travelled < options_.loopMinTravel) continue;
-            const double d = std::hypot(graph.pose(j).x() - here.x(), graph.pose(j).y() - here.y());
-            if (d < best) best = d, bestJ = j, bestSigma = std::sqrt((*variances_)[j].at(d));
-        }
-        fprintf(stderr, "gate kf %zu t=%.2f inGate %zu nearest %zu d=%.2f sigma=%.2f\n", current,
-                mrpt::Clock::toDouble(keyframes[current].scan->timestamp), inGate.size(), bestJ, best, bestSigma);
-    }
     std::sort(inGate.begin(), inGate.end());
     // Nearest first, spread out so that look-alike places in the gate get tried as well.
     std::vector<std::size_t> chosen;
@@ -148,12 +138,6 @@ std::vector<LoopCloser::Measurement> LoopCloser::consistentGated(
         CMatrixDouble33 combined = m.covariance;
         const double d = m.pose.norm();
         combined(0, 0) += v.at(d), combined(1, 1) += v.at(d), combined(2, 2) += v.heading;
-        if (getenv("TOPOSLAM_DEBUG_LOOPS"))
-            fprintf(stderr, "gated %zu->%zu z=(%.2f %.2f %.1f) graph=(%.2f %.2f %.1f) sigma=%.3f chi2=%.2f chi2meas=%.2f\n",
-                    m.older, m.current, m.pose.x(), m.pose.y(), m.pose.phi() * 57.3,
-                    (graph.pose(m.current) - graph.pose(m.older)).x(), (graph.pose(m.current) - graph.pose(m.older)).y(),
-                    (graph.pose(m.current) - graph.pose(m.older)).phi() * 57.3, std::sqrt(v.at(d)),
-                    graph.chi2(m.older, m.current, m.pose, combined), graph.chi2(m.older, m.current, m.pose, m.covariance));
         if (graph.chi2(m.older, m.current, m.pose, combined) <= options_.loopChi2)
             out.push_back(m);
         else
@@ -201,9 +185,6 @@ void LoopCloser::accept(const Measurement& m, PoseGraph& graph, LoopClosureOutco
     outcome.maxDistanceError = std::max(outcome.maxDistanceError, d);
     outcome.maxAngleError = std::max(outcome.maxAngleError, phi);
     graph.addEdge(m.older, m.current, m.pose, m.covariance, EdgeKind::Loop);
-    if (getenv("TOPOSLAM_DEBUG_ACCEPT"))
-        fprintf(stderr, "accept %zu %zu %.4f %.4f %.5f %.6f %.6f\n", (*debugKeyframes_)[m.older].scanIndex,
-                (*debugKeyframes_)[m.current].scanIndex, m.pose.x(), m.pose.y(), m.pose.phi(), d, phi);
     ++outcome.accepted;
     ++stats.loopsAccepted;
     recent_.push_back(m);
@@ -213,7 +194,6 @@ LoopClosureOutcome LoopCloser::closeLoops(std::size_t current, std::size_t first
                                           const std::vector<Keyframe>& keyframes, PoseGraph& graph,
                                           SlamStatistics& stats) {
     const double start = io::threadCpuSeconds();
-    debugKeyframes_ = &keyframes;
     LoopClosureOutcome outcome;
     while (!recent_.empty() && recent_.front().current + options_.loopConfirmWindow < current)
         recent_.pop_front();

@@ -113,13 +113,6 @@ bool ScanRegistration::tryGraphMatcher(const matching::PolarScan& scan,
         (prediction.fromLastKeyframe + sensorOnRobot) - (CPose2D() + kf.sensorOnRobot);
     const matching::MatchResult& m =
         matcher_.match(kf.polar, kf.features->features, scan, features, guess);
-    if (getenv("TOPOSLAM_DEBUG_LOOPS"))
-        fprintf(stderr,
-                "graph-matcher vs kf %zu: %s pose (%.2f %.2f %.1f) prediction (%.2f %.2f %.1f) "
-                "ambiguity %.2f quality %.2f\n",
-                kf.id, matching::toString(m.status), m.pose.x(), m.pose.y(), m.pose.phi() * 57.3,
-                prediction.fromLastKeyframe.x(), prediction.fromLastKeyframe.y(),
-                prediction.fromLastKeyframe.phi() * 57.3, m.ambiguity, m.quality);
     if (!m.reliable())
         return false;
     out.method = RegistrationMethod::GraphMatcher;

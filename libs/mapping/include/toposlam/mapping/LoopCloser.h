@@ -88,7 +88,6 @@ class LoopCloser {
     const std::vector<PathVariance>* variances_ = nullptr;  // of the current query
     std::deque<Measurement> pending_;  // guess-free matches awaiting confirmation
     std::deque<Measurement> recent_;   // accepted loops, for confirming guess-free ones
-    const std::vector<Keyframe>* debugKeyframes_ = nullptr;
 };
 
 }  // namespace toposlam::mapping

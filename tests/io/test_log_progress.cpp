@@ -8,10 +8,12 @@
 #include <toposlam/io/RawlogWriter.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "TestSupport.h"
 
@@ -107,4 +109,24 @@ TEST(LogProgress, RawlogBothFormatsPlainAndGzip) {
             expectSmoothProgress(path);
         }
     }
+}
+
+// The log of the complaint: the bar jumped 27 -> 54 -> 82 % and sat at 100 % for the last
+// 350 scans. Now no step between two scans exceeds 0.5 % and 350 scans before the end the
+// bar is near 1 - 350/N.
+TEST(LogProgress, MitCsailAdvancesWithEveryScan) {
+    TOPOSLAM_SHARED_DATA_OR_SKIP(mit, "slam/mit-csail.clf");
+    std::vector<double> fractions;
+    LaserLogReader reader(mit);
+    LaserLogRecord record;
+    while (reader.next(record))
+        fractions.push_back(reader.fractionRead());
+    ASSERT_GT(fractions.size(), 1000u);
+    double largestStep = fractions.front();
+    for (std::size_t i = 1; i < fractions.size(); ++i)
+        largestStep = std::max(largestStep, fractions[i] - fractions[i - 1]);
+    EXPECT_LT(largestStep, 0.005);
+    const std::size_t n = fractions.size();
+    EXPECT_NEAR(fractions[n - 351], 1.0 - 350.0 / static_cast<double>(n), 0.03);
+    EXPECT_NEAR(fractions.back(), 1.0, 1e-9);
 }

@@ -13,6 +13,7 @@
 
 #include "MrptErrorText.h"
 #include "MrptObjectCheck.h"
+#include "ObjectDryRun.h"
 
 namespace toposlam::io {
 
@@ -85,21 +86,42 @@ InputError RawlogScanSource::objectError(const std::string& className,
 }
 
 mrpt::serialization::CSerializable::Ptr RawlogScanSource::deserialize(const ObjectCheck& check) {
-    // A completely checked object may use only its checked bytes.
-    if (check.complete)
-        lookahead_.setReadLimit(check.size);
+    // What MRPT may read: the checked bytes, or, for an object the check could not verify,
+    // the bytes a dry run in a child process with bounded memory and time read.
+    std::size_t size = check.size;
+    if (!check.complete && !mrpt::rtti::findRegisteredClass(check.className))
+        throw unregisteredClassError(check.className);
+    if (!check.complete) {
+        const DryRunResult dry = dryRunNextObject(lookahead_);
+        if (!dry.ok) {
+            const std::string unregistered =
+                quotedClassAfter(dry.problem, "Stored object has class ");
+            if (!unregistered.empty())
+                throw unregisteredClassError(unregistered);
+            throw objectError(check.className, dry.problem);
+        }
+        size = dry.size;
+    }
+    lookahead_.setReadLimit(size);
     struct ClearLimit {
         LookaheadStream& stream;
         ~ClearLimit() { stream.setReadLimit(std::nullopt); }
     } clearLimit{lookahead_};
     const uint64_t start = lookahead_.position();
     auto object = archive_.ReadObject();
-    if (check.complete && lookahead_.position() - start != check.size) {
+    if (lookahead_.position() - start != size) {
         throw objectError(check.className, "MRPT read " +
                                                std::to_string(lookahead_.position() - start) +
-                                               " of its " + std::to_string(check.size) + " bytes");
+                                               " of its " + std::to_string(size) + " bytes");
     }
     return object;
+}
+
+InputError RawlogScanSource::unregisteredClassError(const std::string& className) const {
+    return InputError(path_, position() + ": class '" + className +
+                                 "' is not registered with MRPT (it is defined by a library or "
+                                 "plugin this program does not load); the rest of the rawlog "
+                                 "cannot be read");
 }
 
 mrpt::serialization::CSerializable::Ptr RawlogScanSource::readObject() {
@@ -126,13 +148,8 @@ mrpt::serialization::CSerializable::Ptr RawlogScanSource::readObject() {
     } catch (const std::exception& e) {
         const std::string what = e.what();
         const std::string unregistered = quotedClassAfter(what, "Stored object has class ");
-        if (!unregistered.empty()) {
-            throw InputError(path_, position() + ": class '" +
-                                        unregistered +
-                                        "' is not registered with MRPT (it is defined by a "
-                                        "library or plugin this program does not load); the "
-                                        "rest of the rawlog cannot be read");
-        }
+        if (!unregistered.empty())
+            throw unregisteredClassError(unregistered);
         const std::string cls = quotedClassAfter(what, "parsing typed object ");
         throw objectError(cls.empty() ? check.className : cls, mrptErrorSummary(e));
     }

@@ -2,7 +2,8 @@
 // MRPT rawlogs (either format, plain or gzip) as a stream of laser records, read object by
 // object so that bad content is reported precisely (object index and class) instead of
 // ending the stream silently as MRPT's own readers do. Every object is checked
-// (MrptObjectCheck.h) before MRPT deserializes it.
+// (MrptObjectCheck.h) before MRPT deserializes it; one the check cannot verify is first
+// deserialized in a child process with bounded memory and time (ObjectDryRun.h).
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/serialization/CSerializable.h>
 #include <toposlam/io/InputError.h>
@@ -47,6 +48,7 @@ class RawlogScanSource : public ScanSource {
     /// "object #N (after a <class>)", where reading stands.
     std::string position() const;
     InputError objectError(const std::string& className, const std::string& cause) const;
+    InputError unregisteredClassError(const std::string& className) const;
     void addScan(const mrpt::obs::CObservation2DRangeScan::Ptr& scan);
     void consumeObservation(const mrpt::obs::CObservation::Ptr& observation);
     void attachFeatures(const mrpt::obs::CObservation::Ptr& features);

@@ -55,7 +55,9 @@
 //    written by toposlam-annotate-features come with their scan (storedFeatures).
 //  - Every object is checked before MRPT deserializes it (libs/io/src/MrptObjectCheck.h):
 //    lengths against the bytes the file has, versions, nested classes, so corrupt files end
-//    with an InputError instead of huge allocations or crashes inside MRPT.
+//    with an InputError instead of huge allocations or crashes inside MRPT. Objects of
+//    classes the check does not know are first deserialized in a child process with 1 GiB
+//    and 5 s (libs/io/src/ObjectDryRun.h).
 #include <mrpt/math/TPose2D.h>
 #include <mrpt/obs/CObservation.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>

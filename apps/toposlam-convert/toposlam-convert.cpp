@@ -4,6 +4,7 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <toposlam/classes/TopoSlamClasses.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/cli/NumberArg.h>
 #include <toposlam/io/LogConversion.h>
 #include <toposlam/io/MapConversion.h>
 #include <toposlam/io/ProgressDisplay.h>
@@ -44,98 +45,74 @@ const char* const kDescription =
     "  toposlam-convert intel.clf -o intel_sf.rawlog.gz --format sf\n"
     "  toposlam-convert map.gridmap.gz -o map.yaml\n"
     "  toposlam-convert office.png --resolution 0.05 --origin -10,-5 -o office.gridmap.gz\n"
-    "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input or options (the "
-    "message names the file and, for logs, the line or object). No output file is written "
-    "unless the whole input converts.";
+    "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input (the message "
+    "names the file and, for logs, the line or object); 2 for bad options (an unknown option, "
+    "a value out of range). No output file is written unless the whole input converts.";
 
-// The command line; the arguments register themselves with `cmd` in declaration order.
+// The command line; every argument registers itself with `cmd` (constructed first).
 struct Arguments {
-    TCLAP::CmdLine cmd{kDescription, ' ', "0.1"};
-    TCLAP::UnlabeledValueArg<std::string> input{
-        "input", "Input: a CARMEN log, an MRPT rawlog, or a grid map", true, "", "input", cmd};
-    TCLAP::ValueArg<std::string> output{
-        "o",
-        "output",
-        "Output file. Logs: an MRPT rawlog (.rawlog, .rawlog.gz = gzip). Maps: .gridmap, "
-        ".gridmap.gz, .yaml or .pgm (ROS map_server pair), .png (picture + ROS pair)",
-        false,
-        "",
-        "file",
-        cmd};
+    Arguments();
+    TCLAP::CmdLine cmd;
+    TCLAP::UnlabeledValueArg<std::string> input;
+    TCLAP::ValueArg<std::string> output;
     std::vector<std::string> formats{"obs", "sf"};
-    TCLAP::ValuesConstraint<std::string> formatValues{formats};
-    TCLAP::ValueArg<std::string> format{
-        "",
-        "format",
-        "Rawlog format: obs = observations only (CObservationOdometry + "
-        "CObservation2DRangeScan; icp-slam, graphslam-engine), sf = actions/sensory frames "
-        "(CActionRobotMovement2D + CSensoryFrame; rbpf-slam, icp-slam). Default: obs",
-        false,
-        "obs",
-        &formatValues,
-        cmd};
-    TCLAP::ValueArg<std::string> odometryTrajectory{
-        "",
-        "odometry-trajectory",
-        "Also write the log's odometry at each scan as 'fileStamp x y yaw' (s, m, m, rad)",
-        false,
-        "",
-        "file",
-        cmd};
-    TCLAP::ValueArg<std::string> label{
-        "",
-        "label",
-        "Only scans with this sensor label (CARMEN: FLASER, RLASER, ROBOTLASER1, ROBOTLASER2). "
-        "Default: all 2D laser scans",
-        false,
-        "",
-        "label",
-        cmd};
-    TCLAP::ValueArg<double> maxRange{
-        "",
-        "carmen-max-range",
-        "CARMEN: maximum range in m when no PARAM robot_front_laser_max line gives one; "
-        "readings at or beyond it are invalid. Default: 81",
-        false,
-        81.0,
-        "m",
-        cmd};
-    TCLAP::ValueArg<std::string> laserOffset{
-        "",
-        "laser-offset",
-        "CARMEN: the laser's pose on the robot as x,y,yaw (m, m, rad), replacing what the log "
-        "states. Default: from the log (laser vs robot pose in each line, else PARAM "
-        "robot_frontlaser_offset)",
-        false,
-        "",
-        "x,y,yaw",
-        cmd};
-    TCLAP::ValueArg<std::size_t> maxScans{
-        "", "max-scans", "Convert only the first N scans. Default: 0 = all", false, 0, "N", cmd};
-    TCLAP::ValueArg<double> resolution{
-        "",
-        "resolution",
-        "Maps: cell size in m for an input image (overrides its .yaml sidecar). Default: the "
-        "sidecar's, else 0.05",
-        false,
-        0.05,
-        "m",
-        cmd};
-    TCLAP::ValueArg<std::string> origin{
-        "",
-        "origin",
-        "Maps: world position x,y (m) of the lower-left corner of an input image (overrides "
-        "its sidecar). Default: the sidecar's, else 0,0",
-        false,
-        "",
-        "x,y",
-        cmd};
-    TCLAP::SwitchArg quiet{"q", "quiet", "No progress display and no summary", cmd};
+    TCLAP::ValuesConstraint<std::string> formatValues;
+    TCLAP::ValueArg<std::string> format;
+    TCLAP::ValueArg<std::string> odometryTrajectory;
+    TCLAP::ValueArg<std::string> label;
+    cli::NumberArg<double> maxRange;
+    TCLAP::ValueArg<std::string> laserOffset;
+    cli::NumberArg<std::size_t> maxScans;
+    cli::NumberArg<double> resolution;
+    TCLAP::ValueArg<std::string> origin;
+    TCLAP::SwitchArg quiet;
 };
+
+Arguments::Arguments()
+    : cmd(kDescription, ' ', "0.1"),
+      input("input", "Input: a CARMEN log, an MRPT rawlog, or a grid map", true, "", "input", cmd),
+      output("o", "output",
+             "Output file. Logs: an MRPT rawlog (.rawlog, .rawlog.gz = gzip). Maps: .gridmap, "
+             ".gridmap.gz, .yaml or .pgm (ROS map_server pair), .png (picture + ROS pair)",
+             false, "", "file", cmd),
+      formatValues(formats),
+      format("", "format",
+             "Rawlog format: obs = observations only (CObservationOdometry + "
+             "CObservation2DRangeScan; icp-slam, graphslam-engine), sf = actions/sensory frames "
+             "(CActionRobotMovement2D + CSensoryFrame; rbpf-slam, icp-slam). Default: obs",
+             false, "obs", &formatValues, cmd),
+      odometryTrajectory(
+          "", "odometry-trajectory",
+          "Also write the log's odometry at each scan as 'fileStamp x y yaw' (s, m, m, rad)", false,
+          "", "file", cmd),
+      label("", "label",
+            "Only scans with this sensor label (CARMEN: FLASER, RLASER, ROBOTLASER1, "
+            "ROBOTLASER2). Default: all 2D laser scans",
+            false, "", "label", cmd),
+      maxRange("", "carmen-max-range",
+               "CARMEN: maximum range in m when no PARAM robot_front_laser_max line gives one; "
+               "readings at or beyond it are invalid. Default: 81",
+               81.0, cli::NumberRange<double>::positive(1000), "m", cmd),
+      laserOffset("", "laser-offset",
+                  "CARMEN: the laser's pose on the robot as x,y,yaw (m, m, rad), replacing what "
+                  "the log states. Default: from the log (laser vs robot pose in each line, else "
+                  "PARAM robot_frontlaser_offset)",
+                  false, "", "x,y,yaw", cmd),
+      maxScans("", "max-scans", "Convert only the first N scans. Default: 0 = all", 0,
+               cli::NumberRange<std::size_t>::nonNegative(1000000000), "N", cmd),
+      resolution("", "resolution",
+                 "Maps: cell size in m for an input image (overrides its .yaml sidecar). "
+                 "Default: the sidecar's, else 0.05",
+                 0.05, cli::NumberRange<double>::positive(100), "m", cmd),
+      origin("", "origin",
+             "Maps: world position x,y (m) of the lower-left corner of an input image "
+             "(overrides its sidecar). Default: the sidecar's, else 0,0",
+             false, "", "x,y", cmd),
+      quiet("q", "quiet", "No progress display and no summary", cmd) {}
 
 int convertMap(Arguments& a) {
     if (a.output.getValue().empty())
-        throw std::invalid_argument("-o/--output is required for grid maps");
+        throw cli::UsageError("-o/--output is required for grid maps");
     std::optional<io::GridMapGeometry> geometry;
     if (a.resolution.isSet() || a.origin.isSet()) {
         geometry.emplace();
@@ -155,7 +132,7 @@ int convertMap(Arguments& a) {
 
 io::LogConversionOptions logOptions(Arguments& a) {
     if (a.output.getValue().empty() && a.odometryTrajectory.getValue().empty())
-        throw std::invalid_argument("nothing to do: give -o and/or --odometry-trajectory");
+        throw cli::UsageError("nothing to do: give -o and/or --odometry-trajectory");
     io::LogConversionOptions options;
     options.read.scanLabel = a.label.getValue();
     options.read.carmenDefaultMaxRange = static_cast<float>(a.maxRange.getValue());

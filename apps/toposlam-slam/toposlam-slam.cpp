@@ -1,8 +1,10 @@
 // toposlam-slam: laser SLAM over a robot log, run like MRPT's icp-slam:
 //   toposlam-slam <config.ini> <log.{rawlog,clf}> [-o outdir]
-// Writes the trajectory (one pose per scan), the occupancy grid (.gridmap.gz, .png + .yaml)
-// and prints a summary. The algorithm lives in libs/mapping.
+// Writes the trajectory (one pose per scan), the occupancy grid (.gridmap.gz; map.png to look
+// at; map.yaml + map.pgm for ROS map_server) and prints a summary. The algorithm lives in
+// libs/mapping.
 #include <mrpt/config/CConfigFile.h>
+#include <toposlam/classes/TopoSlamClasses.h>
 #include <toposlam/cli/CommandLine.h>
 #include <toposlam/io/GridMapIO.h>
 #include <toposlam/io/InputError.h>
@@ -22,7 +24,8 @@ int run(int argc, char** argv) {
         "like MRPT's icp-slam: [MappingApplication] and [ICP] take icp-slam's keys, "
         "[OccupancyGrid] sets the output grid (see config_ini/toposlam-slam.ini). Writes "
         "<outdir>/trajectory.txt (timestamp x y yaw per scan, stamps as in the log), "
-        "<outdir>/map.gridmap.gz and <outdir>/map.png + map.yaml.",
+        "<outdir>/map.gridmap.gz, <outdir>/map.png (a picture of the grid) and the ROS "
+        "map_server pair <outdir>/map.yaml + map.pgm (trinary, as map_saver writes it).",
         ' ', "0.1.0");
     TCLAP::UnlabeledValueArg<std::string> configArg("config", "configuration .ini file", true, "",
                                                     "config.ini", cmd);
@@ -33,6 +36,7 @@ int run(int argc, char** argv) {
                                         false, "slam-out", "dir", cmd);
     if (const auto exitCode = toposlam::cli::parseCommandLine(cmd, argc, argv))
         return *exitCode;
+    toposlam::classes::registerTopoSlamClasses();  // logs may hold TopoSLAM's objects
 
     if (!fs::is_regular_file(configArg.getValue())) {
         throw toposlam::io::InputError(configArg.getValue(), "configuration file not found");
@@ -60,7 +64,7 @@ int run(int argc, char** argv) {
             "direction strength %.2f)\n",
             result.wallAlignment * 180.0 / M_PI, result.wallDirectionStrength);
     }
-    for (const char* f : {"trajectory.txt", "map.gridmap.gz", "map.png", "map.yaml"}) {
+    for (const char* f : {"trajectory.txt", "map.gridmap.gz", "map.png", "map.yaml", "map.pgm"}) {
         std::printf("wrote %s\n", (out / f).c_str());
     }
     return 0;

@@ -26,7 +26,9 @@ OfficeDataset writeOfficeDataset(const std::string& dir, const SimulatorConfig& 
     const auto grid = plan.rasterise(OfficeDataset::kResolution, OfficeDataset::kMargin);
     io::saveGridMap(grid, file("office.gridmap.gz"));
     io::saveGridMap(grid, file("office.png"));
-    out.files = {file("office.gridmap.gz"), file("office.png"), file("office.yaml")};
+    // office.png is the picture; office.yaml + office.pgm the ROS map_server pair.
+    out.files = {file("office.gridmap.gz"), file("office.png"), file("office.yaml"),
+                 file("office.pgm")};
 
     // Room labels as an image with the map's geometry (top row = highest y).
     const GridGeometry g = GridGeometry::of(grid);

@@ -24,7 +24,8 @@ struct OfficeDataset {
 
 /// Writes into `dir` (created if needed):
 ///   office.gridmap.gz        the map (MRPT serialization)
-///   office.png, office.yaml  the same map as an image + ROS map_server metadata
+///   office.png               the same map as a picture (grey p(free))
+///   office.yaml, office.pgm  the same map as a ROS map_server pair (trinary)
 ///   office_rooms.png         ground-truth room labels: 8-bit, pixel = room id, 0 = none
 ///   office_rooms.json        rooms (id, name, kind, floor box) and doors (jambs, width, rooms)
 ///   office.rawlog            the simulated log (config.format; 'config' gives every parameter)

@@ -3,6 +3,7 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFile.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/config/IniFile.h>
 #include <toposlam/features/FeatureExtractor.h>
 #include <toposlam/features/LogAnnotation.h>
 #include <toposlam/io/ProgressDisplay.h>
@@ -65,8 +66,8 @@ int run(int argc, char** argv) {
         false, "", "file.ini", cmd);
     TCLAP::ValueArg<std::string> section(
         "", "section",
-        "Section of the .ini file. Default: the extractor's (CornerExtractor, SegmentExtractor, "
-        "SplitAndMergeExtractor)",
+        "Section of the .ini file; it must be there. Default: the extractor's (CornerExtractor, "
+        "SegmentExtractor, SplitAndMergeExtractor)",
         false, "", "name", cmd);
     TCLAP::SwitchArg bearingRange(
         "", "bearing-range", "Also write each scan's corners as a CObservationBearingRange", cmd);
@@ -88,10 +89,12 @@ int run(int argc, char** argv) {
 
     std::unique_ptr<mrpt::config::CConfigFile> ini;
     if (config.isSet()) {
-        if (!std::filesystem::exists(config.getValue())) {
-            throw std::invalid_argument(config.getValue() + ": no such file");
-        }
-        ini = std::make_unique<mrpt::config::CConfigFile>(config.getValue());
+        ini = toposlam::config::openIniFile(config.getValue());
+        toposlam::config::requireSection(
+            *ini, section.isSet() ? section.getValue()
+                                  : features::defaultConfigSection(extractor.getValue()));
+    } else if (section.isSet()) {
+        throw std::invalid_argument("--section: no -c file to read it from");
     }
     auto ex = features::makeFeatureExtractor(extractor.getValue(), ini.get(), section.getValue());
     if (printOptions.getValue()) {

@@ -1,4 +1,3 @@
-#include <mrpt/config/CConfigFileBase.h>
 #include <toposlam/features/CornerIntersection.h>
 #include <toposlam/features/FeatureAssembly.h>
 #include <toposlam/features/LeastSquaresLineFit.h>
@@ -12,45 +11,33 @@ namespace toposlam::features {
 
 using mrpt::math::TPoint2D;
 
-void FeatureAssemblyOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                                                const std::string& section) {
-    const std::string fit = cfg.read_string(
-        section, "line_fit", lineFit == LineFitMethod::TwoPoint ? "two_point" : "least_squares");
-    if (fit == "two_point") {
-        lineFit = LineFitMethod::TwoPoint;
-    } else if (fit == "least_squares") {
-        lineFit = LineFitMethod::LeastSquares;
-    } else {
-        throw std::invalid_argument("[" + section + "] line_fit = '" + fit +
-                                    "': expected two_point or least_squares");
-    }
-    minSegmentPoints = static_cast<unsigned>(
-        cfg.read_int(section, "min_segment_points", static_cast<int>(minSegmentPoints)));
-    minSegmentLength = cfg.read_double(section, "min_segment_length", minSegmentLength);
-    maxCornerOffset = cfg.read_double(section, "max_corner_offset", maxCornerOffset);
-    maxLineResidual = cfg.read_double(section, "max_line_residual", maxLineResidual);
-    lineNoiseFactor = cfg.read_double(section, "line_noise_factor", lineNoiseFactor);
-    mergeCollinear = cfg.read_bool(section, "merge_collinear", mergeCollinear);
-    splitNonLines = cfg.read_bool(section, "split_non_lines", splitNonLines);
-    rejectArcs = cfg.read_bool(section, "reject_arcs", rejectArcs);
-    maxArcRadius = cfg.read_double(section, "max_arc_radius", maxArcRadius);
-    cornerAngleSigmas = cfg.read_double(section, "corner_angle_sigmas", cornerAngleSigmas);
-}
-
-void FeatureAssemblyOptions::dumpToTextStream(std::ostream& out) const {
-    out << "line_fit           = "
-        << (lineFit == LineFitMethod::TwoPoint ? "two_point" : "least_squares") << "\n"
-        << "min_segment_points = " << minSegmentPoints << "\n"
-        << "min_segment_length = " << minSegmentLength << "  (m)\n"
-        << "max_corner_offset  = " << maxCornerOffset << "  (m)\n"
-        << "min_corner_turn    = " << minCornerTurn << "  (rad)\n"
-        << "max_line_residual  = " << maxLineResidual << "  (m)\n"
-        << "line_noise_factor  = " << lineNoiseFactor << "\n"
-        << "merge_collinear    = " << mergeCollinear << "\n"
-        << "split_non_lines    = " << splitNonLines << "\n"
-        << "reject_arcs        = " << rejectArcs << "\n"
-        << "max_arc_radius     = " << maxArcRadius << "  (m)\n"
-        << "corner_angle_sigmas = " << cornerAngleSigmas << "\n";
+void FeatureAssemblyOptions::declare(config::OptionsSchema& s) {
+    s.choice(
+        "line_fit", lineFit,
+        {{"two_point", LineFitMethod::TwoPoint}, {"least_squares", LineFitMethod::LeastSquares}},
+        "fit of each segment: two_point (corner paper, step 4) or least_squares");
+    s.integer("min_segment_points", minSegmentPoints, "readings",
+              "shorter segments are dropped (their neighbours joined)")
+        .within(2, 100000);
+    s.real("min_segment_length", minSegmentLength, "m", "likewise, first to last reading")
+        .atLeast(0);
+    s.real("max_corner_offset", maxCornerOffset, "m",
+           "reject corners this far from the reading where they were found")
+        .above(0);
+    s.real("max_line_residual", maxLineResidual, "m",
+           "floor of the noise level in the line (chi-square) test")
+        .above(0);
+    s.real("line_noise_factor", lineNoiseFactor, "", "line test noise level, in range-noise sigmas")
+        .atLeast(0);
+    s.flag("split_non_lines", splitNonLines,
+           "cut a part that is no line at its two-line breakpoint and test both halves");
+    s.flag("merge_collinear", mergeCollinear,
+           "merge joined neighbours that are one line within the noise");
+    s.flag("reject_arcs", rejectArcs, "no corners on round objects (circle vs two lines)");
+    s.real("max_arc_radius", maxArcRadius, "m", "larger arcs are treated as walls").above(0);
+    s.real("corner_angle_sigmas", cornerAngleSigmas, "",
+           "no corner whose angle std times this exceeds the smallest corner turn; 0 = off")
+        .atLeast(0);
 }
 
 void FeatureAssembly::assemble(ScanPoints& pts, std::vector<LinePart>& parts, double sigma,

@@ -31,7 +31,7 @@
 //  - Segment ends get their types (corner type, Jump, Open); endpoints lists every corner
 //    (convex / concave) and every jump (the nearer reading of a range discontinuity).
 // The result is in the scan's own beam order (ScanPoints::toScanOrder).
-#include <mrpt/config/CLoadableOptions.h>
+#include <toposlam/config/Options.h>
 #include <toposlam/features/ArcCornerTest.h>
 #include <toposlam/features/LineFit.h>
 #include <toposlam/features/LinePart.h>
@@ -44,7 +44,9 @@
 
 namespace toposlam::features {
 
-struct FeatureAssemblyOptions : public mrpt::config::CLoadableOptions {
+/// Keys line_fit, min_segment_points, ... (see declare()). minCornerTurn is no key: the corner
+/// extractor derives it from theta_th.
+struct FeatureAssemblyOptions : public config::Options {
     LineFitMethod lineFit = LineFitMethod::TwoPoint;
     unsigned minSegmentPoints = 4;          ///< readings
     double minSegmentLength = 0;            ///< m, first to last reading
@@ -58,9 +60,7 @@ struct FeatureAssemblyOptions : public mrpt::config::CLoadableOptions {
     double maxArcRadius = 1.0;     ///< m, see ArcCornerTest
     double cornerAngleSigmas = 0;  ///< angle-precision test (see above); 0 = off
 
-    void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                            const std::string& section) override;
-    void dumpToTextStream(std::ostream& out) const override;
+    void declare(config::OptionsSchema& s) override;
 };
 
 class FeatureAssembly {

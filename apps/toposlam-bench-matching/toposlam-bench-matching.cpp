@@ -6,7 +6,9 @@
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/config/IniFile.h>
 #include <toposlam/io/ProgressDisplay.h>
+#include <toposlam/matching/CGraphMatcherAlignment.h>
 #include <toposlam/matchingbench/MatchingBenchmark.h>
 #include <toposlam/matchingbench/RelationPairs.h>
 #include <toposlam/matchingbench/SimulatedPairs.h>
@@ -80,16 +82,16 @@ int run(int argc, char** argv) {
 
     mrpt::config::CConfigFileMemory emptyIni;
     std::unique_ptr<mrpt::config::CConfigFile> ini;
-    if (!config.getValue().empty()) {
-        if (!std::filesystem::exists(config.getValue()))
-            throw std::runtime_error("config file not found: " + config.getValue());
-        ini = std::make_unique<mrpt::config::CConfigFile>(config.getValue());
-    }
+    if (config.isSet())
+        ini = toposlam::config::openIniFile(config.getValue());
     const mrpt::config::CConfigFileBase& cfg =
         ini ? static_cast<const mrpt::config::CConfigFileBase&>(*ini) : emptyIni;
 
-    matching::GraphMatcherOptions graphOptions;
-    graphOptions.loadFromConfigFile(cfg, "GraphScanMatcher");
+    // The section CGraphMatcherAlignment reads (graph-matcher.ini); its two keys of the MRPT
+    // interface do not apply to the benchmark, which calls the matcher directly.
+    matching::CGraphMatcherAlignment::Options alignmentOptions;
+    alignmentOptions.loadFromConfigFile(cfg, "GraphScanMatcher");
+    const matching::GraphMatcherOptions& graphOptions = alignmentOptions.matcher;
     mrpt::slam::CICP::TConfigParams icpParams;
     // Defaults = peers/icp-slam-benchmark.ini's [ICP] (the icp-slam peer of B3).
     icpParams.maxIterations = 80;

@@ -71,6 +71,10 @@ std::string Field::assign(const std::string& text, bool store) {
     return parse_(text, store);
 }
 
+double Field::codeNumber() const {
+    return codeNumber_ ? codeNumber_() : std::nan("");
+}
+
 std::string Field::check() const {
     if (!fileNumber_)
         return "";
@@ -135,9 +139,8 @@ Field& OptionsSchema::addNumber(const std::string& key, std::function<double()> 
                                 const std::string& comment) {
     Field& f = add(key, FieldKind::Real, unit, comment);
     f.fileNumber_ = [get, toFile] { return toFile(get()); };
-    f.format_ = [get, toFile, fromFile] {
-        return detail::formatReal(toFile(get()), get(), fromFile);
-    };
+    f.codeNumber_ = get;
+    f.format_ = [get, toFile, fromFile] { return detail::formatReal(get(), toFile, fromFile); };
     const Range* range = &f.range_;  // deque element: stable
     f.parse_ = [set, fromFile, range](const std::string& text, bool store) -> std::string {
         const auto v = detail::parseReal(text);
@@ -172,11 +175,12 @@ Field& OptionsSchema::real(const std::string& key, float& field, const std::stri
         comment);
 }
 
-Field& OptionsSchema::angle(const std::string& key, double& radians, const std::string& comment) {
+Field& OptionsSchema::angle(const std::string& key, double& radians, const std::string& comment,
+                            const std::string& unit) {
     return addNumber(
         key + "_deg", [&radians] { return radians; }, [&radians](double v) { radians = v; },
         [](double deg) { return mrpt::DEG2RAD(deg); },
-        [](double rad) { return mrpt::RAD2DEG(rad); }, "deg", comment);
+        [](double rad) { return mrpt::RAD2DEG(rad); }, unit, comment);
 }
 
 Field& OptionsSchema::converted(const std::string& key, double& field,
@@ -207,6 +211,7 @@ Field& OptionsSchema::addInteger(const std::string& key, std::function<long doub
                                  const std::string& comment) {
     Field& f = add(key, FieldKind::Integer, unit, comment);
     f.fileNumber_ = [get] { return static_cast<double>(get()); };
+    f.codeNumber_ = f.fileNumber_;
     f.format_ = [get] {
         char buffer[32];
         std::snprintf(buffer, sizeof buffer, "%.0Lf", get());

@@ -74,16 +74,22 @@ std::string significant(double v, int digits) {
 }
 }  // namespace
 
-std::string formatReal(double fileValue, double codeValue,
+std::string formatReal(double codeValue, const std::function<double(double)>& toFile,
                        const std::function<double(double)>& fromFile) {
-    for (int digits = 1; digits <= 17; ++digits) {
-        const std::string text = significant(fileValue, digits);
-        if (fromFile(std::strtod(text.c_str(), nullptr)) == codeValue)
-            return text;
+    double value = codeValue;
+    for (int attempt = 0; attempt < 4; ++attempt) {
+        const double fileValue = toFile(value);
+        for (int digits = 1; digits <= 17; ++digits) {
+            const std::string text = significant(fileValue, digits);
+            if (fromFile(std::strtod(text.c_str(), nullptr)) == value)
+                return text;
+        }
+        // No decimal reads back as `value` (degrees -> radians cannot reach every double):
+        // go on with the value the nearest decimal reads as (1 ulp away). Its text reads back
+        // as itself, so saving what was loaded writes the same file again.
+        value = fromFile(std::strtod(significant(fileValue, 17).c_str(), nullptr));
     }
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.17g", fileValue);
-    return buffer;
+    return significant(toFile(value), 17);
 }
 
 }  // namespace toposlam::config::detail

@@ -20,9 +20,10 @@ std::optional<long long> parseInteger(const std::string& text);
 /// true / false / 1 / 0 / yes / no / on / off (case-insensitive), or nullopt.
 std::optional<bool> parseFlag(const std::string& text);
 
-/// The shortest decimal text t of fileValue such that fromFile(t) == codeValue exactly (so a
-/// saved file reads back bit for bit); 17 significant digits when no text does.
-std::string formatReal(double fileValue, double codeValue,
+/// The shortest decimal text t of toFile(codeValue) such that fromFile(t) == codeValue exactly
+/// (so a saved file reads back bit for bit). When no text does (degrees of some radian values),
+/// that of the nearest value that has one (1 ulp away), which then saves as itself.
+std::string formatReal(double codeValue, const std::function<double(double)>& toFile,
                        const std::function<double(double)>& fromFile);
 
 }  // namespace toposlam::config::detail

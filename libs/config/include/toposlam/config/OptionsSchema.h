@@ -56,6 +56,8 @@ class Field {
 
     /// The field's current value as it is written in a file.
     std::string text() const { return format_(); }
+    /// Numbers: the field's value in code units (bit for bit); NaN for other kinds.
+    double codeNumber() const;
     /// Parses `text` (a value from a file); stores it when `store` and it is acceptable.
     /// Returns the problem ("" = accepted).
     std::string assign(const std::string& text, bool store);
@@ -74,8 +76,8 @@ class Field {
     std::function<std::string()> format_;
     // Parses a file text: problem or "" ; stores when asked.
     std::function<std::string(const std::string&, bool)> parse_;
-    // The current value in file units, for numbers (range check of values set in code).
-    std::function<double()> fileNumber_;
+    // The current value in file / code units, for numbers (range check of values set in code).
+    std::function<double()> fileNumber_, codeNumber_;
 };
 
 /// A cross-field condition (e.g. min < max), reported against `key`.
@@ -98,8 +100,10 @@ class OptionsSchema {
                 const std::string& comment);
     Field& real(const std::string& key, float& field, const std::string& unit,
                 const std::string& comment);
-    /// An angle: radians in `field`, degrees in the file under key + "_deg".
-    Field& angle(const std::string& key, double& radians, const std::string& comment);
+    /// An angle: radians in `field`, degrees in the file under key + "_deg". `unit` for
+    /// compound units ("deg/s": the field is in rad/s).
+    Field& angle(const std::string& key, double& radians, const std::string& comment,
+                 const std::string& unit = "deg");
     /// A real number stored converted: field = fromFile(file value), file = toFile(field).
     Field& converted(const std::string& key, double& field, std::function<double(double)> fromFile,
                      std::function<double(double)> toFile, const std::string& unit,

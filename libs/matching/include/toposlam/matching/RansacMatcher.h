@@ -27,6 +27,7 @@
 // Output: the best-supported transforms, at most maxKept of them, pairwise distinct (they
 // differ by more than distinctTranslation or distinctRotation), each with its consensus.
 #include <mrpt/poses/CPose2D.h>
+#include <toposlam/config/OptionsSchema.h>
 #include <toposlam/matching/AttributedGraph.h>
 #include <toposlam/matching/PointToLineIcp.h>
 #include <toposlam/matching/RigidTransform2D.h>
@@ -57,6 +58,9 @@ struct RansacOptions {
     std::size_t maxKept = 6;
     double distinctTranslation = 0.30;  ///< m
     double distinctRotation = 0.15;     ///< rad
+
+    /// Its .ini keys (GraphScanMatcher.h gives them a prefix).
+    void declare(config::OptionsSchema& s);
 };
 
 /// A candidate assignment observed (current) node -> reference node with its probability.

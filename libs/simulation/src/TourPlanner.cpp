@@ -1,4 +1,3 @@
-#include <mrpt/config/CConfigFileBase.h>
 #include <toposlam/simulation/PathSmoother.h>
 #include <toposlam/simulation/TourOrder.h>
 #include <toposlam/simulation/TourPlanner.h>
@@ -11,16 +10,27 @@ namespace toposlam::simulation {
 
 using mrpt::math::TPoint2D;
 
-void TourOptions::loadFromConfig(const mrpt::config::CConfigFileBase& c, const std::string& s) {
-    robotRadius = c.read_double(s, "robot_radius", robotRadius);
-    safetyMargin = c.read_double(s, "safety_margin", safetyMargin);
-    preferredClearance = c.read_double(s, "preferred_clearance", preferredClearance);
-    clearanceWeight = c.read_double(s, "clearance_weight", clearanceWeight);
-    areas.doorWidthMax = c.read_double(s, "door_width_max", areas.doorWidthMax);
-    areas.minAreaM2 = c.read_double(s, "min_area_m2", areas.minAreaM2);
-    smoothingSigma = c.read_double(s, "smoothing_sigma", smoothingSigma);
-    returnToStart = c.read_bool(s, "return_to_start", returnToStart);
-    motion.loadFromConfig(c, s);
+void TourOptions::declare(config::OptionsSchema& s) {
+    s.real("robot_radius", robotRadius, "m", "robot footprint radius").above(0);
+    s.real("safety_margin", safetyMargin, "m", "kept between the robot's outline and any obstacle")
+        .atLeast(0);
+    s.real("preferred_clearance", preferredClearance, "m",
+           "paths keep this much clearance where they can")
+        .atLeast(0);
+    s.real("clearance_weight", clearanceWeight, "",
+           "steps closer to walls cost up to 1 + clearance_weight times their length")
+        .atLeast(0);
+    s.real("door_width_max", areas.doorWidthMax, "m",
+           "openings up to this wide separate free areas")
+        .above(0);
+    s.real("min_area_m2", areas.minAreaM2, "m^2",
+           "smaller areas (after eroding free space by half the door width) are ignored")
+        .atLeast(0);
+    s.real("smoothing_sigma", smoothingSigma, "m",
+           "Gaussian path smoothing along the path, 1 sigma")
+        .atLeast(0);
+    s.flag("return_to_start", returnToStart, "close the loop (SLAM needs loops to be tested)");
+    s.group("", motion);
 }
 
 namespace {

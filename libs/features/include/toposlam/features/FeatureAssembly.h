@@ -72,9 +72,28 @@ class FeatureAssembly {
     void assemble(ScanPoints& pts, std::vector<LinePart>& parts, double sigma, ScanFeatures& out);
 
   private:
-    std::vector<LineFit> fits_;
+    // The steps of assemble(), in order (see the file comment).
+    void addJumps(const ScanPoints& pts, const std::vector<LinePart>& parts,
+                  ScanFeatures& out) const;
+    void dropShortParts(const ScanPoints& pts, std::vector<LinePart>& parts) const;
+    void fitLines(const ScanPoints& pts, std::vector<LinePart>& parts, double sigma);
+    void mergeCollinear(const ScanPoints& pts, std::vector<LinePart>& parts, double sigma);
+    void addSegments(const ScanPoints& pts, const std::vector<LinePart>& parts,
+                     ScanFeatures& out) const;
+    void addCorners(const ScanPoints& pts, const std::vector<LinePart>& parts, double sigma,
+                    ScanFeatures& out) const;
+
+    bool tooShort(const ScanPoints& pts, const LinePart& p) const;
+    /// The chi-square line test of a part of `count` readings with residual sum of squares rss.
+    bool passesLineTest(double count, double rss) const;
+    /// Parts i and i + 1 are pieces of one small circle (ArcCornerTest), no corner.
+    bool isArcCorner(const ScanPoints& pts, const std::vector<LinePart>& parts, std::size_t i,
+                     double sigma) const;
+
+    std::vector<LineFit> fits_;                  // one per part, from step 4 on
     std::vector<LinePart> lineParts_, pending_;  // step 4's output and the parts still to test
     TwoLineSplit split_;
+    double lineSigma_ = 0;  // noise level of the line test for the current scan (m)
 };
 
 }  // namespace toposlam::features

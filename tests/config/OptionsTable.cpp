@@ -1,0 +1,50 @@
+#include <toposlam/features/CornerExtractor.h>
+#include <toposlam/features/SegmentExtractor.h>
+#include <toposlam/features/SplitAndMergeExtractor.h>
+#include <toposlam/matching/CGraphMatcherAlignment.h>
+#include <toposlam/simulation/SimulatorConfig.h>
+
+#include <TestSupport.h>
+#include "OptionsTable.h"
+
+#include <algorithm>
+#include <filesystem>
+
+namespace toposlam::test {
+
+const std::map<std::string, OptionsFactory>& sectionStructs() {
+    static const simulation::SimulatorConfig sim;
+    static const std::map<std::string, OptionsFactory> table = {
+        {"CornerExtractor", make<features::CornerExtractorOptions>()},
+        {"SegmentExtractor", make<features::SegmentExtractorOptions>()},
+        {"SplitAndMergeExtractor", make<features::SplitAndMergeOptions>()},
+        {"GraphScanMatcher", make<matching::CGraphMatcherAlignment::Options>()},
+        {"Laser", make(sim.log.laser)},
+        {"Odometry", make(sim.log.odometry)},
+        {"People", make(sim.log.people)},
+        {"Tour", make(sim.tour)},
+        {"Simulation", make(sim)},
+    };
+    return table;
+}
+
+bool isMrptSection(const std::string& section) {
+    return section == "ICP" || section.rfind("MappingApplication", 0) == 0;
+}
+
+const std::set<std::string>& pendingSections() {
+    static const std::set<std::string> pending = {"RoomSegmenter", "OccupancyGrid"};
+    return pending;
+}
+
+std::vector<std::string> configFiles() {
+    std::vector<std::string> files;
+    for (const auto& e : std::filesystem::directory_iterator(shareDir() + "/../config_ini")) {
+        if (e.path().extension() == ".ini")
+            files.push_back(e.path().string());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+}  // namespace toposlam::test

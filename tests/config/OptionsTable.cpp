@@ -29,7 +29,10 @@ const std::map<std::string, OptionsFactory>& sectionStructs() {
 }
 
 bool isMrptSection(const std::string& section) {
-    return section == "ICP" || section.rfind("MappingApplication", 0) == 0;
+    // [ICP]: CICP; [MappingApplication*]: icp-slam / kf-slam and their map definitions;
+    // [RangeBearingKFSLAM*]: kf-slam's filter.
+    return section == "ICP" || section.rfind("MappingApplication", 0) == 0 ||
+           section.rfind("RangeBearingKFSLAM", 0) == 0;
 }
 
 const std::set<std::string>& pendingSections() {

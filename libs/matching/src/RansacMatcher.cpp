@@ -125,8 +125,18 @@ const std::vector<Hypothesis>& RansacMatcher::run(
     const std::optional<mrpt::poses::CPose2D>& guess) {
     kept_.clear();
     evaluated_ = 0;
+    buildPool(assignments);
+    offerPairs(current, reference, options);
+    offerSingles(current, reference, options);
+    if (guess)
+        offer(current, reference, *guess, options);
+    for (Hypothesis& h : kept_)
+        consensus(current, reference, h.pose, options, &h.consensus);
+    return kept_;
+}
 
-    // Pool: unique (current, reference) pairs, best probability first.
+void RansacMatcher::buildPool(const std::vector<ScoredAssignment>& assignments) {
+    // Unique (current, reference) pairs, best probability first.
     pool_ = assignments;
     std::sort(pool_.begin(), pool_.end(), [](const ScoredAssignment& a, const ScoredAssignment& b) {
         if (a.current != b.current)
@@ -140,7 +150,10 @@ const std::vector<Hypothesis>& RansacMatcher::run(
                                 return a.current == b.current && a.reference == b.reference;
                             }),
                 pool_.end());
+}
 
+void RansacMatcher::offerPairs(const AttributedGraph& current, const AttributedGraph& reference,
+                               const RansacOptions& options) {
     // Samples: pairs of pool entries with distinct segments on both sides, non-parallel
     // observed segments and matching relative angles.
     samples_.clear();
@@ -192,7 +205,10 @@ const std::vector<Hypothesis>& RansacMatcher::run(
             continue;
         offer(current, reference, t.pose, options);
     }
+}
 
+void RansacMatcher::offerSingles(const AttributedGraph& current, const AttributedGraph& reference,
+                                 const RansacOptions& options) {
     // Single matches: one segment fixes the rotation and the across-line translation; the
     // along-line one is taken from the midpoints and from either end (one end of a partly
     // occluded wall is usually its true corner). Weaker than pairs, but the only hypotheses
@@ -227,13 +243,6 @@ const std::vector<Hypothesis>& RansacMatcher::run(
                   options);
         }
     }
-
-    if (guess)
-        offer(current, reference, *guess, options);
-
-    for (Hypothesis& h : kept_)
-        consensus(current, reference, h.pose, options, &h.consensus);
-    return kept_;
 }
 
 }  // namespace toposlam::matching

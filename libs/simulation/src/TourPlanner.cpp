@@ -41,6 +41,57 @@ std::string metres(double v) {
     o << v << " m";
     return o.str();
 }
+
+/// The order in which the tour visits `places` (indices; the first is the start), and the
+/// tour's visitOrder / unreachable areas. Areas the start cannot reach are left out.
+std::vector<std::size_t> orderPlaces(GridPathPlanner& planner, const ClearanceMap& map,
+                                     const std::vector<TPoint2D>& places,
+                                     const std::vector<long>& areaOfPlace, bool returnToStart,
+                                     Tour& tour) {
+    // Path costs between all places; drop areas that cannot be reached from the start.
+    std::vector<std::vector<double>> cost(places.size(), std::vector<double>(places.size()));
+    for (std::size_t i = 0; i < places.size(); ++i) {
+        const std::vector<float>& costs = planner.costsFrom(places[i]);
+        const GridGeometry& g = map.geometry();
+        for (std::size_t j = 0; j < places.size(); ++j) {
+            cost[i][j] = costs[g.index(g.cellX(places[j].x), g.cellY(places[j].y))];
+        }
+    }
+    std::vector<std::size_t> reachable;
+    for (std::size_t j = 0; j < places.size(); ++j) {
+        if (std::isfinite(cost[0][j])) {
+            reachable.push_back(j);
+        } else {
+            tour.unreachable.push_back(static_cast<std::size_t>(areaOfPlace[j]));
+        }
+    }
+    std::vector<std::vector<double>> reachableCost(reachable.size(),
+                                                   std::vector<double>(reachable.size()));
+    for (std::size_t i = 0; i < reachable.size(); ++i) {
+        for (std::size_t j = 0; j < reachable.size(); ++j) {
+            reachableCost[i][j] = cost[reachable[i]][reachable[j]];
+        }
+    }
+    std::vector<std::size_t> order;
+    for (std::size_t k : orderVisits(reachableCost, returnToStart)) {
+        order.push_back(reachable[k]);
+    }
+    if (returnToStart && order.size() > 1)
+        order.push_back(order.front());
+    for (std::size_t p : order) {
+        if (areaOfPlace[p] >= 0 &&
+            (tour.visitOrder.empty() ||
+             tour.visitOrder.back() != static_cast<std::size_t>(areaOfPlace[p]))) {
+            tour.visitOrder.push_back(static_cast<std::size_t>(areaOfPlace[p]));
+        }
+    }
+    if (returnToStart && tour.visitOrder.size() > 1 &&
+        tour.visitOrder.back() == tour.visitOrder.front()) {
+        tour.visitOrder.pop_back();
+    }
+
+    return order;
+}
 }  // namespace
 
 Tour planTour(const ClearanceMap& map, const TourOptions& options) {
@@ -84,48 +135,8 @@ Tour planTour(const ClearanceMap& map, const TourOptions& options) {
         areaOfPlace.push_back(static_cast<long>(a));
     }
 
-    // Path costs between all places; drop areas that cannot be reached from the start.
-    std::vector<std::vector<double>> cost(places.size(), std::vector<double>(places.size()));
-    for (std::size_t i = 0; i < places.size(); ++i) {
-        const std::vector<float>& costs = planner.costsFrom(places[i]);
-        const GridGeometry& g = map.geometry();
-        for (std::size_t j = 0; j < places.size(); ++j) {
-            cost[i][j] = costs[g.index(g.cellX(places[j].x), g.cellY(places[j].y))];
-        }
-    }
-    std::vector<std::size_t> reachable;
-    for (std::size_t j = 0; j < places.size(); ++j) {
-        if (std::isfinite(cost[0][j])) {
-            reachable.push_back(j);
-        } else {
-            tour.unreachable.push_back(static_cast<std::size_t>(areaOfPlace[j]));
-        }
-    }
-    std::vector<std::vector<double>> reachableCost(reachable.size(),
-                                                   std::vector<double>(reachable.size()));
-    for (std::size_t i = 0; i < reachable.size(); ++i) {
-        for (std::size_t j = 0; j < reachable.size(); ++j) {
-            reachableCost[i][j] = cost[reachable[i]][reachable[j]];
-        }
-    }
-    std::vector<std::size_t> order;
-    for (std::size_t k : orderVisits(reachableCost, options.returnToStart)) {
-        order.push_back(reachable[k]);
-    }
-    if (options.returnToStart && order.size() > 1)
-        order.push_back(order.front());
-    for (std::size_t p : order) {
-        if (areaOfPlace[p] >= 0 &&
-            (tour.visitOrder.empty() ||
-             tour.visitOrder.back() != static_cast<std::size_t>(areaOfPlace[p]))) {
-            tour.visitOrder.push_back(static_cast<std::size_t>(areaOfPlace[p]));
-        }
-    }
-    if (options.returnToStart && tour.visitOrder.size() > 1 &&
-        tour.visitOrder.back() == tour.visitOrder.front()) {
-        tour.visitOrder.pop_back();
-    }
-
+    const std::vector<std::size_t> order =
+        orderPlaces(planner, map, places, areaOfPlace, options.returnToStart, tour);
     for (std::size_t k = 1; k < order.size(); ++k) {
         const auto path = planner.plan(places[order[k - 1]], places[order[k]]);
         tour.legs.push_back(smoothPath(path, planner, options.smoothingSigma, kPathSpacing));

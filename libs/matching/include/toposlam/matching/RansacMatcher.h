@@ -98,6 +98,13 @@ class RansacMatcher {
     std::size_t evaluated() const { return evaluated_; }
 
   private:
+    // The steps of run(): the candidate pool, hypotheses from pairs of matched segments, from
+    // single matched segments.
+    void buildPool(const std::vector<ScoredAssignment>& assignments);
+    void offerPairs(const AttributedGraph& current, const AttributedGraph& reference,
+                    const RansacOptions& options);
+    void offerSingles(const AttributedGraph& current, const AttributedGraph& reference,
+                      const RansacOptions& options);
     void offer(const AttributedGraph& current, const AttributedGraph& reference,
                const mrpt::poses::CPose2D& pose, const RansacOptions& options);
 

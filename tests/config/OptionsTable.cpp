@@ -2,6 +2,7 @@
 #include <toposlam/features/SegmentExtractor.h>
 #include <toposlam/features/SplitAndMergeExtractor.h>
 #include <toposlam/matching/CGraphMatcherAlignment.h>
+#include <toposlam/matching/CScanFeaturesMap.h>
 #include <toposlam/simulation/SimulatorConfig.h>
 
 #include <TestSupport.h>
@@ -28,7 +29,26 @@ const std::map<std::string, OptionsFactory>& sectionStructs() {
     return table;
 }
 
+OptionsFactory structOfSection(const std::string& section) {
+    const auto it = sectionStructs().find(section);
+    if (it != sectionStructs().end())
+        return it->second;
+    // TopoSLAM's map in MRPT map definitions: <prefix>_scanFeaturesMap_NN_<kind>Opts.
+    const auto endsWith = [&](const std::string& tail) {
+        return section.size() > tail.size() &&
+               section.compare(section.size() - tail.size(), tail.size(), tail) == 0 &&
+               section.find("_scanFeaturesMap_") != std::string::npos;
+    };
+    if (endsWith("_insertOpts"))
+        return make<matching::CScanFeaturesMap::TInsertionOptions>();
+    if (endsWith("_likelihoodOpts"))
+        return make<matching::CScanFeaturesMap::TLikelihoodOptions>();
+    return {};
+}
+
 bool isMrptSection(const std::string& section) {
+    if (structOfSection(section))
+        return false;
     // [ICP]: CICP; [MappingApplication*]: icp-slam / kf-slam and their map definitions;
     // [RangeBearingKFSLAM*]: kf-slam's filter.
     return section == "ICP" || section.rfind("MappingApplication", 0) == 0 ||

@@ -19,6 +19,10 @@ OptionsFactory make(const T& defaults = T()) {
 /// Section -> its struct, with the defaults the apps start from.
 const std::map<std::string, OptionsFactory>& sectionStructs();
 
+/// The struct of `section`: sectionStructs(), or TopoSLAM's options inside MRPT map
+/// definitions (<prefix>_scanFeaturesMap_NN_insertOpts / _likelihoodOpts); empty if none.
+OptionsFactory structOfSection(const std::string& section);
+
 /// Sections handed to MRPT classes with MRPT's own key names (CICP, icp-slam's map
 /// definitions): not ours to check.
 bool isMrptSection(const std::string& section);

@@ -6,6 +6,8 @@
 #include <toposlam/config/IniFile.h>
 #include <toposlam/features/FeatureAssembly.h>
 #include <toposlam/features/JumpDetector.h>
+#include <toposlam/matching/CScanFeaturesMap.h>
+#include <toposlam/matching/FeatureMap.h>
 #include <toposlam/matching/GraphScanMatcher.h>
 #include <toposlam/simulation/LaserModel.h>
 
@@ -35,6 +37,11 @@ TEST(AllOptions, EveryStructKeepsTheContract) {
     test::expectOptionsContract(make<features::FeatureAssemblyOptions>(), "FeatureAssembly");
     test::expectOptionsContract(make<matching::GraphMatcherOptions>(), "GraphScanMatcher");
     test::expectOptionsContract(make<simulation::LaserModel>(), "Laser");
+    test::expectOptionsContract(make<matching::FeatureMapOptions>(), "FeatureMap");
+    test::expectOptionsContract(make<matching::CScanFeaturesMap::TInsertionOptions>(),
+                                "map_scanFeaturesMap_00_insertOpts");
+    test::expectOptionsContract(make<matching::CScanFeaturesMap::TLikelihoodOptions>(),
+                                "map_scanFeaturesMap_00_likelihoodOpts");
 }
 
 TEST(AllOptions, EveryKeyOfEveryShippedIniFileIsKnownAndValid) {
@@ -50,9 +57,9 @@ TEST(AllOptions, EveryKeyOfEveryShippedIniFileIsKnownAndValid) {
             if (section.empty() || test::isMrptSection(section) ||
                 test::pendingSections().count(section))
                 continue;
-            const auto it = sectionStructs().find(section);
-            ASSERT_NE(it, sectionStructs().end()) << "[" << section << "] has no options struct";
-            auto options = it->second();
+            const auto factory = test::structOfSection(section);
+            ASSERT_TRUE(factory) << "[" << section << "] has no options struct";
+            auto options = factory();
             try {
                 options->loadFromConfigFile(*ini, section);
             } catch (const std::exception& e) {

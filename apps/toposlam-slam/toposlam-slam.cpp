@@ -2,10 +2,9 @@
 //   toposlam-slam <config.ini> <log.{rawlog,clf}> [-o outdir]
 // Writes the trajectory (one pose per scan), the occupancy grid (.gridmap.gz, .png + .yaml)
 // and prints a summary. The algorithm lives in libs/mapping.
-#include <mrpt/config/CConfigFile.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/config/IniFile.h>
 #include <toposlam/io/GridMapIO.h>
-#include <toposlam/io/InputError.h>
 #include <toposlam/io/Trajectory.h>
 #include <toposlam/mapping/LogMapper.h>
 
@@ -34,12 +33,10 @@ int run(int argc, char** argv) {
     if (const auto exitCode = toposlam::cli::parseCommandLine(cmd, argc, argv))
         return *exitCode;
 
-    if (!fs::is_regular_file(configArg.getValue())) {
-        throw toposlam::io::InputError(configArg.getValue(), "configuration file not found");
-    }
-    const mrpt::config::CConfigFile ini(configArg.getValue());
+    // A file that is no .ini file at all is an error here, not defaults (config/IniFile.h).
+    const auto ini = toposlam::config::openIniFile(configArg.getValue());
     const toposlam::mapping::MappingResult result =
-        toposlam::mapping::mapLog(logArg.getValue(), ini);
+        toposlam::mapping::mapLog(logArg.getValue(), *ini);
 
     const fs::path out(outArg.getValue());
     fs::create_directories(out);

@@ -1,6 +1,7 @@
 #include <toposlam/features/CornerExtractor.h>
 #include <toposlam/features/SegmentExtractor.h>
 #include <toposlam/features/SplitAndMergeExtractor.h>
+#include <toposlam/mapping/OccupancyGridBuilder.h>
 #include <toposlam/matching/CGraphMatcherAlignment.h>
 #include <toposlam/matching/CScanFeaturesMap.h>
 #include <toposlam/simulation/SimulatorConfig.h>
@@ -25,6 +26,7 @@ const std::map<std::string, OptionsFactory>& sectionStructs() {
         {"People", make(sim.log.people)},
         {"Tour", make(sim.tour)},
         {"Simulation", make(sim)},
+        {"OccupancyGrid", make<mapping::OccupancyGridOptions>()},
     };
     return table;
 }
@@ -56,7 +58,7 @@ bool isMrptSection(const std::string& section) {
 }
 
 const std::set<std::string>& pendingSections() {
-    static const std::set<std::string> pending = {"RoomSegmenter", "OccupancyGrid"};
+    static const std::set<std::string> pending = {"RoomSegmenter"};
     return pending;
 }
 

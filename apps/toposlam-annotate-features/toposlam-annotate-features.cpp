@@ -3,6 +3,7 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFile.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/cli/NumberArg.h>
 #include <toposlam/config/IniFile.h>
 #include <toposlam/features/FeatureExtractor.h>
 #include <toposlam/features/LogAnnotation.h>
@@ -55,17 +56,12 @@ const char* const kDescription =
     "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input; 2 for a bad option "
     "value; no output file is written unless the whole log is processed.";
 
-/// A bad option value: reported as "error: ..." with exit status 2.
-struct UsageError : std::invalid_argument {
-    using std::invalid_argument::invalid_argument;
-};
-
 io::RawlogFormat parseFormat(const std::string& text) {
     if (text == "obs")
         return io::RawlogFormat::Observations;
     if (text == "sf")
         return io::RawlogFormat::SensoryFrames;
-    throw UsageError("--format: '" + text + "' is not obs or sf");
+    throw cli::UsageError("--format: '" + text + "' is not obs or sf");
 }
 
 features::MotionNoise parseMotionNoise(const std::string& text) {
@@ -73,13 +69,13 @@ features::MotionNoise parseMotionNoise(const std::string& text) {
     try {
         v = cli::parseNumberList(text, 6, "--odometry-noise");
     } catch (const std::invalid_argument& e) {
-        throw UsageError(e.what());
+        throw cli::UsageError(e.what());
     }
     features::MotionNoise n{v[0], v[1], v[2], v[3], v[4], v[5]};
     try {
         n.validate();
     } catch (const std::invalid_argument& e) {
-        throw UsageError(std::string("--odometry-noise: ") + e.what());
+        throw cli::UsageError(std::string("--odometry-noise: ") + e.what());
     }
     return n;
 }
@@ -225,17 +221,22 @@ struct Arguments {
         "",    "label", "Only scans with this sensor label. Default: all 2D laser scans",
         false, "",      "label",
         cmd};
-    TCLAP::ValueArg<double> maxRange{
+    cli::NumberArg<double> maxRange{
         "",
         "carmen-max-range",
         "CARMEN: maximum range in m when no PARAM line gives one; readings at or beyond it are "
         "invalid. Default: 81",
-        false,
         81.0,
+        cli::NumberRange<double>::positive(1000),
         "m",
         cmd};
-    TCLAP::ValueArg<std::size_t> maxScans{
-        "", "max-scans", "Process only the first N scans. Default: 0 = all", false, 0, "N", cmd};
+    cli::NumberArg<std::size_t> maxScans{"",
+                                         "max-scans",
+                                         "Process only the first N scans. Default: 0 = all",
+                                         0,
+                                         cli::NumberRange<std::size_t>::nonNegative(1000000000),
+                                         "N",
+                                         cmd};
     TCLAP::ValueArg<std::string> featureMap{
         "",
         "feature-map",
@@ -273,7 +274,7 @@ int run(int argc, char** argv) {
             *ini, a.section.isSet() ? a.section.getValue()
                                     : features::defaultConfigSection(a.extractor.getValue()));
     } else if (a.section.isSet()) {
-        throw std::invalid_argument("--section: no -c file to read it from");
+        throw cli::UsageError("--section: no -c file to read it from");
     }
     auto ex =
         features::makeFeatureExtractor(a.extractor.getValue(), ini.get(), a.section.getValue());
@@ -288,17 +289,12 @@ int run(int argc, char** argv) {
     options.read.carmenDefaultMaxRange = static_cast<float>(a.maxRange.getValue());
     options.bearingRange = a.bearingRange.getValue();
     options.maxScans = a.maxScans.getValue();
-    try {
-        options.format = parseFormat(a.format.getValue());
-        options.motionNoise = parseMotionNoise(a.odometryNoise.getValue());
-        if (a.featureMap.isSet() != a.poses.isSet() ||
-            (a.featureMap.isSet() && a.featureMap.getValue().empty()))
-            throw UsageError(
-                "--feature-map and --poses go together (a prefix and a trajectory file)");
-    } catch (const UsageError& e) {
-        std::cerr << "error: " << e.what() << " (see --help)\n";
-        return 2;
-    }
+    options.format = parseFormat(a.format.getValue());  // cli::UsageError: exit status 2
+    options.motionNoise = parseMotionNoise(a.odometryNoise.getValue());
+    if (a.featureMap.isSet() != a.poses.isSet() ||
+        (a.featureMap.isSet() && a.featureMap.getValue().empty()))
+        throw cli::UsageError(
+            "--feature-map and --poses go together (a prefix and a trajectory file)");
     std::unique_ptr<FeatureMapRequest> map;
     if (a.featureMap.isSet()) {
         map = std::make_unique<FeatureMapRequest>();

@@ -4,13 +4,15 @@
 #include <benchmark/benchmark.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/cli/NumberArg.h>
 #include <toposlam/featureeval/FeatureBenchmark.h>
-#include <toposlam/io/AtomicFile.h>
+#include <toposlam/io/JsonFile.h>
 #include <toposlam/io/ProgressDisplay.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
+#include <cstring>
 #include <string>
 
 namespace {
@@ -40,27 +42,32 @@ const char* const kDescription =
     "Example: toposlam-bench-features --json b1.json";
 
 int run(int argc, char** argv) {
-    benchmark::Initialize(&argc, argv);  // takes out the --benchmark_* flags
+    // Google Benchmark takes out the --benchmark_* flags, but would answer --help itself.
+    const bool help = std::any_of(argv + 1, argv + argc, [](const char* a) {
+        return std::strcmp(a, "--help") == 0 || std::strcmp(a, "-h") == 0;
+    });
+    if (!help)
+        benchmark::Initialize(&argc, argv);
     TCLAP::CmdLine cmd(kDescription, ' ', "0.1");
-    TCLAP::ValueArg<int> rooms("", "rooms", "Random rooms (5 sensor poses each). Default: 50",
-                               false, 50, "N", cmd);
-    TCLAP::ValueArg<unsigned> seed("", "seed", "Seed of rooms, poses and noise. Default: 1", false,
-                                   1, "N", cmd);
+    cli::NumberArg<int> rooms("", "rooms", "Random rooms (5 sensor poses each). Default: 50", 50,
+                              cli::NumberRange<int>::positive(100000), "N", cmd);
+    cli::NumberArg<unsigned> seed("", "seed", "Seed of rooms, poses and noise. Default: 1", 1,
+                                  cli::NumberRange<unsigned>::nonNegative(2147483647), "N", cmd);
     TCLAP::ValueArg<std::string> json("", "json", "JSON output file. Default: b1-features.json",
                                       false, "b1-features.json", "file", cmd);
     TCLAP::ValueArg<std::string> data(
         "", "data", "The public benchmark data folder. Default: ../shared/data of the build", false,
         TOPOSLAM_SHARED_DATA_DIR, "dir", cmd);
-    TCLAP::ValueArg<std::size_t> realScans(
-        "", "real-scans", "Use only the first N scans of each real log. Default: 0 = all", false, 0,
-        "N", cmd);
+    cli::NumberArg<std::size_t> realScans(
+        "", "real-scans", "Use only the first N scans of each real log. Default: 0 = all", 0,
+        cli::NumberRange<std::size_t>::nonNegative(1000000000), "N", cmd);
     TCLAP::SwitchArg noReal("", "no-real", "Skip the real logs", cmd);
-    TCLAP::ValueArg<int> repetitions("", "repetitions",
-                                     "Timing repetitions (the median is reported). Default: 5",
-                                     false, 5, "N", cmd);
-    TCLAP::ValueArg<double> minTime("", "min-time",
-                                    "Minimum time of each timing repetition, s. Default: 0.05",
-                                    false, 0.05, "s", cmd);
+    cli::NumberArg<int> repetitions("", "repetitions",
+                                    "Timing repetitions (the median is reported). Default: 5", 5,
+                                    cli::NumberRange<int>::positive(1000), "N", cmd);
+    cli::NumberArg<double> minTime("", "min-time",
+                                   "Minimum time of each timing repetition, s. Default: 0.05", 0.05,
+                                   cli::NumberRange<double>::positive(60), "s", cmd);
     if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
         return *exitCode;
 
@@ -78,15 +85,11 @@ int run(int argc, char** argv) {
     const auto report = featureeval::runFeatureBenchmark(
         options, [&](double fraction, std::size_t done) { progress.update(fraction, done); });
     progress.finish();
-    benchmark::Shutdown();
+    if (!help)
+        benchmark::Shutdown();
 
     featureeval::printFeatureBenchmark(report, stdout);
-    io::writeFileAtomically(json.getValue(), [&](const std::string& tmp) {
-        std::ofstream out(tmp);
-        out << featureeval::featureBenchmarkJson(report);
-        if (!out)
-            throw std::runtime_error(json.getValue() + ": cannot write");
-    });
+    io::saveJsonFile(featureeval::featureBenchmarkJson(report), json.getValue());
     std::printf("\nwrote %s\n", json.getValue().c_str());
     return EXIT_SUCCESS;
 }

@@ -1,8 +1,9 @@
 // toposlam-bench-rooms: benchmark B4 (room segmentation on the maps of Bormann et al. 2016),
 // the virtual-door segmenter against the morphological and distance baselines in one run.
 #include <toposlam/cli/CommandLine.h>
-#include <toposlam/io/AtomicFile.h>
+#include <toposlam/cli/NumberArg.h>
 #include <toposlam/io/ProgressDisplay.h>
+#include <toposlam/io/TextFile.h>
 #include <toposlam/rooms/RoomBenchmark.h>
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
@@ -51,10 +52,9 @@ int run(int argc, char** argv) {
         "write a PNG of every segmentation into this folder (segments coloured, "
         "true door pixels blue, virtual doors as 0.5 m circles: green = matched, red = not)",
         false, "", "dir", cmd);
-    TCLAP::ValueArg<int> repeats("r", "repeats",
-                                 "runs per map and method; the median time is reported "
-                                 "(default: 3)",
-                                 false, 3, "n", cmd);
+    toposlam::cli::NumberArg<int> repeats(
+        "r", "repeats", "runs per map and method; the median time is reported (default: 3)", 3,
+        toposlam::cli::NumberRange<int>::positive(1000), "n", cmd);
     TCLAP::ValueArg<std::string> methods(
         "m", "methods", "comma-separated subset of vdoor,vdoor-paper,morph,dist (default: all)",
         false, "", "list", cmd);
@@ -104,12 +104,8 @@ int run(int argc, char** argv) {
     progress.finish();
     const auto summary = toposlam::rooms::RoomBenchmark::summarize(scores);
     std::cout << toposlam::rooms::RoomBenchmark::table(scores, summary);
-    toposlam::io::writeFileAtomically(json.getValue(), [&](const std::string& tmp) {
-        std::ofstream out(tmp);
-        out << toposlam::rooms::RoomBenchmark::json(scores, summary, options);
-        if (!out)
-            throw std::runtime_error(json.getValue() + ": cannot write");
-    });
+    toposlam::io::saveTextFile(toposlam::rooms::RoomBenchmark::json(scores, summary, options),
+                               json.getValue());
     std::cerr << "wrote " << json.getValue() << "\n";
     return 0;
 }

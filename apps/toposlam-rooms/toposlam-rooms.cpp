@@ -5,6 +5,7 @@
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/serialization/CArchive.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/cli/NumberArg.h>
 #include <toposlam/io/AtomicFile.h>
 #include <toposlam/io/GridMapIO.h>
 #include <toposlam/io/InputError.h>
@@ -51,9 +52,10 @@ const char* const kDescription =
     "  toposlam-rooms map.yaml -c config_ini/rooms.ini -o rooms\n"
     "  toposlam-rooms office_a.png --free-threshold 0.98 -o rooms   # Bormann PNG: grey < 250 is "
     "not free\n"
-    "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input or options (a missing "
-    "or corrupt map, a map without free cells, a malformed trajectory). Nothing is written "
-    "unless the segmentation succeeded.";
+    "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input (a missing or "
+    "corrupt map, a map without free cells, a malformed trajectory); 2 for bad options (an "
+    "unknown option, a value out of range). Nothing is written unless the segmentation "
+    "succeeded.";
 
 int run(int argc, char** argv) {
     TCLAP::CmdLine cmd(kDescription, ' ', "0.1");
@@ -78,34 +80,34 @@ int run(int argc, char** argv) {
                            "The paper's method as published: TopoSLAM's deviations off (same as "
                            "'variant = paper' in the ini file)",
                            cmd);
-    TCLAP::ValueArg<double> doorWidth("", "door-width",
-                                      "Door width w in m. Default: 1.1 (with the tolerance: "
-                                      "0.6-1.6 m)",
-                                      false, 1.1, "m", cmd);
-    TCLAP::ValueArg<double> doorTolerance("", "door-tolerance",
-                                          "Door width tolerance delta_w in m. Default: 0.5", false,
-                                          0.5, "m", cmd);
-    TCLAP::ValueArg<double> minRoomArea(
-        "", "min-room-area", "Minimum room area N_s in m^2 (both sides of a door). Default: 2",
-        false, 2.0, "m^2", cmd);
-    TCLAP::ValueArg<double> freeThreshold(
+    cli::NumberArg<double> doorWidth("", "door-width",
+                                     "Door width w in m. Default: 1.1 (with the tolerance: "
+                                     "0.6-1.6 m)",
+                                     1.1, cli::NumberRange<double>::positive(10), "m", cmd);
+    cli::NumberArg<double> doorTolerance("", "door-tolerance",
+                                         "Door width tolerance delta_w in m. Default: 0.5", 0.5,
+                                         cli::NumberRange<double>::nonNegative(10), "m", cmd);
+    cli::NumberArg<double> minRoomArea(
+        "", "min-room-area", "Minimum room area N_s in m^2 (both sides of a door). Default: 2", 2.0,
+        cli::NumberRange<double>::nonNegative(10000), "m^2", cmd);
+    cli::NumberArg<double> freeThreshold(
         "", "free-threshold",
         "A cell is free when p(free) exceeds this. Default: 0.8 (ROS map_server's free "
         "threshold; MRPT grids: unknown = 0.5). Use 0.98 for maps drawn with grey < 250 = not "
         "free (Bormann et al.'s benchmark)",
-        false, 0.8, "p", cmd);
-    TCLAP::ValueArg<double> resolution(
+        0.8, cli::NumberRange<double>::closed(0.5, 0.999), "p", cmd);
+    cli::NumberArg<double> resolution(
         "", "resolution",
         "Cell size in m of a bare input image (overrides its .yaml sidecar). "
         "Default: the sidecar's, else 0.05",
-        false, 0.05, "m", cmd);
+        0.05, cli::NumberRange<double>::positive(100), "m", cmd);
     TCLAP::ValueArg<std::string> origin(
         "", "origin",
         "World x,y (m) of the lower-left corner of a bare input image. Default: "
         "the sidecar's, else 0,0",
         false, "", "x,y", cmd);
-    TCLAP::ValueArg<int> scale("", "scale", "rooms.png pixels per grid cell, 1-8. Default: 2",
-                               false, 2, "n", cmd);
+    cli::NumberArg<int> scale("", "scale", "rooms.png pixels per grid cell. Default: 2", 2,
+                              cli::NumberRange<int>::closed(1, 8), "n", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "No summary on stdout", cmd);
     if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
         return *exitCode;

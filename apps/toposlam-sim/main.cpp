@@ -4,15 +4,16 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/core/bits_math.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/cli/NumberArg.h>
 #include <toposlam/config/IniFile.h>
 #include <toposlam/io/ProgressDisplay.h>
 #include <toposlam/simulation/OfficeDataset.h>
 #include <toposlam/simulation/SimulationJob.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <sstream>
 
 namespace {
 
@@ -101,37 +102,61 @@ struct Arguments {
         "",
         "file.ini",
         cmd};
-    TCLAP::ValueArg<unsigned> beamsArg{
-        "", "beams", "Laser beams per scan. Default: 361.", false, 361, "n", cmd};
-    TCLAP::ValueArg<double> fovArg{
-        "",    "fov-deg", "Laser field of view, first to last beam (deg). Default: 270.",
-        false, 270,       "deg",
+    cli::NumberArg<unsigned> beamsArg{"",
+                                      "beams",
+                                      "Laser beams per scan. Default: 361.",
+                                      361,
+                                      cli::NumberRange<unsigned>::closed(2, 100000),
+                                      "n",
+                                      cmd};
+    cli::NumberArg<double> fovArg{"",
+                                  "fov-deg",
+                                  "Laser field of view, first to last beam (deg). Default: 270.",
+                                  270,
+                                  cli::NumberRange<double>::positive(360),
+                                  "deg",
+                                  cmd};
+    cli::NumberArg<double> maxRangeArg{
+        "",
+        "max-range",
+        "Laser maximum range (m); farther returns are invalid. Default: 20.",
+        20,
+        cli::NumberRange<double>::positive(1000),
+        "m",
         cmd};
-    TCLAP::ValueArg<double> maxRangeArg{
-        "",    "max-range", "Laser maximum range (m); farther returns are invalid. Default: 20.",
-        false, 20,          "m",
-        cmd};
-    TCLAP::ValueArg<double> rangeNoiseArg{
-        "", "range-noise", "Laser range noise, Gaussian std (m). Default: 0.01.", false, 0.01, "m",
-        cmd};
-    TCLAP::ValueArg<double> bearingNoiseArg{
+    cli::NumberArg<double> rangeNoiseArg{"",
+                                         "range-noise",
+                                         "Laser range noise, Gaussian std (m). Default: 0.01.",
+                                         0.01,
+                                         cli::NumberRange<double>::nonNegative(10),
+                                         "m",
+                                         cmd};
+    cli::NumberArg<double> bearingNoiseArg{
         "",
         "bearing-noise-deg",
         "Laser beam direction noise, Gaussian std (deg). Default: 0.05.",
-        false,
         0.05,
+        cli::NumberRange<double>::nonNegative(45),
         "deg",
         cmd};
     TCLAP::SwitchArg exactOdometryArg{
         "", "exact-odometry", "Odometry without any error (default: drift as in [Odometry]).", cmd,
         false};
-    TCLAP::ValueArg<unsigned> peopleArg{
-        "",    "people", "People (discs, radius 0.25 m) walking about at 0.8-1.3 m/s. Default: 0.",
-        false, 0,        "n",
+    cli::NumberArg<unsigned> peopleArg{
+        "",
+        "people",
+        "People (discs, radius 0.25 m) walking about at 0.8-1.3 m/s. Default: 0.",
+        0,
+        cli::NumberRange<unsigned>::nonNegative(1000),
+        "n",
         cmd};
-    TCLAP::ValueArg<unsigned> seedArg{
-        "",    "seed", "Random seed; the same inputs and seed give the same log. Default: 1.",
-        false, 1,      "n",
+    cli::NumberArg<unsigned> seedArg{
+        "",
+        "seed",
+        "Random seed; the same inputs and seed give the same log. Default: 1.",
+        1,
+        cli::NumberRange<unsigned>::nonNegative(2147483647),
+        "n",
         cmd};
     TCLAP::ValueArg<std::string> startArg{
         "",
@@ -146,9 +171,13 @@ struct Arguments {
         "",    "plot", "Also write a PNG of the map with the trajectory (and the tour's areas).",
         false, "",     "file.png",
         cmd};
-    TCLAP::ValueArg<double> resolutionArg{
-        "",    "resolution", "Image maps without metadata: metres per pixel. Default: 0.05.",
-        false, 0.05,         "m",
+    cli::NumberArg<double> resolutionArg{
+        "",
+        "resolution",
+        "Image maps without metadata: metres per pixel. Default: 0.05.",
+        0.05,
+        cli::NumberRange<double>::positive(100),
+        "m",
         cmd};
     TCLAP::ValueArg<std::string> originArg{
         "",
@@ -162,21 +191,11 @@ struct Arguments {
     TCLAP::SwitchArg quietArg{"q", "quiet", "No progress display and no summary.", cmd, false};
 };
 
+/// "x,y[,yaw_deg]" (m, m, deg) -> pose (m, m, rad).
 mrpt::math::TPose2D parseStart(const std::string& text) {
-    mrpt::math::TPose2D p;
-    char c1 = 0, c2 = 0;
-    std::istringstream in(text);
-    double yawDeg = 0;
-    if (!(in >> p.x >> c1 >> p.y) || c1 != ',') {
-        throw std::invalid_argument("--start: expected x,y[,yaw_deg], got '" + text + "'");
-    }
-    if (in >> c2) {
-        if (c2 != ',' || !(in >> yawDeg)) {
-            throw std::invalid_argument("--start: expected x,y[,yaw_deg], got '" + text + "'");
-        }
-    }
-    p.phi = mrpt::DEG2RAD(yawDeg);
-    return p;
+    const bool withYaw = std::count(text.begin(), text.end(), ',') == 2;
+    const auto v = cli::parseNumberList(text, withYaw ? 3 : 2, "--start");
+    return {v[0], v[1], withYaw ? mrpt::DEG2RAD(v[2]) : 0.0};
 }
 
 /// Defaults, then the .ini file, then explicit command-line options; validated.
@@ -211,7 +230,7 @@ SimulatorConfig configuration(Arguments& a) {
 
 int makeOffice(Arguments& a, const SimulatorConfig& config, bool verbose) {
     if (a.mapArg.isSet() || a.posesArg.isSet() || a.tourArg.isSet() || a.outArg.isSet()) {
-        throw std::invalid_argument("--make-office takes no map, --poses, --tour or -o");
+        throw cli::UsageError("--make-office takes no map, --poses, --tour or -o");
     }
     io::ProgressDisplay progress("simulating office.rawlog", "scans", verbose && ::isatty(2) == 1);
     const OfficeDataset d = writeOfficeDataset(
@@ -229,11 +248,11 @@ int makeOffice(Arguments& a, const SimulatorConfig& config, bool verbose) {
 
 SimulationJob simulationJob(Arguments& a) {
     if (!a.mapArg.isSet())
-        throw std::invalid_argument("no map given (see toposlam-sim --help)");
+        throw cli::UsageError("no map given");
     if (a.posesArg.isSet() == a.tourArg.isSet())
-        throw std::invalid_argument("give exactly one of --poses <file> and --tour");
+        throw cli::UsageError("give exactly one of --poses <file> and --tour");
     if (!a.outArg.isSet())
-        throw std::invalid_argument("no output rawlog given (-o <file>)");
+        throw cli::UsageError("no output rawlog given (-o <file>)");
     SimulationJob job;
     job.mapPath = a.mapArg.getValue();
     job.posesPath = a.posesArg.getValue();
@@ -244,9 +263,9 @@ SimulationJob simulationJob(Arguments& a) {
         job.imageGeometry = io::GridMapGeometry{};
         job.imageGeometry->resolution = a.resolutionArg.getValue();
         if (a.originArg.isSet()) {
-            const auto o = parseStart(a.originArg.getValue() + ",0");
-            job.imageGeometry->originX = o.x;
-            job.imageGeometry->originY = o.y;
+            const auto o = cli::parseNumberList(a.originArg.getValue(), 2, "--origin");
+            job.imageGeometry->originX = o[0];
+            job.imageGeometry->originY = o[1];
         }
     }
     return job;

@@ -131,8 +131,10 @@ TEST(AnnotateFeaturesApp, EveryExtractorAndOptionsFromAnIniFile) {
               std::string::npos);
     EXPECT_NE(error("-c '" + ini + "' --section Corners").find("[Corners]: no such section"),
               std::string::npos);
-    EXPECT_NE(error("--section CornerExtractor").find("error: --section: no -c file"),
-              std::string::npos);
+    const auto usage = test::runApp("toposlam-annotate-features",
+                                    "'" + in + "' -o '" + out + "' --section CornerExtractor");
+    EXPECT_EQ(usage.exitCode, 2) << usage.output;  // bad usage
+    EXPECT_NE(usage.output.find("error: --section: no -c file"), std::string::npos);
     std::ofstream(ini) << "[CornerExtractor]\ndk_threshold = 2.5\n";
     EXPECT_NE(error("-c '" + ini + "'")
                   .find("error: " + ini +

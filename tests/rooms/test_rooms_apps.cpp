@@ -75,8 +75,10 @@ TEST(ToposlamRooms, BadInputGivesAClearErrorAndNoOutput) {
 
     r = runApp("toposlam-rooms",
                "'" + dir.file("office.png") + "' --door-width -1 -o '" + dir.file("out") + "'");
-    EXPECT_EQ(r.exitCode, 1);
-    EXPECT_NE(r.output.find("doorWidth"), std::string::npos) << r.output;
+    EXPECT_EQ(r.exitCode, 2) << "an out-of-range option is bad usage";
+    EXPECT_NE(r.output.find("error: --door-width: '-1' is not a number in (0, 10]"),
+              std::string::npos)
+        << r.output;
 }
 
 TEST(ToposlamBenchRooms, RunsOneMapAndWritesJson) {

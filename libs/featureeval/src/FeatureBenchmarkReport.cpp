@@ -117,42 +117,52 @@ void printTargets(const FeatureBenchmarkReport& report, std::FILE* out) {
                  mark(worstAgreement <= 0.01));
 }
 
-void simulatedJson(const FeatureBenchmarkReport& report, std::ostringstream& j) {
-    const auto& rows = report.simulated;
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-        const SimulatedRow& r = rows[i];
-        const auto& s = r.scores;
-        j << "    {\"method\": \"" << r.method << "\", \"beams\": " << r.beams << ", \"laser\": \""
-          << r.laser << "\", \"sigma\": " << r.sigma << ", \"scans\": " << r.scans
-          << ", \"ground_truth_corners\": " << s.groundTruthCorners
-          << ", \"detected_corners\": " << s.detectedCorners << ", \"ignored\": " << s.ignored
-          << ", \"hits\": " << s.hits << ", \"precision\": " << num(s.precision(), 4)
-          << ", \"recall\": " << num(s.recall(), 4)
-          << ", \"position_rmse_m\": " << num(s.positionRmse(), 5)
-          << ", \"position_rmse_within_8m_m\": " << num(s.positionRmseNear(), 5)
-          << ", \"angle_rmse_deg\": " << num(s.angleRmseDeg(), 3)
-          << ", \"angle_mean_abs_deg\": " << num(s.angleMeanAbsDeg(), 3)
-          << ", \"segment_endpoint_rmse_m\": " << num(s.endpointRmse(), 5)
-          << ", \"walls\": " << s.groundTruthRuns << ", \"walls_matched\": " << s.matchedRuns
-          << ", \"cpu_us_per_scan\": " << num(r.microseconds, 3)
-          << ", \"wall_us_per_scan\": " << num(r.wallMicroseconds, 3) << "}"
-          << (i + 1 < rows.size() ? "," : "") << "\n";
-    }
+double rounded(double v, int decimals) {
+    return io::roundDecimals(v, decimals);
 }
 
-void realJson(const FeatureBenchmarkReport& report, std::ostringstream& j) {
-    const auto& rows = report.real;
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-        const RealLogRow& r = rows[i];
-        j << "    {\"method\": \"" << r.method << "\", \"log\": \"" << r.log
-          << "\", \"scans\": " << r.scans << ", \"beams\": " << r.beams
-          << ", \"segments_per_scan\": " << num(r.segments, 3)
-          << ", \"corners_per_scan\": " << num(r.corners, 3)
-          << ", \"endpoints_per_scan\": " << num(r.endpoints, 3)
-          << ", \"cpu_us_per_scan\": " << num(r.microseconds, 3)
-          << ", \"wall_us_per_scan\": " << num(r.wallMicroseconds, 3) << "}"
-          << (i + 1 < rows.size() ? "," : "") << "\n";
+io::Json simulatedJson(const FeatureBenchmarkReport& report) {
+    io::Json simulated = io::Json::array();
+    for (const SimulatedRow& r : report.simulated) {
+        const auto& s = r.scores;
+        simulated.push_back({{"method", r.method},
+                             {"beams", r.beams},
+                             {"laser", r.laser},
+                             {"sigma", r.sigma},
+                             {"scans", r.scans},
+                             {"ground_truth_corners", s.groundTruthCorners},
+                             {"detected_corners", s.detectedCorners},
+                             {"ignored", s.ignored},
+                             {"hits", s.hits},
+                             {"precision", rounded(s.precision(), 4)},
+                             {"recall", rounded(s.recall(), 4)},
+                             {"position_rmse_m", rounded(s.positionRmse(), 5)},
+                             {"position_rmse_within_8m_m", rounded(s.positionRmseNear(), 5)},
+                             {"angle_rmse_deg", rounded(s.angleRmseDeg(), 3)},
+                             {"angle_mean_abs_deg", rounded(s.angleMeanAbsDeg(), 3)},
+                             {"segment_endpoint_rmse_m", rounded(s.endpointRmse(), 5)},
+                             {"walls", s.groundTruthRuns},
+                             {"walls_matched", s.matchedRuns},
+                             {"cpu_us_per_scan", rounded(r.microseconds, 3)},
+                             {"wall_us_per_scan", rounded(r.wallMicroseconds, 3)}});
     }
+    return simulated;
+}
+
+io::Json realJson(const FeatureBenchmarkReport& report) {
+    io::Json real = io::Json::array();
+    for (const RealLogRow& r : report.real) {
+        real.push_back({{"method", r.method},
+                        {"log", r.log},
+                        {"scans", r.scans},
+                        {"beams", r.beams},
+                        {"segments_per_scan", rounded(r.segments, 3)},
+                        {"corners_per_scan", rounded(r.corners, 3)},
+                        {"endpoints_per_scan", rounded(r.endpoints, 3)},
+                        {"cpu_us_per_scan", rounded(r.microseconds, 3)},
+                        {"wall_us_per_scan", rounded(r.wallMicroseconds, 3)}});
+    }
+    return real;
 }
 
 }  // namespace
@@ -163,25 +173,22 @@ void printFeatureBenchmark(const FeatureBenchmarkReport& report, std::FILE* out)
     printTargets(report, out);
 }
 
-std::string featureBenchmarkJson(const FeatureBenchmarkReport& report) {
-    std::ostringstream j;
-    j << "{\n  \"benchmark\": \"B1\",\n  \"rooms\": " << report.options.rooms
-      << ",\n  \"seed\": " << report.options.seed << ",\n  \"simulated\": [\n";
-    simulatedJson(report, j);
-    j << "  ],\n  \"two_point_vs_least_squares\": [\n";
-    const auto& agreements = report.agreements;
-    for (std::size_t i = 0; i < agreements.size(); ++i) {
-        const auto& a = agreements[i];
-        j << "    {\"laser\": \"" << a.laser << "\", \"sigma\": " << a.sigma
-          << ", \"pairs\": " << a.agreement.pairs << ", \"mean_m\": " << num(a.agreement.mean, 5)
-          << ", \"p95_m\": " << num(a.agreement.p95, 5)
-          << ", \"max_m\": " << num(a.agreement.max, 5) << "}"
-          << (i + 1 < agreements.size() ? "," : "") << "\n";
+io::Json featureBenchmarkJson(const FeatureBenchmarkReport& report) {
+    io::Json agreement = io::Json::array();
+    for (const auto& a : report.agreements) {
+        agreement.push_back({{"laser", a.laser},
+                             {"sigma", a.sigma},
+                             {"pairs", a.agreement.pairs},
+                             {"mean_m", rounded(a.agreement.mean, 5)},
+                             {"p95_m", rounded(a.agreement.p95, 5)},
+                             {"max_m", rounded(a.agreement.max, 5)}});
     }
-    j << "  ],\n  \"real\": [\n";
-    realJson(report, j);
-    j << "  ]\n}\n";
-    return j.str();
+    return {{"benchmark", "B1"},
+            {"rooms", report.options.rooms},
+            {"seed", report.options.seed},
+            {"simulated", simulatedJson(report)},
+            {"two_point_vs_least_squares", agreement},
+            {"real", realJson(report)}};
 }
 
 }  // namespace toposlam::featureeval

@@ -1,10 +1,9 @@
 #include <toposlam/io/InputError.h>
+#include <toposlam/io/JsonFile.h>
 #include <toposlam/rooms/DistanceSegmentation.h>
 #include <toposlam/rooms/MorphologicalSegmentation.h>
 #include <toposlam/rooms/RoomBenchmark.h>
 #include <toposlam/rooms/TopologicalMapRendering.h>
-
-#include "JsonWriter.h"
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 
@@ -303,53 +302,57 @@ std::string RoomBenchmark::table(const std::vector<RoomBenchmarkScore>& scores,
 std::string RoomBenchmark::json(const std::vector<RoomBenchmarkScore>& scores,
                                 const std::vector<RoomBenchmarkSummary>& summary,
                                 const RoomBenchmarkOptions& options) {
-    detail::JsonWriter j;
-    auto doorCounts = [&](const std::string& key, const DoorMatchCounts& d) {
-        j.key(key).beginObject();
-        j.field("virtual_doors", d.virtualDoors).field("matched_virtual", d.matchedVirtual);
-        j.field("true_doors", d.trueDoors).field("matched_true", d.matchedTrue);
-        j.field("precision", ratio(d.matchedVirtual, d.virtualDoors));
-        j.field("recall", ratio(d.matchedTrue, d.trueDoors));
-        j.endObject();
+    const auto doorCounts = [](const DoorMatchCounts& d) {
+        return io::Json{{"virtual_doors", d.virtualDoors},
+                        {"matched_virtual", d.matchedVirtual},
+                        {"true_doors", d.trueDoors},
+                        {"matched_true", d.matchedTrue},
+                        {"precision", ratio(d.matchedVirtual, d.virtualDoors)},
+                        {"recall", ratio(d.matchedTrue, d.trueDoors)}};
     };
-    j.beginObject();
-    j.field("benchmark", "B4 room segmentation");
-    j.field("data_dir", options.dataDir).field("repeats", options.repeats);
-    j.field("resolution_m", kResolution);
-    j.key("maps").beginArray();
+    io::Json maps = io::Json::array();
     for (const auto& s : scores) {
-        j.beginObject();
-        j.field("map", s.map).field("furnished", s.furnished).field("method", s.method);
-        j.field("recall", s.pr.recall).field("precision", s.pr.precision);
-        j.field("recall_px_weighted", s.pr.recallPixels)
-            .field("precision_px_weighted", s.pr.precisionPixels);
-        j.field("segments", s.segments).field("ground_truth_rooms", s.groundTruthRooms);
-        doorCounts("doors_0.5m", s.doors);
-        doorCounts("doors_1.0m", s.doors1m);
-        j.field("seconds_median", s.seconds).field("seconds_min", s.minSeconds);
-        j.endObject();
+        maps.push_back({{"map", s.map},
+                        {"furnished", s.furnished},
+                        {"method", s.method},
+                        {"recall", s.pr.recall},
+                        {"precision", s.pr.precision},
+                        {"recall_px_weighted", s.pr.recallPixels},
+                        {"precision_px_weighted", s.pr.precisionPixels},
+                        {"segments", s.segments},
+                        {"ground_truth_rooms", s.groundTruthRooms},
+                        {"doors_0.5m", doorCounts(s.doors)},
+                        {"doors_1.0m", doorCounts(s.doors1m)},
+                        {"seconds_median", s.seconds},
+                        {"seconds_min", s.minSeconds}});
     }
-    j.endArray();
-    j.key("summary").beginArray();
+    io::Json methods = io::Json::array();
     for (const auto& m : summary) {
-        j.beginObject();
-        j.field("method", m.method).field("group", m.group).field("maps", m.maps);
-        j.field("recall_mean", m.recallMean).field("recall_sd", m.recallSd);
-        j.field("precision_mean", m.precisionMean).field("precision_sd", m.precisionSd);
-        j.field("recall_px_weighted", m.recallPixels)
-            .field("precision_px_weighted", m.precisionPixels);
-        j.field("seconds_mean", m.secondsMean).field("seconds_max", m.secondsMax);
-        j.field("min_seconds_mean", m.minSecondsMean);
-        j.field("segments", m.segments).field("ground_truth_rooms", m.groundTruthRooms);
-        doorCounts("doors_0.5m_pooled", m.doors);
-        doorCounts("doors_1.0m_pooled", m.doors1m);
-        j.field("door_precision_mean_of_maps", m.doorPrecisionMeanOfMaps);
-        j.field("door_recall_mean_of_maps", m.doorRecallMeanOfMaps);
-        j.endObject();
+        methods.push_back({{"method", m.method},
+                           {"group", m.group},
+                           {"maps", m.maps},
+                           {"recall_mean", m.recallMean},
+                           {"recall_sd", m.recallSd},
+                           {"precision_mean", m.precisionMean},
+                           {"precision_sd", m.precisionSd},
+                           {"recall_px_weighted", m.recallPixels},
+                           {"precision_px_weighted", m.precisionPixels},
+                           {"seconds_mean", m.secondsMean},
+                           {"seconds_max", m.secondsMax},
+                           {"min_seconds_mean", m.minSecondsMean},
+                           {"segments", m.segments},
+                           {"ground_truth_rooms", m.groundTruthRooms},
+                           {"doors_0.5m_pooled", doorCounts(m.doors)},
+                           {"doors_1.0m_pooled", doorCounts(m.doors1m)},
+                           {"door_precision_mean_of_maps", m.doorPrecisionMeanOfMaps},
+                           {"door_recall_mean_of_maps", m.doorRecallMeanOfMaps}});
     }
-    j.endArray();
-    j.endObject();
-    return j.str();
+    return io::formatJson({{"benchmark", "B4 room segmentation"},
+                           {"data_dir", options.dataDir},
+                           {"repeats", options.repeats},
+                           {"resolution_m", kResolution},
+                           {"maps", maps},
+                           {"summary", methods}});
 }
 
 }  // namespace toposlam::rooms

@@ -6,6 +6,7 @@
 // to benchmark::Initialize first). toposlam-bench-features parses options and calls this.
 #include <toposlam/featureeval/FeatureMetrics.h>
 #include <toposlam/featureeval/SimulatedScans.h>
+#include <toposlam/io/JsonFile.h>
 #include <toposlam/io/ProgressCallback.h>
 
 #include <cmath>
@@ -72,6 +73,6 @@ FeatureBenchmarkReport runFeatureBenchmark(const FeatureBenchmarkOptions& option
 /// The tables of share/doc/benchmarks.md and the targets, as Markdown.
 void printFeatureBenchmark(const FeatureBenchmarkReport& report, std::FILE* out);
 /// The report as JSON (every number, CPU and wall times).
-std::string featureBenchmarkJson(const FeatureBenchmarkReport& report);
+io::Json featureBenchmarkJson(const FeatureBenchmarkReport& report);
 
 }  // namespace toposlam::featureeval

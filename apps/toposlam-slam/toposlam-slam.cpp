@@ -3,11 +3,10 @@
 // Writes the trajectory (one pose per scan), the occupancy grid (.gridmap.gz; map.png to look
 // at; map.yaml + map.pgm for ROS map_server) and prints a summary. The algorithm lives in
 // libs/mapping.
-#include <mrpt/config/CConfigFile.h>
 #include <toposlam/classes/TopoSlamClasses.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/config/IniFile.h>
 #include <toposlam/io/GridMapIO.h>
-#include <toposlam/io/InputError.h>
 #include <toposlam/io/Trajectory.h>
 #include <toposlam/mapping/LogMapper.h>
 
@@ -38,12 +37,10 @@ int run(int argc, char** argv) {
         return *exitCode;
     toposlam::classes::registerTopoSlamClasses();  // logs may hold TopoSLAM's objects
 
-    if (!fs::is_regular_file(configArg.getValue())) {
-        throw toposlam::io::InputError(configArg.getValue(), "configuration file not found");
-    }
-    const mrpt::config::CConfigFile ini(configArg.getValue());
+    // A file that is no .ini file at all is an error here, not defaults (config/IniFile.h).
+    const auto ini = toposlam::config::openIniFile(configArg.getValue());
     const toposlam::mapping::MappingResult result =
-        toposlam::mapping::mapLog(logArg.getValue(), ini);
+        toposlam::mapping::mapLog(logArg.getValue(), *ini);
 
     const fs::path out(outArg.getValue());
     fs::create_directories(out);

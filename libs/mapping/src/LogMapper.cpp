@@ -34,11 +34,9 @@ MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFile
     if (posedScans.empty())
         throw io::InputError(logPath, "the log contains no laser scans");
 
-    if (ini.read_bool("OccupancyGrid", "alignWithWalls", true)) {
-        const double minStrength =
-            ini.read_double("OccupancyGrid", "minWallDirectionStrength", 0.2);
+    if (gridOptions.alignWithWalls) {
         const auto walls = estimateWallDirection(posedScans);
-        if (walls && walls->strength >= minStrength) {
+        if (walls && walls->strength >= gridOptions.minWallDirectionStrength) {
             result.wallAlignment = -walls->angle;
             result.wallDirectionStrength = walls->strength;
             const mrpt::poses::CPose2D turn(0, 0, result.wallAlignment);

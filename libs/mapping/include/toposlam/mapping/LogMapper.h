@@ -26,9 +26,9 @@ struct MappingResult {
 };
 
 /// Runs SLAM on `logPath` with the settings in `ini`: sections [MappingApplication] and
-/// [ICP] (icp-slam's keys, see IcpSlam) and [OccupancyGrid] (OccupancyGridOptions, plus
-/// alignWithWalls (default 1) and minWallDirectionStrength (default 0.2): turn the map so its
-/// dominant walls run along the axes, when they are that dominant; see ManhattanAlignment.h).
+/// [ICP] (icp-slam's keys, see IcpSlam) and [OccupancyGrid] (OccupancyGridOptions, with the
+/// alignment of the map to its dominant walls, ManhattanAlignment.h; a bad value there is a
+/// config::ConfigError naming the file when `ini` is an mrpt::config::CConfigFile).
 /// Shows progress on a terminal. Throws io::InputError for unreadable or malformed logs,
 /// and for a log without scans.
 MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFileBase& ini);

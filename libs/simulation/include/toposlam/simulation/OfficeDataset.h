@@ -3,6 +3,7 @@
 // ground truth (room labels, doors), and a simulated robot log of a tour through every room
 // with its ground-truth trajectory. `toposlam-sim --make-office <dir>` calls this, so the bundled
 // data can always be regenerated bit for bit from the code and config_ini/sim-office.ini.
+#include <toposlam/io/ProgressCallback.h>
 #include <toposlam/simulation/SimulatorConfig.h>
 
 #include <string>
@@ -31,7 +32,8 @@ struct OfficeDataset {
 ///   office.rawlog            the simulated log (config.format; 'config' gives every parameter)
 ///   office_gt.txt            its ground-truth trajectory (timestamp x y yaw)
 ///   office_tour.png          a picture of the tour over the map
+/// `progress`: of the log's simulation (scans written).
 OfficeDataset writeOfficeDataset(const std::string& dir, const SimulatorConfig& config,
-                                 bool showProgress = true);
+                                 const io::ProgressCallback& progress = {});
 
 }  // namespace toposlam::simulation

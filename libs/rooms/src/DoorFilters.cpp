@@ -2,31 +2,19 @@
 
 #include "GridRay.h"
 
+#include <boost/pending/disjoint_sets.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <unordered_map>
 
 namespace toposlam::rooms {
 
 namespace {
 
-struct UnionFind {
-    std::vector<int> parent;
-    explicit UnionFind(int n) : parent(static_cast<std::size_t>(n)) {
-        std::iota(parent.begin(), parent.end(), 0);
-    }
-    int find(int i) {
-        while (parent[static_cast<std::size_t>(i)] != i) {
-            parent[static_cast<std::size_t>(i)] =
-                parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
-            i = parent[static_cast<std::size_t>(i)];
-        }
-        return i;
-    }
-};
+// Union-find over 0..n-1 (union by rank, path compression).
+using DisjointSets = boost::disjoint_sets_with_storage<>;
 
 // Length (pixels, capped at `cap`) of the obstacle that starts at `jamb` in direction (ux, uy).
 // A free cell ends it only when its two neighbours across the walking direction are free too: a
@@ -232,18 +220,16 @@ std::vector<VirtualDoor> DoorFilters::distance(std::vector<VirtualDoor> doors,
         const cv::Point b = bucketOf(doors[i]);
         grid[keyOf(b.x, b.y)].push_back(i);
     }
-    UnionFind groups(static_cast<int>(doors.size()));
+    DisjointSets groups(doors.size());
     for (std::size_t i = 0; i < doors.size(); ++i) {
         forNeighbours(doors[i], [&](std::size_t j) {
-            if (j > i && jambDistance(doors[i], doors[j]) <= nd) {
-                groups.parent[static_cast<std::size_t>(groups.find(static_cast<int>(j)))] =
-                    groups.find(static_cast<int>(i));
-            }
+            if (j > i && jambDistance(doors[i], doors[j]) <= nd)
+                groups.union_set(i, j);
         });
     }
-    std::unordered_map<int, std::vector<std::size_t>> members;
+    std::unordered_map<std::size_t, std::vector<std::size_t>> members;
     for (std::size_t i = 0; i < doors.size(); ++i)
-        members[groups.find(static_cast<int>(i))].push_back(i);
+        members[groups.find_set(i)].push_back(i);
     std::vector<std::size_t> chosen;
     for (auto& [root, group] : members) {
         (void)root;
@@ -291,15 +277,20 @@ DoorFilters::Rooms DoorFilters::minimumArea(const RegionPartition& partition,
                                             double cellArea, double doorWidth) const {
     const int regions = partition.regionCount();
     const double minCells = detail::toCells(options_.minRoomArea, cellArea);
-    UnionFind merged(regions + 1);
+    DisjointSets sets(static_cast<std::size_t>(regions) + 1);
+    // Area (cells) of each set, kept at its representative.
     std::vector<double> area(partition.areas().begin(), partition.areas().end());
+    auto rootOf = [&](int region) {
+        return static_cast<int>(sets.find_set(static_cast<std::size_t>(region)));
+    };
     auto join = [&](int a, int b) {
-        a = merged.find(a);
-        b = merged.find(b);
+        a = rootOf(a);
+        b = rootOf(b);
         if (a == b)
             return;
-        merged.parent[static_cast<std::size_t>(b)] = a;
-        area[static_cast<std::size_t>(a)] += area[static_cast<std::size_t>(b)];
+        const double total = area[static_cast<std::size_t>(a)] + area[static_cast<std::size_t>(b)];
+        sets.link(static_cast<std::size_t>(a), static_cast<std::size_t>(b));
+        area[static_cast<std::size_t>(rootOf(a))] = total;
     };
     auto sideA = [&](std::size_t door) { return partition.regionsAt(door)[0].first; };
     auto sideB = [&](std::size_t door) { return partition.regionsAt(door)[1].first; };
@@ -327,8 +318,7 @@ DoorFilters::Rooms DoorFilters::minimumArea(const RegionPartition& partition,
         while (true) {
             // The smallest too-small region that still has a door to another region...
             auto liveSides = [&](std::size_t k) {
-                return std::pair{merged.find(sideA(candidates[k])),
-                                 merged.find(sideB(candidates[k]))};
+                return std::pair{rootOf(sideA(candidates[k])), rootOf(sideB(candidates[k]))};
             };
             int smallest = -1;
             double smallestArea = minCells;
@@ -377,7 +367,7 @@ DoorFilters::Rooms DoorFilters::minimumArea(const RegionPartition& partition,
             std::vector<int> roots;
             for (const auto& [region, contacts] : partition.regionsAt(candidates[k])) {
                 (void)contacts;
-                roots.push_back(merged.find(region));
+                roots.push_back(rootOf(region));
             }
             std::sort(roots.begin(), roots.end());
             if (std::unique(roots.begin(), roots.end()) - roots.begin() > 2) {
@@ -391,7 +381,7 @@ DoorFilters::Rooms DoorFilters::minimumArea(const RegionPartition& partition,
     out.roomOfRegion.assign(static_cast<std::size_t>(regions) + 1, 0);
     std::vector<int> roomOfRoot(static_cast<std::size_t>(regions) + 1, 0);
     for (int r = 1; r <= regions; ++r) {
-        int& room = roomOfRoot[static_cast<std::size_t>(merged.find(r))];
+        int& room = roomOfRoot[static_cast<std::size_t>(rootOf(r))];
         if (room == 0)
             room = ++out.roomCount;
         out.roomOfRegion[static_cast<std::size_t>(r)] = room;

@@ -4,12 +4,15 @@
 
 #include "GridRay.h"
 
-#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
+
+#include <toposlam/io/InputError.h>
 
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <filesystem>
 #include <stdexcept>
 
 namespace toposlam::rooms {
@@ -82,14 +85,31 @@ void require(bool ok, const std::string& what) {
 
 RoomSegmenter::Options RoomSegmenter::Options::paperExact() {
     Options o;
-    o.freeSpace.maxSpeckArea = 0;
-    o.door.localDirection = false;
-    o.filters.keepNarrowestOfGroup = false;
-    o.filters.mergeSmallestFirst = false;
-    o.filters.requireWallJambs = false;
-    o.filters.requireWallEnd = false;
-    o.filters.requireConstriction = false;
-    o.wide.enabled = false;
+    o.applyPaperPreset();
+    return o;
+}
+
+void RoomSegmenter::Options::applyPaperPreset() {
+    freeSpace.maxSpeckArea = 0;
+    door.localDirection = false;
+    filters.keepNarrowestOfGroup = false;
+    filters.mergeSmallestFirst = false;
+    filters.requireWallJambs = false;
+    filters.requireWallEnd = false;
+    filters.requireConstriction = false;
+    wide.enabled = false;
+}
+
+RoomSegmenter::Options RoomSegmenter::Options::load(const std::string& iniPath, bool paper) {
+    Options o;
+    if (!iniPath.empty()) {
+        if (!std::filesystem::is_regular_file(iniPath))
+            throw io::InputError(iniPath, "no such config file");
+        o.loadFromConfigFile(mrpt::config::CConfigFile(iniPath), "RoomSegmenter");
+    }
+    if (paper)
+        o.applyPaperPreset();
+    o.validate();
     return o;
 }
 

@@ -54,6 +54,15 @@ class RoomSegmenter {
         static Options improved() { return {}; }
         /// The paper's method as published: every deviation switched off.
         static Options paperExact();
+        /// Switches off every deviation of paperExact() (speck removal, local directions,
+        /// narrowest-of-group, smallest-first merging, wall-jamb, wall-end and constriction
+        /// tests, wide openings) and keeps every other value (door width, areas, Hough, ...):
+        /// `--paper` on top of an ini file. The one place that knows what "paper" means.
+        void applyPaperPreset();
+        /// The options of the apps' `-c file.ini [--paper]`: the built-in defaults, then the
+        /// [RoomSegmenter] section of `iniPath` when not empty (io::InputError when the file
+        /// does not exist), then applyPaperPreset() when `paper`.
+        static Options load(const std::string& iniPath, bool paper);
 
         /// Reads the keys of `section` (see config_ini/rooms.ini for names, units and
         /// defaults); `variant = paper` first resets to paperExact(). Keys not present keep

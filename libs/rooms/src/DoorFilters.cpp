@@ -55,7 +55,8 @@ double jambDistance(const VirtualDoor& a, const VirtualDoor& b) {
 
 std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
                                                 std::vector<VirtualDoor> doors,
-                                                const std::vector<LineSegment>& walls) const {
+                                                const std::vector<LineSegment>& walls,
+                                                const WallThickness* wallThickness) const {
     if (!options_.requireWallJambs || doors.empty())
         return doors;
     const double extent = detail::toCells(options_.minWallExtent, space.frame.resolution);
@@ -100,13 +101,19 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
                    ? std::hypot(hit.x - from.x, hit.y - from.y)
                    : 1e9;
     };
+    const WallThickness* measured = options_.wallThicknessFromMap ? wallThickness : nullptr;
     auto wallEnd = [&](const cv::Point& jamb, double ux, double uy) {
         if (wallRun(space.free, jamb, ux, uy, length) < length)
             return false;
         const cv::Point inside(cvRound(jamb.x + ux * length), cvRound(jamb.y + uy * length));
+        if (isFree(inside.x, inside.y))
+            return false;  // the run went on through a gap in a wall at an angle, not along it
         const double a = toFree(inside, -uy, ux), b = toFree(inside, uy, -ux);
-        if (a <= thickness && b <= thickness)
-            return a + b <= thickness + 1.0;
+        if (a <= thickness && b <= thickness) {
+            // a + b - 1 obstacle cells across: as thick as the building's walls?
+            return a + b <= thickness + 1.0 &&
+                   (measured == nullptr || measured->isWallThickness(a + b - 1.0));
+        }
         return std::min(a, b) <= thickness && std::max(a, b) > 2 * thickness;
     };
     // The sides of the door line (bit 0: (-uy, ux), bit 1: the other) to which a wall goes on

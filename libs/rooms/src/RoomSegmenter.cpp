@@ -97,6 +97,7 @@ void RoomSegmenter::Options::applyPaperPreset() {
     filters.requireWallJambs = false;
     filters.requireWallEnd = false;
     filters.requireConstriction = false;
+    filters.wallThicknessFromMap = false;
     wide.enabled = false;
 }
 
@@ -173,6 +174,8 @@ void RoomSegmenter::Options::loadFromConfigFile(const mrpt::config::CConfigFileB
     filters.requireWallEnd = ini.read_bool(s, "requireWallEnd", filters.requireWallEnd);
     filters.maxWallThickness = ini.read_double(s, "maxWallThickness", filters.maxWallThickness);
     filters.wallEndProbe = ini.read_double(s, "wallEndProbe", filters.wallEndProbe);
+    filters.wallThicknessFromMap =
+        ini.read_bool(s, "wallThicknessFromMap", filters.wallThicknessFromMap);
     filters.requireConstriction =
         ini.read_bool(s, "requireConstriction", filters.requireConstriction);
     filters.openingMargin = ini.read_double(s, "openingMargin", filters.openingMargin);
@@ -200,6 +203,7 @@ struct RoomSegmenter::Workspace {
     WideOpeningDetector wide;
     FreeSpace space;
     Clearance clearance;
+    WallThickness wallThickness;
     RegionPartition partition;
 };
 
@@ -261,6 +265,12 @@ RoomSegmenter::Result RoomSegmenter::segment(
     // Step 4: virtual doors along the main directions from the search paths.
     result.fromTrajectory = !trajectory.empty();
     ws.clearance.compute(space.free);
+    const bool measureWalls = options_.filters.wallThicknessFromMap &&
+                              options_.filters.requireWallJambs &&
+                              (options_.filters.requireWallEnd || options_.wide.enabled);
+    if (measureWalls)
+        ws.wallThickness.measure(space, ws.clearance, options_.filters.maxWallThickness);
+    const WallThickness* walls = measureWalls ? &ws.wallThickness : nullptr;
     lap("clearance");
     result.searchCells = result.fromTrajectory
                              ? DoorSearchPaths::fromTrajectory(space, trajectory)
@@ -277,12 +287,12 @@ RoomSegmenter::Result RoomSegmenter::segment(
 
     // Step 5: filters.
     result.afterTests = ws.filters.constriction(
-        space, ws.filters.wallJambs(space, result.candidates, result.lines), door.doorWidth);
+        space, ws.filters.wallJambs(space, result.candidates, result.lines, walls), door.doorWidth);
     lap("door tests");
     const std::vector<cv::Point> noPath;  // the wide pass searches its own medial axis
     result.wideOpenings =
         ws.wide.detect(space, ws.clearance, result.fromTrajectory ? result.searchCells : noPath,
-                       {result.directions.phi1, result.directions.phi2}, result.lines);
+                       {result.directions.phi1, result.directions.phi2}, result.lines, walls);
     result.afterTests.insert(result.afterTests.end(), result.wideOpenings.begin(),
                              result.wideOpenings.end());
     lap("wide openings");

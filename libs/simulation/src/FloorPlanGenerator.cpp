@@ -64,11 +64,12 @@ void Builder::layoutCorridors(double width, double depth, std::vector<Block>& bl
     const double h = tInner_ / 2;
     for (const bool north : {true, false}) {
         const bool hasBranch = branch == 3 || (north ? branch == 1 : branch == 2);
+        // `north`: the blocks north of the corridor, whose corridor side is their south.
         const double wallY = north ? y1 + h : y0 - h;
         const double blockY0 = north ? y1 + tInner_ : 0, blockY1 = north ? depth : y0 - tInner_;
         if (!hasBranch) {
             plan_.addWall({0, wallY}, {width, wallY}, tInner_);
-            blocks.push_back({{0, blockY0, width, blockY1}, north});
+            blocks.push_back({{0, blockY0, width, blockY1}, !north});
             continue;
         }
         const double farY = north ? depth : 0;
@@ -78,8 +79,8 @@ void Builder::layoutCorridors(double width, double depth, std::vector<Block>& bl
         plan_.addWall({bx1 + h, wallY}, {width, wallY}, tInner_);
         plan_.addWall({bx0 - h, wallY}, {bx0 - h, farY}, tInner_);
         plan_.addWall({bx1 + h, wallY}, {bx1 + h, farY}, tInner_);
-        blocks.push_back({{0, blockY0, bx0 - tInner_, blockY1}, north});
-        blocks.push_back({{bx1 + tInner_, blockY0, width, blockY1}, north});
+        blocks.push_back({{0, blockY0, bx0 - tInner_, blockY1}, !north});
+        blocks.push_back({{bx1 + tInner_, blockY0, width, blockY1}, !north});
     }
 }
 

@@ -57,9 +57,9 @@ bool FurniturePlacer::fits(const FloorRoom& room, const Box& f) const {
         return std::any_of(boxes.begin(), boxes.end(),
                            [&](const Box& b) { return overlaps(f, b, margin); });
     };
-    // Walls inside the floor (partition stubs) keep 5 cm; other pieces 5 cm too (a chair may
-    // stand closer to its desk: chairs do not reserve space).
-    return !hits(walls_, 0.05) && !hits(doorZones_, 0.0) && !hits(placed_, 0.05);
+    // Walls may be touched (furniture stands against them) but not entered (partition stubs
+    // inside the floor); other pieces keep 5 cm (chairs reserve no space).
+    return !hits(walls_, -1e-6) && !hits(doorZones_, 0.0) && !hits(placed_, 0.05);
 }
 
 bool FurniturePlacer::reserve(const FloorRoom& room, const Box& f) {
@@ -373,16 +373,22 @@ void FurniturePlacer::lab(const FloorRoom& room) {
 }
 
 void FurniturePlacer::openPlan(const FloorRoom& room) {
-    // Islands of desks back to back (k per side), in a grid with aisles between them.
+    // Islands of desks back to back (up to k per side), in a grid with aisles between them; an
+    // island that does not fit (a partition, a door) gets fewer desks.
     const Box& f = room.floor;
-    const int k = std::uniform_int_distribution<>(2, 4)(rng_);
+    const int most = std::uniform_int_distribution<>(2, 4)(rng_);
     const double dw = uniform(1.4, 1.6), dd = 0.8, aisleX = uniform(1.0, 1.8),
                  aisleY = uniform(1.2, 1.8);
-    const double iw = k * dw, ih = 2 * dd;
-    for (double y = f.yMin + uniform(1.0, 1.6); y + ih + 0.9 < f.yMax; y += ih + aisleY) {
-        for (double x = f.xMin + uniform(1.0, 1.6); x + iw + 0.9 < f.xMax; x += iw + aisleX) {
-            if (!reserve(room, {x, y, x + iw, y + ih}))
+    for (double y = f.yMin + uniform(1.0, 1.6); y + 2 * dd + 0.9 < f.yMax; y += 2 * dd + aisleY) {
+        double x = f.xMin + uniform(1.0, 1.6);
+        while (x + dw + 0.9 < f.xMax) {
+            int k = most;
+            while (k > 0 && !reserve(room, {x, y, x + k * dw, y + 2 * dd}))
+                --k;
+            if (k == 0) {
+                x += dw;
                 continue;
+            }
             for (int i = 0; i < k; ++i) {
                 for (int row = 0; row < 2; ++row) {
                     const Box d{x + i * dw, y + row * dd, x + (i + 1) * dw, y + (row + 1) * dd};
@@ -392,6 +398,7 @@ void FurniturePlacer::openPlan(const FloorRoom& room) {
                                row == 0 ? d.yMin - uniform(0.3, 0.6) : d.yMax + uniform(0.3, 0.6)});
                 }
             }
+            x += k * dw + aisleX;
         }
     }
     shelves(room, 2 + std::uniform_int_distribution<>(0, 2)(rng_));

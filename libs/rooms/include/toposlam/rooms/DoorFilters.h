@@ -31,6 +31,7 @@
 #include <toposlam/rooms/LineSegment.h>
 #include <toposlam/rooms/RegionPartition.h>
 #include <toposlam/rooms/VirtualDoorDetector.h>
+#include <toposlam/rooms/WallThickness.h>
 
 #include <cstddef>
 #include <vector>
@@ -67,6 +68,10 @@ class DoorFilters {
         /// m: how far from a wall-end jamb, along the door line, the wall must go on and is
         /// measured for its thickness (and the reach of the wide openings' framing test).
         double wallEndProbe = 0.55;
+        /// Part of the wall-end test: the wall end must also be as thick as the building's
+        /// walls are, measured on the map (WallThickness.h), so that a cabinet, a fridge or a
+        /// shelf standing against a wall is no wall end.
+        bool wallThicknessFromMap = true;
         bool requireConstriction = true;  ///< the constriction test (deviation, see above)
         double openingMargin = 0.3;       ///< m
     };
@@ -75,9 +80,11 @@ class DoorFilters {
     explicit DoorFilters(const Options& options) : options_(options) {}
 
     /// The wall-jamb test (a no-op when switched off); `walls`: the merged wall segments of
-    /// step 2 (pixels).
+    /// step 2 (pixels); `thickness`: the map's wall thicknesses (nullptr: any up to
+    /// maxWallThickness).
     std::vector<VirtualDoor> wallJambs(const FreeSpace& space, std::vector<VirtualDoor> doors,
-                                       const std::vector<LineSegment>& walls) const;
+                                       const std::vector<LineSegment>& walls,
+                                       const WallThickness* thickness = nullptr) const;
     /// The constriction test; `probeDistance` (how far from the door line to look, m) is the
     /// door width (a no-op when off).
     std::vector<VirtualDoor> constriction(const FreeSpace& space, std::vector<VirtualDoor> doors,

@@ -49,7 +49,8 @@ class WideOpeningDetector {
     std::vector<VirtualDoor> detect(const FreeSpace& space, const Clearance& clearance,
                                     const std::vector<cv::Point>& pathCells,
                                     const std::vector<double>& directions,
-                                    const std::vector<LineSegment>& walls) const;
+                                    const std::vector<LineSegment>& walls,
+                                    const WallThickness* thickness = nullptr) const;
 
     const Options& options() const { return options_; }
 

@@ -5,11 +5,13 @@
 #include <toposlam/rooms/RoomSegmenter.h>
 
 #include "DrawnMaps.h"
+#include "TestSupport.h"
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
 
 #include <cmath>
+#include <fstream>
 #include <set>
 
 using namespace toposlam::rooms;
@@ -205,6 +207,39 @@ TEST(RoomSegmenter, MapWithoutFreeCellsIsAnInputError) {
             EXPECT_NE(std::string(e.what()).find("no free cell"), std::string::npos) << e.what();
         }
     }
+}
+
+TEST(RoomSegmenter, PaperPresetSwitchesOffEveryDeviationAndKeepsTheRest) {
+    RoomSegmenter::Options o;
+    o.door.doorWidth = 0.9;
+    o.filters.minRoomArea = 3.5;
+    o.applyPaperPreset();
+    const RoomSegmenter::Options paper = RoomSegmenter::Options::paperExact();
+    EXPECT_EQ(o.freeSpace.maxSpeckArea, paper.freeSpace.maxSpeckArea);
+    EXPECT_EQ(o.door.localDirection, paper.door.localDirection);
+    EXPECT_EQ(o.filters.keepNarrowestOfGroup, paper.filters.keepNarrowestOfGroup);
+    EXPECT_EQ(o.filters.mergeSmallestFirst, paper.filters.mergeSmallestFirst);
+    EXPECT_EQ(o.filters.requireWallJambs, paper.filters.requireWallJambs);
+    EXPECT_EQ(o.filters.requireWallEnd, paper.filters.requireWallEnd);
+    EXPECT_EQ(o.filters.requireConstriction, paper.filters.requireConstriction);
+    EXPECT_EQ(o.filters.wallThicknessFromMap, paper.filters.wallThicknessFromMap);
+    EXPECT_EQ(o.wide.enabled, paper.wide.enabled);
+    EXPECT_FALSE(o.wide.enabled || o.filters.requireWallEnd || o.door.localDirection);
+    EXPECT_EQ(o.door.doorWidth, 0.9);  // the rest is kept
+    EXPECT_EQ(o.filters.minRoomArea, 3.5);
+    // What the apps' "-c file --paper" gives: the file's values, every deviation off.
+    const toposlam::test::TempDir dir;
+    {
+        std::ofstream ini(dir.file("rooms.ini"));
+        ini << "[RoomSegmenter]\nvariant = improved\ndoorWidth = 0.95\nwideOpenings = true\n";
+    }
+    const auto loaded = RoomSegmenter::Options::load(dir.file("rooms.ini"), true);
+    EXPECT_EQ(loaded.door.doorWidth, 0.95);
+    EXPECT_FALSE(loaded.wide.enabled);
+    EXPECT_EQ(loaded.freeSpace.maxSpeckArea, 0.0);
+    EXPECT_TRUE(RoomSegmenter::Options::load(dir.file("rooms.ini"), false).wide.enabled);
+    EXPECT_THROW(RoomSegmenter::Options::load(dir.file("missing.ini"), false),
+                 toposlam::io::InputError);
 }
 
 TEST(RoomSegmenter, OptionsOutOfRangeAreRejected) {

@@ -278,130 +278,167 @@ std::vector<std::size_t> DoorFilters::adjacency(const RegionPartition& partition
     return kept;
 }
 
-DoorFilters::Rooms DoorFilters::minimumArea(const RegionPartition& partition,
-                                            const std::vector<VirtualDoor>& doors,
-                                            const std::vector<std::size_t>& candidates,
-                                            double cellArea, double doorWidth) const {
-    const int regions = partition.regionCount();
-    const double minCells = detail::toCells(options_.minRoomArea, cellArea);
-    DisjointSets sets(static_cast<std::size_t>(regions) + 1);
-    // Area (cells) of each set, kept at its representative.
-    std::vector<double> area(partition.areas().begin(), partition.areas().end());
-    auto rootOf = [&](int region) {
-        return static_cast<int>(sets.find_set(static_cast<std::size_t>(region)));
-    };
-    auto join = [&](int a, int b) {
+namespace {
+
+// The regions of a partition merged through removed doors (the minimum-area filter's state):
+// a union-find over the regions with each set's area at its representative, and which of the
+// candidate doors are removed.
+class RegionMerge {
+  public:
+    RegionMerge(const RegionPartition& partition, const std::vector<std::size_t>& candidates)
+        : partition_(partition),
+          candidates_(candidates),
+          sets_(static_cast<std::size_t>(partition.regionCount()) + 1),
+          area_(partition.areas().begin(), partition.areas().end()),
+          removed_(candidates.size(), false) {}
+
+    int rootOf(int region) {
+        return static_cast<int>(sets_.find_set(static_cast<std::size_t>(region)));
+    }
+    double area(int root) const { return area_[static_cast<std::size_t>(root)]; }
+    bool removed(std::size_t k) const { return removed_[k]; }
+    std::size_t size() const { return candidates_.size(); }
+    int sideA(std::size_t k) const { return partition_.regionsAt(candidates_[k])[0].first; }
+    int sideB(std::size_t k) const { return partition_.regionsAt(candidates_[k])[1].first; }
+    /// The sets on the two sides of candidate k.
+    std::pair<int, int> liveSides(std::size_t k) { return {rootOf(sideA(k)), rootOf(sideB(k))}; }
+
+    /// Removes candidate k and joins every region it touches.
+    void removeDoor(std::size_t k) {
+        removed_[k] = true;
+        for (const auto& [region, contacts] : partition_.regionsAt(candidates_[k])) {
+            (void)contacts;
+            join(sideA(k), region);
+        }
+    }
+
+    /// Whether candidate k still touches three or more sets (crossing cuts).
+    bool touchesMoreThanTwo(std::size_t k) {
+        std::vector<int> roots;
+        for (const auto& [region, contacts] : partition_.regionsAt(candidates_[k])) {
+            (void)contacts;
+            roots.push_back(rootOf(region));
+        }
+        std::sort(roots.begin(), roots.end());
+        return std::unique(roots.begin(), roots.end()) - roots.begin() > 2;
+    }
+
+    DoorFilters::Rooms rooms() {
+        const int regions = partition_.regionCount();
+        DoorFilters::Rooms out;
+        out.roomOfRegion.assign(static_cast<std::size_t>(regions) + 1, 0);
+        std::vector<int> roomOfRoot(static_cast<std::size_t>(regions) + 1, 0);
+        for (int r = 1; r <= regions; ++r) {
+            int& room = roomOfRoot[static_cast<std::size_t>(rootOf(r))];
+            if (room == 0)
+                room = ++out.roomCount;
+            out.roomOfRegion[static_cast<std::size_t>(r)] = room;
+        }
+        for (std::size_t k = 0; k < candidates_.size(); ++k) {
+            if (removed_[k])
+                continue;
+            const int a = out.roomOfRegion[static_cast<std::size_t>(sideA(k))];
+            const int b = out.roomOfRegion[static_cast<std::size_t>(sideB(k))];
+            if (a != b)
+                out.doors.push_back({candidates_[k], std::min(a, b), std::max(a, b)});
+        }
+        return out;
+    }
+
+  private:
+    void join(int a, int b) {
         a = rootOf(a);
         b = rootOf(b);
         if (a == b)
             return;
-        const double total = area[static_cast<std::size_t>(a)] + area[static_cast<std::size_t>(b)];
-        sets.link(static_cast<std::size_t>(a), static_cast<std::size_t>(b));
-        area[static_cast<std::size_t>(rootOf(a))] = total;
-    };
-    auto sideA = [&](std::size_t door) { return partition.regionsAt(door)[0].first; };
-    auto sideB = [&](std::size_t door) { return partition.regionsAt(door)[1].first; };
-    std::vector<bool> removed(candidates.size(), false);
-    auto removeDoor = [&](std::size_t k) {
-        removed[k] = true;
-        for (const auto& [region, contacts] : partition.regionsAt(candidates[k])) {
-            (void)contacts;
-            join(sideA(candidates[k]), region);
-        }
-    };
+        const double total = area(a) + area(b);
+        sets_.link(static_cast<std::size_t>(a), static_cast<std::size_t>(b));
+        area_[static_cast<std::size_t>(rootOf(a))] = total;
+    }
 
+    const RegionPartition& partition_;
+    const std::vector<std::size_t>& candidates_;
+    DisjointSets sets_;
+    std::vector<double> area_;  // cells
+    std::vector<bool> removed_;
+};
+
+// The smallest too-small set that still has a door to another set; -1 when none.
+int smallestTooSmall(RegionMerge& m, double minCells) {
+    int smallest = -1;
+    double smallestArea = minCells;
+    for (std::size_t k = 0; k < m.size(); ++k) {
+        const auto [a, b] = m.liveSides(k);
+        if (m.removed(k) || a == b)
+            continue;
+        for (int r : {a, b}) {
+            if (m.area(r) <= smallestArea) {
+                smallest = r;
+                smallestArea = m.area(r);
+            }
+        }
+    }
+    return smallest;
+}
+
+// The least door-like door of set `smallest` (eq. 10's |width - w| largest: a sliver between a
+// doorway's cut and a cut along a wall face keeps the doorway's), ties: the door to its
+// smallest neighbour.
+std::size_t leastDoorLike(RegionMerge& m, int smallest, const std::vector<VirtualDoor>& doors,
+                          const std::vector<std::size_t>& candidates, double doorWidth) {
+    std::size_t through = 0;
+    double worstFit = -1, neighbourArea = 1e300;
+    for (std::size_t k = 0; k < m.size(); ++k) {
+        const auto [a, b] = m.liveSides(k);
+        if (m.removed(k) || a == b || (a != smallest && b != smallest))
+            continue;
+        const double fit = std::abs(doors[candidates[k]].width - doorWidth);
+        const double other = m.area(a == smallest ? b : a);
+        if (fit > worstFit + 0.5 || (std::abs(fit - worstFit) <= 0.5 && other < neighbourArea)) {
+            worstFit = fit;
+            neighbourArea = other;
+            through = k;
+        }
+    }
+    return through;
+}
+
+}  // namespace
+
+DoorFilters::Rooms DoorFilters::minimumArea(const RegionPartition& partition,
+                                            const std::vector<VirtualDoor>& doors,
+                                            const std::vector<std::size_t>& candidates,
+                                            double cellArea, double doorWidth) const {
+    const double minCells = detail::toCells(options_.minRoomArea, cellArea);
+    RegionMerge merge(partition, candidates);
     if (!options_.mergeSmallestFirst) {  // the paper: one pass over all doors
         std::vector<std::size_t> failing;
         for (std::size_t k = 0; k < candidates.size(); ++k) {
-            const std::size_t d = candidates[k];
-            if (area[static_cast<std::size_t>(sideA(d))] <= minCells ||
-                area[static_cast<std::size_t>(sideB(d))] <= minCells) {
+            if (merge.area(merge.sideA(k)) <= minCells || merge.area(merge.sideB(k)) <= minCells)
                 failing.push_back(k);
-            }
         }
         for (std::size_t k : failing)
-            removeDoor(k);
+            merge.removeDoor(k);
     } else {
-        while (true) {
-            // The smallest too-small region that still has a door to another region...
-            auto liveSides = [&](std::size_t k) {
-                return std::pair{rootOf(sideA(candidates[k])), rootOf(sideB(candidates[k]))};
-            };
-            int smallest = -1;
-            double smallestArea = minCells;
-            for (std::size_t k = 0; k < candidates.size(); ++k) {
-                const auto [a, b] = liveSides(k);
-                if (removed[k] || a == b)
-                    continue;
-                for (int r : {a, b}) {
-                    if (area[static_cast<std::size_t>(r)] <= smallestArea) {
-                        smallest = r;
-                        smallestArea = area[static_cast<std::size_t>(r)];
-                    }
-                }
-            }
-            if (smallest < 0)
-                break;
-            // ... is merged through its least door-like door (eq. 10's |width - w| largest: a
-            // sliver between a doorway's cut and a cut along a wall face keeps the doorway's),
-            // ties through the door to its smallest neighbour.
-            std::size_t through = 0;
-            double worstFit = -1, neighbourArea = 1e300;
-            for (std::size_t k = 0; k < candidates.size(); ++k) {
-                const auto [a, b] = liveSides(k);
-                if (removed[k] || a == b || (a != smallest && b != smallest))
-                    continue;
-                const double fit = std::abs(doors[candidates[k]].width - doorWidth);
-                const double other = area[static_cast<std::size_t>(a == smallest ? b : a)];
-                if (fit > worstFit + 0.5 ||
-                    (std::abs(fit - worstFit) <= 0.5 && other < neighbourArea)) {
-                    worstFit = fit;
-                    neighbourArea = other;
-                    through = k;
-                }
-            }
-            removeDoor(through);
+        // The smallest too-small region is merged through its least door-like door, again and
+        // again.
+        for (int smallest = smallestTooSmall(merge, minCells); smallest >= 0;
+             smallest = smallestTooSmall(merge, minCells)) {
+            merge.removeDoor(leastDoorLike(merge, smallest, doors, candidates, doorWidth));
         }
     }
-
     // A door separates exactly two rooms: one that still touches three or more (crossing cuts)
     // is removed as well, until none is left, so that every two rooms that touch share a door.
     for (bool changed = true; changed;) {
         changed = false;
         for (std::size_t k = 0; k < candidates.size(); ++k) {
-            if (removed[k])
-                continue;
-            std::vector<int> roots;
-            for (const auto& [region, contacts] : partition.regionsAt(candidates[k])) {
-                (void)contacts;
-                roots.push_back(rootOf(region));
-            }
-            std::sort(roots.begin(), roots.end());
-            if (std::unique(roots.begin(), roots.end()) - roots.begin() > 2) {
-                removeDoor(k);
+            if (!merge.removed(k) && merge.touchesMoreThanTwo(k)) {
+                merge.removeDoor(k);
                 changed = true;
             }
         }
     }
-
-    Rooms out;
-    out.roomOfRegion.assign(static_cast<std::size_t>(regions) + 1, 0);
-    std::vector<int> roomOfRoot(static_cast<std::size_t>(regions) + 1, 0);
-    for (int r = 1; r <= regions; ++r) {
-        int& room = roomOfRoot[static_cast<std::size_t>(rootOf(r))];
-        if (room == 0)
-            room = ++out.roomCount;
-        out.roomOfRegion[static_cast<std::size_t>(r)] = room;
-    }
-    for (std::size_t k = 0; k < candidates.size(); ++k) {
-        if (removed[k])
-            continue;
-        const int a = out.roomOfRegion[static_cast<std::size_t>(sideA(candidates[k]))];
-        const int b = out.roomOfRegion[static_cast<std::size_t>(sideB(candidates[k]))];
-        if (a != b)
-            out.doors.push_back({candidates[k], std::min(a, b), std::max(a, b)});
-    }
-    return out;
+    return merge.rooms();
 }
 
 }  // namespace toposlam::rooms

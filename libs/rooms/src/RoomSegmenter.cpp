@@ -76,6 +76,28 @@ void fillCuts(const cv::Mat& free, cv::Mat& labels) {
     }
 }
 
+// The diagnostics of `result`, found on the cropped frame, in full-frame pixels.
+void toFullFrame(RoomSegmenter::Result& result, const cv::Rect& roi) {
+    auto shift = [&](std::vector<VirtualDoor>& doors) {
+        for (VirtualDoor& d : doors) {
+            d.jambA += roi.tl();
+            d.jambB += roi.tl();
+            d.pathCell += roi.tl();
+        }
+    };
+    shift(result.candidates);
+    shift(result.afterTests);
+    shift(result.wideOpenings);
+    shift(result.afterDistance);
+    for (cv::Point& p : result.searchCells)
+        p += roi.tl();
+    const cv::Point2f offset(static_cast<float>(roi.x), static_cast<float>(roi.y));
+    for (LineSegment& l : result.lines) {
+        l.start += offset;
+        l.end += offset;
+    }
+}
+
 void require(bool ok, const std::string& what) {
     if (!ok)
         throw std::invalid_argument("room segmentation option out of range: " + what);
@@ -240,20 +262,10 @@ RoomSegmenter::Result RoomSegmenter::segment(const mrpt::maps::COccupancyGridMap
     return result;
 }
 
-RoomSegmenter::Result RoomSegmenter::segment(
-    const FreeSpace& fullSpace, const std::vector<mrpt::math::TPose2D>& trajectory) const {
-    const auto start = std::chrono::steady_clock::now();
+DoorFilters::Rooms RoomSegmenter::findRooms(const FreeSpace& space,
+                                            const std::vector<mrpt::math::TPose2D>& trajectory,
+                                            Result& result, const Lap& lap) const {
     Workspace& ws = *workspace_;
-    Result result;
-    auto last = start;
-    auto lap = [&](const char* stage) {
-        const auto now = std::chrono::steady_clock::now();
-        result.stageMilliseconds.emplace_back(
-            stage, std::chrono::duration<double, std::milli>(now - last).count());
-        last = now;
-    };
-    cv::Rect roi;
-    const FreeSpace space = cropToBounds(fullSpace, roi);
     const double res = space.frame.resolution;
     const auto& door = options_.door;
 
@@ -280,9 +292,8 @@ RoomSegmenter::Result RoomSegmenter::segment(
     const std::vector<double> localDirections =
         door.localDirection ? ws.clearance.acrossRidge(result.searchCells) : std::vector<double>{};
     lap("search paths");
-    result.candidates =
-        ws.detector.detect(space, result.searchCells,
-                           {result.directions.phi1, result.directions.phi2}, localDirections);
+    const std::vector<double> directions = {result.directions.phi1, result.directions.phi2};
+    result.candidates = ws.detector.detect(space, result.searchCells, directions, localDirections);
     lap("door search");
 
     // Step 5: filters.
@@ -292,7 +303,7 @@ RoomSegmenter::Result RoomSegmenter::segment(
     const std::vector<cv::Point> noPath;  // the wide pass searches its own medial axis
     result.wideOpenings =
         ws.wide.detect(space, ws.clearance, result.fromTrajectory ? result.searchCells : noPath,
-                       {result.directions.phi1, result.directions.phi2}, result.lines, walls);
+                       directions, result.lines, walls);
     result.afterTests.insert(result.afterTests.end(), result.wideOpenings.begin(),
                              result.wideOpenings.end());
     lap("wide openings");
@@ -305,6 +316,24 @@ RoomSegmenter::Result RoomSegmenter::segment(
         ws.filters.minimumArea(ws.partition, result.afterDistance, adjacent, space.frame.cellArea(),
                                detail::toCells(door.doorWidth, res));
     lap("partition+filters");
+    return rooms;
+}
+
+RoomSegmenter::Result RoomSegmenter::segment(
+    const FreeSpace& fullSpace, const std::vector<mrpt::math::TPose2D>& trajectory) const {
+    const auto start = std::chrono::steady_clock::now();
+    Workspace& ws = *workspace_;
+    Result result;
+    auto last = start;
+    const Lap lap = [&](const char* stage) {
+        const auto now = std::chrono::steady_clock::now();
+        result.stageMilliseconds.emplace_back(
+            stage, std::chrono::duration<double, std::milli>(now - last).count());
+        last = now;
+    };
+    cv::Rect roi;
+    const FreeSpace space = cropToBounds(fullSpace, roi);
+    const DoorFilters::Rooms rooms = findRooms(space, trajectory, result, lap);
 
     // Step 6: the rooms. Region labels become room ids in place; cut cells join a neighbour.
     cv::Mat& labels = ws.partition.mutableLabels();
@@ -327,32 +356,13 @@ RoomSegmenter::Result RoomSegmenter::segment(
         out.id = static_cast<int>(result.map.doors.size()) + 1;
         out.jambA = space.frame.toWorld(cv::Point2f(d.jambA));
         out.jambB = space.frame.toWorld(cv::Point2f(d.jambB));
-        out.width = d.width * res;
+        out.width = d.width * space.frame.resolution;
         out.roomA = link.roomA;
         out.roomB = link.roomB;
         result.map.doors.push_back(out);
     }
     lap("room geometry");
-
-    // Diagnostics in full-frame pixels.
-    auto shift = [&](std::vector<VirtualDoor>& doors) {
-        for (VirtualDoor& d : doors) {
-            d.jambA += roi.tl();
-            d.jambB += roi.tl();
-            d.pathCell += roi.tl();
-        }
-    };
-    shift(result.candidates);
-    shift(result.afterTests);
-    shift(result.wideOpenings);
-    shift(result.afterDistance);
-    for (cv::Point& p : result.searchCells)
-        p += roi.tl();
-    const cv::Point2f offset(static_cast<float>(roi.x), static_cast<float>(roi.y));
-    for (LineSegment& l : result.lines) {
-        l.start += offset;
-        l.end += offset;
-    }
+    toFullFrame(result, roi);
     result.milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return result;

@@ -23,6 +23,7 @@
 
 #include <mrpt/math/TPose2D.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -110,6 +111,13 @@ class RoomSegmenter {
     const Options& options() const { return options_; }
 
   private:
+    using Lap = std::function<void(const char*)>;  // records the time of a stage
+    /// Steps 2-5 on the cropped `space`, leaving the partition in the workspace: the rooms
+    /// (diagnostics into `result`).
+    DoorFilters::Rooms findRooms(const FreeSpace& space,
+                                 const std::vector<mrpt::math::TPose2D>& trajectory, Result& result,
+                                 const Lap& lap) const;
+
     Options options_;
     // The steps with their scratch images, reused from call to call (no reallocation while the
     // map size stays the same). A segmenter is therefore not thread-safe: one per thread.

@@ -9,6 +9,7 @@
 
 #include <toposlam/io/InputError.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <deque>
@@ -98,6 +99,51 @@ void toFullFrame(RoomSegmenter::Result& result, const cv::Rect& roi) {
     }
 }
 
+// Gives the cells of every non-free island of `space` (an obstacle that does not reach the
+// map's edge: furniture, a pillar) the room around it, when all its free 4-neighbours are in
+// that one room (an island between two rooms, such as a free-standing partition, stays
+// unlabelled: it is a border).
+void labelIslands(const FreeSpace& space, cv::Mat& labels) {
+    const cv::Mat& obstacles = space.obstacles;
+    std::vector<std::vector<std::pair<int, int>>> votes(space.obstacleOnBorder.size());
+    const cv::Point around[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    const cv::Rect image(0, 0, labels.cols, labels.rows);
+    for (int r = 0; r < obstacles.rows; ++r) {
+        const int* row = obstacles.ptr<int>(r);
+        for (int c = 0; c < obstacles.cols; ++c) {
+            const auto island = static_cast<std::size_t>(row[c]);
+            if (island == 0 || space.obstacleOnBorder[island])
+                continue;
+            for (const cv::Point& o : around) {
+                const cv::Point q(c + o.x, r + o.y);
+                const int room = image.contains(q) ? labels.at<int>(q) : 0;
+                if (room <= 0)
+                    continue;
+                auto& v = votes[island];
+                auto it = std::find_if(v.begin(), v.end(),
+                                       [&](const auto& p) { return p.first == room; });
+                if (it == v.end())
+                    v.emplace_back(room, 1);
+                else
+                    ++it->second;
+            }
+        }
+    }
+    std::vector<int> roomOf(votes.size(), 0);
+    for (std::size_t i = 0; i < votes.size(); ++i) {
+        if (votes[i].size() == 1)
+            roomOf[i] = votes[i].front().first;
+    }
+    for (int r = 0; r < obstacles.rows; ++r) {
+        const int* row = obstacles.ptr<int>(r);
+        int* out = labels.ptr<int>(r);
+        for (int c = 0; c < obstacles.cols; ++c) {
+            if (row[c] != 0 && roomOf[static_cast<std::size_t>(row[c])] != 0)
+                out[c] = roomOf[static_cast<std::size_t>(row[c])];
+        }
+    }
+}
+
 void require(bool ok, const std::string& what) {
     if (!ok)
         throw std::invalid_argument("room segmentation option out of range: " + what);
@@ -121,6 +167,7 @@ void RoomSegmenter::Options::applyPaperPreset() {
     filters.requireConstriction = false;
     filters.wallThicknessFromMap = false;
     wide.enabled = false;
+    labelIslands = false;
 }
 
 RoomSegmenter::Options RoomSegmenter::Options::load(const std::string& iniPath, bool paper) {
@@ -202,6 +249,7 @@ void RoomSegmenter::Options::loadFromConfigFile(const mrpt::config::CConfigFileB
         ini.read_bool(s, "requireConstriction", filters.requireConstriction);
     filters.openingMargin = ini.read_double(s, "openingMargin", filters.openingMargin);
     wide.enabled = ini.read_bool(s, "wideOpenings", wide.enabled);
+    labelIslands = ini.read_bool(s, "labelIslands", labelIslands);
     wide.maxWidth = ini.read_double(s, "maxOpeningWidth", wide.maxWidth);
     wide.openingMargin = ini.read_double(s, "wideOpeningMargin", wide.openingMargin);
     validate();
@@ -343,6 +391,8 @@ RoomSegmenter::Result RoomSegmenter::segment(
             row[c] = rooms.roomOfRegion[static_cast<std::size_t>(row[c])];
     }
     fillCuts(space.free, labels);
+    if (options_.labelIslands && !space.obstacles.empty())
+        labelIslands(space, labels);
     lap("labels");
     // Room geometry on the cropped frame (world coordinates do not depend on the crop), then the
     // labels are put back on the full frame.

@@ -50,6 +50,11 @@ class RoomSegmenter {
         DoorFilters::Options filters;
         /// Openings wider than a door that are room borders (deviation, WideOpeningDetector.h).
         WideOpeningDetector::Options wide;
+        /// Free-standing things inside the free space (furniture, pillars, shadows behind them:
+        /// non-free islands that do not reach the map's edge) belong to the room around them:
+        /// their cells take the room's id in the label image, and its area includes them
+        /// (deviation: the paper labels free cells only).
+        bool labelIslands = true;
 
         /// The defaults: the paper plus TopoSLAM's documented deviations (DoorFilters.h).
         static Options improved() { return {}; }

@@ -43,6 +43,21 @@ double freeWidth(const cv::Mat& free, const cv::Point& at, double ux, double uy,
     return std::hypot(a.x - b.x, a.y - b.y);
 }
 
+// Whether two cuts fan out from one jamb (their other ends apart): two cross-sections of one
+// opening, measured from the same jamb cell to different far cells. Cut as two 8-connected
+// lines that diverge at a small angle, they touch the rooms on both sides of each other, so
+// keeping both would join the rooms when the filters drop one.
+bool fanFromOneJamb(const VirtualDoor& a, const VirtualDoor& b) {
+    auto near = [](const cv::Point& p, const cv::Point& q) {
+        return std::abs(p.x - q.x) <= 1 && std::abs(p.y - q.y) <= 1;
+    };
+    const cv::Point2d da = cv::Point2d(a.jambB - a.jambA) * (1.0 / a.width);
+    const cv::Point2d db = cv::Point2d(b.jambB - b.jambA) * (1.0 / b.width);
+    const bool shared = near(a.jambA, b.jambA) || near(a.jambB, b.jambB) ||
+                        near(a.jambA, b.jambB) || near(a.jambB, b.jambA);
+    return shared && std::abs(da.x * db.x + da.y * db.y) > std::cos(M_PI / 6);  // < 30 deg
+}
+
 double jambDistance(const VirtualDoor& a, const VirtualDoor& b) {
     auto d = [](const cv::Point& p, const cv::Point& q) {
         return std::hypot(p.x - q.x, p.y - q.y);
@@ -102,19 +117,29 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
                    : 1e9;
     };
     const WallThickness* measured = options_.wallThicknessFromMap ? wallThickness : nullptr;
-    auto wallEnd = [&](const cv::Point& jamb, double ux, double uy) {
-        if (wallRun(space.free, jamb, ux, uy, length) < length)
-            return false;
-        const cv::Point inside(cvRound(jamb.x + ux * length), cvRound(jamb.y + uy * length));
-        if (isFree(inside.x, inside.y))
+    // At `at` cells from the jamb along (ux, uy), inside the obstacle, the obstacle is a wall
+    // along that line: free on both sides of it at most `thickness` apart, as thick as the
+    // building's walls (or free on one side only: the edge of the mapped space).
+    auto wallAcross = [&](const cv::Point& jamb, double ux, double uy, double at) {
+        const cv::Point probe(cvRound(jamb.x + ux * at), cvRound(jamb.y + uy * at));
+        if (isFree(probe.x, probe.y))
             return false;  // the run went on through a gap in a wall at an angle, not along it
-        const double a = toFree(inside, -uy, ux), b = toFree(inside, uy, -ux);
+        const double a = toFree(probe, -uy, ux), b = toFree(probe, uy, -ux);
         if (a <= thickness && b <= thickness) {
             // a + b - 1 obstacle cells across: as thick as the building's walls?
             return a + b <= thickness + 1.0 &&
                    (measured == nullptr || measured->isWallThickness(a + b - 1.0));
         }
         return std::min(a, b) <= thickness && std::max(a, b) > 2 * thickness;
+    };
+    // Probed a third of the way in, past the corner of the jamb: where the wall the door is in
+    // goes on (a wall stub beside a corner door meets the other wall farther on). Probing at
+    // the end of the run instead took a line that crosses a cabinet and the wall behind it for
+    // a wall end: there it reaches the wall's face, where a wall at an angle to the grid
+    // measures a cell or two across along its staircase.
+    auto wallEnd = [&](const cv::Point& jamb, double ux, double uy) {
+        return wallRun(space.free, jamb, ux, uy, length) >= length &&
+               wallAcross(jamb, ux, uy, std::round(length / 3));
     };
     // The sides of the door line (bit 0: (-uy, ux), bit 1: the other) to which a wall goes on
     // from the jamb across the door line.
@@ -230,8 +255,10 @@ std::vector<VirtualDoor> DoorFilters::distance(std::vector<VirtualDoor> doors,
     DisjointSets groups(doors.size());
     for (std::size_t i = 0; i < doors.size(); ++i) {
         forNeighbours(doors[i], [&](std::size_t j) {
-            if (j > i && jambDistance(doors[i], doors[j]) <= nd)
+            if (j > i &&
+                (jambDistance(doors[i], doors[j]) <= nd || fanFromOneJamb(doors[i], doors[j]))) {
                 groups.union_set(i, j);
+            }
         });
     }
     std::unordered_map<std::size_t, std::vector<std::size_t>> members;

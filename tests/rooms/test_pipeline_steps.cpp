@@ -156,10 +156,10 @@ TEST(DoorFilters, DistanceFilterChainsGroups) {
     EXPECT_EQ(kept[0].jambA.x, 34);
 }
 
-TEST(DoorFilters, MinimumAreaMergesSmallestFirstThroughTheLeastDoorLikeCut) {
+TEST(DoorFilters, MinimumAreaMergesSmallestFirstThroughTheWidestCut) {
     // A 12 x 2 m strip cut at x = 4, 5 and 9 m into regions of 8, 2, 8 and 6 m^2 (40 px wide
     // cuts): with N_s = 3 m^2 only the 2 m^2 sliver is too small; it joins a neighbour
-    // through its wider (less door-like) cut, and both other cuts stay doors.
+    // through its wider cut (the narrower one is the waist), and both other cuts stay doors.
     cv::Mat free(40, 240, CV_8U, cv::Scalar(255));
     auto cut = [](int x, int top, int bottom) {
         const double w = bottom - top;
@@ -173,16 +173,16 @@ TEST(DoorFilters, MinimumAreaMergesSmallestFirstThroughTheLeastDoorLikeCut) {
     ASSERT_EQ(partition.regionCount(), 4);
     DoorFilters::Options o;
     o.minRoomArea = 3.0;
-    const auto rooms = DoorFilters(o).minimumArea(
-        partition, doors, DoorFilters::adjacency(partition), kRes * kRes, 22);
+    const auto rooms = DoorFilters(o).minimumArea(partition, doors,
+                                                  DoorFilters::adjacency(partition), kRes * kRes);
     EXPECT_EQ(rooms.roomCount, 3);
     ASSERT_EQ(rooms.doors.size(), 2u);
-    EXPECT_EQ(rooms.doors[0].door, 0u);  // the door-wide cut survives
+    EXPECT_EQ(rooms.doors[0].door, 0u);  // the narrower cut survives
     EXPECT_EQ(rooms.doors[1].door, 2u);
     // The paper's single pass removes every cut next to the sliver instead.
     o.mergeSmallestFirst = false;
-    const auto paper = DoorFilters(o).minimumArea(
-        partition, doors, DoorFilters::adjacency(partition), kRes * kRes, 22);
+    const auto paper = DoorFilters(o).minimumArea(partition, doors,
+                                                  DoorFilters::adjacency(partition), kRes * kRes);
     EXPECT_EQ(paper.roomCount, 2);
     ASSERT_EQ(paper.doors.size(), 1u);
     EXPECT_EQ(paper.doors[0].door, 2u);

@@ -86,14 +86,23 @@ TEST(RoomSegmenter, OfficeWithTrajectoryHasExactRoomsAndDoors) {
     expectMatchesDrawing(result.map, drawn, kDoorTolerance);
 }
 
-TEST(RoomSegmenter, DoorsOffTheTrajectoryAreNotFound) {
+TEST(RoomSegmenter, DoorsOffTheTrajectoryAreFoundOnTheMedialAxis) {
     // The paper's assumption (2): the robot went through every door. A tour that stays in the
-    // corridor crosses no door, so no door is found and everything is one room.
+    // corridor crosses no door, so the paper finds no door and everything is one room...
     const DrawnMap drawn = toposlam::rooms::test::office();
-    const auto result = RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image),
-                                                posesOf({{2, 7}, {20, 7}}));
-    EXPECT_EQ(result.map.doors.size(), 0u);
-    EXPECT_EQ(result.map.rooms.size(), 1u);
+    RoomSegmenter::Options trajectoryOnly;
+    trajectoryOnly.medialAxisWithTrajectory = false;
+    const auto corridorTour = posesOf({{2, 7}, {20, 7}});
+    const auto paper = RoomSegmenter(trajectoryOnly)
+                           .segment(toposlam::rooms::test::gridOf(drawn.image), corridorTour);
+    EXPECT_EQ(paper.map.doors.size(), 0u);
+    EXPECT_EQ(paper.map.rooms.size(), 1u);
+    // ... while the default searches the medial axis as well and finds every door.
+    const auto result =
+        RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image), corridorTour);
+    EXPECT_TRUE(result.fromTrajectory);
+    EXPECT_GT(result.trajectoryCells, 0u);
+    expectMatchesDrawing(result.map, drawn, kDoorTolerance);
 }
 
 TEST(RoomSegmenter, PaperExactVariantFindsTheOfficeToo) {

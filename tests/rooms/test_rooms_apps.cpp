@@ -83,10 +83,9 @@ TEST(ToposlamBenchRooms, RunsOneMapAndWritesJson) {
     TOPOSLAM_SHARED_DATA_OR_SKIP(map, "rooms/Freiburg52_scan.png");
     const TempDir dir;
     const std::string data = std::filesystem::path(map).parent_path().string();
-    const auto r =
-        runApp("toposlam-bench-rooms", "--data '" + data +
-                                           "' --sets bormann --maps Freiburg52_scan -r 1 -o '" +
-                                           dir.file("b4.json") + "'");
+    const auto r = runApp("toposlam-bench-rooms",
+                          "--data '" + data + "' --sets bormann --maps Freiburg52_scan -r 1 -o '" +
+                              dir.file("b4.json") + "'");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     // Freiburg52: 10 ground-truth rooms; every method appears for both variants.
     for (const char* method : {"vdoor", "vdoor-paper", "morph", "dist"}) {
@@ -101,21 +100,22 @@ TEST(ToposlamBenchRooms, RunsOneMapAndWritesJson) {
 
 TEST(ToposlamBenchRooms, SkipsWithAMessageWithoutData) {
     const TempDir dir;
-    const auto r = runApp("toposlam-bench-rooms", "--data '" + dir.file("nothing") +
-                                                      "' --sets bormann -o '" +
-                                                      dir.file("b4.json") + "'");
+    const auto r =
+        runApp("toposlam-bench-rooms", "--data '" + dir.file("nothing") + "' --sets bormann -o '" +
+                                           dir.file("b4.json") + "'");
     EXPECT_EQ(r.exitCode, 0);
     EXPECT_NE(r.output.find("B4 skipped"), std::string::npos) << r.output;
 }
 
 TEST(ToposlamBenchRooms, RunsGeneratedPlansAtTwoAnglesAndWritesThem) {
     const TempDir dir;
-    auto r = runApp("toposlam-bench-rooms", "--sets gen --gen-seeds 1 -m vdoor,morph -r 1 "
-                                            "--rotations 0,17 -o '" +
-                                                dir.file("gen.json") + "'");
+    auto r = runApp("toposlam-bench-rooms",
+                    "--sets gen --gen-seeds 1 -m vdoor,morph -r 1 "
+                    "--rotations 0,17 -o '" +
+                        dir.file("gen.json") + "'");
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    for (const char* row : {"| gen | gen01_furnitures | 17 | vdoor |", "| gen | gen01 | 0 | morph |",
-                            "| gen | vdoor | furnished | all |"}) {
+    for (const char* row : {"| gen | gen01_furnitures | 17 | vdoor |",
+                            "| gen | gen01 | 0 | morph |", "| gen | vdoor | furnished | all |"}) {
         EXPECT_NE(r.output.find(row), std::string::npos) << row << "\n" << r.output;
     }
     EXPECT_TRUE(std::filesystem::is_regular_file(dir.file("gen.json")));
@@ -132,8 +132,8 @@ TEST(ToposlamBenchRooms, RunsGeneratedPlansAtTwoAnglesAndWritesThem) {
 
 TEST(ToposlamBenchRooms, RejectsBadOptions) {
     const TempDir dir;
-    for (const char* bad : {"--sets bogus", "-r 0", "--rotations 1e999", "--gen-seeds x",
-                            "-c missing.ini"}) {
+    for (const char* bad :
+         {"--sets bogus", "-r 0", "--rotations 1e999", "--gen-seeds x", "-c missing.ini"}) {
         const auto r =
             runApp("toposlam-bench-rooms", std::string(bad) + " -o '" + dir.file("b.json") + "'");
         EXPECT_EQ(r.exitCode, 1) << bad << "\n" << r.output;

@@ -85,12 +85,6 @@ TEST(RotationInvariance, OfficeIsTheSameAtEveryAngle) {
         expectSameAsUpright(office, degrees);
 }
 
-TEST(RotationInvariance, FurnishedOfficeIsTheSameAtEveryAngle) {
-    const DrawnMap office = toposlam::rooms::test::furnishedOffice();
-    for (int degrees = 0; degrees <= 90; degrees += 5)
-        expectSameAsUpright(office, degrees);
-}
-
 TEST(RotationInvariance, RotateNearestKeepsLabelsAndTurnsBack) {
     cv::Mat labels(30, 50, CV_32S, cv::Scalar(0));
     labels(cv::Rect(5, 5, 20, 10)).setTo(7);

@@ -408,18 +408,18 @@ int smallestTooSmall(RegionMerge& m, double minCells) {
     return smallest;
 }
 
-// The least door-like door of set `smallest` (eq. 10's |width - w| largest: a sliver between a
-// doorway's cut and a cut along a wall face keeps the doorway's), ties: the door to its
-// smallest neighbour.
-std::size_t leastDoorLike(RegionMerge& m, int smallest, const std::vector<VirtualDoor>& doors,
-                          const std::vector<std::size_t>& candidates, double doorWidth) {
+// The widest door of set `smallest` (of two cuts through one doorway the waist stays; a sliver
+// between a doorway's cut and a cut along a wall face keeps the doorway's), ties (half a cell):
+// the door to its smallest neighbour.
+std::size_t widestDoor(RegionMerge& m, int smallest, const std::vector<VirtualDoor>& doors,
+                       const std::vector<std::size_t>& candidates) {
     std::size_t through = 0;
     double worstFit = -1, neighbourArea = 1e300;
     for (std::size_t k = 0; k < m.size(); ++k) {
         const auto [a, b] = m.liveSides(k);
         if (m.removed(k) || a == b || (a != smallest && b != smallest))
             continue;
-        const double fit = std::abs(doors[candidates[k]].width - doorWidth);
+        const double fit = doors[candidates[k]].width;
         const double other = m.area(a == smallest ? b : a);
         if (fit > worstFit + 0.5 || (std::abs(fit - worstFit) <= 0.5 && other < neighbourArea)) {
             worstFit = fit;
@@ -435,7 +435,7 @@ std::size_t leastDoorLike(RegionMerge& m, int smallest, const std::vector<Virtua
 DoorFilters::Rooms DoorFilters::minimumArea(const RegionPartition& partition,
                                             const std::vector<VirtualDoor>& doors,
                                             const std::vector<std::size_t>& candidates,
-                                            double cellArea, double doorWidth) const {
+                                            double cellArea) const {
     const double minCells = detail::toCells(options_.minRoomArea, cellArea);
     RegionMerge merge(partition, candidates);
     if (!options_.mergeSmallestFirst) {  // the paper: one pass over all doors
@@ -447,11 +447,10 @@ DoorFilters::Rooms DoorFilters::minimumArea(const RegionPartition& partition,
         for (std::size_t k : failing)
             merge.removeDoor(k);
     } else {
-        // The smallest too-small region is merged through its least door-like door, again and
-        // again.
+        // The smallest too-small region is merged through its widest door, again and again.
         for (int smallest = smallestTooSmall(merge, minCells); smallest >= 0;
              smallest = smallestTooSmall(merge, minCells)) {
-            merge.removeDoor(leastDoorLike(merge, smallest, doors, candidates, doorWidth));
+            merge.removeDoor(widestDoor(merge, smallest, doors, candidates));
         }
     }
     // A door separates exactly two rooms: one that still touches three or more (crossing cuts)

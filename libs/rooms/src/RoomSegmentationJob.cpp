@@ -28,7 +28,7 @@ RoomSegmenter::Result runRoomSegmentationJob(const RoomSegmentationJob& job) {
     }
     const RoomSegmenter segmenter(job.options);
     RoomSegmenter::Result result = segmenter.segment(grid, poses, job.mapPath);
-    if (result.fromTrajectory && result.searchCells.empty()) {
+    if (result.fromTrajectory && result.trajectoryCells == 0) {
         throw io::InputError(job.trajectoryPath,
                              "no pose of the trajectory lies in the map's free space (wrong "
                              "frame or wrong file?)");

@@ -168,6 +168,7 @@ void RoomSegmenter::Options::applyPaperPreset() {
     filters.wallThicknessFromMap = false;
     wide.enabled = false;
     labelIslands = false;
+    medialAxisWithTrajectory = false;
 }
 
 RoomSegmenter::Options RoomSegmenter::Options::load(const std::string& iniPath, bool paper) {
@@ -250,6 +251,8 @@ void RoomSegmenter::Options::loadFromConfigFile(const mrpt::config::CConfigFileB
     filters.openingMargin = ini.read_double(s, "openingMargin", filters.openingMargin);
     wide.enabled = ini.read_bool(s, "wideOpenings", wide.enabled);
     labelIslands = ini.read_bool(s, "labelIslands", labelIslands);
+    medialAxisWithTrajectory =
+        ini.read_bool(s, "medialAxisWithTrajectory", medialAxisWithTrajectory);
     wide.maxWidth = ini.read_double(s, "maxOpeningWidth", wide.maxWidth);
     wide.openingMargin = ini.read_double(s, "wideOpeningMargin", wide.openingMargin);
     validate();
@@ -332,11 +335,16 @@ DoorFilters::Rooms RoomSegmenter::findRooms(const FreeSpace& space,
         ws.wallThickness.measure(space, ws.clearance, options_.filters.maxWallThickness);
     const WallThickness* walls = measureWalls ? &ws.wallThickness : nullptr;
     lap("clearance");
-    result.searchCells = result.fromTrajectory
-                             ? DoorSearchPaths::fromTrajectory(space, trajectory)
-                             : DoorSearchPaths::fromMedialAxis(
-                                   space, ws.clearance, door.doorWidth - door.doorWidthTolerance,
-                                   door.doorWidth + door.doorWidthTolerance);
+    const bool medialAxis = !result.fromTrajectory || options_.medialAxisWithTrajectory;
+    if (result.fromTrajectory)
+        result.searchCells = DoorSearchPaths::fromTrajectory(space, trajectory);
+    result.trajectoryCells = result.searchCells.size();
+    if (medialAxis) {
+        const std::vector<cv::Point> axis = DoorSearchPaths::fromMedialAxis(
+            space, ws.clearance, door.doorWidth - door.doorWidthTolerance,
+            door.doorWidth + door.doorWidthTolerance);
+        result.searchCells.insert(result.searchCells.end(), axis.begin(), axis.end());
+    }
     const std::vector<double> localDirections =
         door.localDirection ? ws.clearance.acrossRidge(result.searchCells) : std::vector<double>{};
     lap("search paths");
@@ -350,8 +358,8 @@ DoorFilters::Rooms RoomSegmenter::findRooms(const FreeSpace& space,
     lap("door tests");
     const std::vector<cv::Point> noPath;  // the wide pass searches its own medial axis
     result.wideOpenings =
-        ws.wide.detect(space, ws.clearance, result.fromTrajectory ? result.searchCells : noPath,
-                       directions, result.lines, walls);
+        ws.wide.detect(space, ws.clearance, medialAxis ? noPath : result.searchCells, directions,
+                       result.lines, walls);
     result.afterTests.insert(result.afterTests.end(), result.wideOpenings.begin(),
                              result.wideOpenings.end());
     lap("wide openings");
@@ -360,9 +368,8 @@ DoorFilters::Rooms RoomSegmenter::findRooms(const FreeSpace& space,
     ws.partition.compute(space.free, result.afterDistance);
     const std::vector<std::size_t> adjacent = DoorFilters::adjacency(ws.partition);
     result.afterAdjacency = adjacent.size();
-    const DoorFilters::Rooms rooms =
-        ws.filters.minimumArea(ws.partition, result.afterDistance, adjacent, space.frame.cellArea(),
-                               detail::toCells(door.doorWidth, res));
+    const DoorFilters::Rooms rooms = ws.filters.minimumArea(ws.partition, result.afterDistance,
+                                                            adjacent, space.frame.cellArea());
     lap("partition+filters");
     return rooms;
 }

@@ -50,10 +50,10 @@ class DoorFilters {
         /// waist of the opening; ties: the one nearest the group's middle). Off: the paper's
         /// greedy reading, keep each door that is more than N_d from every door kept before it.
         bool keepNarrowestOfGroup = true;
-        /// Minimum-area filter: merge the smallest too-small region first, through its least
-        /// door-like door (eq. 10's |width - w| largest; ties: to its smallest neighbour), and
-        /// re-evaluate. Off: the paper's single pass, remove every door with a too-small region
-        /// on either side.
+        /// Minimum-area filter: merge the smallest too-small region first, through its widest
+        /// door (of two cuts through one doorway the waist stays; ties: to its smallest
+        /// neighbour), and re-evaluate. Off: the paper's single pass, remove every door with a
+        /// too-small region on either side.
         bool mergeSmallestFirst = true;
         bool requireWallJambs = true;  ///< the wall-jamb test (deviation, see above)
         double minWallExtent = 0.3;    ///< m
@@ -107,12 +107,11 @@ class DoorFilters {
         std::vector<Link> doors;
     };
     /// The minimum-area filter over the doors `candidates` (indices into `doors`, the doors
-    /// `partition` was cut with); regions are merged through removed doors. `cellArea` in m^2,
-    /// `doorWidth` (w) in pixels. Doors whose two sides end up in one room are dropped too
-    /// (they no longer separate anything).
+    /// `partition` was cut with); regions are merged through removed doors. `cellArea` in m^2.
+    /// Doors whose two sides end up in one room are dropped too (they no longer separate
+    /// anything).
     Rooms minimumArea(const RegionPartition& partition, const std::vector<VirtualDoor>& doors,
-                      const std::vector<std::size_t>& candidates, double cellArea,
-                      double doorWidth) const;
+                      const std::vector<std::size_t>& candidates, double cellArea) const;
 
     const Options& options() const { return options_; }
 

@@ -55,6 +55,10 @@ class RoomSegmenter {
         /// their cells take the room's id in the label image, and its area includes them
         /// (deviation: the paper labels free cells only).
         bool labelIslands = true;
+        /// With a trajectory, search from the medial axis too (deviation: the paper searches
+        /// the trajectory only, assuming the robot went through every door; a tour that visits
+        /// every room need not, e.g. through the second door of a room).
+        bool medialAxisWithTrajectory = true;
 
         /// The defaults: the paper plus TopoSLAM's documented deviations (DoorFilters.h).
         static Options improved() { return {}; }
@@ -85,7 +89,8 @@ class RoomSegmenter {
         std::vector<LineSegment> lines;  ///< merged wall segments (pixels)
         MainDirections directions;
         bool fromTrajectory = false;             ///< search paths: trajectory or medial axis
-        std::vector<cv::Point> searchCells;      ///< pixels
+        std::vector<cv::Point> searchCells;      ///< pixels: trajectory cells, then medial axis
+        std::size_t trajectoryCells = 0;         ///< of searchCells, from the trajectory
         std::vector<VirtualDoor> candidates;     ///< step 4 output (pixels)
         std::vector<VirtualDoor> afterTests;     ///< after wall-jamb + constriction tests
         std::vector<VirtualDoor> wideOpenings;   ///< WideOpeningDetector's (also in afterTests)

@@ -18,9 +18,10 @@
 //                 carries one of the wall segments of step 2) and extends at least
 //                 minWallExtent from the jamb along or across the door line; and at least one
 //                 jamb is the end of the wall the door is in: from it, away from the opening,
-//                 the obstacle goes on along the door line for wallEndProbe and is no thicker
-//                 than maxWallThickness there (or is the edge of the mapped space, free on one
-//                 side only). Rules out chairs, bins and plants as door frames, gaps between
+//                 the obstacle goes on along the door line for wallEndProbe and, a third of
+//                 the way in, is no thicker than maxWallThickness and as thick as the
+//                 building's walls are (WallThickness; or is the edge of the mapped space,
+//                 free on one side only). Rules out chairs, bins and plants as door frames, gaps between
 //                 desks (too deep to be walls) and the
 //                 cross-sections of corridors between doors (both jambs on side walls);
 //   constriction: a door is a narrow place between two wider spaces: walking away from the door
@@ -43,7 +44,8 @@ class DoorFilters {
     struct Options {
         /// N_d (m). The paper gives it in cells (N_d = 2 at 5 cm, fig. 5b), for SLAM maps whose
         /// walls are a few cells thick. Groups are chained (closer pairs linked), so the
-        /// cross-sections found all along a doorway count as one door however thick the wall.
+        /// cross-sections found all along a doorway count as one door however thick the wall;
+        /// cuts fanning out from one jamb cell at less than 30 degrees are linked too.
         double frameDistance = 0.5;
         double minRoomArea = 2.0;  ///< N_s (m^2)
         /// Distance filter: of a group of doors closer than N_d, keep the narrowest (the

@@ -5,14 +5,17 @@
 #include <benchmark/benchmark.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/cli/NumberArg.h>
 #include <toposlam/featureeval/SimulatedScans.h>
 #include <toposlam/features/FeatureExtractor.h>
-#include <toposlam/io/AtomicFile.h>
+#include <toposlam/io/JsonFile.h>
 #include <toposlam/io/LaserLogReader.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -131,27 +134,32 @@ std::string cell(double v, int precision) {
 }
 
 int run(int argc, char** argv) {
-    benchmark::Initialize(&argc, argv);  // takes out the --benchmark_* flags
+    // Google Benchmark takes out the --benchmark_* flags, but would answer --help itself.
+    const bool help = std::any_of(argv + 1, argv + argc, [](const char* a) {
+        return std::strcmp(a, "--help") == 0 || std::strcmp(a, "-h") == 0;
+    });
+    if (!help)
+        benchmark::Initialize(&argc, argv);
     TCLAP::CmdLine cmd(kDescription, ' ', "0.1");
-    TCLAP::ValueArg<int> rooms("", "rooms", "Random rooms (5 sensor poses each). Default: 50",
-                               false, 50, "N", cmd);
-    TCLAP::ValueArg<unsigned> seed("", "seed", "Seed of rooms, poses and noise. Default: 1", false,
-                                   1, "N", cmd);
+    cli::NumberArg<int> rooms("", "rooms", "Random rooms (5 sensor poses each). Default: 50", 50,
+                              cli::NumberRange<int>::positive(100000), "N", cmd);
+    cli::NumberArg<unsigned> seed("", "seed", "Seed of rooms, poses and noise. Default: 1", 1,
+                                  cli::NumberRange<unsigned>::nonNegative(2147483647), "N", cmd);
     TCLAP::ValueArg<std::string> json("", "json", "JSON output file. Default: b1-features.json",
                                       false, "b1-features.json", "file", cmd);
     TCLAP::ValueArg<std::string> data(
         "", "data", "The public benchmark data folder. Default: ../shared/data of the build", false,
         TOPOSLAM_SHARED_DATA_DIR, "dir", cmd);
-    TCLAP::ValueArg<std::size_t> realScans(
-        "", "real-scans", "Use only the first N scans of each real log. Default: 0 = all", false, 0,
-        "N", cmd);
+    cli::NumberArg<std::size_t> realScans(
+        "", "real-scans", "Use only the first N scans of each real log. Default: 0 = all", 0,
+        cli::NumberRange<std::size_t>::nonNegative(1000000000), "N", cmd);
     TCLAP::SwitchArg noReal("", "no-real", "Skip the real logs", cmd);
-    TCLAP::ValueArg<int> repetitions("", "repetitions",
-                                     "Timing repetitions (the median is reported). Default: 5",
-                                     false, 5, "N", cmd);
-    TCLAP::ValueArg<double> minTime("", "min-time",
-                                    "Minimum time of each timing repetition, s. Default: 0.05",
-                                    false, 0.05, "s", cmd);
+    cli::NumberArg<int> repetitions("", "repetitions",
+                                    "Timing repetitions (the median is reported). Default: 5", 5,
+                                    cli::NumberRange<int>::positive(1000), "N", cmd);
+    cli::NumberArg<double> minTime("", "min-time",
+                                   "Minimum time of each timing repetition, s. Default: 0.05", 0.05,
+                                   cli::NumberRange<double>::positive(60), "s", cmd);
     if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
         return *exitCode;
 
@@ -356,55 +364,57 @@ int run(int argc, char** argv) {
     }
 
     // ---- JSON ------------------------------------------------------------------------------
-    std::ostringstream j;
-    j << "{\n  \"benchmark\": \"B1\",\n  \"rooms\": " << rooms.getValue()
-      << ",\n  \"seed\": " << seed.getValue() << ",\n  \"simulated\": [\n";
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-        const Row& r = rows[i];
+    const auto rounded = [](double v, int decimals) { return io::roundDecimals(v, decimals); };
+    io::Json simulated = io::Json::array(), agreement = io::Json::array(), real = io::Json::array();
+    for (const Row& r : rows) {
         const auto& s = r.scores;
-        j << "    {\"method\": \"" << r.method << "\", \"beams\": " << r.beams << ", \"laser\": \""
-          << r.laser << "\", \"sigma\": " << r.sigma << ", \"scans\": " << r.scans
-          << ", \"ground_truth_corners\": " << s.groundTruthCorners
-          << ", \"detected_corners\": " << s.detectedCorners << ", \"ignored\": " << s.ignored
-          << ", \"hits\": " << s.hits << ", \"precision\": " << num(s.precision(), 4)
-          << ", \"recall\": " << num(s.recall(), 4)
-          << ", \"position_rmse_m\": " << num(s.positionRmse(), 5)
-          << ", \"position_rmse_within_8m_m\": " << num(s.positionRmseNear(), 5)
-          << ", \"angle_rmse_deg\": " << num(s.angleRmseDeg(), 3)
-          << ", \"angle_mean_abs_deg\": " << num(s.angleMeanAbsDeg(), 3)
-          << ", \"segment_endpoint_rmse_m\": " << num(s.endpointRmse(), 5)
-          << ", \"walls\": " << s.groundTruthRuns << ", \"walls_matched\": " << s.matchedRuns
-          << ", \"cpu_us_per_scan\": " << num(r.microseconds, 3)
-          << ", \"wall_us_per_scan\": " << num(r.wallMicroseconds, 3) << "}"
-          << (i + 1 < rows.size() ? "," : "") << "\n";
+        simulated.push_back({{"method", r.method},
+                             {"beams", r.beams},
+                             {"laser", r.laser},
+                             {"sigma", r.sigma},
+                             {"scans", r.scans},
+                             {"ground_truth_corners", s.groundTruthCorners},
+                             {"detected_corners", s.detectedCorners},
+                             {"ignored", s.ignored},
+                             {"hits", s.hits},
+                             {"precision", rounded(s.precision(), 4)},
+                             {"recall", rounded(s.recall(), 4)},
+                             {"position_rmse_m", rounded(s.positionRmse(), 5)},
+                             {"position_rmse_within_8m_m", rounded(s.positionRmseNear(), 5)},
+                             {"angle_rmse_deg", rounded(s.angleRmseDeg(), 3)},
+                             {"angle_mean_abs_deg", rounded(s.angleMeanAbsDeg(), 3)},
+                             {"segment_endpoint_rmse_m", rounded(s.endpointRmse(), 5)},
+                             {"walls", s.groundTruthRuns},
+                             {"walls_matched", s.matchedRuns},
+                             {"cpu_us_per_scan", rounded(r.microseconds, 3)},
+                             {"wall_us_per_scan", rounded(r.wallMicroseconds, 3)}});
     }
-    j << "  ],\n  \"two_point_vs_least_squares\": [\n";
-    for (std::size_t i = 0; i < agreements.size(); ++i) {
-        const auto& a = agreements[i];
-        j << "    {\"laser\": \"" << a.laser << "\", \"sigma\": " << a.sigma
-          << ", \"pairs\": " << a.a.pairs << ", \"mean_m\": " << num(a.a.mean, 5)
-          << ", \"p95_m\": " << num(a.a.p95, 5) << ", \"max_m\": " << num(a.a.max, 5) << "}"
-          << (i + 1 < agreements.size() ? "," : "") << "\n";
+    for (const auto& a : agreements) {
+        agreement.push_back({{"laser", a.laser},
+                             {"sigma", a.sigma},
+                             {"pairs", a.a.pairs},
+                             {"mean_m", rounded(a.a.mean, 5)},
+                             {"p95_m", rounded(a.a.p95, 5)},
+                             {"max_m", rounded(a.a.max, 5)}});
     }
-    j << "  ],\n  \"real\": [\n";
-    for (std::size_t i = 0; i < realRows.size(); ++i) {
-        const RealRow& r = realRows[i];
-        j << "    {\"method\": \"" << r.method << "\", \"log\": \"" << r.log
-          << "\", \"scans\": " << r.scans << ", \"beams\": " << r.beams
-          << ", \"segments_per_scan\": " << num(r.segments, 3)
-          << ", \"corners_per_scan\": " << num(r.corners, 3)
-          << ", \"endpoints_per_scan\": " << num(r.endpoints, 3)
-          << ", \"cpu_us_per_scan\": " << num(r.microseconds, 3)
-          << ", \"wall_us_per_scan\": " << num(r.wallMicroseconds, 3) << "}"
-          << (i + 1 < realRows.size() ? "," : "") << "\n";
+    for (const RealRow& r : realRows) {
+        real.push_back({{"method", r.method},
+                        {"log", r.log},
+                        {"scans", r.scans},
+                        {"beams", r.beams},
+                        {"segments_per_scan", rounded(r.segments, 3)},
+                        {"corners_per_scan", rounded(r.corners, 3)},
+                        {"endpoints_per_scan", rounded(r.endpoints, 3)},
+                        {"cpu_us_per_scan", rounded(r.microseconds, 3)},
+                        {"wall_us_per_scan", rounded(r.wallMicroseconds, 3)}});
     }
-    j << "  ]\n}\n";
-    io::writeFileAtomically(json.getValue(), [&](const std::string& tmp) {
-        std::ofstream out(tmp);
-        out << j.str();
-        if (!out)
-            throw std::runtime_error(json.getValue() + ": cannot write");
-    });
+    io::saveJsonFile({{"benchmark", "B1"},
+                      {"rooms", rooms.getValue()},
+                      {"seed", seed.getValue()},
+                      {"simulated", simulated},
+                      {"two_point_vs_least_squares", agreement},
+                      {"real", real}},
+                     json.getValue());
     std::printf("\nwrote %s\n", json.getValue().c_str());
     return EXIT_SUCCESS;
 }

@@ -94,6 +94,8 @@ int main(int argc, char** argv) {
         }
     }
     benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv))
+        return 2;  // bad usage, as every TopoSLAM app
 
     const fs::path tmp =
         fs::temp_directory_path() / ("toposlam-bench-io-" + std::to_string(::getpid()));

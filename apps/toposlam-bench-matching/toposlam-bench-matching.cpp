@@ -6,6 +6,7 @@
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/cli/NumberArg.h>
 #include <toposlam/io/ProgressDisplay.h>
 #include <toposlam/matchingbench/MatchingBenchmark.h>
 #include <toposlam/matchingbench/RelationPairs.h>
@@ -64,14 +65,14 @@ int run(int argc, char** argv) {
         "IEPF lines, the corner paper's segments, the graph paper's sec. 2.1 convex/concave "
         "segments)",
         false, "split-merge,corners,segments", "names", cmd);
-    TCLAP::ValueArg<std::size_t> simPairs("s", "sim-pairs",
-                                          "simulated pairs per room x offset x rotation "
-                                          "(2 x 4 x 4 cases; default 10, 0 = none)",
-                                          false, 10, "n", cmd);
-    TCLAP::ValueArg<std::size_t> maxReal("m", "max-real-pairs",
-                                         "relations used per log, evenly spaced (default 0 = "
-                                         "all)",
-                                         false, 0, "n", cmd);
+    cli::NumberArg<std::size_t> simPairs("s", "sim-pairs",
+                                         "simulated pairs per room x offset x rotation "
+                                         "(2 x 4 x 4 cases; default 10, 0 = none)",
+                                         10, cli::NumberRange<std::size_t>::nonNegative(100000),
+                                         "n", cmd);
+    cli::NumberArg<std::size_t> maxReal(
+        "m", "max-real-pairs", "relations used per log, evenly spaced (default 0 = all)", 0,
+        cli::NumberRange<std::size_t>::nonNegative(1000000000), "n", cmd);
     TCLAP::SwitchArg noGuess("", "no-guess-run", "skip the odometry-guess run", cmd);
     TCLAP::ValueArg<std::string> json("j", "json", "JSON output (default bench-matching.json)",
                                       false, "bench-matching.json", "file", cmd);

@@ -2,16 +2,18 @@
 // benchmark itself is libs/planning/PlanningBenchmark.
 #include <ompl/util/RandomNumbers.h>
 #include <toposlam/cli/CommandLine.h>
-#include <toposlam/io/AtomicFile.h>
+#include <toposlam/cli/NumberArg.h>
 #include <toposlam/io/GridMapIO.h>
 #include <toposlam/io/ProgressDisplay.h>
+#include <toposlam/io/TextFile.h>
 #include <toposlam/planning/PlanningBenchmark.h>
 #include <toposlam/rooms/RoomBenchmark.h>
 #include <toposlam/rooms/RoomSegmenter.h>
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -39,22 +41,25 @@ int run(int argc, char** argv) {
         "also the 20 furnished maps of Bormann et al. from this folder (shared/data/rooms; "
         "0.05 m/px, grey < 250 = not free)",
         false, "", "dir", cmd);
-    TCLAP::ValueArg<double> freeThresholdArg(
+    cli::NumberArg<double> freeThresholdArg(
         "", "free-threshold",
-        "for the maps given as arguments: p(free) above which a cell is free. Default 0.6", false,
-        0.6, "p", cmd);
-    TCLAP::ValueArg<int> pairsArg("", "pairs", "room pairs per map (0 = all). Default 30", false,
-                                  30, "n", cmd);
-    TCLAP::ValueArg<double> radiusArg("", "robot-radius", "m. Default 0.25", false, 0.25, "m", cmd);
+        "for the maps given as arguments: p(free) above which a cell is free. Default 0.6", 0.6,
+        cli::NumberRange<double>::closed(0.5, 0.999), "p", cmd);
+    cli::NumberArg<int> pairsArg("", "pairs", "room pairs per map (0 = all). Default 30", 30,
+                                 cli::NumberRange<int>::nonNegative(1000000), "n", cmd);
+    cli::NumberArg<double> radiusArg("", "robot-radius", "m. Default 0.25", 0.25,
+                                     cli::NumberRange<double>::positive(10), "m", cmd);
+    std::vector<std::string> planners = planning::omplPlannerNames();
+    TCLAP::ValuesConstraint<std::string> plannerNames(planners);
     TCLAP::ValueArg<std::string> plannerArg("", "planner", "OMPL planner. Default rrtconnect",
-                                            false, "rrtconnect", "name", cmd);
-    TCLAP::ValueArg<double> timeArg("", "time", "time limit per leg, s. Default 1", false, 1.0, "s",
-                                    cmd);
-    TCLAP::ValueArg<int> attemptsArg(
+                                            false, "rrtconnect", &plannerNames, cmd);
+    cli::NumberArg<double> timeArg("", "time", "time limit per leg, s. Default 1", 1.0,
+                                   cli::NumberRange<double>::positive(3600), "s", cmd);
+    cli::NumberArg<int> attemptsArg(
         "", "attempts",
         "independent OMPL solves per leg, the shortest kept (RRT-Connect picks a random side "
         "of each obstacle). Default 3",
-        false, 3, "n", cmd);
+        3, cli::NumberRange<int>::positive(1000), "n", cmd);
     TCLAP::ValueArg<std::string> jsonArg("", "json", "write the results as JSON", false, "", "file",
                                          cmd);
     if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
@@ -106,9 +111,8 @@ int run(int argc, char** argv) {
                 maps.size(), options.robotRadius, options.ompl.planner.c_str(),
                 options.ompl.timeLimit, planning::PlanningBenchmark::table(summary).c_str());
     if (jsonArg.isSet()) {
-        io::writeFileAtomically(jsonArg.getValue(), [&](const std::string& tmp) {
-            std::ofstream(tmp) << planning::PlanningBenchmark::json(queries, summary, options);
-        });
+        io::saveTextFile(planning::PlanningBenchmark::json(queries, summary, options),
+                         jsonArg.getValue());
         std::printf("\nwrote %s\n", jsonArg.getValue().c_str());
     }
     return 0;

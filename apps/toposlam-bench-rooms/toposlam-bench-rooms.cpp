@@ -3,7 +3,9 @@
 // to end; the virtual-door segmenter against the morphological and distance baselines in one
 // run.
 #include <toposlam/cli/CommandLine.h>
-#include <toposlam/io/AtomicFile.h>
+#include <toposlam/cli/NumberArg.h>
+#include <toposlam/cli/UsageError.h>
+#include <toposlam/io/TextFile.h>
 #include <toposlam/io/InputError.h>
 #include <toposlam/io/ProgressDisplay.h>
 #include <toposlam/roomsbench/GeneratedRoomCases.h>
@@ -65,7 +67,7 @@ std::vector<unsigned> seedList(const std::string& text, const std::string& optio
             dash == std::string::npos ? 1 : 2, option);
         for (double s = range.front(); s <= range.back(); ++s) {
             if (s < 0 || s != std::floor(s) || s > 1e9)
-                throw std::invalid_argument(option + ": seeds are whole numbers >= 0");
+                throw cli::UsageError(option + ": seeds are whole numbers >= 0");
             seeds.push_back(static_cast<unsigned>(s));
         }
     }
@@ -75,7 +77,9 @@ std::vector<unsigned> seedList(const std::string& text, const std::string& optio
 std::vector<double> angleList(const std::string& text) {
     std::vector<double> angles;
     for (const std::string& item : splitList(text))
-        angles.push_back(cli::parseNumberList(item, 1, "--rotations").front());
+        angles.push_back(cli::parseNumberList(item, 1, "--rotations",
+                                              cli::NumberRange<double>::closed(-360, 360))
+                             .front());
     return angles;
 }
 
@@ -121,14 +125,9 @@ struct Arguments {
         "",
         "dir",
         cmd};
-    TCLAP::ValueArg<int> repeats{"r",
-                                 "repeats",
-                                 "runs per map and method, 1-100; the median time is reported "
-                                 "(default: 3)",
-                                 false,
-                                 3,
-                                 "n",
-                                 cmd};
+    cli::NumberArg<int> repeats{"r", "repeats",
+                                "runs per map and method; the median time is reported (default: 3)",
+                                3, cli::NumberRange<int>::positive(1000), "n", cmd};
     TCLAP::ValueArg<std::string> methods{
         "m",   "methods", "comma-separated subset of vdoor,vdoor-paper,morph,dist (default: all)",
         false, "",        "list",
@@ -211,8 +210,6 @@ struct Arguments {
 roomsbench::RoomBenchmarkSuiteOptions suiteOptions(
     Arguments& a, std::unique_ptr<mrpt::config::CConfigFile>& slamIni) {
     roomsbench::RoomBenchmarkSuiteOptions o;
-    if (a.repeats.getValue() < 1 || a.repeats.getValue() > 100)
-        throw std::invalid_argument("--repeats must be 1-100");
     o.bench.dataDir = a.data.getValue();
     o.bench.repeats = a.repeats.getValue();
     o.bench.imageDir = a.images.getValue();
@@ -225,7 +222,7 @@ roomsbench::RoomBenchmarkSuiteOptions suiteOptions(
     auto has = [&](const char* s) { return std::find(sets.begin(), sets.end(), s) != sets.end(); };
     for (const auto& s : sets) {
         if (s != "bormann" && s != "gen" && s != "slam")
-            throw std::invalid_argument("--sets: unknown set '" + s + "' (bormann, gen, slam)");
+            throw cli::UsageError("--sets: unknown set '" + s + "' (bormann, gen, slam)");
     }
     const bool haveData = std::filesystem::is_directory(o.bench.dataDir);
     if (!haveData && (has("bormann") || has("slam")))
@@ -271,12 +268,7 @@ int run(int argc, char** argv) {
         options, [&](double fraction, std::size_t done) { progress.update(fraction, done); });
     progress.finish();
     std::cout << roomsbench::suiteTable(result);
-    io::writeFileAtomically(a.json.getValue(), [&](const std::string& tmp) {
-        std::ofstream out(tmp);
-        out << roomsbench::suiteJson(result, options);
-        if (!out)
-            throw std::runtime_error(a.json.getValue() + ": cannot write");
-    });
+    io::saveTextFile(roomsbench::suiteJson(result, options), a.json.getValue());
     std::cerr << "wrote " << a.json.getValue() << "\n";
     return 0;
 }

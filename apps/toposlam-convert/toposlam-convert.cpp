@@ -2,6 +2,7 @@
 // odometry of a log as a trajectory, and grid maps between formats.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/cli/NumberArg.h>
 #include <toposlam/io/GridMapIO.h>
 #include <toposlam/io/LogConversion.h>
 #include <toposlam/io/ProgressDisplay.h>
@@ -45,9 +46,9 @@ const char* const kDescription =
     "  toposlam-convert intel.clf -o intel_sf.rawlog.gz --format sf\n"
     "  toposlam-convert map.gridmap.gz -o map.yaml\n"
     "  toposlam-convert office.png --resolution 0.05 --origin -10,-5 -o office.gridmap.gz\n"
-    "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input or options (the "
-    "message names the file and, for logs, the line or object). No output file is written "
-    "unless the whole input converts.";
+    "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input (the message "
+    "names the file and, for logs, the line or object); 2 for bad options (an unknown option, "
+    "a value out of range). No output file is written unless the whole input converts.";
 
 bool isGridMapPath(const std::string& path) {
     std::string p = path;
@@ -69,7 +70,7 @@ std::string fileName(const std::string& path) {
 int convertMap(const std::string& input, const std::string& output, bool hasResolution,
                double resolution, const std::string& origin, bool quiet) {
     if (output.empty())
-        throw std::invalid_argument("-o/--output is required for grid maps");
+        throw cli::UsageError("-o/--output is required for grid maps");
     std::optional<io::GridMapGeometry> geometry;
     if (hasResolution || !origin.empty()) {
         geometry.emplace();
@@ -117,24 +118,25 @@ int run(int argc, char** argv) {
         "Only scans with this sensor label (CARMEN: FLASER, RLASER, ROBOTLASER1, ROBOTLASER2). "
         "Default: all 2D laser scans",
         false, "", "label", cmd);
-    TCLAP::ValueArg<double> maxRange(
+    cli::NumberArg<double> maxRange(
         "", "carmen-max-range",
         "CARMEN: maximum range in m when no PARAM robot_front_laser_max line gives one; "
         "readings at or beyond it are invalid. Default: 81",
-        false, 81.0, "m", cmd);
+        81.0, cli::NumberRange<double>::positive(1000), "m", cmd);
     TCLAP::ValueArg<std::string> laserOffset(
         "", "laser-offset",
         "CARMEN: the laser's pose on the robot as x,y,yaw (m, m, rad), replacing what the log "
         "states. Default: from the log (laser vs robot pose in each line, else PARAM "
         "robot_frontlaser_offset)",
         false, "", "x,y,yaw", cmd);
-    TCLAP::ValueArg<std::size_t> maxScans(
-        "", "max-scans", "Convert only the first N scans. Default: 0 = all", false, 0, "N", cmd);
-    TCLAP::ValueArg<double> resolution(
+    cli::NumberArg<std::size_t> maxScans(
+        "", "max-scans", "Convert only the first N scans. Default: 0 = all", 0,
+        cli::NumberRange<std::size_t>::nonNegative(1000000000), "N", cmd);
+    cli::NumberArg<double> resolution(
         "", "resolution",
         "Maps: cell size in m for an input image (overrides its .yaml sidecar). Default: the "
         "sidecar's, else 0.05",
-        false, 0.05, "m", cmd);
+        0.05, cli::NumberRange<double>::positive(100), "m", cmd);
     TCLAP::ValueArg<std::string> origin(
         "", "origin",
         "Maps: world position x,y (m) of the lower-left corner of an input image (overrides "
@@ -150,7 +152,7 @@ int run(int argc, char** argv) {
                           resolution.getValue(), origin.getValue(), quiet.getValue());
     }
     if (output.getValue().empty() && odometryTrajectory.getValue().empty()) {
-        throw std::invalid_argument("nothing to do: give -o and/or --odometry-trajectory");
+        throw cli::UsageError("nothing to do: give -o and/or --odometry-trajectory");
     }
     io::LogConversionOptions options;
     options.read.scanLabel = label.getValue();

@@ -3,19 +3,12 @@
 // by side in one table, optionally as JSON and as a picture.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <toposlam/cli/CommandLine.h>
-#include <toposlam/evaluation/GroundTruthRelations.h>
-#include <toposlam/evaluation/IcpSlamPath.h>
-#include <toposlam/evaluation/LogOdometry.h>
-#include <toposlam/evaluation/RelationFile.h>
-#include <toposlam/evaluation/SlamEvaluation.h>
-#include <toposlam/io/InputError.h>
-#include <toposlam/io/Trajectory.h>
+#include <toposlam/cli/NumberArg.h>
+#include <toposlam/evaluation/SlamEvaluationRun.h>
+#include <toposlam/io/ProgressDisplay.h>
 
-#include <algorithm>
 #include <cstdlib>
-#include <filesystem>
 #include <iostream>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,25 +42,25 @@ const char* const kDescription =
     "intel.clf --relations intel.relations --json intel-b3.json --plot intel-b3.png\n"
     "  toposlam-eval-slam slam.txt --ground-truth office_gt.txt --json office.json\n"
     "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input (missing or "
-    "malformed files, non-finite poses). Output files are written atomically, and only on "
-    "success.";
+    "malformed files, non-finite poses, a trajectory that matches none of the relations); 2 "
+    "for bad usage (unknown options, values out of range, options that do not go together). "
+    "Output files are written atomically, and only on success.";
 
-enum class Kind { LogOdometry, TrajectoryFile, IcpSlamPath };
-
-struct Method {
-    Kind kind;
-    std::string name;
-    std::string file;
-};
-
-// "label=path" -> {label, path}; a plain path gets `defaultName` (or else the file's stem).
-Method parseMethod(Kind kind, const std::string& spec, const std::string& defaultName) {
-    const auto eq = spec.find('=');
-    if (eq != std::string::npos && eq > 0 && spec.substr(0, eq).find('/') == std::string::npos) {
-        return {kind, spec.substr(0, eq), spec.substr(eq + 1)};
+// Scores, prints the table, writes the outputs.
+int evaluate(const evaluation::SlamEvaluationRequest& request,
+             const evaluation::SlamEvaluationOutputs& outputs) {
+    try {
+        request.validate();
+    } catch (const std::invalid_argument& e) {
+        throw cli::UsageError(e.what());
     }
-    return {kind, defaultName.empty() ? std::filesystem::path(spec).stem().string() : defaultName,
-            spec};
+    io::ProgressDisplay progress("reading logs", "scans");
+    const auto run = evaluation::runSlamEvaluation(
+        request, [&](double fraction, std::size_t scans) { progress.update(fraction, scans); });
+    progress.finish();
+    std::cout << evaluation::formatEvaluationTable(run.evaluation);
+    evaluation::saveSlamEvaluationOutputs(run, outputs);
+    return EXIT_SUCCESS;
 }
 
 int run(int argc, char** argv) {
@@ -117,16 +110,17 @@ int run(int argc, char** argv) {
         "derived from it, and the ATE is reported",
         true, "", "gt.txt");
     cmd.xorAdd(relationsFile, groundTruthFile);
-    TCLAP::ValueArg<double> separation(
+    cli::NumberArg<double> separation(
         "", "gt-separation",
         "With --ground-truth: shortest path separation d (m) of the multi-scale relations (d, "
         "2d, 4d, ... up to the path length); 0 keeps only consecutive pairs. Default 1 m",
-        false, 1.0, "metres", cmd);
-    TCLAP::ValueArg<double> tolerance(
+        1.0, cli::NumberRange<double>::nonNegative(1e6), "metres", cmd);
+    cli::NumberArg<double> tolerance(
         "", "stamp-tolerance",
         "Largest stamp difference (s) at which a relation or ground-truth stamp matches a "
         "trajectory pose (nearest one wins). Default 1e-5 s",
-        false, evaluation::StampedPoseLookup::kDefaultTolerance, "seconds", cmd);
+        evaluation::StampedPoseLookup::kDefaultTolerance,
+        cli::NumberRange<double>::nonNegative(3600), "seconds", cmd);
     TCLAP::ValueArg<std::string> writeRelations(
         "", "write-relations",
         "Also write the relations used (with --ground-truth: the derived ones) in .relations "
@@ -143,105 +137,29 @@ int run(int argc, char** argv) {
     if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
         return *exitCode;
 
-    // Which trajectories, under which labels, in table order.
-    if (name.isSet() && positional.getValue().size() != 1) {
-        throw std::invalid_argument("--name labels a single positional trajectory");
-    }
-    std::vector<Method> methods;
-    for (const auto& spec : odometryOf.getValue()) {
-        methods.push_back(parseMethod(Kind::LogOdometry, spec, "odometry"));
-    }
-    for (const auto& file : positional.getValue()) {
-        methods.push_back(parseMethod(Kind::TrajectoryFile, file, name.getValue()));
-    }
-    for (const auto& spec : trajectories.getValue()) {
-        methods.push_back(parseMethod(Kind::TrajectoryFile, spec, ""));
-    }
-    for (const auto& spec : icpSlamPaths.getValue()) {
-        methods.push_back(parseMethod(Kind::IcpSlamPath, spec, "icp-slam"));
-    }
-    if (methods.empty()) {
-        throw std::invalid_argument(
-            "no trajectory to score (give a file, --trajectory, --odometry-of or "
-            "--icp-slam-path; see --help)");
-    }
-    if (!icpSlamPaths.getValue().empty() && !rawlog.isSet()) {
-        throw std::invalid_argument("--icp-slam-path needs --rawlog (the rawlog icp-slam ran on)");
-    }
-    if (scanStamps.isSet() && !rawlog.isSet()) {
-        throw std::invalid_argument("--scan-stamps replaces the stamps of --rawlog's scans");
-    }
-    if (!(tolerance.getValue() >= 0)) {
-        throw std::invalid_argument("--stamp-tolerance must be >= 0");
-    }
-
-    // The reference.
-    evaluation::SlamEvaluation ev;
-    ev.stampTolerance = tolerance.getValue();
-    evaluation::PoseRelations relations;
-    std::optional<io::Trajectory2D> groundTruth;
-    if (relationsFile.isSet()) {
-        ev.referenceFile = relationsFile.getValue();
-        relations = evaluation::loadRelations(ev.referenceFile);
-    } else {
-        ev.referenceFile = groundTruthFile.getValue();
-        ev.referenceIsGroundTruth = true;
-        groundTruth = io::loadTrajectory(ev.referenceFile);
-        ev.groundTruthPoses = groundTruth->size();
-        ev.groundTruthRelations.baseSeparation = separation.getValue();
-        relations = evaluation::relationsFromGroundTruth(*groundTruth, ev.groundTruthRelations,
-                                                         &ev.relationSeparations);
-        if (relations.empty()) {
-            throw io::InputError(ev.referenceFile, "fewer than 2 poses: no relation to score");
+    using evaluation::TrajectorySource;
+    evaluation::SlamEvaluationRequest request;
+    const auto add = [&](TrajectorySource source, const std::vector<std::string>& specs,
+                         const std::string& defaultName) {
+        for (const auto& spec : specs) {
+            request.trajectories.push_back(
+                evaluation::trajectoryToScore(source, spec, defaultName));
         }
-    }
-    ev.relationCount = relations.size();
-
-    // Every method, read and scored before anything is written.
-    std::optional<std::vector<double>> stamps;
-    if (scanStamps.isSet())
-        stamps = evaluation::scanFileStamps(scanStamps.getValue());
-    std::vector<io::Trajectory2D> estimates;  // kept for the plot only
-    for (const Method& m : methods) {
-        io::Trajectory2D estimate;
-        std::string source = m.file;
-        switch (m.kind) {
-            case Kind::LogOdometry:
-                estimate = evaluation::odometryAtScans(m.file);
-                source = "odometry of " + m.file;
-                break;
-            case Kind::TrajectoryFile:
-                estimate = io::loadTrajectory(m.file);
-                break;
-            case Kind::IcpSlamPath:
-                estimate = evaluation::loadIcpSlamPath(m.file, rawlog.getValue(),
-                                                       stamps ? &*stamps : nullptr);
-                source = m.file + " + " + rawlog.getValue();
-                break;
-        }
-        if (estimate.empty())
-            throw io::InputError(m.file, "no pose in the trajectory");
-        try {
-            ev.methods.push_back(evaluation::evaluateMethod(
-                m.name, source, estimate, relations, groundTruth ? &*groundTruth : nullptr,
-                ev.stampTolerance, groundTruth ? &ev.relationSeparations : nullptr));
-        } catch (const std::invalid_argument& e) {
-            throw io::InputError(m.file, e.what());
-        }
-        if (plot.isSet())
-            estimates.push_back(std::move(estimate));
-    }
-
-    std::cout << evaluation::formatEvaluationTable(ev);
-    if (writeRelations.isSet())
-        evaluation::saveRelations(relations, writeRelations.getValue());
-    if (plot.isSet()) {
-        evaluation::saveEvaluationPlot(ev, estimates, groundTruth ? &*groundTruth : nullptr,
-                                       plot.getValue());
-    }
-    if (json.isSet())
-        evaluation::saveEvaluationJson(ev, json.getValue());
-    return EXIT_SUCCESS;
+    };
+    if (name.isSet() && positional.getValue().size() != 1)
+        throw cli::UsageError("--name labels a single positional trajectory");
+    add(TrajectorySource::LogOdometry, odometryOf.getValue(), "odometry");
+    add(TrajectorySource::TrajectoryFile, positional.getValue(), name.getValue());
+    add(TrajectorySource::TrajectoryFile, trajectories.getValue(), "");
+    add(TrajectorySource::IcpSlamPath, icpSlamPaths.getValue(), "icp-slam");
+    request.relationsFile = relationsFile.getValue();
+    request.groundTruthFile = groundTruthFile.getValue();
+    request.groundTruthSeparation = separation.getValue();
+    request.stampTolerance = tolerance.getValue();
+    request.rawlog = rawlog.getValue();
+    request.scanStamps = scanStamps.getValue();
+    request.keepEstimates = plot.isSet();
+    return evaluate(request, {writeRelations.getValue(), plot.getValue(), json.getValue()});
 }
 
 }  // namespace

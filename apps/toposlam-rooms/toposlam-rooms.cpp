@@ -2,6 +2,7 @@
 // a topological map (rooms = nodes, doors = edges) in JSON, GraphML, PNG and MRPT formats.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/cli/NumberArg.h>
 #include <toposlam/rooms/RoomSegmentationJob.h>
 
 #include <cstdlib>
@@ -33,9 +34,10 @@ const char* const kDescription =
     "  toposlam-rooms map.yaml -c config_ini/rooms.ini -o rooms\n"
     "  toposlam-rooms office_a.png --free-threshold 0.98 -o rooms   # Bormann PNG: grey < 250 is "
     "not free\n"
-    "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input or options (a missing "
-    "or corrupt map, a map without free cells, a malformed trajectory). Nothing is written "
-    "unless the segmentation succeeded.";
+    "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input (a missing or "
+    "corrupt map, a map without free cells, a malformed trajectory); 2 for bad options (an "
+    "unknown option, a value out of range). Nothing is written unless the segmentation "
+    "succeeded.";
 
 int run(int argc, char** argv) {
     TCLAP::CmdLine cmd(kDescription, ' ', "0.1");
@@ -61,34 +63,34 @@ int run(int argc, char** argv) {
                            "every other value (door width, areas, Hough; from -c when given) "
                            "kept",
                            cmd);
-    TCLAP::ValueArg<double> doorWidth("", "door-width",
-                                      "Door width w in m. Default: 1.1 (with the tolerance: "
-                                      "0.6-1.6 m)",
-                                      false, 1.1, "m", cmd);
-    TCLAP::ValueArg<double> doorTolerance("", "door-tolerance",
-                                          "Door width tolerance delta_w in m. Default: 0.5", false,
-                                          0.5, "m", cmd);
-    TCLAP::ValueArg<double> minRoomArea(
-        "", "min-room-area", "Minimum room area N_s in m^2 (both sides of a door). Default: 2",
-        false, 2.0, "m^2", cmd);
-    TCLAP::ValueArg<double> freeThreshold(
+    cli::NumberArg<double> doorWidth("", "door-width",
+                                     "Door width w in m. Default: 1.1 (with the tolerance: "
+                                     "0.6-1.6 m)",
+                                     1.1, cli::NumberRange<double>::positive(10), "m", cmd);
+    cli::NumberArg<double> doorTolerance("", "door-tolerance",
+                                         "Door width tolerance delta_w in m. Default: 0.5", 0.5,
+                                         cli::NumberRange<double>::nonNegative(10), "m", cmd);
+    cli::NumberArg<double> minRoomArea(
+        "", "min-room-area", "Minimum room area N_s in m^2 (both sides of a door). Default: 2", 2.0,
+        cli::NumberRange<double>::nonNegative(10000), "m^2", cmd);
+    cli::NumberArg<double> freeThreshold(
         "", "free-threshold",
         "A cell is free when p(free) exceeds this. Default: 0.8 (ROS map_server's free "
         "threshold; MRPT grids: unknown = 0.5). Use 0.98 for maps drawn with grey < 250 = not "
         "free (Bormann et al.'s benchmark)",
-        false, 0.8, "p", cmd);
-    TCLAP::ValueArg<double> resolution(
+        0.8, cli::NumberRange<double>::closed(0.5, 0.999), "p", cmd);
+    cli::NumberArg<double> resolution(
         "", "resolution",
         "Cell size in m of a bare input image (overrides its .yaml sidecar). "
         "Default: the sidecar's, else 0.05",
-        false, 0.05, "m", cmd);
+        0.05, cli::NumberRange<double>::positive(100), "m", cmd);
     TCLAP::ValueArg<std::string> origin(
         "", "origin",
         "World x,y (m) of the lower-left corner of a bare input image. Default: "
         "the sidecar's, else 0,0",
         false, "", "x,y", cmd);
-    TCLAP::ValueArg<int> scale("", "scale", "rooms.png pixels per grid cell, 1-8. Default: 2",
-                               false, 2, "n", cmd);
+    cli::NumberArg<int> scale("", "scale", "rooms.png pixels per grid cell. Default: 2", 2,
+                              cli::NumberRange<int>::closed(1, 8), "n", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "No summary on stdout", cmd);
     if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
         return *exitCode;
@@ -116,8 +118,6 @@ int run(int argc, char** argv) {
             job.geometry->originY = xy[1];
         }
     }
-    if (scale.getValue() < 1 || scale.getValue() > 8)
-        throw std::invalid_argument("--scale must be 1-8, not " + std::to_string(scale.getValue()));
 
     const auto result = rooms::runRoomSegmentationJob(job);
     rooms::writeRoomSegmentationFiles(result, output.getValue(), scale.getValue());

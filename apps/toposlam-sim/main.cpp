@@ -4,6 +4,7 @@
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/core/bits_math.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/cli/NumberArg.h>
 #include <toposlam/io/GridMapIO.h>
 #include <toposlam/io/InputError.h>
 #include <toposlam/io/Trajectory.h>
@@ -14,11 +15,11 @@
 #include <toposlam/simulation/TourPlanner.h>
 #include <toposlam/simulation/TrajectoryImage.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <optional>
-#include <sstream>
 
 namespace {
 
@@ -37,21 +38,11 @@ std::string defaultGroundTruthPath(const std::string& rawlog) {
     return stem + "_gt.txt";
 }
 
+/// "x,y[,yaw_deg]" (m, m, deg) -> pose (m, m, rad).
 mrpt::math::TPose2D parseStart(const std::string& text) {
-    mrpt::math::TPose2D p;
-    char c1 = 0, c2 = 0;
-    std::istringstream in(text);
-    double yawDeg = 0;
-    if (!(in >> p.x >> c1 >> p.y) || c1 != ',') {
-        throw std::invalid_argument("--start: expected x,y[,yaw_deg], got '" + text + "'");
-    }
-    if (in >> c2) {
-        if (c2 != ',' || !(in >> yawDeg)) {
-            throw std::invalid_argument("--start: expected x,y[,yaw_deg], got '" + text + "'");
-        }
-    }
-    p.phi = mrpt::DEG2RAD(yawDeg);
-    return p;
+    const bool withYaw = std::count(text.begin(), text.end(), ',') == 2;
+    const auto v = cli::parseNumberList(text, withYaw ? 3 : 2, "--start");
+    return {v[0], v[1], withYaw ? mrpt::DEG2RAD(v[2]) : 0.0};
 }
 
 int run(int argc, char** argv) {
@@ -108,29 +99,29 @@ int run(int argc, char** argv) {
         "Simulator configuration (.ini; sections [Laser] [Odometry] [People] "
         "[Tour] [Simulation]; see config_ini/sim-office.ini).",
         false, "", "file.ini", cmd);
-    TCLAP::ValueArg<unsigned> beamsArg("", "beams", "Laser beams per scan. Default: 361.", false,
-                                       361, "n", cmd);
-    TCLAP::ValueArg<double> fovArg("", "fov-deg",
-                                   "Laser field of view, first to last beam (deg). Default: 270.",
-                                   false, 270, "deg", cmd);
-    TCLAP::ValueArg<double> maxRangeArg(
-        "", "max-range", "Laser maximum range (m); farther returns are invalid. Default: 20.",
-        false, 20, "m", cmd);
-    TCLAP::ValueArg<double> rangeNoiseArg("", "range-noise",
-                                          "Laser range noise, Gaussian std (m). Default: 0.01.",
-                                          false, 0.01, "m", cmd);
-    TCLAP::ValueArg<double> bearingNoiseArg(
+    cli::NumberArg<unsigned> beamsArg("", "beams", "Laser beams per scan. Default: 361.", 361,
+                                      cli::NumberRange<unsigned>::closed(2, 100000), "n", cmd);
+    cli::NumberArg<double> fovArg("", "fov-deg",
+                                  "Laser field of view, first to last beam (deg). Default: 270.",
+                                  270, cli::NumberRange<double>::positive(360), "deg", cmd);
+    cli::NumberArg<double> maxRangeArg(
+        "", "max-range", "Laser maximum range (m); farther returns are invalid. Default: 20.", 20,
+        cli::NumberRange<double>::positive(1000), "m", cmd);
+    cli::NumberArg<double> rangeNoiseArg("", "range-noise",
+                                         "Laser range noise, Gaussian std (m). Default: 0.01.",
+                                         0.01, cli::NumberRange<double>::nonNegative(10), "m", cmd);
+    cli::NumberArg<double> bearingNoiseArg(
         "", "bearing-noise-deg", "Laser beam direction noise, Gaussian std (deg). Default: 0.05.",
-        false, 0.05, "deg", cmd);
+        0.05, cli::NumberRange<double>::nonNegative(45), "deg", cmd);
     TCLAP::SwitchArg exactOdometryArg(
         "", "exact-odometry", "Odometry without any error (default: drift as in [Odometry]).", cmd,
         false);
-    TCLAP::ValueArg<unsigned> peopleArg(
-        "", "people", "People (discs, radius 0.25 m) walking about at 0.8-1.3 m/s. Default: 0.",
-        false, 0, "n", cmd);
-    TCLAP::ValueArg<unsigned> seedArg(
-        "", "seed", "Random seed; the same inputs and seed give the same log. Default: 1.", false,
-        1, "n", cmd);
+    cli::NumberArg<unsigned> peopleArg(
+        "", "people", "People (discs, radius 0.25 m) walking about at 0.8-1.3 m/s. Default: 0.", 0,
+        cli::NumberRange<unsigned>::nonNegative(1000), "n", cmd);
+    cli::NumberArg<unsigned> seedArg(
+        "", "seed", "Random seed; the same inputs and seed give the same log. Default: 1.", 1,
+        cli::NumberRange<unsigned>::nonNegative(2147483647), "n", cmd);
     TCLAP::ValueArg<std::string> startArg(
         "", "start",
         "Tour start pose x,y[,yaw_deg] (m, m, deg; map frame). Default: the centre "
@@ -139,9 +130,9 @@ int run(int argc, char** argv) {
     TCLAP::ValueArg<std::string> plotArg(
         "", "plot", "Also write a PNG of the map with the trajectory (and the tour's areas).",
         false, "", "file.png", cmd);
-    TCLAP::ValueArg<double> resolutionArg(
-        "", "resolution", "Image maps without metadata: metres per pixel. Default: 0.05.", false,
-        0.05, "m", cmd);
+    cli::NumberArg<double> resolutionArg(
+        "", "resolution", "Image maps without metadata: metres per pixel. Default: 0.05.", 0.05,
+        cli::NumberRange<double>::positive(100), "m", cmd);
     TCLAP::ValueArg<std::string> originArg(
         "", "origin",
         "Image maps without metadata: world x,y of the lower-left corner (m). "
@@ -187,7 +178,7 @@ int run(int argc, char** argv) {
 
     if (makeOfficeArg.isSet()) {
         if (mapArg.isSet() || posesArg.isSet() || tourArg.isSet() || outArg.isSet()) {
-            throw std::invalid_argument("--make-office takes no map, --poses, --tour or -o");
+            throw cli::UsageError("--make-office takes no map, --poses, --tour or -o");
         }
         const OfficeDataset d = writeOfficeDataset(makeOfficeArg.getValue(), config, verbose);
         if (verbose) {
@@ -200,12 +191,12 @@ int run(int argc, char** argv) {
     }
 
     if (!mapArg.isSet())
-        throw std::invalid_argument("no map given (see toposlam-sim --help)");
+        throw cli::UsageError("no map given");
     if (posesArg.isSet() == tourArg.isSet()) {
-        throw std::invalid_argument("give exactly one of --poses <file> and --tour");
+        throw cli::UsageError("give exactly one of --poses <file> and --tour");
     }
     if (!outArg.isSet())
-        throw std::invalid_argument("no output rawlog given (-o <file>)");
+        throw cli::UsageError("no output rawlog given (-o <file>)");
     const std::string mapPath = mapArg.getValue();
     const std::string outPath = outArg.getValue();
     const std::string gtPath = gtArg.isSet() ? gtArg.getValue() : defaultGroundTruthPath(outPath);
@@ -215,9 +206,9 @@ int run(int argc, char** argv) {
         geometry = io::GridMapGeometry{};
         geometry->resolution = resolutionArg.getValue();
         if (originArg.isSet()) {
-            const auto o = parseStart(originArg.getValue() + ",0");
-            geometry->originX = o.x;
-            geometry->originY = o.y;
+            const auto o = cli::parseNumberList(originArg.getValue(), 2, "--origin");
+            geometry->originX = o[0];
+            geometry->originY = o[1];
         }
     }
     const auto map = io::loadGridMap(mapPath, geometry);

@@ -1,6 +1,14 @@
 // toposlam-annotate-features end to end, and MRPT's own rawlog-edit reading its output through
 // the TopoSLAM plugin (and truncating it without: the check that this test can fail).
 #include <gtest/gtest.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationBearingRange.h>
+#include <mrpt/obs/CRawlog.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/serialization/CArchive.h>
+#include <toposlam/features/CObservationLaserFeatures.h>
 #include <toposlam/io/RawlogWriter.h>
 
 #include <filesystem>
@@ -125,4 +133,67 @@ TEST(AnnotateFeaturesApp, BadInputIsAnErrorAndLeavesNoOutput) {
     EXPECT_FALSE(std::filesystem::exists(out));
     run = test::runApp("toposlam-annotate-features", "x -o y -e nonsense");
     EXPECT_NE(run.exitCode, 0);
+}
+
+// --format sf: what kf-slam and rbpf-slam read. Every entry is an (actions, sensory frame)
+// pair; the action holds the odometry increment (composing them gives back the odometry of
+// the input, relative to the first scan) and the frame the scan, its features and its
+// corners (always, even none).
+TEST(AnnotateFeaturesApp, SensoryFramesFormatForKfSlam) {
+    test::TempDir dir;
+    const std::string in = writeInputLog(dir), out = dir.file("sf.rawlog");
+    const auto run = test::runApp("toposlam-annotate-features",
+                                  "'" + in + "' -o '" + out + "' --format sf -e corners");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("sf format, 12 objects"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("corner noise"), std::string::npos) << run.output;
+
+    mrpt::io::CFileGZInputStream file(out);
+    auto archive = mrpt::serialization::archiveFrom(file);
+    mrpt::obs::CActionCollection::Ptr actions;
+    mrpt::obs::CSensoryFrame::Ptr frame;
+    size_t entry = 0;
+    int frames = 0;
+    mrpt::poses::CPose2D odometry;
+    while (mrpt::obs::CRawlog::readActionObservationPair(archive, actions, frame, entry)) {
+        const auto move = actions->getBestMovementEstimation();
+        ASSERT_TRUE(move) << "frame " << frames;
+        odometry = odometry + move->poseChange->getMeanVal();
+        const auto scan = frame->getObservationByClass<mrpt::obs::CObservation2DRangeScan>();
+        const auto f = frame->getObservationByClass<features::CObservationLaserFeatures>();
+        const auto corners = frame->getObservationByClass<mrpt::obs::CObservationBearingRange>();
+        ASSERT_TRUE(scan && f && corners) << "frame " << frames;
+        EXPECT_EQ(f->sensorLabel, "LASER_FEATURES");
+        EXPECT_EQ(corners->sensorLabel, "LASER_CORNERS");
+        EXPECT_EQ(corners->sensedData.size(), f->features.corners.size());
+        EXPECT_EQ(f->timestamp, scan->timestamp);
+        // The input's odometry is pose i = (-1 + 0.3 i, 0.2 i, 0.1 i); relative to pose 0:
+        const mrpt::poses::CPose2D expected =
+            mrpt::poses::CPose2D(-1 + 0.3 * frames, 0.2 * frames, 0.1 * frames) -
+            mrpt::poses::CPose2D(-1, 0, 0);
+        EXPECT_NEAR((odometry - expected).norm(), 0.0, 1e-6) << "frame " << frames;
+        ++frames;
+    }
+    EXPECT_EQ(frames, kScans);
+}
+
+// Bad values of the new options: exit status 2, a message naming the option, no output.
+TEST(AnnotateFeaturesApp, BadFormatOrOdometryNoiseIsAUsageError) {
+    test::TempDir dir;
+    const std::string in = writeInputLog(dir), out = dir.file("out.rawlog");
+    for (const std::string args :
+         {"--format xyz", "--format ''", "--odometry-noise -0.1,0.001,1,0.05,0.01,0.2",
+          "--odometry-noise 0.01,0.001,1,0.05,0,0.2", "--odometry-noise nan,0.001,1,0.05,0.01,0.2",
+          "--odometry-noise 1e300,0.001,1,0.05,0.01,0.2", "--odometry-noise a,b,c,d,e,f",
+          "--odometry-noise 0.01,0.001",
+          "--format sf --odometry-noise 0.01,0.001,1,0.05,0.01,inf"}) {
+        const auto run =
+            test::runApp("toposlam-annotate-features", "'" + in + "' -o '" + out + "' " + args);
+        EXPECT_EQ(run.exitCode, 2) << args << ": " << run.output;
+        const std::string option =
+            args.find("noise") != std::string::npos ? "--odometry-noise" : "--format";
+        EXPECT_NE(run.output.find("error: " + option), std::string::npos)
+            << args << ": " << run.output;
+        EXPECT_FALSE(std::filesystem::exists(out)) << args;
+    }
 }

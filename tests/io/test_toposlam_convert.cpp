@@ -151,16 +151,16 @@ TEST(ToposlamConvert, BadLogsFailCleanly) {
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.output.find("no laser scans labelled 'RLASER'"), std::string::npos) << r.output;
 
-    // Bad options.
+    // Bad options: bad usage, exit status 2.
     r = runApp("toposlam-convert", dir.file("ok.clf") + " --format xyz -o " + dir.file("o.rawlog"));
-    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.output.find("error: "), std::string::npos) << r.output;
     r = runApp("toposlam-convert", dir.file("ok.clf"));
-    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.output.find("nothing to do"), std::string::npos) << r.output;
     r = runApp("toposlam-convert",
                dir.file("ok.clf") + " --laser-offset 1,2 -o " + dir.file("o.rawlog"));
-    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.output.find("--laser-offset"), std::string::npos) << r.output;
 
     for (const auto& e : fs::directory_iterator(dir.path())) {

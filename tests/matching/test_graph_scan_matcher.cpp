@@ -2,6 +2,7 @@
 // geometry (SyntheticScans.h): exact recovery, ambiguity, feature-poor scans, order
 // independence, guided matching.
 #include <gtest/gtest.h>
+#include <mrpt/math/wrap2pi.h>
 #include <toposlam/matching/GraphScanMatcher.h>
 
 #include <algorithm>
@@ -17,7 +18,7 @@ using toposlam::test::SyntheticScan;
 
 namespace {
 double angleError(const CPose2D& a, const CPose2D& b) {
-    return std::abs(wrapAngle(a.phi() - b.phi()));
+    return std::abs(mrpt::math::wrapToPi(a.phi() - b.phi()));
 }
 double translationError(const CPose2D& a, const CPose2D& b) {
     return std::hypot(a.x() - b.x(), a.y() - b.y());

@@ -1,5 +1,6 @@
 // Unit tests of the matcher's steps on hand-made geometry.
 #include <gtest/gtest.h>
+#include <mrpt/math/wrap2pi.h>
 #include <toposlam/matching/AlignmentScorer.h>
 #include <toposlam/matching/AttributedGraph.h>
 #include <toposlam/matching/GraphScanMatcher.h>
@@ -56,9 +57,9 @@ TEST(AttributedGraph, EdgeAttributesAreRotationInvariantAndAntisymmetric) {
                 continue;
             for (std::size_t a = 0; a < AttributedGraph::kEdgeAttributes; ++a) {
                 const double d = g.edge(i, j)[a] - h.edge(i, j)[a];
-                EXPECT_NEAR(a == 0 ? wrapAngle(d) : d, 0.0, 1e-9);
+                EXPECT_NEAR(a == 0 ? mrpt::math::wrapToPi(d) : d, 0.0, 1e-9);
             }
-            EXPECT_NEAR(wrapAngle(g.edge(i, j)[0] + g.edge(j, i)[0]), 0.0, 1e-12);
+            EXPECT_NEAR(mrpt::math::wrapToPi(g.edge(i, j)[0] + g.edge(j, i)[0]), 0.0, 1e-12);
             EXPECT_NEAR(g.edge(i, j)[1], -g.edge(j, i)[1], 1e-12);
         }
     }
@@ -89,7 +90,7 @@ TEST(RigidTransform2D, ExactFromPointsAndLines) {
     const TransformEstimate fp = rigidTransformFromPoints(points);
     ASSERT_TRUE(fp.valid);
     EXPECT_NEAR((fp.pose - truth).norm(), 0.0, 1e-12);
-    EXPECT_NEAR(wrapAngle(fp.pose.phi() - truth.phi()), 0.0, 1e-12);
+    EXPECT_NEAR(mrpt::math::wrapToPi(fp.pose.phi() - truth.phi()), 0.0, 1e-12);
 
     // Lines: midpoints deliberately far apart along each line (occlusion): still exact.
     const auto cur = someSegments();
@@ -110,7 +111,7 @@ TEST(RigidTransform2D, ExactFromPointsAndLines) {
     EXPECT_GT(fl.conditioning, 0.9) << "two perpendicular lines fix the translation";
     EXPECT_NEAR(fl.pose.x(), truth.x(), 1e-9);
     EXPECT_NEAR(fl.pose.y(), truth.y(), 1e-9);
-    EXPECT_NEAR(wrapAngle(fl.pose.phi() - truth.phi()), 0.0, 1e-12);
+    EXPECT_NEAR(mrpt::math::wrapToPi(fl.pose.phi() - truth.phi()), 0.0, 1e-12);
 
     // Parallel lines only: reported as degenerate.
     lines.pop_back();
@@ -220,7 +221,7 @@ TEST(HoughPoseSearch, StrongCandidatesContainTheTrueMotion) {
         for (std::size_t k = 0; k < candidates.size() && found == candidates.size(); ++k) {
             const CPose2D& c = candidates[k].pose;
             if (std::hypot(c.x() - motion.x(), c.y() - motion.y()) < 0.1 &&
-                std::abs(wrapAngle(c.phi() - motion.phi())) < 0.02)
+                std::abs(mrpt::math::wrapToPi(c.phi() - motion.phi())) < 0.02)
                 found = k;
         }
         EXPECT_LT(found, GraphMatcherOptions().houghRefineTop);

@@ -7,6 +7,7 @@
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/maps/CMultiMetricMap.h>
 #include <mrpt/maps/TMetricMapInitializer.h>
+#include <mrpt/math/wrap2pi.h>
 #include <mrpt/poses/CPosePDFGaussian.h>
 #include <mrpt/serialization/CArchive.h>
 #include <toposlam/matching/CGraphMatcherAlignment.h>
@@ -37,7 +38,7 @@ CScanFeaturesMap mapOf(const CPose2D& robotInWorld, const CPose2D& insertedAt) {
 }
 
 double angleError(double a, double b) {
-    return std::abs(wrapAngle(a - b));
+    return std::abs(mrpt::math::wrapToPi(a - b));
 }
 }  // namespace
 

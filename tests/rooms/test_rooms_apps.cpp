@@ -9,6 +9,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <utility>
+#include <vector>
 
 using toposlam::test::runApp;
 using toposlam::test::TempDir;
@@ -75,8 +77,10 @@ TEST(ToposlamRooms, BadInputGivesAClearErrorAndNoOutput) {
 
     r = runApp("toposlam-rooms",
                "'" + dir.file("office.png") + "' --door-width -1 -o '" + dir.file("out") + "'");
-    EXPECT_EQ(r.exitCode, 1);
-    EXPECT_NE(r.output.find("doorWidth"), std::string::npos) << r.output;
+    EXPECT_EQ(r.exitCode, 2) << "an out-of-range option is bad usage";
+    EXPECT_NE(r.output.find("error: --door-width: '-1' is not a number in (0, 10]"),
+              std::string::npos)
+        << r.output;
 }
 
 TEST(ToposlamBenchRooms, RunsOneMapAndWritesJson) {
@@ -132,11 +136,16 @@ TEST(ToposlamBenchRooms, RunsGeneratedPlansAtTwoAnglesAndWritesThem) {
 
 TEST(ToposlamBenchRooms, RejectsBadOptions) {
     const TempDir dir;
-    for (const char* bad :
-         {"--sets bogus", "-r 0", "--rotations 1e999", "--gen-seeds x", "-c missing.ini"}) {
-        const auto r =
-            runApp("toposlam-bench-rooms", std::string(bad) + " -o '" + dir.file("b.json") + "'");
-        EXPECT_EQ(r.exitCode, 1) << bad << "\n" << r.output;
+    // Bad usage: exit 2; a missing file: exit 1; nothing written either way.
+    for (const auto& [bad, status] :
+         std::vector<std::pair<std::string, int>>{{"--sets bogus", 2},
+                                                  {"-r 0", 2},
+                                                  {"--rotations 1e999", 2},
+                                                  {"--rotations 400", 2},
+                                                  {"--gen-seeds x", 2},
+                                                  {"-c missing.ini", 1}}) {
+        const auto r = runApp("toposlam-bench-rooms", bad + " -o '" + dir.file("b.json") + "'");
+        EXPECT_EQ(r.exitCode, status) << bad << "\n" << r.output;
         EXPECT_NE(r.output.find("error: "), std::string::npos) << bad << "\n" << r.output;
         EXPECT_FALSE(std::filesystem::exists(dir.file("b.json"))) << bad;
     }

@@ -48,6 +48,17 @@ void expectSameGraph(const TopologicalMap& a, const TopologicalMap& b) {
     }
 }
 
+// What is wrong with `text` as rooms JSON, as the InputError says it.
+std::string jsonProblem(const std::string& text) {
+    try {
+        topologicalMapFromJson(text, "x.json");
+    } catch (const toposlam::io::InputError& e) {
+        EXPECT_EQ(e.file(), "x.json");
+        return e.problem();
+    }
+    return "no error";
+}
+
 }  // namespace
 
 TEST(TopologicalMapJson, RoundTripsEverything) {
@@ -66,38 +77,71 @@ TEST(TopologicalMapJson, RoundTripsEverything) {
 
 TEST(TopologicalMapJson, BadFilesAreInputErrorsNamingTheProblem) {
     const std::string good = topologicalMapToJson(segmentedOffice());
-    auto error = [](const std::string& text) {
-        try {
-            topologicalMapFromJson(text, "x.json");
-        } catch (const toposlam::io::InputError& e) {
-            EXPECT_EQ(e.file(), "x.json");
-            return std::string(e.problem());
-        }
-        return std::string("no error");
-    };
-    EXPECT_NE(error(good.substr(0, good.size() / 2)).find("JSON syntax error"), std::string::npos);
-    EXPECT_NE(error("{\"format\": \"other\"}").find("format"), std::string::npos);
-    const auto at = good.find("\"labels\"");
-    EXPECT_NE(error(good.substr(0, at) + "\"labels\": {\"encoding\": \"runs\", \"runs\": [0, 5]}}")
-                  .find("cover 5 cells"),
+    EXPECT_NE(jsonProblem(good.substr(0, good.size() / 2)).find("JSON syntax error"),
               std::string::npos);
+    EXPECT_NE(jsonProblem("{\"format\": \"other\"}").find("format"), std::string::npos);
+    const auto at = good.find("\"labels\"");
+    EXPECT_NE(
+        jsonProblem(good.substr(0, at) + "\"labels\": {\"encoding\": \"runs\", \"runs\": [0, 5]}}")
+            .find("cover 5 cells"),
+        std::string::npos);
     EXPECT_THROW(loadTopologicalMap("/nonexistent/rooms.json"), toposlam::io::InputError);
 }
 
-TEST(TopologicalMapGraphML, RoundTripsTheGraph) {
+TEST(TopologicalMapJson, HostileInputEndsAsAnInputError) {
+    // 32 768 nested arrays: refused at a bounded depth, no stack overflow.
+    EXPECT_NE(jsonProblem(std::string(32768, '[')).find("nested deeper than"), std::string::npos);
+    EXPECT_NE(jsonProblem("{\"format\": \"\\uZZZZ\"}").find("JSON syntax error at line 1"),
+              std::string::npos);
+    EXPECT_NE(jsonProblem("{\"format\": \"toposlam-topological-map\", \"version\": 1e999}")
+                  .find("number overflow"),
+              std::string::npos);
+}
+
+TEST(TopologicalMapGraphML, RoundTripsGraphAndGeometry) {
     const TopologicalMap map = segmentedOffice();
     const std::string xml = topologicalMapToGraphML(map);
-    EXPECT_NE(xml.find("corridor &quot;A&quot; &amp; &lt;co&gt;"), std::string::npos);
+    EXPECT_NE(xml.find("corridor \"A\" &amp; &lt;co&gt;"), std::string::npos);
     const TopologicalMap back = topologicalMapFromGraphML(xml, "x.graphml");
     expectSameGraph(map, back);
-    EXPECT_TRUE(back.labels.empty());
-    EXPECT_THROW(topologicalMapFromGraphML("<graphml><node id=\"a\"/></graphml>", "x.graphml"),
-                 toposlam::io::InputError);  // no <graph>
-    EXPECT_THROW(
-        topologicalMapFromGraphML(
-            "<graphml><graph><node id=\"a\"/><edge source=\"a\" target=\"b\"/></graph></graphml>",
-            "x.graphml"),
-        toposlam::io::InputError);  // edge to an unknown node
+    // The geometry rides along, so a GraphML map plans like a JSON one.
+    EXPECT_EQ(back.frame.cols, map.frame.cols);
+    EXPECT_EQ(back.frame.rows, map.frame.rows);
+    EXPECT_DOUBLE_EQ(back.frame.resolution, map.frame.resolution);
+    EXPECT_DOUBLE_EQ(back.frame.xMin, map.frame.xMin);
+    ASSERT_EQ(back.labels.size(), map.labels.size());
+    EXPECT_EQ(cv::countNonZero(back.labels != map.labels), 0);
+    EXPECT_EQ(back.rooms[2].outline.size(), map.rooms[2].outline.size());
+    EXPECT_DOUBLE_EQ(back.rooms[2].outline[1].y, map.rooms[2].outline[1].y);
+}
+
+TEST(TopologicalMapGraphML, ReadsOtherWritersGraphs) {
+    // Character references beyond one byte decode to UTF-8; attributes by name, no geometry.
+    const TopologicalMap m = topologicalMapFromGraphML(
+        "<graphml><key id=\"n\" for=\"node\" attr.name=\"name\"/><graph>"
+        "<node id=\"a\"><data key=\"n\">caf&#233; &#x4E2D;</data></node><node id=\"b\"/>"
+        "<edge source=\"a\" target=\"b\"/></graph></graphml>",
+        "x.graphml");
+    ASSERT_EQ(m.rooms.size(), 2u);
+    EXPECT_EQ(m.rooms[0].name, "caf\xC3\xA9 \xE4\xB8\xAD");
+    ASSERT_EQ(m.doors.size(), 1u);
+    EXPECT_EQ(m.doors[0].roomB, 2);
+    EXPECT_TRUE(m.labels.empty());
+    EXPECT_EQ(m.frame.cols, 0);
+}
+
+TEST(TopologicalMapGraphML, BadFilesAreInputErrors) {
+    for (const char* text : {
+             "<graphml><node id=\"a\"/></graphml>",  // no <graph>
+             "<graphml><graph><node id=\"a\"/><edge source=\"a\" target=\"b\"/></graph>"
+             "</graphml>",                                         // edge to an unknown node
+             "<graphml><graph><node id=\"a\"></graph></graphml>",  // not XML
+             "<graphml><key id=\"c\" for=\"graph\" attr.name=\"cols\"/><graph>"
+             "<data key=\"c\">-3</data></graph></graphml>",  // bad frame
+         }) {
+        EXPECT_THROW(topologicalMapFromGraphML(text, "x.graphml"), toposlam::io::InputError)
+            << text;
+    }
 }
 
 TEST(CTopologicalMap, SerializesAndIsRegistered) {

@@ -1,6 +1,8 @@
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/cli/UsageError.h>
 
-#include <cmath>
+#include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <iostream>
 #include <memory>
@@ -18,12 +20,53 @@ class ErrorReportingOutput : public TCLAP::StdOutput {
     bool failed = false;
     void failure(TCLAP::CmdLineInterface&, TCLAP::ArgException& e) override {
         failed = true;
-        // TCLAP names no argument (argId " ") when required ones are missing.
-        const std::string id = e.argId();
-        const bool named = id.find_first_not_of(' ') != std::string::npos;
-        std::cerr << "error: " << (named ? id + ": " : "") << e.error() << " (see --help)\n";
+        std::cerr << "error: " << optionName(e) << e.error() << " (see --help)\n";
+    }
+
+  private:
+    // "--beams: " from TCLAP's "Argument: (--beams)", "Argument: -o (--out)" or "Argument:
+    // --bogus"; nothing when TCLAP names no argument (" ", e.g. required ones are missing).
+    static std::string optionName(const TCLAP::ArgException& e) {
+        std::string id = e.argId();
+        const std::string prefix = "Argument: ";
+        if (id.compare(0, prefix.size(), prefix) == 0)
+            id.erase(0, prefix.size());
+        if (const auto open = id.find('('); open != std::string::npos && id.back() == ')')
+            id = id.substr(open + 1, id.size() - open - 2);
+        return id.find_first_not_of(' ') == std::string::npos ? std::string() : id + ": ";
     }
 };
+
+bool looksLikeOption(const std::string& s) {
+    return s.size() >= 2 && s[0] == '-' &&
+           (s[1] == '-' || std::isalpha(static_cast<unsigned char>(s[1])));
+}
+
+// TCLAP hands an unknown "--option" to a positional argument as its value when the app has one
+// (toposlam-eval-slam's trajectories, toposlam-bench-planning's maps): find such a value among
+// the words before "--" (after it, everything is positional on purpose).
+std::optional<std::string> optionTakenAsPositional(TCLAP::CmdLine& cmd, int argc, char** argv) {
+    std::vector<std::string> words;
+    for (int i = 1; i < argc && std::string(argv[i]) != "--"; ++i)
+        words.emplace_back(argv[i]);
+    const auto given = [&](const std::string& v) {
+        return looksLikeOption(v) && std::find(words.begin(), words.end(), v) != words.end();
+    };
+    for (TCLAP::Arg* arg : cmd.getArgList()) {
+        std::vector<std::string> values;
+        if (auto* one = dynamic_cast<TCLAP::UnlabeledValueArg<std::string>*>(arg)) {
+            if (one->isSet())
+                values.push_back(one->getValue());
+        } else if (auto* many = dynamic_cast<TCLAP::UnlabeledMultiArg<std::string>*>(arg)) {
+            values = many->getValue();
+        }
+        for (const std::string& v : values) {
+            if (given(v))
+                return v;
+        }
+    }
+    return std::nullopt;
+}
 
 }  // namespace
 
@@ -34,27 +77,31 @@ std::optional<int> parseCommandLine(TCLAP::CmdLine& cmd, int argc, char** argv) 
     // MRPT's TCLAP does not free its default output object once setOutput() replaces it.
     const std::unique_ptr<TCLAP::CmdLineOutput> defaultOutput(cmd.getOutput());
     cmd.setOutput(&output);
-    if (cmd.parse(argc, argv))
-        return std::nullopt;
-    return output.failed ? 1 : 0;
+    if (!cmd.parse(argc, argv))
+        return output.failed ? kBadUsage : kSuccess;
+    if (const auto unknown = optionTakenAsPositional(cmd, argc, argv)) {
+        std::cerr << "error: " << *unknown << ": unknown option (see --help)\n";
+        return kBadUsage;
+    }
+    return std::nullopt;
 }
 
 std::vector<double> parseNumberList(const std::string& text, std::size_t count,
-                                    const std::string& option) {
+                                    const std::string& option, const NumberRange<double>& range) {
     std::vector<double> values;
     std::stringstream ss(text);
     std::string item;
     while (std::getline(ss, item, ',')) {
-        char* end = nullptr;
-        const double v = std::strtod(item.c_str(), &end);
-        if (item.empty() || *end != '\0' || !std::isfinite(v)) {
-            throw std::invalid_argument(option + ": '" + text + "' is not a list of numbers");
+        const auto v = range.parse(item);
+        if (!v) {
+            throw UsageError(option + ": '" + text + "' is not a list of numbers in " +
+                             range.interval());
         }
-        values.push_back(v);
+        values.push_back(*v);
     }
     if (values.size() != count) {
-        throw std::invalid_argument(option + ": expected " + std::to_string(count) +
-                                    " comma-separated numbers, got '" + text + "'");
+        throw UsageError(option + ": expected " + std::to_string(count) +
+                         " comma-separated numbers, got '" + text + "'");
     }
     return values;
 }
@@ -62,12 +109,16 @@ std::vector<double> parseNumberList(const std::string& text, std::size_t count,
 int runReportingErrors(int (*run)(int, char**), int argc, char** argv) {
     try {
         return run(argc, argv);
+    } catch (const UsageError& e) {
+        std::cerr << "error: " << e.what() << " (see --help)\n";
+        return kBadUsage;
     } catch (const TCLAP::ArgException& e) {
         std::cerr << "error: " << e.argId() << ": " << e.error() << "\n";
+        return kBadUsage;
     } catch (const std::exception& e) {
         std::cerr << "error: " << e.what() << "\n";
     }
-    return EXIT_FAILURE;
+    return kBadInput;
 }
 
 }  // namespace toposlam::cli

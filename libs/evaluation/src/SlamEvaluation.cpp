@@ -1,11 +1,11 @@
 #include <toposlam/evaluation/SlamEvaluation.h>
 #include <toposlam/evaluation/TrajectoryPlot.h>
-#include <toposlam/io/AtomicFile.h>
+#include <toposlam/io/JsonFile.h>
+#include <toposlam/io/TextFile.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -155,118 +155,84 @@ std::string formatEvaluationTable(const SlamEvaluation& ev) {
 
 namespace {
 
-std::string jsonString(const std::string& s) {
-    std::string out = "\"";
-    for (const unsigned char c : s) {
-        switch (c) {
-            case '"':
-                out += "\\\"";
-                break;
-            case '\\':
-                out += "\\\\";
-                break;
-            case '\n':
-                out += "\\n";
-                break;
-            case '\t':
-                out += "\\t";
-                break;
-            case '\r':
-                out += "\\r";
-                break;
-            default:
-                if (c < 0x20) {
-                    char buf[8];
-                    std::snprintf(buf, sizeof buf, "\\u%04x", c);
-                    out += buf;
-                } else {
-                    out += static_cast<char>(c);
-                }
-        }
+double jsonNumber(double v) {
+    return io::roundSignificant(v, 10);
+}
+
+io::Json jsonStats(const ErrorStatistics& s) {
+    return {{"count", s.count},
+            {"mean", jsonNumber(s.mean)},
+            {"std", jsonNumber(s.std)},
+            {"max", jsonNumber(s.max)},
+            {"rms", jsonNumber(s.rms)}};
+}
+
+io::Json referenceJson(const SlamEvaluation& ev) {
+    io::Json reference = {{"file", ev.referenceFile},
+                          {"kind", ev.referenceIsGroundTruth ? "ground_truth" : "relations"},
+                          {"relations", ev.relationCount}};
+    if (ev.referenceIsGroundTruth) {
+        reference["ground_truth_poses"] = ev.groundTruthPoses;
+        reference["relation_scheme"] = {
+            {"consecutive", ev.groundTruthRelations.consecutive},
+            {"base_separation_m", jsonNumber(ev.groundTruthRelations.baseSeparation)}};
     }
-    return out + "\"";
+    return reference;
 }
 
-std::string jsonNumber(double v) {
-    if (!std::isfinite(v))
-        return "null";
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return buf;
-}
-
-std::string jsonStats(const ErrorStatistics& s) {
-    return "{\"count\": " + std::to_string(s.count) + ", \"mean\": " + jsonNumber(s.mean) +
-           ", \"std\": " + jsonNumber(s.std) + ", \"max\": " + jsonNumber(s.max) +
-           ", \"rms\": " + jsonNumber(s.rms) + "}";
+io::Json methodJson(const MethodEvaluation& m) {
+    const RelativePoseErrorResult& r = m.relative;
+    io::Json out = {{"name", m.name},
+                    {"source", m.source},
+                    {"poses", m.poses},
+                    {"relations_total", r.totalRelations},
+                    {"relations_matched", r.matchedRelations},
+                    {"relations_unmatched", r.unmatchedRelations()},
+                    {"translation_m", jsonStats(r.translation)},
+                    {"rotation_deg", jsonStats(r.rotation)},
+                    {"translation_squared_m2", jsonStats(r.translationSquared)},
+                    {"rotation_squared_deg2", jsonStats(r.rotationSquared)}};
+    if (m.absolute) {
+        const AbsoluteTrajectoryErrorResult& a = *m.absolute;
+        out["ate"] = {{"matched_poses", a.matchedPoses},
+                      {"alignment",
+                       {{"x", jsonNumber(a.alignment.x)},
+                        {"y", jsonNumber(a.alignment.y)},
+                        {"phi_rad", jsonNumber(a.alignment.phi)}}},
+                      {"position_m", jsonStats(a.position)},
+                      {"heading_deg", jsonStats(a.heading)}};
+    }
+    if (!m.bySeparation.empty()) {
+        io::Json scales = io::Json::array();
+        for (const SeparationErrors& s : m.bySeparation) {
+            scales.push_back({{"separation_m", jsonNumber(s.separation)},
+                              {"relations_total", s.totalRelations},
+                              {"translation_m", jsonStats(s.translation)},
+                              {"rotation_deg", jsonStats(s.rotation)}});
+        }
+        out["by_separation"] = scales;
+    }
+    return out;
 }
 
 }  // namespace
 
 std::string formatEvaluationJson(const SlamEvaluation& ev) {
-    std::ostringstream out;
-    out << "{\n  \"tool\": \"toposlam-eval-slam\",\n"
-        << "  \"metric\": \"Kuemmerle et al. 2009 relation error e = inv(delta_gt) (+) "
-           "delta_est, delta_est = inv(x_t1) (+) x_t2; std is the sample std (n-1)\",\n"
-        << "  \"reference\": {\"file\": " << jsonString(ev.referenceFile)
-        << ", \"kind\": " << (ev.referenceIsGroundTruth ? "\"ground_truth\"" : "\"relations\"")
-        << ", \"relations\": " << ev.relationCount;
-    if (ev.referenceIsGroundTruth) {
-        out << ", \"ground_truth_poses\": " << ev.groundTruthPoses
-            << ", \"relation_scheme\": {\"consecutive\": "
-            << (ev.groundTruthRelations.consecutive ? "true" : "false")
-            << ", \"base_separation_m\": " << jsonNumber(ev.groundTruthRelations.baseSeparation)
-            << "}";
-    }
-    out << "},\n  \"stamp_tolerance_s\": " << jsonNumber(ev.stampTolerance)
-        << ",\n  \"methods\": [";
-    for (std::size_t i = 0; i < ev.methods.size(); ++i) {
-        const MethodEvaluation& m = ev.methods[i];
-        const RelativePoseErrorResult& r = m.relative;
-        out << (i ? "," : "") << "\n    {\"name\": " << jsonString(m.name)
-            << ", \"source\": " << jsonString(m.source) << ", \"poses\": " << m.poses
-            << ",\n     \"relations_total\": " << r.totalRelations
-            << ", \"relations_matched\": " << r.matchedRelations
-            << ", \"relations_unmatched\": " << r.unmatchedRelations()
-            << ",\n     \"translation_m\": " << jsonStats(r.translation)
-            << ",\n     \"rotation_deg\": " << jsonStats(r.rotation)
-            << ",\n     \"translation_squared_m2\": " << jsonStats(r.translationSquared)
-            << ",\n     \"rotation_squared_deg2\": " << jsonStats(r.rotationSquared);
-        if (m.absolute) {
-            const AbsoluteTrajectoryErrorResult& a = *m.absolute;
-            out << ",\n     \"ate\": {\"matched_poses\": " << a.matchedPoses
-                << ", \"alignment\": {\"x\": " << jsonNumber(a.alignment.x)
-                << ", \"y\": " << jsonNumber(a.alignment.y)
-                << ", \"phi_rad\": " << jsonNumber(a.alignment.phi) << "}"
-                << ",\n             \"position_m\": " << jsonStats(a.position)
-                << ",\n             \"heading_deg\": " << jsonStats(a.heading) << "}";
-        }
-        if (!m.bySeparation.empty()) {
-            out << ",\n     \"by_separation\": [";
-            for (std::size_t k = 0; k < m.bySeparation.size(); ++k) {
-                const SeparationErrors& s = m.bySeparation[k];
-                out << (k ? "," : "") << "\n       {\"separation_m\": " << jsonNumber(s.separation)
-                    << ", \"relations_total\": " << s.totalRelations
-                    << ", \"translation_m\": " << jsonStats(s.translation)
-                    << ", \"rotation_deg\": " << jsonStats(s.rotation) << "}";
-            }
-            out << "]";
-        }
-        out << "}";
-    }
-    out << "\n  ]\n}\n";
-    return out.str();
+    io::Json methods = io::Json::array();
+    for (const MethodEvaluation& m : ev.methods)
+        methods.push_back(methodJson(m));
+    return io::formatJson(
+        {{"tool", "toposlam-eval-slam"},
+         {"metric",
+          "Kuemmerle et al. 2009 relation error e = inv(delta_gt) (+) delta_est, delta_est = "
+          "inv(x_t1) (+) x_t2; std is the sample std (n-1)"},
+         {"reference", referenceJson(ev)},
+         {"stamp_tolerance_s", jsonNumber(ev.stampTolerance)},
+         {"methods", methods}});
 }
 
 void saveEvaluationJson(const SlamEvaluation& evaluation, const std::string& path) {
-    const std::string json = formatEvaluationJson(evaluation);
-    io::writeFileAtomically(path, [&](const std::string& tmp) {
-        std::ofstream f(tmp, std::ios::binary);
-        f << json;
-        f.close();
-        if (!f)
-            throw std::runtime_error(path + ": cannot write the JSON file");
-    });
+    io::saveTextFile(formatEvaluationJson(evaluation), path);
 }
 
 // ---- plot ---------------------------------------------------------------------------------

@@ -3,6 +3,7 @@
 #include <mrpt/rtti/CObject.h>
 #include <mrpt/serialization/CArchive.h>
 #include <toposlam/features/CObservationLaserFeatures.h>
+#include <toposlam/features/ScanFeaturesArchive.h>
 
 #include <cmath>
 #include <ostream>
@@ -18,29 +19,6 @@ MRPT_INITIALIZER(toposlam_features_register_classes) {
     mrpt::rtti::registerClass(CLASS_ID(CObservationLaserFeatures));
 }
 
-namespace {
-
-void writePoint(CArchive& out, const mrpt::math::TPoint2D& p) {
-    out << p.x << p.y;
-}
-void readPoint(CArchive& in, mrpt::math::TPoint2D& p) {
-    in >> p.x >> p.y;
-}
-void writeType(CArchive& out, EndpointType t) {
-    out << static_cast<std::uint8_t>(t);
-}
-void readType(CArchive& in, EndpointType& t) {
-    std::uint8_t v = 0;
-    in >> v;
-    if (v > static_cast<std::uint8_t>(EndpointType::Open)) {
-        throw std::runtime_error("CObservationLaserFeatures: bad endpoint type " +
-                                 std::to_string(v));
-    }
-    t = static_cast<EndpointType>(v);
-}
-
-}  // namespace
-
 uint8_t CObservationLaserFeatures::serializeGetVersion() const {
     return 0;
 }
@@ -48,69 +26,14 @@ uint8_t CObservationLaserFeatures::serializeGetVersion() const {
 void CObservationLaserFeatures::serializeTo(CArchive& out) const {
     // CObservation serializes nothing itself: timestamp and label are ours to write.
     out << timestamp << sensorLabel << sensorPose << extractor << scanLabel;
-    out << static_cast<std::uint32_t>(features.segments.size());
-    for (const LineSegment& s : features.segments) {
-        writePoint(out, s.start);
-        writePoint(out, s.end);
-        out << s.line.theta << s.line.rho << s.firstBeam << s.lastBeam;
-        writeType(out, s.startType);
-        writeType(out, s.endType);
-        out << s.residualRms;
-    }
-    out << static_cast<std::uint32_t>(features.corners.size());
-    for (const Corner& c : features.corners) {
-        writePoint(out, c.position);
-        out << c.beam << c.segmentBefore << c.segmentAfter << c.angle;
-        out << c.covariance(0, 0) << c.covariance(0, 1) << c.covariance(1, 1);
-        writeType(out, c.type);
-    }
-    out << static_cast<std::uint32_t>(features.endpoints.size());
-    for (const Endpoint& e : features.endpoints) {
-        writePoint(out, e.position);
-        writeType(out, e.type);
-        out << e.beam;
-    }
+    writeScanFeatures(out, features);
 }
 
 void CObservationLaserFeatures::serializeFrom(CArchive& in, uint8_t version) {
     switch (version) {
         case 0: {
             in >> timestamp >> sensorLabel >> sensorPose >> extractor >> scanLabel;
-            std::uint32_t n = 0;
-            in >> n;
-            features.segments.resize(n);
-            for (LineSegment& s : features.segments) {
-                readPoint(in, s.start);
-                readPoint(in, s.end);
-                in >> s.line.theta >> s.line.rho >> s.firstBeam >> s.lastBeam;
-                readType(in, s.startType);
-                readType(in, s.endType);
-                in >> s.residualRms;
-            }
-            in >> n;
-            features.corners.resize(n);
-            for (Corner& c : features.corners) {
-                readPoint(in, c.position);
-                in >> c.beam >> c.segmentBefore >> c.segmentAfter >> c.angle;
-                double xx = 0, xy = 0, yy = 0;
-                in >> xx >> xy >> yy;
-                c.covariance(0, 0) = xx;
-                c.covariance(0, 1) = c.covariance(1, 0) = xy;
-                c.covariance(1, 1) = yy;
-                readType(in, c.type);
-                if (c.segmentBefore >= features.segments.size() ||
-                    c.segmentAfter >= features.segments.size()) {
-                    throw std::runtime_error(
-                        "CObservationLaserFeatures: corner refers to a missing segment");
-                }
-            }
-            in >> n;
-            features.endpoints.resize(n);
-            for (Endpoint& e : features.endpoints) {
-                readPoint(in, e.position);
-                readType(in, e.type);
-                in >> e.beam;
-            }
+            readScanFeatures(in, features);
         } break;
         default:
             MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);

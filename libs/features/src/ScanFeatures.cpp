@@ -1,3 +1,4 @@
+#include <mrpt/math/wrap2pi.h>
 #include <toposlam/features/ScanFeatures.h>
 
 #include <cmath>
@@ -5,14 +6,6 @@
 namespace toposlam::features {
 
 using mrpt::math::TPoint2D;
-
-namespace {
-/// theta wrapped to (-pi, pi].
-double wrapAngle(double a) {
-    a = std::remainder(a, 2 * M_PI);  // [-pi, pi]
-    return a <= -M_PI ? a + 2 * M_PI : a;
-}
-}  // namespace
 
 double Line2D::distance(const TPoint2D& p) const {
     return p.x * std::cos(theta) + p.y * std::sin(theta) - rho;
@@ -31,7 +24,7 @@ Line2D Line2D::through(const TPoint2D& a, const TPoint2D& b) {
     l.rho = a.x * std::cos(l.theta) + a.y * std::sin(l.theta);
     if (l.rho < 0) {
         l.rho = -l.rho;
-        l.theta = wrapAngle(l.theta + M_PI);
+        l.theta = mrpt::math::wrapToPi(l.theta + M_PI);
     }
     return l;
 }
@@ -61,11 +54,11 @@ ScanFeatures ScanFeatures::transformed(const mrpt::poses::CPose2D& pose) const {
         seg.end = move(seg.end);
         // The normal turns with the pose; the offset grows by the translation along it.
         Line2D& l = seg.line;
-        l.theta = wrapAngle(l.theta + pose.phi());
+        l.theta = mrpt::math::wrapToPi(l.theta + pose.phi());
         l.rho += pose.x() * std::cos(l.theta) + pose.y() * std::sin(l.theta);
         if (l.rho < 0) {
             l.rho = -l.rho;
-            l.theta = wrapAngle(l.theta + M_PI);
+            l.theta = mrpt::math::wrapToPi(l.theta + M_PI);
         }
     }
     for (Corner& corner : out.corners) {

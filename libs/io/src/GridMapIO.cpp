@@ -4,6 +4,7 @@
 #include <toposlam/io/AtomicFile.h>
 #include <toposlam/io/GridMapIO.h>
 #include <toposlam/io/InputError.h>
+#include <toposlam/io/TextFile.h>
 
 #include <algorithm>
 #include <array>
@@ -263,17 +264,6 @@ void writeImage(const cv::Mat& image, const std::string& path) {
     });
 }
 
-void writeText(const std::string& text, const std::string& path) {
-    writeFileAtomically(path, [&](const std::string& tmp) {
-        std::FILE* f = std::fopen(tmp.c_str(), "w");
-        if (!f)
-            throw std::runtime_error(path + ": cannot create the file");
-        const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-        if (std::fclose(f) != 0 || !ok)
-            throw std::runtime_error(path + ": write error");
-    });
-}
-
 RosMapMetadata metadataOf(const COccupancyGridMap2D& grid, const std::string& imageFileName,
                           RosMapMetadata::Mode mode) {
     RosMapMetadata meta;
@@ -378,7 +368,8 @@ void saveGridMap(const COccupancyGridMap2D& map, const std::string& path) {
             const RosMapMetadata meta =
                 metadataOf(map, p.filename().string(), RosMapMetadata::Mode::Scale);
             writeImage(imageOfGrid(map, greyOfFreeProbability), path);
-            writeText(formatRosMapMetadata(meta), fs::path(p).replace_extension(".yaml").string());
+            saveTextFile(formatRosMapMetadata(meta),
+                         fs::path(p).replace_extension(".yaml").string());
             return;
         }
         case MapFormat::RosYaml:
@@ -389,8 +380,8 @@ void saveGridMap(const COccupancyGridMap2D& map, const std::string& path) {
                 metadataOf(map, image.filename().string(), RosMapMetadata::Mode::Trinary);
             writeImage(imageOfGrid(map, [&](float pFree) { return trinaryGrey(pFree, meta); }),
                        image.string());
-            writeText(formatRosMapMetadata(meta),
-                      formatOf(path) == MapFormat::RosYaml ? path : yaml.string());
+            saveTextFile(formatRosMapMetadata(meta),
+                         formatOf(path) == MapFormat::RosYaml ? path : yaml.string());
             return;
         }
         case MapFormat::OtherImage:

@@ -1,3 +1,4 @@
+#include <mrpt/math/wrap2pi.h>
 #include <toposlam/matching/AttributedGraph.h>
 
 #include <algorithm>
@@ -7,13 +8,6 @@
 namespace toposlam::matching {
 
 using mrpt::math::TPoint2D;
-
-double wrapAngle(double a) {
-    a = std::fmod(a + M_PI, 2 * M_PI);
-    if (a <= 0)
-        a += 2 * M_PI;
-    return a - M_PI;
-}
 
 namespace {
 double pointToSegment(const TPoint2D& p, const TPoint2D& a, const TPoint2D& b) {
@@ -87,7 +81,7 @@ void AttributedGraph::build(const std::vector<features::LineSegment>& segments, 
         edges_[i * n + i] = {0, 0, 0, 0};
         for (std::size_t j = i + 1; j < n; ++j) {
             const SegmentNode& b = nodes_[j];
-            const double angle = wrapAngle(b.heading - a.heading);
+            const double angle = mrpt::math::wrapToPi(b.heading - a.heading);
             const double ratio = (a.length - b.length) / std::max(a.length, b.length);
             const double mid = std::hypot(b.midpoint.x - a.midpoint.x, b.midpoint.y - a.midpoint.y);
             const double closest = segmentDistance(a.start, a.end, b.start, b.end);

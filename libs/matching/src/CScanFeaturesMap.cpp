@@ -1,13 +1,14 @@
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/maps/TMetricMapTypesRegistry.h>
-#include <mrpt/opengl/CPointCloud.h>
-#include <mrpt/opengl/CSetOfLines.h>
 #include <mrpt/opengl/CSetOfObjects.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/serialization/CArchive.h>
+#include <toposlam/features/CObservationLaserFeatures.h>
 #include <toposlam/features/FeatureExtractor.h>
-#include <toposlam/matching/AlignmentScorer.h>
+#include <toposlam/features/ScanFeaturesArchive.h>
+#include <toposlam/io/AtomicFile.h>
 #include <toposlam/matching/CScanFeaturesMap.h>
+#include <toposlam/matching/FeatureMapRendering.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,165 +17,365 @@
 #include <stdexcept>
 
 using namespace toposlam::matching;
+using mrpt::poses::CPose2D;
 
 // "scanFeaturesMap_count = 1" in .ini map definitions (or CScanFeaturesMap_count).
 MAP_DEFINITION_REGISTER("toposlam::matching::CScanFeaturesMap,scanFeaturesMap",
                         toposlam::matching::CScanFeaturesMap)
+
+// --- options -------------------------------------------------------------------------------
+
+void CScanFeaturesMap::TInsertionOptions::loadFromConfigFile(
+    const mrpt::config::CConfigFileBase& cfg, const std::string& section) {
+    merge.loadFromConfigFile(cfg, section);
+    const std::string s =
+        cfg.read_string(section, "source", source == Source::Scans ? "scans" : "features");
+    if (s == "scans")
+        source = Source::Scans;
+    else if (s == "features")
+        source = Source::Features;
+    else
+        throw std::invalid_argument("CScanFeaturesMap: [" + section + "] source must be scans or " +
+                                    "features, not '" + s + "'");
+}
+
+void CScanFeaturesMap::TInsertionOptions::dumpToTextStream(std::ostream& out) const {
+    out << "source              = " << (source == Source::Scans ? "scans" : "features") << "\n";
+    merge.dumpToTextStream(out);
+}
+
+void CScanFeaturesMap::TLikelihoodOptions::loadFromConfigFile(
+    const mrpt::config::CConfigFileBase& cfg, const std::string& section) {
+    sigma_dist = cfg.read_double(section, "sigma_dist", sigma_dist);
+    max_corr_distance = cfg.read_double(section, "max_corr_distance", max_corr_distance);
+    const int d = cfg.read_int(section, "decimation", static_cast<int>(decimation));
+    if (!std::isfinite(sigma_dist) || sigma_dist <= 0 || !std::isfinite(max_corr_distance) ||
+        max_corr_distance <= 0 || d < 1) {
+        throw std::invalid_argument("CScanFeaturesMap: [" + section +
+                                    "] needs sigma_dist > 0, max_corr_distance > 0 and "
+                                    "decimation >= 1");
+    }
+    decimation = static_cast<unsigned>(d);
+}
+
+void CScanFeaturesMap::TLikelihoodOptions::dumpToTextStream(std::ostream& out) const {
+    out << "sigma_dist          = " << sigma_dist << "\n"
+        << "max_corr_distance   = " << max_corr_distance << "\n"
+        << "decimation          = " << decimation << "\n";
+}
 
 CScanFeaturesMap::TMapDefinition::TMapDefinition() = default;
 
 void CScanFeaturesMap::TMapDefinition::loadFromConfigFile_map_specific(
     const mrpt::config::CConfigFileBase& source, const std::string& sectionPrefix) {
     extractor = source.read_string(sectionPrefix + "_creationOpts", "extractor", extractor);
+    insertionOpts.loadFromConfigFile(source, sectionPrefix + "_insertOpts");
+    likelihoodOpts.loadFromConfigFile(source, sectionPrefix + "_likelihoodOpts");
 }
 
 void CScanFeaturesMap::TMapDefinition::dumpToTextStream_map_specific(std::ostream& out) const {
-    out << "extractor = " << extractor << "\n";
+    out << "extractor           = " << extractor << "\n";
+    insertionOpts.dumpToTextStream(out);
+    likelihoodOpts.dumpToTextStream(out);
 }
 
 mrpt::maps::CMetricMap* CScanFeaturesMap::internal_CreateFromMapDefinition(
     const mrpt::maps::TMetricMapInitializer& def) {
-    return new CScanFeaturesMap(dynamic_cast<const TMapDefinition&>(def).extractor);
+    const auto& d = dynamic_cast<const TMapDefinition&>(def);
+    auto* m = new CScanFeaturesMap(d.extractor);
+    m->insertionOptions = d.insertionOpts;
+    m->likelihoodOptions = d.likelihoodOpts;
+    return m;
 }
+
+// --- serialization -------------------------------------------------------------------------
 
 IMPLEMENTS_SERIALIZABLE(CScanFeaturesMap, CMetricMap, toposlam::matching)
 
-CScanFeaturesMap::CScanFeaturesMap(const std::string& extractor) : extractor_(extractor) {
-    features::makeFeatureExtractor(extractor_);  // throws for an unknown name
-}
+CScanFeaturesMap::CScanFeaturesMap(const std::string& extractor)
+    : extractor_(extractor), extractorObject_(features::makeFeatureExtractor(extractor)) {}
 
 uint8_t CScanFeaturesMap::serializeGetVersion() const {
-    return 0;
+    return 1;
 }
 
 void CScanFeaturesMap::serializeTo(mrpt::serialization::CArchive& out) const {
-    out << extractor_ << hasScan_ << robotPose_;
+    const FeatureMapOptions& o = insertionOptions.merge;
+    out << extractor_ << static_cast<uint8_t>(insertionOptions.source) << o.mergeAngle
+        << o.mergeDistance << o.mergeGap << o.minSegmentLength << o.cornerMergeRadius
+        << o.endpointMergeRadius << o.poseStd << o.minObservations;
+    out << likelihoodOptions.sigma_dist << likelihoodOptions.max_corr_distance
+        << static_cast<uint32_t>(likelihoodOptions.decimation);
+    out << static_cast<uint32_t>(keyframes_.size());
+    for (const FeatureKeyframe& k : keyframes_) {
+        out << k.robotPose << k.sensorOnRobot;
+        features::writeScanFeatures(out, k.features);
+    }
+    out << hasScan_;
     if (hasScan_)
-        out << scan_;
+        out << scanRobotPose_ << scan_;
 }
 
 void CScanFeaturesMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
+    internal_clear();
     switch (version) {
-        case 0: {
-            in >> extractor_ >> hasScan_ >> robotPose_;
+        case 0: {  // one scan: extractor, hasScan, robot pose, scan
+            CPose2D robotPose;
+            in >> extractor_ >> hasScan_ >> robotPose;
+            extractorObject_ = features::makeFeatureExtractor(extractor_);  // validates the name
             if (hasScan_) {
                 in >> scan_;
-                setScan(scan_, robotPose_);
-            } else {
-                internal_clear();
+                insertScan(scan_, robotPose);
             }
-            break;
-        }
+        } break;
+        case 1: {
+            FeatureMapOptions& o = insertionOptions.merge;
+            uint8_t source = 0;
+            uint32_t decimation = 0, n = 0;
+            in >> extractor_ >> source >> o.mergeAngle >> o.mergeDistance >> o.mergeGap >>
+                o.minSegmentLength >> o.cornerMergeRadius >> o.endpointMergeRadius >> o.poseStd >>
+                o.minObservations;
+            in >> likelihoodOptions.sigma_dist >> likelihoodOptions.max_corr_distance >> decimation;
+            if (source > 1 || decimation < 1)
+                throw std::runtime_error("CScanFeaturesMap: corrupt options");
+            extractorObject_ = features::makeFeatureExtractor(extractor_);  // validates the name
+            o.validate();
+            insertionOptions.source = static_cast<Source>(source);
+            likelihoodOptions.decimation = decimation;
+            in >> n;
+            std::vector<FeatureKeyframe> keyframes;
+            for (uint32_t i = 0; i < n; ++i) {  // no reserve(n): n comes from the file
+                FeatureKeyframe& k = keyframes.emplace_back();
+                in >> k.robotPose >> k.sensorOnRobot;
+                features::readScanFeatures(in, k.features);
+            }
+            bool hasScan = false;
+            in >> hasScan;
+            if (hasScan) {
+                CPose2D robotPose;
+                in >> robotPose >> scan_;
+                keepScan(scan_, robotPose);
+            }
+            rebuild(std::move(keyframes));
+        } break;
         default:
             MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
     }
 }
 
-void CScanFeaturesMap::setScan(const mrpt::obs::CObservation2DRangeScan& scan,
-                               const mrpt::poses::CPose2D& robotPose) {
+// --- building ------------------------------------------------------------------------------
+
+void CScanFeaturesMap::insertKeyframe(const FeatureKeyframe& keyframe) {
+    map_.options = insertionOptions.merge;
+    keyframes_.push_back(keyframe);
+    map_.insert(keyframe.features, keyframe.sensorPose());
+}
+
+void CScanFeaturesMap::keepScan(const mrpt::obs::CObservation2DRangeScan& scan,
+                                const CPose2D& robotPose) {
     if (&scan != &scan_)
         scan_ = scan;
-    robotPose_ = robotPose;
-    sensorPose_ = robotPose + mrpt::poses::CPose2D(scan.sensorPose);
+    scanRobotPose_ = robotPose;
+    sensorPose_ = robotPose + CPose2D(scan.sensorPose);
     polar_.assign(scan_);
     hasScan_ = true;
-    extract();
+    // One extractor per map, made on first use (it keeps its workspaces between scans).
+    if (!extractorObject_)
+        extractorObject_ = features::makeFeatureExtractor(extractor_);
+    extractorObject_->extract(scan_, scanFeatures_);
+}
+
+void CScanFeaturesMap::insertScan(const mrpt::obs::CObservation2DRangeScan& scan,
+                                  const CPose2D& robotPose) {
+    keepScan(scan, robotPose);
+    FeatureKeyframe k;
+    k.robotPose = robotPose;
+    k.sensorOnRobot = CPose2D(scan.sensorPose);
+    k.features = scanFeatures_;
+    insertKeyframe(k);
+}
+
+void CScanFeaturesMap::setScan(const mrpt::obs::CObservation2DRangeScan& scan,
+                               const CPose2D& robotPose) {
+    internal_clear();
+    insertScan(scan, robotPose);
+}
+
+void CScanFeaturesMap::updateKeyframePoses(const std::vector<CPose2D>& robotPoses) {
+    if (robotPoses.size() != keyframes_.size()) {
+        throw std::invalid_argument(
+            "CScanFeaturesMap::updateKeyframePoses: " + std::to_string(robotPoses.size()) +
+            " poses for " + std::to_string(keyframes_.size()) + " keyframes");
+    }
+    for (std::size_t i = 0; i < robotPoses.size(); ++i)
+        keyframes_[i].robotPose = robotPoses[i];
+    rebuildMap();
+}
+
+void CScanFeaturesMap::rebuild(std::vector<FeatureKeyframe> keyframes) {
+    keyframes_ = std::move(keyframes);
+    rebuildMap();
+}
+
+void CScanFeaturesMap::rebuildMap() {
+    map_.clear();
+    map_.options = insertionOptions.merge;
+    for (const FeatureKeyframe& k : keyframes_)
+        map_.insert(k.features, k.sensorPose());
 }
 
 void CScanFeaturesMap::setExtractor(const std::string& name) {
-    features::makeFeatureExtractor(name);  // validates
+    extractorObject_ = features::makeFeatureExtractor(name);  // validates
     extractor_ = name;
     if (hasScan_)
-        extract();
-}
-
-void CScanFeaturesMap::extract() {
-    // Extractors keep workspaces; maps are few and long-lived, so one per call is fine.
-    features::makeFeatureExtractor(extractor_)->extract(scan_, features_);
-}
-
-bool CScanFeaturesMap::isEmpty() const {
-    return !hasScan_ || polar_.validCount() == 0;
+        keepScan(scan_, scanRobotPose_);
 }
 
 void CScanFeaturesMap::internal_clear() {
+    map_.clear();
+    keyframes_.clear();
     hasScan_ = false;
     scan_ = mrpt::obs::CObservation2DRangeScan();
     polar_ = PolarScan();
-    features_.clear();
-    robotPose_ = sensorPose_ = mrpt::poses::CPose2D();
+    scanFeatures_.clear();
+    scanRobotPose_ = sensorPose_ = CPose2D();
+}
+
+bool CScanFeaturesMap::isEmpty() const {
+    return keyframes_.empty() && !hasScan_;
 }
 
 bool CScanFeaturesMap::internal_insertObservation(
     const mrpt::obs::CObservation& obs,
     const std::optional<const mrpt::poses::CPose3D>& robotPose) {
-    const auto* scan = dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs);
-    if (!scan)
+    const CPose2D robot = robotPose ? CPose2D(*robotPose) : CPose2D();
+    if (insertionOptions.source == Source::Scans) {
+        const auto* scan = dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs);
+        if (!scan)
+            return false;
+        insertScan(*scan, robot);
+        return true;
+    }
+    const auto* f = dynamic_cast<const features::CObservationLaserFeatures*>(&obs);
+    if (!f)
         return false;
-    setScan(*scan, robotPose ? mrpt::poses::CPose2D(*robotPose) : mrpt::poses::CPose2D());
+    FeatureKeyframe k;
+    k.robotPose = robot;
+    k.sensorOnRobot = CPose2D(f->sensorPose);
+    k.features = f->features;
+    insertKeyframe(k);
     return true;
+}
+
+// --- likelihood ----------------------------------------------------------------------------
+
+bool CScanFeaturesMap::internal_canComputeObservationLikelihood(
+    const mrpt::obs::CObservation& obs) const {
+    return dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs) != nullptr ||
+           dynamic_cast<const features::CObservationLaserFeatures*>(&obs) != nullptr;
 }
 
 double CScanFeaturesMap::internal_computeObservationLikelihood(
     const mrpt::obs::CObservation& obs, const mrpt::poses::CPose3D& takenFrom) const {
-    const auto* scan = dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs);
-    if (!scan || !hasScan_)
+    if (map_.confirmedSegments() == 0)
         return 0.0;
-    PolarScan other;
-    other.assign(*scan);
-    const mrpt::poses::CPose2D sensor =
-        mrpt::poses::CPose2D(takenFrom) + mrpt::poses::CPose2D(scan->sensorPose);
-    const AlignmentScore s = scoreAlignment(polar_, other, sensor - sensorPose_);
-    return std::log(std::max(1e-3, s.inlierFraction()));
+    const double maxD = likelihoodOptions.max_corr_distance;
+    double sum = 0;
+    std::size_t n = 0;
+    const auto add = [&](const CPose2D& sensor, double x, double y) {
+        double gx, gy;
+        sensor.composePoint(x, y, gx, gy);
+        const double d = map_.distanceToSegments({gx, gy}, maxD);
+        sum += d * d;
+        ++n;
+    };
+    const CPose2D robot(takenFrom);
+    if (const auto* scan = dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs)) {
+        const CPose2D sensor = robot + CPose2D(scan->sensorPose);
+        const std::size_t beams = scan->getScanSize();
+        for (std::size_t i = 0; i < beams; i += likelihoodOptions.decimation) {
+            const float r = scan->getScanRange(i);
+            if (!scan->getScanRangeValidity(i) || !(r > 0) || r >= scan->maxRange)
+                continue;
+            const double a = scan->getScanAngle(i);
+            add(sensor, r * std::cos(a), r * std::sin(a));
+        }
+    } else if (const auto* f = dynamic_cast<const features::CObservationLaserFeatures*>(&obs)) {
+        const CPose2D sensor = robot + CPose2D(f->sensorPose);
+        for (const features::Corner& c : f->features.corners)
+            add(sensor, c.position.x, c.position.y);
+        for (const features::LineSegment& s : f->features.segments) {
+            const auto mid = s.midpoint();
+            add(sensor, s.start.x, s.start.y);
+            add(sensor, mid.x, mid.y);
+            add(sensor, s.end.x, s.end.y);
+        }
+    }
+    return n == 0 ? 0.0 : -(sum / static_cast<double>(n)) / likelihoodOptions.sigma_dist;
 }
 
+// --- output --------------------------------------------------------------------------------
+
+namespace {
+
+void writeTextFile(const std::string& path, const std::string& content) {
+    toposlam::io::writeFileAtomically(path, [&](const std::string& tmp) {
+        std::ofstream f(tmp);
+        f << content;
+        if (!f.flush())
+            throw std::runtime_error(path + ": cannot write");
+    });
+}
+
+}  // namespace
+
 void CScanFeaturesMap::saveMetricMapRepresentationToFile(const std::string& prefix) const {
-    std::ofstream points(prefix + "_points.txt"), segments(prefix + "_segments.txt");
-    if (!points || !segments)
-        throw std::runtime_error("cannot write " + prefix + "_points.txt / _segments.txt");
-    for (std::size_t i = 0; i < polar_.size(); ++i) {
-        if (!polar_.valid(i))
+    std::ostringstream segments, corners, endpoints;
+    segments << "# confirmed wall segments, map frame (m); the wall was seen from the left of "
+                "start->end;\n# pieces of one line (walls on both sides of a door) share its "
+                "line number\n# x0 y0 x1 y1 length line observations\n";
+    for (std::size_t i = 0; i < map_.segments().size(); ++i) {
+        const MapSegment& s = map_.segments()[i];
+        if (!map_.confirmed(s))
             continue;
-        double x, y;
-        sensorPose_.composePoint(polar_.point(i).x, polar_.point(i).y, x, y);
-        points << x << " " << y << "\n";
+        for (const SegmentPiece& p : s.pieces)
+            segments << p.start.x << " " << p.start.y << " " << p.end.x << " " << p.end.y << " "
+                     << p.length() << " " << i << " " << s.observations << "\n";
     }
-    for (const features::LineSegment& s : features_.segments) {
-        double x0, y0, x1, y1;
-        sensorPose_.composePoint(s.start.x, s.start.y, x0, y0);
-        sensorPose_.composePoint(s.end.x, s.end.y, x1, y1);
-        segments << x0 << " " << y0 << " " << x1 << " " << y1 << "\n";
+    corners << "# confirmed corners, map frame (m)\n"
+               "# x y type angle_deg std_x std_y observations\n";
+    for (const MapPoint& p : map_.corners()) {
+        if (map_.confirmed(p))
+            corners << p.position.x << " " << p.position.y << " " << toString(p.type) << " "
+                    << p.angle * 180 / M_PI << " " << std::sqrt(p.covariance(0, 0)) << " "
+                    << std::sqrt(p.covariance(1, 1)) << " " << p.observations << "\n";
     }
+    endpoints << "# confirmed segment endpoints, map frame (m)\n# x y type observations\n";
+    for (const MapPoint& p : map_.endpoints()) {
+        if (map_.confirmed(p))
+            endpoints << p.position.x << " " << p.position.y << " " << toString(p.type) << " "
+                      << p.observations << "\n";
+    }
+    writeTextFile(prefix + "_segments.txt", segments.str());
+    writeTextFile(prefix + "_corners.txt", corners.str());
+    writeTextFile(prefix + "_endpoints.txt", endpoints.str());
+    const mrpt::img::CImage picture = drawFeatureMap(map_);
+    toposlam::io::writeFileAtomically(prefix + ".png", [&](const std::string& tmp) {
+        if (!picture.saveToFile(tmp))  // tmp keeps the ".png" that selects the format
+            throw std::runtime_error(prefix + ".png: cannot write");
+    });
 }
 
 void CScanFeaturesMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& outObj) const {
-    auto cloud = mrpt::opengl::CPointCloud::Create();
-    cloud->setPointSize(2.0f);
-    cloud->setColor(0.2f, 0.2f, 0.8f);
-    auto lines = mrpt::opengl::CSetOfLines::Create();
-    lines->setLineWidth(3.0f);
-    lines->setColor(0.9f, 0.3f, 0.1f);
-    for (std::size_t i = 0; i < polar_.size(); ++i) {
-        if (!polar_.valid(i))
-            continue;
-        double x, y;
-        sensorPose_.composePoint(polar_.point(i).x, polar_.point(i).y, x, y);
-        cloud->insertPoint(float(x), float(y), 0.0f);
-    }
-    for (const features::LineSegment& s : features_.segments) {
-        double x0, y0, x1, y1;
-        sensorPose_.composePoint(s.start.x, s.start.y, x0, y0);
-        sensorPose_.composePoint(s.end.x, s.end.y, x1, y1);
-        lines->appendLine(x0, y0, 0.0, x1, y1, 0.0);
-    }
-    outObj.insert(cloud);
-    outObj.insert(lines);
+    appendFeatureMapVisualization(map_, outObj);
 }
 
 std::string CScanFeaturesMap::asString() const {
     std::ostringstream o;
-    o << "CScanFeaturesMap: " << (hasScan_ ? polar_.validCount() : 0) << " points, "
-      << features_.segments.size() << " segments (extractor " << extractor_ << "), sensor at "
-      << sensorPose_.asString();
+    o << "CScanFeaturesMap: " << keyframes_.size() << " keyframes; " << map_.confirmedSegments()
+      << " segments, " << map_.confirmedCorners() << " corners, " << map_.confirmedEndpoints()
+      << " endpoints confirmed (seen >= " << insertionOptions.merge.minObservations << " times) of "
+      << map_.segments().size() << " / " << map_.corners().size() << " / "
+      << map_.endpoints().size() << "; extractor " << extractor_;
     return o.str();
 }

@@ -1,4 +1,5 @@
 #include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/math/wrap2pi.h>
 #include <toposlam/matching/GraphScanMatcher.h>
 
 #include <algorithm>
@@ -56,7 +57,7 @@ void GraphScanMatcher::buildCandidates(const std::optional<CPose2D>& guess) {
         for (std::uint32_t a = 0; a < reference_.size(); ++a) {
             const SegmentNode& rn = reference_.node(a);
             if (guess) {
-                if (std::abs(wrapAngle(cn.heading + guess->phi() - rn.heading)) >
+                if (std::abs(mrpt::math::wrapToPi(cn.heading + guess->phi() - rn.heading)) >
                     options_.guessRotationWindow)
                     continue;
                 // Distance of the predicted midpoint to the reference segment.
@@ -131,7 +132,7 @@ bool GraphScanMatcher::refine(const PolarScan& referenceScan, const PolarScan& c
                 continue;
             const double dx = r.lineBase.x() - base.x(), dy = r.lineBase.y() - base.y();
             const double across = std::abs(-dy * r.lineDirection.x + dx * r.lineDirection.y);
-            if (std::abs(wrapAngle(r.lineBase.phi() - base.phi())) <
+            if (std::abs(mrpt::math::wrapToPi(r.lineBase.phi() - base.phi())) <
                     options_.ransac.distinctRotation &&
                 across < options_.ransac.distinctTranslation &&
                 std::abs(fit.weakDirection.x * r.lineDirection.x +

@@ -1,3 +1,4 @@
+#include <mrpt/math/wrap2pi.h>
 #include <toposlam/matching/HoughPoseSearch.h>
 
 #include <algorithm>
@@ -18,7 +19,7 @@ void HoughPoseSearch::rotationCandidates(const AttributedGraph& currentGraph,
     for (const ScoredAssignment& p : pairs) {
         const SegmentNode& c = currentGraph.node(p.current);
         const SegmentNode& r = referenceGraph.node(p.reference);
-        const double angle = wrapAngle(r.heading - c.heading);
+        const double angle = mrpt::math::wrapToPi(r.heading - c.heading);
         const double w = std::min(c.length, r.length);
         const long b = long(std::floor((angle + M_PI) / width)) % long(bins);
         for (long o = -1; o <= 1; ++o) {  // each vote also counts for the neighbouring bins

@@ -1,3 +1,4 @@
+#include <mrpt/math/wrap2pi.h>
 #include <toposlam/matching/RansacMatcher.h>
 
 #include <algorithm>
@@ -8,7 +9,7 @@ namespace toposlam::matching {
 bool posesDistinct(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b, double translation,
                    double rotation) {
     return std::hypot(a.x() - b.x(), a.y() - b.y()) > translation ||
-           std::abs(wrapAngle(a.phi() - b.phi())) > rotation;
+           std::abs(mrpt::math::wrapToPi(a.phi() - b.phi())) > rotation;
 }
 
 double RansacMatcher::consensus(const AttributedGraph& current, const AttributedGraph& reference,
@@ -28,7 +29,7 @@ double RansacMatcher::consensus(const AttributedGraph& current, const Attributed
         bool agrees = false;
         for (std::uint32_t a = 0; a < reference.size(); ++a) {
             const SegmentNode& r = reference.node(a);
-            if (std::abs(wrapAngle(heading - r.heading)) >
+            if (std::abs(mrpt::math::wrapToPi(heading - r.heading)) >
                 options.consensusAngle +
                     options.shortSegmentAngleSlack / std::min(n.length, r.length))
                 continue;
@@ -130,7 +131,7 @@ const std::vector<Hypothesis>& RansacMatcher::run(
             const SegmentNode& cj = current.node(B.current);
             const SegmentNode& rb = reference.node(B.reference);
             const double shortest = std::min({ci.length, ra.length, cj.length, rb.length});
-            if (std::abs(wrapAngle(angleCur - angleRef)) >
+            if (std::abs(mrpt::math::wrapToPi(angleCur - angleRef)) >
                 options.sampleAngleTolerance + options.shortSegmentAngleSlack / shortest)
                 continue;
             const double wv =
@@ -183,7 +184,7 @@ const std::vector<Hypothesis>& RansacMatcher::run(
     for (const Sample& sm : singles_) {
         const SegmentNode& cn = current.node(pool_[sm.u].current);
         const SegmentNode& rn = reference.node(pool_[sm.u].reference);
-        const double phi = wrapAngle(rn.heading - cn.heading);
+        const double phi = mrpt::math::wrapToPi(rn.heading - cn.heading);
         const double c = std::cos(phi), s = std::sin(phi);
         const std::pair<const mrpt::math::TPoint2D*, const mrpt::math::TPoint2D*> anchors[] = {
             {&cn.midpoint, &rn.midpoint}, {&cn.start, &rn.start}, {&cn.end, &rn.end}};

@@ -1,11 +1,10 @@
 #include <mrpt/math/wrap2pi.h>
-#include <toposlam/io/AtomicFile.h>
+#include <toposlam/io/JsonFile.h>
 #include <toposlam/matchingbench/MatchingBenchmark.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <ostream>
 
@@ -104,30 +103,28 @@ void BenchmarkReport::printTable(std::ostream& out) const {
 }
 
 void BenchmarkReport::writeJson(const std::string& path) const {
-    io::writeFileAtomically(path, [&](const std::string& tmp) {
-        std::ofstream f(tmp);
-        f << "{\n  \"benchmark\": \"B2 scan matching\",\n"
-          << "  \"success\": \"|ex|, |ey| < 0.1 m and |etheta| < 0.03 rad, answered\",\n"
-          << "  \"time\": \"CPU seconds of the matching thread per pair, from the two raw "
-             "scans\",\n"
-          << "  \"results\": [\n";
-        for (std::size_t k = 0; k < results.size(); ++k) {
-            const MethodResult& r = results[k];
-            f << "    {\"mode\": \"" << r.mode << "\", \"set\": \"" << r.set << "\", \"method\": \""
-              << r.method << "\", \"pairs\": " << r.pairs << ", \"successes\": " << r.successes
-              << ", \"answered\": " << r.answered << ", \"wrong\": " << r.wrong
-              << ", \"success_rate\": " << r.successRate()
-              << ", \"median_translation_error_m\": " << r.medianTranslationError
-              << ", \"median_rotation_error_rad\": " << r.medianRotationError
-              << ", \"median_seconds\": " << r.medianSeconds
-              << ", \"p95_seconds\": " << r.p95Seconds
-              << ", \"median_match_seconds\": " << r.medianMatchSeconds << "}"
-              << (k + 1 < results.size() ? "," : "") << "\n";
-        }
-        f << "  ]\n}\n";
-        if (!f)
-            throw std::runtime_error("cannot write " + tmp);
-    });
+    io::Json rows = io::Json::array();
+    for (const MethodResult& r : results) {
+        rows.push_back({{"mode", r.mode},
+                        {"set", r.set},
+                        {"method", r.method},
+                        {"pairs", r.pairs},
+                        {"successes", r.successes},
+                        {"answered", r.answered},
+                        {"wrong", r.wrong},
+                        {"success_rate", r.successRate()},
+                        {"median_translation_error_m", r.medianTranslationError},
+                        {"median_rotation_error_rad", r.medianRotationError},
+                        {"median_seconds", r.medianSeconds},
+                        {"p95_seconds", r.p95Seconds},
+                        {"median_match_seconds", r.medianMatchSeconds}});
+    }
+    io::saveJsonFile(
+        {{"benchmark", "B2 scan matching"},
+         {"success", "|ex|, |ey| < 0.1 m and |etheta| < 0.03 rad, answered"},
+         {"time", "CPU seconds of the matching thread per pair, from the two raw scans"},
+         {"results", rows}},
+        path);
 }
 
 }  // namespace toposlam::matchingbench

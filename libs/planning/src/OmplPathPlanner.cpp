@@ -10,6 +10,8 @@
 #include <ompl/geometric/planners/rrt/RRTstar.h>
 #include <ompl/util/Console.h>
 
+#include <cmath>
+#include <iterator>
 #include <stdexcept>
 
 namespace toposlam::planning {
@@ -46,8 +48,15 @@ void OmplPlannerOptions::validate() const {
         throw std::invalid_argument("unknown planner '" + planner +
                                     "' (rrtconnect, rrtstar, informedrrtstar, prmstar, bitstar)");
     }
-    if (!(timeLimit > 0))
+    if (!(timeLimit > 0) || !std::isfinite(timeLimit))
         throw std::invalid_argument("planning time limit must be positive");
+    if (attempts < 1)
+        throw std::invalid_argument("planning attempts must be at least 1");
+}
+
+const std::vector<std::string>& omplPlannerNames() {
+    static const std::vector<std::string> names(std::begin(kPlanners), std::end(kPlanners));
+    return names;
 }
 
 struct OmplPathPlanner::Impl {

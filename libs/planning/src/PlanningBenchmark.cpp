@@ -1,6 +1,7 @@
-#include <toposlam/planning/GridAStar.h>
+#include <toposlam/io/JsonFile.h>
 #include <toposlam/planning/PlanningBenchmark.h>
 #include <toposlam/planning/RoomToRoomPlanner.h>
+#include <toposlam/planning/ShortestGridPath.h>
 
 #include <algorithm>
 #include <chrono>
@@ -35,7 +36,7 @@ std::vector<PlanningQuery> PlanningBenchmark::run(const std::string& mapName,
                                                   const mrpt::maps::COccupancyGridMap2D& grid,
                                                   const rooms::TopologicalMap& rooms) const {
     const TraversabilityGrid traversable(grid, options_.robotRadius, options_.freeThreshold);
-    GridAStar astar(traversable);
+    ShortestGridPath astar(traversable);
     RoomToRoomPlanner roomPlanner(rooms, traversable, options_.ompl);
 
     std::vector<std::pair<int, int>> pairs;
@@ -141,31 +142,34 @@ std::string PlanningBenchmark::table(const std::vector<PlanningSummary>& summary
 std::string PlanningBenchmark::json(const std::vector<PlanningQuery>& queries,
                                     const std::vector<PlanningSummary>& summary,
                                     const PlanningBenchmarkOptions& options) {
-    std::ostringstream out;
-    out.precision(6);
-    out << "{\n  \"benchmark\": \"B5 room-to-room planning\",\n  \"options\": {\"robot_radius_m\": "
-        << options.robotRadius << ", \"planner\": \"" << options.ompl.planner
-        << "\", \"time_limit_s_per_leg\": " << options.ompl.timeLimit
-        << ", \"max_pairs_per_map\": " << options.maxPairsPerMap << "},\n  \"summary\": [";
-    for (std::size_t i = 0; i < summary.size(); ++i) {
-        const auto& s = summary[i];
-        out << (i ? "," : "") << "\n    {\"method\": \"" << s.method
-            << "\", \"queries\": " << s.queries << ", \"solved\": " << s.solved
-            << ", \"length_ratio_median\": " << s.lengthRatioMedian
-            << ", \"length_ratio_p95\": " << s.lengthRatioP95 << ", \"ms_median\": " << s.msMedian
-            << ", \"ms_p95\": " << s.msP95 << "}";
+    io::Json methods = io::Json::array(), results = io::Json::array();
+    for (const auto& s : summary) {
+        methods.push_back({{"method", s.method},
+                           {"queries", s.queries},
+                           {"solved", s.solved},
+                           {"length_ratio_median", s.lengthRatioMedian},
+                           {"length_ratio_p95", s.lengthRatioP95},
+                           {"ms_median", s.msMedian},
+                           {"ms_p95", s.msP95}});
     }
-    out << "\n  ],\n  \"queries\": [";
-    for (std::size_t i = 0; i < queries.size(); ++i) {
-        const auto& q = queries[i];
-        out << (i ? "," : "") << "\n    {\"map\": \"" << q.map << "\", \"method\": \"" << q.method
-            << "\", \"from\": " << q.fromRoom << ", \"to\": " << q.toRoom
-            << ", \"solved\": " << (q.solved ? "true" : "false") << ", \"length_m\": " << q.length
-            << ", \"astar_length_m\": " << q.referenceLength << ", \"seconds\": " << q.seconds
-            << "}";
+    for (const auto& q : queries) {
+        results.push_back({{"map", q.map},
+                           {"method", q.method},
+                           {"from", q.fromRoom},
+                           {"to", q.toRoom},
+                           {"solved", q.solved},
+                           {"length_m", q.length},
+                           {"astar_length_m", q.referenceLength},
+                           {"seconds", q.seconds}});
     }
-    out << "\n  ]\n}\n";
-    return out.str();
+    const io::Json settings = {{"robot_radius_m", options.robotRadius},
+                               {"planner", options.ompl.planner},
+                               {"time_limit_s_per_leg", options.ompl.timeLimit},
+                               {"max_pairs_per_map", options.maxPairsPerMap}};
+    return io::formatJson({{"benchmark", "B5 room-to-room planning"},
+                           {"options", settings},
+                           {"summary", methods},
+                           {"queries", results}});
 }
 
 }  // namespace toposlam::planning

@@ -1,7 +1,7 @@
 // RoomBenchmark's reports: the Markdown tables and the JSON file.
 #include <toposlam/rooms/RoomBenchmark.h>
 
-#include <nlohmann/json.hpp>
+#include <toposlam/io/JsonFile.h>
 
 #include <cstdio>
 #include <sstream>
@@ -28,7 +28,7 @@ std::string angleText(const std::optional<double>& angle) {
     return buf;
 }
 
-nlohmann::json doorJson(const DoorMatchCounts& d) {
+io::Json doorJson(const DoorMatchCounts& d) {
     return {{"virtual_doors", d.virtualDoors},
             {"matched_virtual", d.matchedVirtual},
             {"true_doors", d.trueDoors},
@@ -37,7 +37,7 @@ nlohmann::json doorJson(const DoorMatchCounts& d) {
             {"recall", ratio(d.matchedTrue, d.trueDoors)}};
 }
 
-nlohmann::json scoreJson(const RoomBenchmarkScore& s) {
+io::Json scoreJson(const RoomBenchmarkScore& s) {
     return {{"dataset", s.dataset},
             {"map", s.map},
             {"furnished", s.furnished},
@@ -56,11 +56,11 @@ nlohmann::json scoreJson(const RoomBenchmarkScore& s) {
             {"cpu_seconds_median", s.cpuSeconds}};
 }
 
-nlohmann::json summaryJson(const RoomBenchmarkSummary& m) {
+io::Json summaryJson(const RoomBenchmarkSummary& m) {
     return {{"dataset", m.dataset},
             {"method", m.method},
             {"group", m.group},
-            {"rotation_deg", m.rotationDeg ? nlohmann::json(*m.rotationDeg) : nlohmann::json()},
+            {"rotation_deg", m.rotationDeg ? io::Json(*m.rotationDeg) : io::Json()},
             {"maps", m.maps},
             {"recall_mean", m.recallMean},
             {"recall_sd", m.recallSd},
@@ -139,18 +139,18 @@ std::string RoomBenchmark::table(const std::vector<RoomBenchmarkScore>& scores,
 std::string RoomBenchmark::json(const std::vector<RoomBenchmarkScore>& scores,
                                 const std::vector<RoomBenchmarkSummary>& summary,
                                 const RoomBenchmarkOptions& options) {
-    nlohmann::json j;
+    io::Json j;
     j["benchmark"] = "B4 room segmentation";
     j["data_dir"] = options.dataDir;
     j["repeats"] = options.repeats;
     j["rotations_deg"] = options.rotationsDeg;
-    j["maps"] = nlohmann::json::array();
+    j["maps"] = io::Json::array();
     for (const auto& s : scores)
         j["maps"].push_back(scoreJson(s));
-    j["summary"] = nlohmann::json::array();
+    j["summary"] = io::Json::array();
     for (const auto& m : summary)
         j["summary"].push_back(summaryJson(m));
-    return j.dump(1);
+    return io::formatJson(j);
 }
 
 }  // namespace toposlam::rooms

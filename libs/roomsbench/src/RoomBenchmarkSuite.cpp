@@ -1,7 +1,7 @@
 #include <toposlam/roomsbench/GeneratedRoomCases.h>
 #include <toposlam/roomsbench/RoomBenchmarkSuite.h>
 
-#include <nlohmann/json.hpp>
+#include <toposlam/io/JsonFile.h>
 
 #include <cstdio>
 #include <stdexcept>
@@ -81,10 +81,9 @@ std::string suiteTable(const RoomBenchmarkSuiteResult& result) {
 
 std::string suiteJson(const RoomBenchmarkSuiteResult& result,
                       const RoomBenchmarkSuiteOptions& options) {
-    nlohmann::json j = nlohmann::json::parse(
-        rooms::RoomBenchmark::json(result.scores, result.summary, options.bench));
+    io::Json j = io::parseJson(rooms::RoomBenchmark::json(result.scores, result.summary, options.bench), "B4 report");
     j["generated_seeds"] = options.generatedSeeds;
-    j["end_to_end"] = nlohmann::json::array();
+    j["end_to_end"] = io::Json::array();
     for (const auto& e : result.endToEnd) {
         j["end_to_end"].push_back(
             {{"map", e.map},
@@ -94,7 +93,7 @@ std::string suiteJson(const RoomBenchmarkSuiteResult& result,
              {"slam_to_plan", {e.run.slamToPlan.x, e.run.slamToPlan.y, e.run.slamToPlan.phi}},
              {"alignment_rmse_m", e.run.alignmentRmse}});
     }
-    return j.dump(1);
+    return io::formatJson(j);
 }
 
 }  // namespace toposlam::roomsbench

@@ -1,10 +1,9 @@
+#include <toposlam/io/JsonFile.h>
 #include <toposlam/simulation/FloorPlan.h>
 #include <toposlam/simulation/GridGeometry.h>
 
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 #include <stdexcept>
 
 namespace toposlam::simulation {
@@ -188,64 +187,42 @@ PolygonWorld FloorPlan::toPolygonWorld() const {
     return world;
 }
 
-namespace {
-std::string jsonString(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\')
-            out += '\\';
-        out += c;
-    }
-    return out + "\"";
-}
-}  // namespace
-
 std::string FloorPlan::toJson(const mrpt::maps::COccupancyGridMap2D& grid,
                               const std::string& mapFile, const std::string& labelFile) const {
     const GridGeometry g = GridGeometry::of(grid);
-    std::ostringstream o;
-    o << std::setprecision(10);
-    const auto point = [&](const TPoint2D& p) {
-        std::ostringstream s;
-        s << std::setprecision(10) << "[" << p.x << ", " << p.y << "]";
-        return s.str();
+    const auto point = [](double x, double y) {
+        return io::Json::array({io::roundSignificant(x, 10), io::roundSignificant(y, 10)});
     };
-    o << "{\n";
-    o << "  \"frame\": \"map world frame, metres; yaw in radians\",\n";
-    o << "  \"map\": " << jsonString(mapFile) << ",\n";
-    // The grid's geometry is stored in floats: print it at float precision (0.05, not
+    // The grid's geometry is stored in floats: written at float precision (0.05, not
     // 0.05000000075).
-    const auto f = [](double v) {
-        std::ostringstream s;
-        s << std::setprecision(7) << v;
-        return s.str();
-    };
-    o << "  \"room_labels\": {\"image\": " << jsonString(labelFile)
-      << ", \"resolution\": " << f(g.resolution) << ", \"origin\": [" << f(g.xMin) << ", "
-      << f(g.yMin) << "]"
-      << ", \"width\": " << g.sizeX << ", \"height\": " << g.sizeY
-      << ", \"pixel\": \"room id, 0 = no room (walls, doorways, outside); top row = highest "
-         "y\"},\n";
-    o << "  \"rooms\": [\n";
-    for (std::size_t i = 0; i < rooms_.size(); ++i) {
-        const FloorRoom& r = rooms_[i];
-        o << "    {\"id\": " << r.id << ", \"name\": " << jsonString(r.name)
-          << ", \"kind\": " << jsonString(r.kind)
-          << ", \"min\": " << point({r.floor.xMin, r.floor.yMin})
-          << ", \"max\": " << point({r.floor.xMax, r.floor.yMax})
-          << ", \"area_m2\": " << r.floor.area() << "}" << (i + 1 < rooms_.size() ? "," : "")
-          << "\n";
+    const auto f = [](double v) { return io::roundSignificant(v, 7); };
+    io::Json rooms = io::Json::array(), doors = io::Json::array();
+    for (const FloorRoom& r : rooms_) {
+        rooms.push_back({{"id", r.id},
+                         {"name", r.name},
+                         {"kind", r.kind},
+                         {"min", point(r.floor.xMin, r.floor.yMin)},
+                         {"max", point(r.floor.xMax, r.floor.yMax)},
+                         {"area_m2", io::roundSignificant(r.floor.area(), 10)}});
     }
-    o << "  ],\n";
-    o << "  \"doors\": [\n";
-    for (std::size_t i = 0; i < doors_.size(); ++i) {
-        const FloorDoor& d = doors_[i];
-        o << "    {\"id\": " << d.id << ", \"jambs\": [" << point(d.jambA) << ", " << point(d.jambB)
-          << "], \"width\": " << d.width << ", \"rooms\": [" << d.roomA << ", " << d.roomB << "]}"
-          << (i + 1 < doors_.size() ? "," : "") << "\n";
+    for (const FloorDoor& d : doors_) {
+        doors.push_back({{"id", d.id},
+                         {"jambs", {point(d.jambA.x, d.jambA.y), point(d.jambB.x, d.jambB.y)}},
+                         {"width", io::roundSignificant(d.width, 10)},
+                         {"rooms", {d.roomA, d.roomB}}});
     }
-    o << "  ]\n}\n";
-    return o.str();
+    const io::Json labels = {
+        {"image", labelFile},
+        {"resolution", f(g.resolution)},
+        {"origin", {f(g.xMin), f(g.yMin)}},
+        {"width", g.sizeX},
+        {"height", g.sizeY},
+        {"pixel", "room id, 0 = no room (walls, doorways, outside); top row = highest y"}};
+    return io::formatJson({{"frame", "map world frame, metres; yaw in radians"},
+                           {"map", mapFile},
+                           {"room_labels", labels},
+                           {"rooms", rooms},
+                           {"doors", doors}});
 }
 
 }  // namespace toposlam::simulation

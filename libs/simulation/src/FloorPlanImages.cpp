@@ -1,7 +1,7 @@
 #include <toposlam/io/AtomicFile.h>
 #include <toposlam/simulation/FloorPlanImages.h>
 
-#include <nlohmann/json.hpp>
+#include <toposlam/io/JsonFile.h>
 #include <opencv2/imgcodecs.hpp>
 
 #include <algorithm>
@@ -148,22 +148,17 @@ std::vector<std::string> saveFloorPlanImages(const FloorPlanImages& images, cons
     cv::Mat truth(images.rooms.size(), CV_8U, cv::Scalar(0));
     truth.setTo(255, images.rooms > 0);
     png(files[2], truth);
-    nlohmann::json j;
+    io::Json j;
     j["resolution_m"] = images.resolution;
     j["rotation_deg"] = images.rotationDeg;
-    j["doors"] = nlohmann::json::array();
+    j["doors"] = io::Json::array();
     for (const auto& d : images.doors) {
         j["doors"].push_back({{"jamb_a_px", {d.jambA.x, d.jambA.y}},
                               {"jamb_b_px", {d.jambB.x, d.jambB.y}},
                               {"width_m", d.width},
                               {"rooms", {d.roomA, d.roomB}}});
     }
-    io::writeFileAtomically(files[3], [&](const std::string& tmp) {
-        std::ofstream out(tmp);
-        out << j.dump(1) << "\n";
-        if (!out)
-            throw std::runtime_error(files[3] + ": cannot write");
-    });
+    io::saveJsonFile(j, files[3]);
     return files;
 }
 

@@ -1,11 +1,11 @@
 #include <toposlam/io/AtomicFile.h>
 #include <toposlam/io/GridMapIO.h>
+#include <toposlam/io/TextFile.h>
 #include <toposlam/simulation/OfficeDataset.h>
 #include <toposlam/simulation/OfficeFloorPlan.h>
 #include <toposlam/simulation/TrajectoryImage.h>
 
 #include <filesystem>
-#include <fstream>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <set>
@@ -41,12 +41,8 @@ OfficeDataset writeOfficeDataset(const std::string& dir, const SimulatorConfig& 
         if (!cv::imwrite(tmp, labelImage))
             throw std::runtime_error("cannot write " + tmp);
     });
-    io::writeFileAtomically(file("office_rooms.json"), [&](const std::string& tmp) {
-        std::ofstream f(tmp);
-        f << plan.toJson(grid, "office.gridmap.gz", "office_rooms.png");
-        if (!f)
-            throw std::runtime_error("cannot write " + tmp);
-    });
+    io::saveTextFile(plan.toJson(grid, "office.gridmap.gz", "office_rooms.png"),
+                     file("office_rooms.json"));
     out.files.push_back(file("office_rooms.png"));
     out.files.push_back(file("office_rooms.json"));
 

@@ -2,6 +2,7 @@
 // What a laser log itself says about the robot's path: its raw wheel odometry at each scan,
 // and each scan's stamp as the file prints it (the stamps relation files use). The
 // odometry-only trajectory is the baseline every SLAM result is compared with.
+#include <toposlam/io/ProgressCallback.h>
 #include <toposlam/io/Trajectory.h>
 
 #include <string>
@@ -12,10 +13,13 @@ namespace toposlam::evaluation {
 /// One pose per scan of `logPath` (any log io::LaserLogReader reads: CARMEN, rawlog), in file
 /// order: the scan's file stamp and the robot's cumulative odometry at that scan (odometry
 /// frame). Scans before the first odometry reading are left out. Throws io::InputError like
-/// the reader, and when the log has no odometry at all.
-io::Trajectory2D odometryAtScans(const std::string& logPath);
+/// the reader, and when the log has no odometry at all. `progress`: fraction of the file read
+/// and scans so far.
+io::Trajectory2D odometryAtScans(const std::string& logPath,
+                                 const io::ProgressCallback& progress = {});
 
 /// The file stamps of the scans of `logPath`, in file order (s). Throws io::InputError.
-std::vector<double> scanFileStamps(const std::string& logPath);
+std::vector<double> scanFileStamps(const std::string& logPath,
+                                   const io::ProgressCallback& progress = {});
 
 }  // namespace toposlam::evaluation

@@ -21,7 +21,8 @@ enum class EndpointType : std::uint8_t {
 };
 
 /// Infinite line in normal form: x*cos(theta) + y*sin(theta) = rho, rho >= 0 (m),
-/// theta in (-pi, pi]. Well defined for every direction, vertical lines included.
+/// theta in [-pi, pi] (mrpt::math::wrapToPi). Well defined for every direction, vertical lines
+/// included.
 struct Line2D {
     double theta = 0;
     double rho = 0;

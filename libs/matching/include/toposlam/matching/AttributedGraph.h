@@ -2,7 +2,8 @@
 // The attributed graph of one scan's line segments (graph-matching paper, sec. 2.2):
 // every segment is a node whose attribute A is its length; every ordered pair of segments is
 // an edge with r = 4 attributes B_g:
-//   g = 0  angle: signed angle (rad, (-pi, pi]) from the direction of segment i to that of j.
+//   g = 0  angle: signed angle (rad, [-pi, pi], mrpt::math::wrapToPi) from the direction of segment
+//   i to that of j.
 //          Segments are directed from their first to their last beam, i.e. counter-clockwise
 //          around the sensor, so the same wall face keeps its direction in every scan that
 //          sees it and the angle is rotation invariant;
@@ -58,8 +59,6 @@ class AttributedGraph {
     std::vector<double> lengths_;        // selection workspace
 };
 
-/// Angle wrapped into (-pi, pi].
-double wrapAngle(double a);
 /// Closest distance (m) between the segments [a0, a1] and [b0, b1].
 double segmentDistance(const mrpt::math::TPoint2D& a0, const mrpt::math::TPoint2D& a1,
                        const mrpt::math::TPoint2D& b0, const mrpt::math::TPoint2D& b1);

@@ -1,7 +1,7 @@
 #pragma once
 // The graph matcher as an MRPT map-alignment algorithm: AlignPDF(m1, m2, guess) returns the
 // pose of map m2 relative to map m1 (MRPT's convention) as a CPosePDFGaussian whose covariance
-// comes from the point-to-line refinement. Both maps must be CScanFeaturesMap (one scan each,
+// comes from the point-to-line refinement. Both maps must be CScanFeaturesMap (a scan each,
 // inserted at any robot pose, with any sensor pose: the result is corrected for both).
 //  - options.useGuess = true: the guess's mean prunes candidate segment pairs (tracking with
 //    odometry; its covariance widens the windows to 3 sigma when that is larger);
@@ -10,7 +10,8 @@
 //    ambiguous, too few features), the returned PDF has the best pose found (or the guess)
 //    with a covariance of unreliableVariance on every axis, so that a consumer fusing it
 //    gives it no weight; pass a TGraphMatcherAlignmentResult as outInfo to read the status.
-// Align3DPDF works on the 2D part of the poses.
+// Each map contributes its LAST inserted scan and that scan's features (a map built with
+// setScan() holds exactly one). Align3DPDF works on the 2D part of the poses.
 #include <mrpt/poses/CPose3DPDFGaussian.h>
 #include <mrpt/poses/CPosePDFGaussian.h>
 #include <mrpt/slam/CMetricMapsAlignmentAlgorithm.h>

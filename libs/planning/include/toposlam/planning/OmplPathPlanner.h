@@ -26,6 +26,9 @@ struct OmplPlannerOptions {
     void validate() const;
 };
 
+/// The planner names OmplPlannerOptions::planner accepts.
+const std::vector<std::string>& omplPlannerNames();
+
 class OmplPathPlanner {
   public:
     OmplPathPlanner(const TraversabilityGrid& grid, const OmplPlannerOptions& options = {});

@@ -2,7 +2,7 @@
 // Benchmark B5 (shared/BENCHMARKS.md): room-to-room planning on segmented maps. For a sample
 // of room pairs of each map, the room-graph planner (RoomToRoomPlanner: door route + OMPL per
 // leg) and plain OMPL from anchor to anchor (same planner, same total time budget) are run and
-// compared with the shortest 8-connected grid path (GridAStar) on the same inflated grid:
+// compared with the shortest 8-connected grid path (ShortestGridPath) on the same inflated grid:
 // success rate (a collision-free path found), path length relative to A*, time per query.
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <toposlam/planning/OmplPathPlanner.h>

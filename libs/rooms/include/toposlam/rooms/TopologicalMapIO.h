@@ -3,9 +3,11 @@
 //   .json     everything: frame, rooms (with outline), doors, adjacency and the label image
 //             (run-length encoded); schema in share/doc/file-formats.md, "Topological map".
 //   .graphml  the graph for graph tools (networkx, yEd, Gephi): rooms as nodes (name, area,
-//             centroid, anchor), doors as undirected edges (id, width, jambs). No label image.
-// Writers are atomic (no partial file on failure); readers throw toposlam::io::InputError
-// naming the file and the problem.
+//             centroid, anchor, outline), doors as undirected edges (id, width, jambs), and as
+//             graph attributes the frame and the label image (runs), so it plans like .json.
+// Both are read and written with Debian's libraries (nlohmann-json, tinyxml2). Writers are
+// atomic (no partial file on failure); readers throw toposlam::io::InputError naming the file
+// and the problem.
 #include <toposlam/rooms/TopologicalMap.h>
 
 #include <string>
@@ -19,9 +21,10 @@ void saveTopologicalMapJson(const TopologicalMap& map, const std::string& path);
 TopologicalMap loadTopologicalMapJson(const std::string& path);
 
 std::string topologicalMapToGraphML(const TopologicalMap& map);
-/// Rooms and doors only: the returned map has no label image and no outlines. Node and edge
-/// attributes are found by name (attr.name), so files from other GraphML writers work when
-/// they use the same names.
+/// Node, edge and graph attributes are found by name (attr.name), so files from other GraphML
+/// writers work when they use the same names; without the graph attributes cols/rows (and
+/// label_runs) the returned map has no frame (and no label image), without outline attributes
+/// no outlines.
 TopologicalMap topologicalMapFromGraphML(const std::string& text, const std::string& sourceName);
 void saveTopologicalMapGraphML(const TopologicalMap& map, const std::string& path);
 TopologicalMap loadTopologicalMapGraphML(const std::string& path);

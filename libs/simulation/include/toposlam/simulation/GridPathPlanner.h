@@ -1,14 +1,13 @@
 #pragma once
 // Shortest paths for a disc-shaped robot (or person) on an occupancy grid: A* for one query,
-// Dijkstra for the costs from one cell to all. Moves are 8-connected between cells whose
-// clearance (ClearanceMap) is at least the robot's required clearance; diagonal moves may not cut
-// corners. A step costs its length times a penalty that grows as clearance drops below a
-// preferred value, so paths keep to the middle of corridors and doorways, as people and robot
-// navigation stacks do.
+// Dijkstra for the costs from one cell to all (both by gridpath::GridAStar). Moves are
+// 8-connected between cells whose clearance (ClearanceMap) is at least the robot's required
+// clearance; diagonal moves may not cut corners. A step costs its length times a penalty that
+// grows as clearance drops below a preferred value, so paths keep to the middle of corridors
+// and doorways, as people and robot navigation stacks do.
+#include <toposlam/gridpath/GridAStar.h>
 #include <toposlam/simulation/ClearanceMap.h>
 
-#include <cstdint>
-#include <limits>
 #include <vector>
 
 namespace toposlam::simulation {
@@ -24,16 +23,13 @@ struct PathCostOptions {
 
 class GridPathPlanner {
   public:
-    static constexpr float kUnreachable = std::numeric_limits<float>::infinity();
+    static constexpr float kUnreachable = gridpath::GridAStar::kUnreachable;
 
     GridPathPlanner(const ClearanceMap& map, const PathCostOptions& options);
 
     const ClearanceMap& map() const { return map_; }
     const PathCostOptions& options() const { return options_; }
-    bool traversable(int cx, int cy) const {
-        return map_.geometry().contains(cx, cy) &&
-               stepFactor_[map_.geometry().index(cx, cy)] > 0.0f;
-    }
+    bool traversable(int cx, int cy) const { return search_.traversable(cx, cy); }
     bool traversable(const mrpt::math::TPoint2D& p) const {
         return traversable(map_.geometry().cellX(p.x), map_.geometry().cellY(p.y));
     }
@@ -50,23 +46,9 @@ class GridPathPlanner {
     const std::vector<float>& costsFrom(const mrpt::math::TPoint2D& from);
 
   private:
-    struct QueueEntry {
-        float priority;
-        std::uint32_t cell;
-        bool operator<(const QueueEntry& o) const { return priority > o.priority; }  // min-heap
-    };
-    /// Shared A*/Dijkstra search; goal < 0: no goal (Dijkstra over the whole component).
-    bool search(std::uint32_t start, long goal);
-
     const ClearanceMap& map_;
     PathCostOptions options_;
-    std::vector<float> stepFactor_;  ///< per cell: cost per metre entering it; 0 = blocked
-    // Workspaces reused by every query.
-    std::vector<float> cost_;
-    std::vector<std::uint32_t> parent_;
-    std::vector<std::uint8_t> closed_;
-    std::vector<QueueEntry> heap_;
-    double goalX_ = 0, goalY_ = 0;
+    gridpath::GridAStar search_;  ///< step costs: the clearance penalty per cell, 0 = blocked
 };
 
 }  // namespace toposlam::simulation

@@ -1,9 +1,10 @@
 #pragma once
-// The reference shortest path: A* over the 8-connected traversable cells of a
-// TraversabilityGrid (diagonal steps cost sqrt(2) cells, and may not cut a blocked corner).
-// It is what sampling-based plans are compared with: optimal on the grid, but its length
-// includes the grid's staircase (up to ~8 % longer than the true shortest path).
+// The reference shortest path: the shortest 8-connected path over the traversable cells of a
+// TraversabilityGrid (gridpath::GridAStar, every step cost 1; diagonal steps may not cut a
+// blocked corner). It is what sampling-based plans are compared with: optimal on the grid, but
+// its length includes the grid's staircase (up to ~8 % longer than the true shortest path).
 #include <mrpt/math/TPoint2D.h>
+#include <toposlam/gridpath/GridAStar.h>
 #include <toposlam/planning/TraversabilityGrid.h>
 
 #include <optional>
@@ -16,20 +17,16 @@ struct GridPath {
     double length = 0;                         ///< m
 };
 
-class GridAStar {
+class ShortestGridPath {
   public:
-    explicit GridAStar(const TraversabilityGrid& grid);
+    explicit ShortestGridPath(const TraversabilityGrid& grid);
     /// Shortest path between the cells holding `from` and `to`; nullopt when either is not
     /// traversable or they are not connected.
     std::optional<GridPath> plan(const mrpt::math::TPoint2D& from, const mrpt::math::TPoint2D& to);
 
   private:
     const TraversabilityGrid& grid_;
-    // Per-cell search state, kept between queries (no allocation per query).
-    std::vector<float> cost_;
-    std::vector<int> parent_;
-    std::vector<unsigned> visitedStamp_;
-    unsigned stamp_ = 0;
+    gridpath::GridAStar search_;
 };
 
 }  // namespace toposlam::planning

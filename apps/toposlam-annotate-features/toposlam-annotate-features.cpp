@@ -4,6 +4,7 @@
 #include <mrpt/config/CConfigFile.h>
 #include <toposlam/cli/CommandLine.h>
 #include <toposlam/cli/NumberArg.h>
+#include <toposlam/config/IniFile.h>
 #include <toposlam/features/FeatureExtractor.h>
 #include <toposlam/features/LogAnnotation.h>
 #include <toposlam/io/InputError.h>
@@ -185,8 +186,8 @@ struct Arguments {
     TCLAP::ValueArg<std::string> section{
         "",
         "section",
-        "Section of the .ini file. Default: the extractor's (CornerExtractor, SegmentExtractor, "
-        "SplitAndMergeExtractor)",
+        "Section of the .ini file; it must be there. Default: the extractor's (CornerExtractor, "
+        "SegmentExtractor, SplitAndMergeExtractor)",
         false,
         "",
         "name",
@@ -268,10 +269,12 @@ int run(int argc, char** argv) {
 
     std::unique_ptr<mrpt::config::CConfigFile> ini;
     if (a.config.isSet()) {
-        if (!std::filesystem::exists(a.config.getValue())) {
-            throw std::invalid_argument(a.config.getValue() + ": no such file");
-        }
-        ini = std::make_unique<mrpt::config::CConfigFile>(a.config.getValue());
+        ini = toposlam::config::openIniFile(a.config.getValue());
+        toposlam::config::requireSection(
+            *ini, a.section.isSet() ? a.section.getValue()
+                                    : features::defaultConfigSection(a.extractor.getValue()));
+    } else if (a.section.isSet()) {
+        throw cli::UsageError("--section: no -c file to read it from");
     }
     auto ex =
         features::makeFeatureExtractor(a.extractor.getValue(), ini.get(), a.section.getValue());

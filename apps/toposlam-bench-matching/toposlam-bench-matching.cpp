@@ -4,10 +4,11 @@
 // initial guess, then with the odometry guess. Prints one table, writes JSON.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFile.h>
-#include <mrpt/config/CConfigFileMemory.h>
 #include <toposlam/cli/CommandLine.h>
 #include <toposlam/cli/NumberArg.h>
+#include <toposlam/config/IniFile.h>
 #include <toposlam/io/ProgressDisplay.h>
+#include <toposlam/matching/CGraphMatcherAlignment.h>
 #include <toposlam/matchingbench/MatchingBenchmark.h>
 #include <toposlam/matchingbench/RelationPairs.h>
 #include <toposlam/matchingbench/SimulatedPairs.h>
@@ -39,6 +40,37 @@ void run(const matchingbench::ScanPairs& pairs,
                                 });
     progress.finish();
 }
+/// The options of the compared matchers: defaults, or read from an .ini file.
+struct MatcherOptions {
+    std::unique_ptr<mrpt::config::CConfigFile> ini;  ///< for the extractors' sections
+    matching::GraphMatcherOptions graph;
+    mrpt::slam::CICP::TConfigParams icp;
+};
+
+MatcherOptions matcherOptions(const std::string& iniPath) {
+    MatcherOptions o;
+    // Defaults = peers/icp-slam-benchmark.ini's [ICP] (the icp-slam peer of B3).
+    o.icp.maxIterations = 80;
+    o.icp.minAbsStep_trans = 1e-6f;
+    o.icp.minAbsStep_rot = 1e-6f;
+    o.icp.thresholdDist = 0.5f;
+    o.icp.thresholdAng = 0.15f * float(M_PI / 180.0);
+    o.icp.ALFA = 0.8f;
+    o.icp.smallestThresholdDist = 0.05f;
+    o.icp.onlyUniqueRobust = true;
+    o.icp.corresponding_points_decimation = 1;
+    if (iniPath.empty())
+        return o;
+    o.ini = toposlam::config::openIniFile(iniPath);
+    // The section CGraphMatcherAlignment reads (graph-matcher.ini); its two keys of the MRPT
+    // interface do not apply to the benchmark, which calls the matcher directly.
+    matching::CGraphMatcherAlignment::Options alignment;
+    alignment.loadFromConfigFile(*o.ini, "GraphScanMatcher");
+    o.graph = alignment.matcher;
+    o.icp.loadFromConfigFile(*o.ini, "ICP");
+    return o;
+}
+
 int run(int argc, char** argv) {
     TCLAP::CmdLine cmd(
         "Benchmark B2: graph scan matcher vs MRPT CICP (classic, Levenberg-Marquardt) on "
@@ -79,31 +111,10 @@ int run(int argc, char** argv) {
     if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
         return *exitCode;
 
-    mrpt::config::CConfigFileMemory emptyIni;
-    std::unique_ptr<mrpt::config::CConfigFile> ini;
-    if (!config.getValue().empty()) {
-        if (!std::filesystem::exists(config.getValue()))
-            throw std::runtime_error("config file not found: " + config.getValue());
-        ini = std::make_unique<mrpt::config::CConfigFile>(config.getValue());
-    }
-    const mrpt::config::CConfigFileBase& cfg =
-        ini ? static_cast<const mrpt::config::CConfigFileBase&>(*ini) : emptyIni;
-
-    matching::GraphMatcherOptions graphOptions;
-    graphOptions.loadFromConfigFile(cfg, "GraphScanMatcher");
-    mrpt::slam::CICP::TConfigParams icpParams;
-    // Defaults = peers/icp-slam-benchmark.ini's [ICP] (the icp-slam peer of B3).
-    icpParams.maxIterations = 80;
-    icpParams.minAbsStep_trans = 1e-6f;
-    icpParams.minAbsStep_rot = 1e-6f;
-    icpParams.thresholdDist = 0.5f;
-    icpParams.thresholdAng = 0.15f * float(M_PI / 180.0);
-    icpParams.ALFA = 0.8f;
-    icpParams.smallestThresholdDist = 0.05f;
-    icpParams.onlyUniqueRobust = true;
-    icpParams.corresponding_points_decimation = 1;
-    if (ini)
-        icpParams.loadFromConfigFile(cfg, "ICP");
+    const MatcherOptions o = matcherOptions(config.isSet() ? config.getValue() : "");
+    const matching::GraphMatcherOptions& graphOptions = o.graph;
+    const mrpt::slam::CICP::TConfigParams& icpParams = o.icp;
+    const auto& ini = o.ini;
 
     std::vector<std::unique_ptr<matchingbench::PairMatcher>> owned;
     for (const std::string& e : splitComma(extractors.getValue()))

@@ -1,10 +1,17 @@
-// toposlam-bench-rooms: benchmark B4 (room segmentation on the maps of Bormann et al. 2016),
-// the virtual-door segmenter against the morphological and distance baselines in one run.
+// toposlam-bench-rooms: benchmark B4 (room segmentation) on the maps of Bormann et al. 2016 at
+// any angle, B4-gen on generated furnished plans, and rooms on grids built by our own SLAM end
+// to end; the virtual-door segmenter against the morphological and distance baselines in one
+// run.
 #include <toposlam/cli/CommandLine.h>
 #include <toposlam/cli/NumberArg.h>
-#include <toposlam/io/ProgressDisplay.h>
+#include <toposlam/cli/UsageError.h>
 #include <toposlam/io/TextFile.h>
-#include <toposlam/rooms/RoomBenchmark.h>
+#include <toposlam/io/InputError.h>
+#include <toposlam/io/ProgressDisplay.h>
+#include <toposlam/roomsbench/GeneratedRoomCases.h>
+#include <toposlam/roomsbench/RoomBenchmarkSuite.h>
+#include <toposlam/simulation/FloorPlanGenerator.h>
+#include <toposlam/simulation/FloorPlanImages.h>
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFile.h>
@@ -17,6 +24,29 @@
 
 namespace {
 
+using namespace toposlam;
+
+const char* const kDescription =
+    "Benchmark B4: room segmentation scored against ground-truth rooms and doors (metrics: "
+    "shared/BENCHMARKS.md, B4) by the virtual-door segmenter (vdoor: TopoSLAM's default; "
+    "vdoor-paper: the paper's method as published) and the morphological (morph) and "
+    "distance-transform (dist) baselines of ipa_room_segmentation, on up to three sets:\n"
+    "  bormann  the 20 maps of Bormann et al. (ICRA 2016), unfurnished and furnished;\n"
+    "  gen      B4-gen: generated furnished office buildings with exact ground truth "
+    "(--gen-seeds);\n"
+    "  slam     end to end: a simulated robot tours generated plans and Bormann maps, "
+    "toposlam's SLAM maps the log, the SLAM grid and trajectory are segmented and scored in "
+    "the plan's frame (beside the same plans as drawn, set 'drawn'). Slow: minutes per plan.\n"
+    "--rotations turns every bormann and gen map (and its ground truth) by each angle. Prints "
+    "one row per map and method, then the averages per set, method, furnishing and angle, and "
+    "writes them as JSON. Every method runs single-threaded; times are wall-clock medians over "
+    "--repeats runs of the segmentation call alone (loading excluded), with the thread's CPU "
+    "time beside them.\nExamples:\n"
+    "  toposlam-bench-rooms -o b4.json > b4.md\n"
+    "  toposlam-bench-rooms --sets bormann,gen --rotations 0,10,17,30,45 -r 1 -o b4-rot.json\n"
+    "  toposlam-bench-rooms --sets slam -r 1 --images b4-slam-png -o b4-slam.json\n"
+    "  toposlam-bench-rooms --write-plans gen-maps   # B4-gen as Bormann-format files";
+
 std::vector<std::string> splitList(const std::string& s) {
     std::vector<std::string> out;
     std::stringstream in(s);
@@ -28,85 +58,218 @@ std::vector<std::string> splitList(const std::string& s) {
     return out;
 }
 
-int run(int argc, char** argv) {
-    TCLAP::CmdLine cmd(
-        "Benchmark B4: room segmentation of the 20 maps of Bormann et al. (ICRA 2016), "
-        "unfurnished and furnished, by the virtual-door segmenter (vdoor: TopoSLAM's "
-        "default; vdoor-paper: the paper's method as published) and by the morphological "
-        "(morph) and distance-transform (dist) baselines of ipa_room_segmentation. Prints "
-        "one table per map and method, then the averages (unfurnished / furnished / all), "
-        "and writes them as JSON. Metrics: shared/BENCHMARKS.md (B4). Every method runs "
-        "single-threaded; times are wall-clock medians over --repeats runs of the "
-        "segmentation call alone (map loading excluded).\nExample:\n"
-        "  toposlam-bench-rooms -o b4.json --images b4-png > b4.md",
-        ' ', "0.1");
-    TCLAP::ValueArg<std::string> data(
-        "d", "data",
+std::vector<unsigned> seedList(const std::string& text, const std::string& option) {
+    std::vector<unsigned> seeds;
+    for (const std::string& item : splitList(text)) {
+        const auto dash = item.find('-', 1);
+        const auto range = cli::parseNumberList(
+            dash == std::string::npos ? item : item.substr(0, dash) + "," + item.substr(dash + 1),
+            dash == std::string::npos ? 1 : 2, option);
+        for (double s = range.front(); s <= range.back(); ++s) {
+            if (s < 0 || s != std::floor(s) || s > 1e9)
+                throw cli::UsageError(option + ": seeds are whole numbers >= 0");
+            seeds.push_back(static_cast<unsigned>(s));
+        }
+    }
+    return seeds;
+}
+
+std::vector<double> angleList(const std::string& text) {
+    std::vector<double> angles;
+    for (const std::string& item : splitList(text))
+        angles.push_back(cli::parseNumberList(item, 1, "--rotations",
+                                              cli::NumberRange<double>::closed(-360, 360))
+                             .front());
+    return angles;
+}
+
+// B4-gen as files in Bormann's layout, one folder per set of angles.
+int writePlans(const std::string& dir, const std::vector<unsigned>& seeds,
+               const std::vector<double>& angles) {
+    for (const unsigned seed : seeds) {
+        const auto plan = simulation::generateFloorPlan(seed);
+        std::cout << roomsbench::generatedPlanName(seed) << ": " << plan.summary << "\n";
+        for (const double angle : angles) {
+            std::string name = roomsbench::generatedPlanName(seed);
+            if (angle != 0)
+                name += "_rot" + std::to_string(static_cast<int>(std::lround(angle)));
+            simulation::saveFloorPlanImages(simulation::drawFloorPlan(plan, 0.05, angle), dir,
+                                            name);
+        }
+    }
+    std::cerr << "wrote " << seeds.size() * angles.size() << " plans to " << dir << "\n";
+    return 0;
+}
+
+struct Arguments {
+    TCLAP::CmdLine cmd{kDescription, ' ', "0.2"};
+    TCLAP::ValueArg<std::string> data{
+        "d",
+        "data",
         "folder with the Bormann maps (<map>.png, <map>_furnitures.png, "
         "<map>_gt_segmentation.png); default: " TOPOSLAM_SHARED_DATA_DIR "/rooms",
-        false, TOPOSLAM_SHARED_DATA_DIR "/rooms", "dir", cmd);
-    TCLAP::ValueArg<std::string> json("o", "json", "JSON output file (default: b4-rooms.json)",
-                                      false, "b4-rooms.json", "file", cmd);
-    TCLAP::ValueArg<std::string> images(
-        "", "images",
-        "write a PNG of every segmentation into this folder (segments coloured, "
-        "true door pixels blue, virtual doors as 0.5 m circles: green = matched, red = not)",
-        false, "", "dir", cmd);
-    toposlam::cli::NumberArg<int> repeats(
-        "r", "repeats", "runs per map and method; the median time is reported (default: 3)", 3,
-        toposlam::cli::NumberRange<int>::positive(1000), "n", cmd);
-    TCLAP::ValueArg<std::string> methods(
-        "m", "methods", "comma-separated subset of vdoor,vdoor-paper,morph,dist (default: all)",
-        false, "", "list", cmd);
-    TCLAP::ValueArg<std::string> maps(
-        "", "maps", "comma-separated subset of the 20 base map names (default: all)", false, "",
-        "list", cmd);
-    TCLAP::ValueArg<std::string> config(
-        "c", "config",
-        "ini file with a [RoomSegmenter] section for vdoor (see "
-        "config_ini/rooms.ini; default: the built-in defaults); vdoor-paper always runs the "
-        "paper-exact variant with that file's door width, area and Hough values",
-        false, "", "file.ini", cmd);
-    if (const auto exitCode = toposlam::cli::parseCommandLine(cmd, argc, argv))
-        return *exitCode;
+        false,
+        TOPOSLAM_SHARED_DATA_DIR "/rooms",
+        "dir",
+        cmd};
+    TCLAP::ValueArg<std::string> json{
+        "o",    "json", "JSON output file (default: b4-rooms.json)", false, "b4-rooms.json",
+        "file", cmd};
+    TCLAP::ValueArg<std::string> images{
+        "",
+        "images",
+        "write a PNG of every segmentation into this folder (<set>.<map>[@angle].<method>.png: "
+        "segments coloured, true door pixels blue, virtual doors as 0.5 m circles: green = "
+        "matched, red = not; vdoor also .steps.png)",
+        false,
+        "",
+        "dir",
+        cmd};
+    cli::NumberArg<int> repeats{"r", "repeats",
+                                "runs per map and method; the median time is reported (default: 3)",
+                                3, cli::NumberRange<int>::positive(1000), "n", cmd};
+    TCLAP::ValueArg<std::string> methods{
+        "m",   "methods", "comma-separated subset of vdoor,vdoor-paper,morph,dist (default: all)",
+        false, "",        "list",
+        cmd};
+    TCLAP::ValueArg<std::string> sets{
+        "",    "sets",        "comma-separated subset of bormann,gen,slam (default: bormann,gen)",
+        false, "bormann,gen", "list",
+        cmd};
+    TCLAP::ValueArg<std::string> maps{
+        "",    "maps", "comma-separated subset of the 20 Bormann base map names (default: all)",
+        false, "",     "list",
+        cmd};
+    TCLAP::ValueArg<std::string> rotations{
+        "",
+        "rotations",
+        "comma-separated angles (deg, counter-clockwise) to turn every bormann and gen map by, "
+        "nearest neighbour (default: 0)",
+        false,
+        "0",
+        "list",
+        cmd};
+    TCLAP::ValueArg<std::string> genSeeds{
+        "",    "gen-seeds", "B4-gen plans: seeds and ranges, e.g. 1-20 or 3,7 (default: 1-20)",
+        false, "1-20",      "list",
+        cmd};
+    TCLAP::ValueArg<std::string> slamSeeds{
+        "",     "slam-seeds", "end to end: generated plans to tour (default: 1-4)", false, "1-4",
+        "list", cmd};
+    TCLAP::ValueArg<std::string> slamMaps{"",
+                                          "slam-maps",
+                                          "end to end: Bormann maps to tour, furnished (default: "
+                                          "Freiburg52_scan,Freiburg79_scan,office_d)",
+                                          false,
+                                          "Freiburg52_scan,Freiburg79_scan,office_d",
+                                          "list",
+                                          cmd};
+    TCLAP::ValueArg<std::string> slamConfig{
+        "",
+        "slam-config",
+        "end to end: toposlam-slam's ini (default: " TOPOSLAM_SOURCE_DIR
+        "/config_ini/toposlam-slam.ini)",
+        false,
+        TOPOSLAM_SOURCE_DIR "/config_ini/toposlam-slam.ini",
+        "file.ini",
+        cmd};
+    TCLAP::ValueArg<std::string> simConfig{
+        "",
+        "sim-config",
+        "end to end: toposlam-sim's ini for the tour, laser and odometry (default: the "
+        "built-in values of config_ini/sim-office.ini)",
+        false,
+        "",
+        "file.ini",
+        cmd};
+    TCLAP::ValueArg<std::string> workDir{
+        "",    "work-dir",     "end to end: where the simulated logs go (default: b4-slam-logs)",
+        false, "b4-slam-logs", "dir",
+        cmd};
+    TCLAP::ValueArg<std::string> writePlans{
+        "",
+        "write-plans",
+        "write the B4-gen plans (--gen-seeds, at --rotations) into this folder in Bormann's "
+        "format (<name>.png, _furnitures.png, _gt_segmentation.png, _doors.json) and exit",
+        false,
+        "",
+        "dir",
+        cmd};
+    TCLAP::ValueArg<std::string> config{
+        "c",
+        "config",
+        "ini file with a [RoomSegmenter] section for vdoor (see config_ini/rooms.ini; default: "
+        "the built-in defaults); vdoor-paper runs the same options with every deviation off "
+        "(as toposlam-rooms -c file --paper)",
+        false,
+        "",
+        "file.ini",
+        cmd};
+};
 
-    toposlam::rooms::RoomBenchmarkOptions options;
-    options.dataDir = data.getValue();
-    options.repeats = repeats.getValue();
-    options.imageDir = images.getValue();
-    options.methods = splitList(methods.getValue());
-    options.maps = splitList(maps.getValue());
-    if (!config.getValue().empty()) {
-        if (!std::filesystem::exists(config.getValue())) {
-            throw std::runtime_error(config.getValue() + ": no such config file");
-        }
-        const mrpt::config::CConfigFile ini(config.getValue());
-        options.virtualDoor.loadFromConfigFile(ini, "RoomSegmenter");
-        options.virtualDoorPaper = options.virtualDoor;
-        const auto paper = toposlam::rooms::RoomSegmenter::Options::paperExact();
-        options.virtualDoorPaper.door.localDirection = paper.door.localDirection;
-        options.virtualDoorPaper.filters.keepNarrowestOfGroup = paper.filters.keepNarrowestOfGroup;
-        options.virtualDoorPaper.filters.mergeSmallestFirst = paper.filters.mergeSmallestFirst;
-        options.virtualDoorPaper.filters.requireWallJambs = paper.filters.requireWallJambs;
-        options.virtualDoorPaper.filters.requireConstriction = paper.filters.requireConstriction;
+roomsbench::RoomBenchmarkSuiteOptions suiteOptions(
+    Arguments& a, std::unique_ptr<mrpt::config::CConfigFile>& slamIni) {
+    roomsbench::RoomBenchmarkSuiteOptions o;
+    o.bench.dataDir = a.data.getValue();
+    o.bench.repeats = a.repeats.getValue();
+    o.bench.imageDir = a.images.getValue();
+    o.bench.methods = splitList(a.methods.getValue());
+    o.bench.maps = splitList(a.maps.getValue());
+    o.bench.rotationsDeg = angleList(a.rotations.getValue());
+    o.bench.virtualDoor = rooms::RoomSegmenter::Options::load(a.config.getValue(), false);
+    o.bench.virtualDoorPaper = rooms::RoomSegmenter::Options::load(a.config.getValue(), true);
+    const auto sets = splitList(a.sets.getValue());
+    auto has = [&](const char* s) { return std::find(sets.begin(), sets.end(), s) != sets.end(); };
+    for (const auto& s : sets) {
+        if (s != "bormann" && s != "gen" && s != "slam")
+            throw cli::UsageError("--sets: unknown set '" + s + "' (bormann, gen, slam)");
     }
-    if (!std::filesystem::is_directory(options.dataDir)) {
-        std::cerr << "B4 skipped: the benchmark maps are not there (" << options.dataDir
+    const bool haveData = std::filesystem::is_directory(o.bench.dataDir);
+    if (!haveData && (has("bormann") || has("slam")))
+        std::cerr << "B4 skipped: the benchmark maps are not there (" << o.bench.dataDir
                   << "); get shared/data/rooms or pass --data\n";
-        return 0;
+    o.bormann = has("bormann") && haveData;
+    if (has("gen"))
+        o.generatedSeeds = seedList(a.genSeeds.getValue(), "--gen-seeds");
+    if (has("slam")) {
+        o.endToEndSeeds = seedList(a.slamSeeds.getValue(), "--slam-seeds");
+        if (haveData)
+            o.endToEndBormannMaps = splitList(a.slamMaps.getValue());
+        slamIni = std::make_unique<mrpt::config::CConfigFile>(a.slamConfig.getValue());
+        o.endToEnd.slamConfig = slamIni.get();
+        if (!a.simConfig.getValue().empty())
+            simulation::loadSimulatorConfig(mrpt::config::CConfigFile(a.simConfig.getValue()),
+                                            o.endToEnd.simulator);
+        o.endToEnd.workDir = a.workDir.getValue();
     }
+    return o;
+}
 
-    const toposlam::rooms::RoomBenchmark bench(options);
-    toposlam::io::ProgressDisplay progress("B4 room segmentation", "maps");
-    const auto scores = bench.run([&](std::size_t done, std::size_t total, const std::string&) {
-        progress.update(static_cast<double>(done) / static_cast<double>(total), done);
-    });
+int run(int argc, char** argv) {
+    Arguments a;
+    if (const auto exitCode = cli::parseCommandLine(a.cmd, argc, argv))
+        return *exitCode;
+    for (const std::string& file : {a.config.getValue(), a.simConfig.getValue()}) {
+        if (!file.empty() && !std::filesystem::is_regular_file(file))
+            throw io::InputError(file, "no such config file");
+    }
+    if (!a.writePlans.getValue().empty()) {
+        return writePlans(a.writePlans.getValue(), seedList(a.genSeeds.getValue(), "--gen-seeds"),
+                          angleList(a.rotations.getValue()));
+    }
+    std::unique_ptr<mrpt::config::CConfigFile> slamIni;
+    const auto options = suiteOptions(a, slamIni);
+    if (!options.bormann && options.generatedSeeds.empty() && options.endToEndSeeds.empty() &&
+        options.endToEndBormannMaps.empty()) {
+        return 0;  // nothing left to run (the reason was printed)
+    }
+    io::ProgressDisplay progress("B4 room segmentation", "maps");
+    const auto result = roomsbench::runRoomBenchmarkSuite(
+        options, [&](double fraction, std::size_t done) { progress.update(fraction, done); });
     progress.finish();
-    const auto summary = toposlam::rooms::RoomBenchmark::summarize(scores);
-    std::cout << toposlam::rooms::RoomBenchmark::table(scores, summary);
-    toposlam::io::saveTextFile(toposlam::rooms::RoomBenchmark::json(scores, summary, options),
-                               json.getValue());
-    std::cerr << "wrote " << json.getValue() << "\n";
+    std::cout << roomsbench::suiteTable(result);
+    io::saveTextFile(roomsbench::suiteJson(result, options), a.json.getValue());
+    std::cerr << "wrote " << a.json.getValue() << "\n";
     return 0;
 }
 

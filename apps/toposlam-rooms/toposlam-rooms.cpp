@@ -1,32 +1,14 @@
 // toposlam-rooms: room segmentation of an occupancy grid by virtual-door detection, written as
 // a topological map (rooms = nodes, doors = edges) in JSON, GraphML, PNG and MRPT formats.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
-#include <mrpt/config/CConfigFile.h>
-#include <mrpt/io/CFileGZOutputStream.h>
-#include <mrpt/serialization/CArchive.h>
 #include <toposlam/cli/CommandLine.h>
 #include <toposlam/cli/NumberArg.h>
-#include <toposlam/io/AtomicFile.h>
-#include <toposlam/io/GridMapIO.h>
-#include <toposlam/io/InputError.h>
-#include <toposlam/io/Trajectory.h>
-#include <toposlam/rooms/CTopologicalMap.h>
-#include <toposlam/rooms/RoomSegmenter.h>
-#include <toposlam/rooms/TopologicalMapIO.h>
-#include <toposlam/rooms/TopologicalMapRendering.h>
+#include <toposlam/rooms/RoomSegmentationJob.h>
 
-#include <opencv2/imgcodecs.hpp>
-
-#include <cmath>
-#include <cstdio>
 #include <cstdlib>
-#include <filesystem>
-#include <memory>
-#include <optional>
-#include <sstream>
+#include <iostream>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 namespace {
 
@@ -77,8 +59,9 @@ int run(int argc, char** argv) {
         "names, units and defaults). Options given on the command line override it",
         false, "", "file.ini", cmd);
     TCLAP::SwitchArg paper("", "paper",
-                           "The paper's method as published: TopoSLAM's deviations off (same as "
-                           "'variant = paper' in the ini file)",
+                           "The paper's method as published: all of TopoSLAM's deviations off, "
+                           "every other value (door width, areas, Hough; from -c when given) "
+                           "kept",
                            cmd);
     cli::NumberArg<double> doorWidth("", "door-width",
                                      "Door width w in m. Default: 1.1 (with the tolerance: "
@@ -112,103 +95,37 @@ int run(int argc, char** argv) {
     if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
         return *exitCode;
 
-    rooms::RoomSegmenter::Options options;
-    if (paper.getValue())
-        options = rooms::RoomSegmenter::Options::paperExact();
-    if (!config.getValue().empty()) {
-        if (!std::filesystem::is_regular_file(config.getValue())) {
-            throw io::InputError(config.getValue(), "no such config file");
-        }
-        options.loadFromConfigFile(mrpt::config::CConfigFile(config.getValue()), "RoomSegmenter");
-        if (paper.getValue()) {  // --paper wins over the file's variant, keeps its values
-            const auto exact = rooms::RoomSegmenter::Options::paperExact();
-            options.door.localDirection = exact.door.localDirection;
-            options.filters.keepNarrowestOfGroup = exact.filters.keepNarrowestOfGroup;
-            options.filters.mergeSmallestFirst = exact.filters.mergeSmallestFirst;
-            options.filters.requireWallJambs = exact.filters.requireWallJambs;
-            options.filters.requireConstriction = exact.filters.requireConstriction;
-        }
-    }
+    rooms::RoomSegmentationJob job;
+    job.mapPath = input.getValue();
+    job.trajectoryPath = trajectory.getValue();
+    job.options = rooms::RoomSegmenter::Options::load(config.getValue(), paper.getValue());
     if (doorWidth.isSet())
-        options.door.doorWidth = doorWidth.getValue();
+        job.options.door.doorWidth = doorWidth.getValue();
     if (doorTolerance.isSet())
-        options.door.doorWidthTolerance = doorTolerance.getValue();
+        job.options.door.doorWidthTolerance = doorTolerance.getValue();
     if (minRoomArea.isSet())
-        options.filters.minRoomArea = minRoomArea.getValue();
+        job.options.filters.minRoomArea = minRoomArea.getValue();
     if (freeThreshold.isSet())
-        options.freeSpace.freeThreshold = freeThreshold.getValue();
-    options.validate();
-
-    std::optional<io::GridMapGeometry> geometry;
+        job.options.freeSpace.freeThreshold = freeThreshold.getValue();
+    job.options.validate();
     if (resolution.isSet() || origin.isSet()) {
-        geometry.emplace();
+        job.geometry.emplace();
         if (resolution.isSet())
-            geometry->resolution = resolution.getValue();
+            job.geometry->resolution = resolution.getValue();
         if (origin.isSet()) {
             const auto xy = cli::parseNumberList(origin.getValue(), 2, "--origin");
-            geometry->originX = xy[0];
-            geometry->originY = xy[1];
+            job.geometry->originX = xy[0];
+            job.geometry->originY = xy[1];
         }
     }
-    const auto grid = io::loadGridMap(input.getValue(), geometry);
-    std::vector<mrpt::math::TPose2D> poses;
-    if (!trajectory.getValue().empty()) {
-        for (const auto& p : io::loadTrajectory(trajectory.getValue()))
-            poses.push_back(p.pose);
-        if (poses.empty())
-            throw io::InputError(trajectory.getValue(), "the trajectory has no poses");
-    }
 
-    const rooms::RoomSegmenter segmenter(options);
-    const auto result = segmenter.segment(grid, poses, input.getValue());
-    if (result.fromTrajectory && result.searchCells.empty()) {
-        throw io::InputError(trajectory.getValue(),
-                             "no pose of the trajectory lies in the map's free space (wrong "
-                             "frame or wrong file?)");
-    }
-
-    const std::filesystem::path dir(output.getValue());
-    std::filesystem::create_directories(dir);
-    rooms::saveTopologicalMapJson(result.map, (dir / "rooms.json").string());
-    rooms::saveTopologicalMapGraphML(result.map, (dir / "rooms.graphml").string());
-    rooms::RenderOptions render;
-    render.scale = scale.getValue();
-    render.doorIds = true;
-    rooms::saveTopologicalMapPng(result.map, (dir / "rooms.png").string(), render);
-    // What each step saw, over the binarised map.
-    cv::Mat free(result.map.labels.size(), CV_8U, cv::Scalar(0));
-    free.setTo(255, result.map.labels > 0);
-    const cv::Mat steps = rooms::renderDiagnostics(result, free);
-    io::writeFileAtomically((dir / "rooms-steps.png").string(), [&](const std::string& tmp) {
-        if (!cv::imwrite(tmp, steps))
-            throw std::runtime_error(tmp + ": cannot write the PNG");
-    });
-    io::writeFileAtomically((dir / "rooms.topomap.gz").string(), [&](const std::string& tmp) {
-        mrpt::io::CFileGZOutputStream out(tmp);
-        mrpt::serialization::archiveFrom(out) << rooms::CTopologicalMap(result.map);
-    });
-
+    const auto result = rooms::runRoomSegmentationJob(job);
+    rooms::writeRoomSegmentationFiles(result, output.getValue(), scale.getValue());
     if (!quiet.getValue()) {
-        const auto& m = result.map;
-        std::printf("%s: %zu rooms, %zu doors (%s search, %zu candidate doors, %.1f ms)\n",
-                    input.getValue().c_str(), m.rooms.size(), m.doors.size(),
-                    result.fromTrajectory ? "trajectory" : "medial-axis", result.candidates.size(),
-                    result.milliseconds);
-        for (const auto& r : m.rooms) {
-            std::printf("  room %3d  %8.2f m^2  centroid (%.2f, %.2f)  neighbours:", r.id, r.area,
-                        r.centroid.x, r.centroid.y);
-            for (int n : m.neighbours(r.id))
-                std::printf(" %d", n);
-            std::printf("\n");
-        }
-        for (const auto& d : m.doors) {
-            std::printf("  door %3d  rooms %d-%d  %.2f m wide at (%.2f, %.2f)\n", d.id, d.roomA,
-                        d.roomB, d.width, d.middle().x, d.middle().y);
-        }
-        std::printf(
-            "wrote %s/{rooms.json, rooms.graphml, rooms.png, rooms-steps.png, "
-            "rooms.topomap.gz}\n",
-            dir.string().c_str());
+        std::cout << rooms::describeRoomSegmentation(result, input.getValue()) << "wrote "
+                  << output.getValue()
+                  << "/{rooms.json, rooms.graphml, rooms.png, rooms-steps.png, "
+                     "rooms.topomap.gz}\n";
     }
     return EXIT_SUCCESS;
 }

@@ -2,9 +2,9 @@
 //   toposlam-slam <config.ini> <log.{rawlog,clf}> [-o outdir]
 // The algorithm lives in libs/mapping (mapLog, CGraphSlamBuilder); this app parses the
 // command line, shows progress and writes the outputs.
-#include <mrpt/config/CConfigFile.h>
+#include <toposlam/classes/TopoSlamClasses.h>
 #include <toposlam/cli/CommandLine.h>
-#include <toposlam/io/InputError.h>
+#include <toposlam/config/IniFile.h>
 #include <toposlam/io/ProgressDisplay.h>
 #include <toposlam/mapping/LogMapper.h>
 #include <toposlam/mapping/MappingOutputs.h>
@@ -21,8 +21,8 @@ int run(int argc, char** argv) {
         "Laser SLAM over a robot log (MRPT rawlog in either format, or CARMEN log). The default "
         "engine is TopoSLAM's graph SLAM: scans registered against local submaps by "
         "point-to-line ICP, the graph matcher where that fails, keyframes with corner "
-        "features, loop closure verified by the graph matcher, pose graph optimised by MRPT's "
-        "sparse Levenberg-Marquardt. '[Slam] engine = icp' runs MRPT's icp-slam engine "
+        "features, loop closure verified by the graph matcher, pose graph optimised by Ceres "
+        "with a robust loss on loop edges. '[Slam] engine = icp' runs MRPT's icp-slam engine "
         "instead (configured by icp-slam's [MappingApplication] and [ICP] keys). See "
         "config_ini/toposlam-slam.ini for every key. Writes into <outdir>: trajectory.txt "
         "(timestamp x y yaw per scan, stamps as in the log), map.gridmap.gz, map.png + "
@@ -38,14 +38,14 @@ int run(int argc, char** argv) {
                                         false, "slam-out", "dir", cmd);
     if (const auto exitCode = toposlam::cli::parseCommandLine(cmd, argc, argv))
         return *exitCode;
+    toposlam::classes::registerTopoSlamClasses();  // logs may hold TopoSLAM's objects
 
-    if (!fs::is_regular_file(configArg.getValue()))
-        throw toposlam::io::InputError(configArg.getValue(), "configuration file not found");
-    const mrpt::config::CConfigFile ini(configArg.getValue());
+    // A file that is no .ini file at all is an error here, not defaults (config/IniFile.h).
+    const auto ini = toposlam::config::openIniFile(configArg.getValue());
     toposlam::io::ProgressDisplay progress(
         "mapping " + fs::path(logArg.getValue()).filename().string(), "scans");
     const toposlam::mapping::MappingResult result = toposlam::mapping::mapLog(
-        logArg.getValue(), ini,
+        logArg.getValue(), *ini,
         [&](double fraction, std::size_t scans) { progress.update(fraction, scans); });
     progress.finish();
 

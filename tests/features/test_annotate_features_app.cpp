@@ -111,8 +111,36 @@ TEST(AnnotateFeaturesApp, EveryExtractorAndOptionsFromAnIniFile) {
     const auto printed = test::runApp("toposlam-annotate-features",
                                       "'" + in + "' -o x.rawlog -c '" + ini + "' --print-options");
     EXPECT_EQ(printed.exitCode, 0) << printed.output;
-    EXPECT_NE(printed.output.find("dk_th              = 2.5"), std::string::npos) << printed.output;
-    EXPECT_NE(printed.output.find("least_squares"), std::string::npos) << printed.output;
+    EXPECT_NE(printed.output.find("\ndk_th = 2.5\n"), std::string::npos) << printed.output;
+    EXPECT_NE(printed.output.find("\nline_fit = least_squares\n"), std::string::npos)
+        << printed.output;
+
+    // A section that is not in the file, --section without a file, a misspelled key.
+    const std::string out = dir.file("out.rawlog");
+    const auto error = [&](const std::string& args) {
+        const auto r =
+            test::runApp("toposlam-annotate-features", "'" + in + "' -o '" + out + "' " + args);
+        EXPECT_EQ(r.exitCode, 1) << args << ": " << r.output;
+        EXPECT_FALSE(std::filesystem::exists(out)) << args;
+        return r.output;
+    };
+    EXPECT_NE(error("-c '" + ini + "' -e segments")
+                  .find("error: " + ini +
+                        ": [SegmentExtractor]: no such section in the file; did "
+                        "you mean [CornerExtractor]?"),
+              std::string::npos);
+    EXPECT_NE(error("-c '" + ini + "' --section Corners").find("[Corners]: no such section"),
+              std::string::npos);
+    const auto usage = test::runApp("toposlam-annotate-features",
+                                    "'" + in + "' -o '" + out + "' --section CornerExtractor");
+    EXPECT_EQ(usage.exitCode, 2) << usage.output;  // bad usage
+    EXPECT_NE(usage.output.find("error: --section: no -c file"), std::string::npos);
+    std::ofstream(ini) << "[CornerExtractor]\ndk_threshold = 2.5\n";
+    EXPECT_NE(error("-c '" + ini + "'")
+                  .find("error: " + ini +
+                        ": [CornerExtractor] dk_threshold = 2.5: unknown key; "
+                        "did you mean 'dk_th'?"),
+              std::string::npos);
 }
 
 TEST(AnnotateFeaturesApp, BadInputIsAnErrorAndLeavesNoOutput) {

@@ -4,6 +4,7 @@
 #include <mrpt/core/Clock.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/obs/CObservationComment.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CRawlog.h>
 #include <mrpt/random/RandomGenerators.h>
@@ -12,6 +13,8 @@
 #include <toposlam/io/LaserLogReader.h>
 #include <toposlam/io/RawlogWriter.h>
 #include <toposlam/io/Trajectory.h>
+
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -239,6 +242,46 @@ TEST(RawlogBadInput, TruncatedStreamIsAnErrorNotAnEnd) {
         EXPECT_NE(error.find(cut + ": object #"), std::string::npos) << error;
         EXPECT_NE(error.find("truncated or corrupt"), std::string::npos) << error;
     }
+}
+
+// Objects of classes the reader's check does not know (here a CObservationComment) are read
+// after a dry run in a child process: a sound one is skipped, one whose string length claims
+// 2 GB is an error, and the reader itself never allocates that.
+TEST(RawlogBadInput, UncheckedClassesAreSkippedOrBoundedInMemory) {
+    toposlam::test::TempDir dir;
+    const auto records = syntheticRecords(2);
+    const std::string marker = "TopoSLAM comment marker";
+    {
+        mrpt::io::CFileGZOutputStream file(dir.file("comment.rawlog"));
+        auto out = mrpt::serialization::archiveFrom(file);
+        mrpt::obs::CObservationComment comment;
+        comment.text = marker;
+        out << *records[0].scan << comment << *records[1].scan;
+    }
+    EXPECT_EQ(LaserLogReader::readAll(dir.file("comment.rawlog")).size(), 2u);
+
+    // The same file, plain, with the comment's length field (before its text) set to 2^31 - 1.
+    std::string bytes;
+    {
+        mrpt::io::CFileGZInputStream in(dir.file("comment.rawlog"));
+        char buf[4096];
+        for (std::size_t n; (n = in.Read(buf, sizeof buf)) > 0;)
+            bytes.append(buf, n);
+    }
+    const auto at = bytes.find(marker);
+    ASSERT_NE(at, std::string::npos);
+    bytes.replace(at - 4, 4, std::string("\xff\xff\xff\x7f", 4));
+    writeBytes(dir.file("huge.rawlog"), bytes);
+    rusage before{}, after{};
+    getrusage(RUSAGE_SELF, &before);
+    const std::string error = readError(dir.file("huge.rawlog"));
+    getrusage(RUSAGE_SELF, &after);
+    EXPECT_NE(error.find("huge.rawlog: object #1 (after a mrpt::obs::CObservation2DRangeScan), a "
+                         "mrpt::obs::CObservationComment: "),
+              std::string::npos)
+        << error;
+    EXPECT_NE(error.find("more than 1024 MiB"), std::string::npos) << error;
+    EXPECT_LT(after.ru_maxrss - before.ru_maxrss, 200 * 1024) << "KiB more at peak";
 }
 
 TEST(RawlogBadInput, UnregisteredClassIsAnError) {

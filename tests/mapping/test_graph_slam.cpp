@@ -32,7 +32,7 @@ SlamRun runSlam(const test::SimulatedDrive& drive) {
     mapping::GraphSlamOptions options;
     options.loadFromConfigFile(ini, "GraphSlam");
     matching::GraphMatcherOptions matcher;
-    matcher.loadFromConfigFile(ini, "GraphMatcher");
+    matcher.loadFromConfigFile(ini, "GraphScanMatcher");
     SlamRun run;
     run.slam = std::make_unique<mapping::GraphSlam>(
         options, matcher, features::makeFeatureExtractor(options.extractor, &ini),

@@ -369,8 +369,8 @@ TEST(CScanFeaturesMap, IniMapDefinitionsSetEveryOptionAndRejectBadValues) {
     ini.write("map", "scanFeaturesMap_count", 1);
     ini.write("map_scanFeaturesMap_00_creationOpts", "extractor", "corners");
     ini.write("map_scanFeaturesMap_00_insertOpts", "source", "features");
-    ini.write("map_scanFeaturesMap_00_insertOpts", "mergeAngle_deg", 3.0);
-    ini.write("map_scanFeaturesMap_00_insertOpts", "minObservations", 3);
+    ini.write("map_scanFeaturesMap_00_insertOpts", "merge_angle_deg", 3.0);
+    ini.write("map_scanFeaturesMap_00_insertOpts", "min_observations", 3);
     ini.write("map_scanFeaturesMap_00_likelihoodOpts", "sigma_dist", 0.01);
     ini.write("map_scanFeaturesMap_00_likelihoodOpts", "decimation", 2);
     mrpt::maps::TSetOfMetricMapInitializers defs;
@@ -387,10 +387,11 @@ TEST(CScanFeaturesMap, IniMapDefinitionsSetEveryOptionAndRejectBadValues) {
     EXPECT_EQ(m->likelihoodOptions.decimation, 2u);
 
     for (const auto& [key, value] :
-         std::vector<std::pair<std::string, std::string>>{{"mergeDistance", "-0.1"},
-                                                          {"mergeAngle_deg", "nan"},
+         std::vector<std::pair<std::string, std::string>>{{"merge_distance", "-0.1"},
+                                                          {"merge_angle_deg", "nan"},
                                                           {"source", "lasers"},
-                                                          {"minObservations", "0"}}) {
+                                                          {"min_observations", "0"},
+                                                          {"mergeGap", "0.3"}}) {
         mrpt::config::CConfigFileMemory bad;
         bad.write("map", "scanFeaturesMap_count", 1);
         bad.write("map_scanFeaturesMap_00_insertOpts", key, value);

@@ -7,7 +7,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <string>
 
 using toposlam::test::runApp;
@@ -80,8 +79,11 @@ TEST(PlanApp, EachFailureHasItsExitStatusAndWritesNothing) {
     ASSERT_EQ(other.exitCode, 0) << other.output;
     // A GraphML graph without the map geometry (another writer's): bad input, said so.
     std::string graph = readFile(roomsDir() + "/rooms.graphml");
-    graph = std::regex_replace(graph,
-                               std::regex("<data key=\"(cols|rows|label_runs)\">[^<]*</data>"), "");
+    for (const std::string key : {"cols", "rows", "label_runs"}) {
+        const std::string open = "<data key=\"" + key + "\">";
+        for (auto at = graph.find(open); at != std::string::npos; at = graph.find(open))
+            graph.erase(at, graph.find("</data>", at) + 7 - at);
+    }
     std::ofstream(dir.file("bare.graphml")) << graph;
     const struct {
         std::string rooms, options, expected;

@@ -4,6 +4,7 @@
 #include <toposlam/rooms/FreeSpaceBinarizer.h>
 #include <toposlam/rooms/LineMerger.h>
 #include <toposlam/rooms/MainDirectionVoter.h>
+#include <toposlam/rooms/RegionPartition.h>
 #include <toposlam/rooms/VirtualDoorDetector.h>
 
 #include "DrawnMaps.h"
@@ -140,6 +141,51 @@ TEST(DoorFilters, DistanceFilterKeepsTheNarrowestOfAGroup) {
     const auto greedy = DoorFilters(paper).distance(doors, kRes);
     ASSERT_EQ(greedy.size(), 2u);
     EXPECT_EQ(greedy[0].jambA.x, 10);  // the paper: first come, first kept
+}
+
+TEST(DoorFilters, DistanceFilterChainsGroups) {
+    // Cuts 8 cells apart (N_d = 10 cells): the first and the last are 32 cells apart, but the
+    // chain joins them into one group, of which the narrowest is kept.
+    std::vector<VirtualDoor> doors;
+    for (int k = 0; k < 5; ++k) {
+        const double w = 20 - (k == 3 ? 1 : 0);
+        doors.push_back({{10 + 8 * k, 10}, {10 + 8 * k, static_cast<int>(10 + w)}, w, 0, {0, 0}});
+    }
+    const auto kept = DoorFilters().distance(doors, kRes);
+    ASSERT_EQ(kept.size(), 1u);
+    EXPECT_EQ(kept[0].jambA.x, 34);
+}
+
+TEST(DoorFilters, MinimumAreaMergesSmallestFirstThroughTheWidestCut) {
+    // A 12 x 2 m strip cut at x = 4, 5 and 9 m into regions of 8, 2, 8 and 6 m^2 (40 px wide
+    // cuts): with N_s = 3 m^2 only the 2 m^2 sliver is too small; it joins a neighbour
+    // through its wider cut (the narrower one is the waist), and both other cuts stay doors.
+    cv::Mat free(40, 240, CV_8U, cv::Scalar(255));
+    auto cut = [](int x, int top, int bottom) {
+        const double w = bottom - top;
+        return VirtualDoor{{x, top}, {x, bottom}, w, 0, {x, 20}};
+    };
+    // The sliver's left cut is 22 cells (1.1 m, a door's width), its right cut 39 cells.
+    free(cv::Rect(80, 0, 1, 9)).setTo(0);
+    free(cv::Rect(80, 31, 1, 9)).setTo(0);
+    const std::vector<VirtualDoor> doors = {cut(80, 9, 31), cut(100, 0, 39), cut(180, 0, 39)};
+    const RegionPartition partition(free, doors);
+    ASSERT_EQ(partition.regionCount(), 4);
+    DoorFilters::Options o;
+    o.minRoomArea = 3.0;
+    const auto rooms = DoorFilters(o).minimumArea(partition, doors,
+                                                  DoorFilters::adjacency(partition), kRes * kRes);
+    EXPECT_EQ(rooms.roomCount, 3);
+    ASSERT_EQ(rooms.doors.size(), 2u);
+    EXPECT_EQ(rooms.doors[0].door, 0u);  // the narrower cut survives
+    EXPECT_EQ(rooms.doors[1].door, 2u);
+    // The paper's single pass removes every cut next to the sliver instead.
+    o.mergeSmallestFirst = false;
+    const auto paper = DoorFilters(o).minimumArea(partition, doors,
+                                                  DoorFilters::adjacency(partition), kRes * kRes);
+    EXPECT_EQ(paper.roomCount, 2);
+    ASSERT_EQ(paper.doors.size(), 1u);
+    EXPECT_EQ(paper.doors[0].door, 2u);
 }
 
 TEST(DoorFilters, ConstrictionRejectsCorridorCrossSections) {

@@ -5,11 +5,13 @@
 #include <toposlam/rooms/RoomSegmenter.h>
 
 #include "DrawnMaps.h"
+#include "TestSupport.h"
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
 
 #include <cmath>
+#include <fstream>
 #include <set>
 
 using namespace toposlam::rooms;
@@ -84,14 +86,23 @@ TEST(RoomSegmenter, OfficeWithTrajectoryHasExactRoomsAndDoors) {
     expectMatchesDrawing(result.map, drawn, kDoorTolerance);
 }
 
-TEST(RoomSegmenter, DoorsOffTheTrajectoryAreNotFound) {
+TEST(RoomSegmenter, DoorsOffTheTrajectoryAreFoundOnTheMedialAxis) {
     // The paper's assumption (2): the robot went through every door. A tour that stays in the
-    // corridor crosses no door, so no door is found and everything is one room.
+    // corridor crosses no door, so the paper finds no door and everything is one room...
     const DrawnMap drawn = toposlam::rooms::test::office();
-    const auto result = RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image),
-                                                posesOf({{2, 7}, {20, 7}}));
-    EXPECT_EQ(result.map.doors.size(), 0u);
-    EXPECT_EQ(result.map.rooms.size(), 1u);
+    RoomSegmenter::Options trajectoryOnly;
+    trajectoryOnly.medialAxisWithTrajectory = false;
+    const auto corridorTour = posesOf({{2, 7}, {20, 7}});
+    const auto paper = RoomSegmenter(trajectoryOnly)
+                           .segment(toposlam::rooms::test::gridOf(drawn.image), corridorTour);
+    EXPECT_EQ(paper.map.doors.size(), 0u);
+    EXPECT_EQ(paper.map.rooms.size(), 1u);
+    // ... while the default searches the medial axis as well and finds every door.
+    const auto result =
+        RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image), corridorTour);
+    EXPECT_TRUE(result.fromTrajectory);
+    EXPECT_GT(result.trajectoryCells, 0u);
+    expectMatchesDrawing(result.map, drawn, kDoorTolerance);
 }
 
 TEST(RoomSegmenter, PaperExactVariantFindsTheOfficeToo) {
@@ -205,6 +216,39 @@ TEST(RoomSegmenter, MapWithoutFreeCellsIsAnInputError) {
             EXPECT_NE(std::string(e.what()).find("no free cell"), std::string::npos) << e.what();
         }
     }
+}
+
+TEST(RoomSegmenter, PaperPresetSwitchesOffEveryDeviationAndKeepsTheRest) {
+    RoomSegmenter::Options o;
+    o.door.doorWidth = 0.9;
+    o.filters.minRoomArea = 3.5;
+    o.applyPaperPreset();
+    const RoomSegmenter::Options paper = RoomSegmenter::Options::paperExact();
+    EXPECT_EQ(o.freeSpace.maxSpeckArea, paper.freeSpace.maxSpeckArea);
+    EXPECT_EQ(o.door.localDirection, paper.door.localDirection);
+    EXPECT_EQ(o.filters.keepNarrowestOfGroup, paper.filters.keepNarrowestOfGroup);
+    EXPECT_EQ(o.filters.mergeSmallestFirst, paper.filters.mergeSmallestFirst);
+    EXPECT_EQ(o.filters.requireWallJambs, paper.filters.requireWallJambs);
+    EXPECT_EQ(o.filters.requireWallEnd, paper.filters.requireWallEnd);
+    EXPECT_EQ(o.filters.requireConstriction, paper.filters.requireConstriction);
+    EXPECT_EQ(o.filters.wallThicknessFromMap, paper.filters.wallThicknessFromMap);
+    EXPECT_EQ(o.wide.enabled, paper.wide.enabled);
+    EXPECT_FALSE(o.wide.enabled || o.filters.requireWallEnd || o.door.localDirection);
+    EXPECT_EQ(o.door.doorWidth, 0.9);  // the rest is kept
+    EXPECT_EQ(o.filters.minRoomArea, 3.5);
+    // What the apps' "-c file --paper" gives: the file's values, every deviation off.
+    const toposlam::test::TempDir dir;
+    {
+        std::ofstream ini(dir.file("rooms.ini"));
+        ini << "[RoomSegmenter]\nvariant = improved\ndoorWidth = 0.95\nwideOpenings = true\n";
+    }
+    const auto loaded = RoomSegmenter::Options::load(dir.file("rooms.ini"), true);
+    EXPECT_EQ(loaded.door.doorWidth, 0.95);
+    EXPECT_FALSE(loaded.wide.enabled);
+    EXPECT_EQ(loaded.freeSpace.maxSpeckArea, 0.0);
+    EXPECT_TRUE(RoomSegmenter::Options::load(dir.file("rooms.ini"), false).wide.enabled);
+    EXPECT_THROW(RoomSegmenter::Options::load(dir.file("missing.ini"), false),
+                 toposlam::io::InputError);
 }
 
 TEST(RoomSegmenter, OptionsOutOfRangeAreRejected) {

@@ -9,6 +9,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <utility>
+#include <vector>
 
 using toposlam::test::runApp;
 using toposlam::test::TempDir;
@@ -85,13 +87,14 @@ TEST(ToposlamBenchRooms, RunsOneMapAndWritesJson) {
     TOPOSLAM_SHARED_DATA_OR_SKIP(map, "rooms/Freiburg52_scan.png");
     const TempDir dir;
     const std::string data = std::filesystem::path(map).parent_path().string();
-    const auto r =
-        runApp("toposlam-bench-rooms", "--data '" + data + "' --maps Freiburg52_scan -r 1 -o '" +
-                                           dir.file("b4.json") + "'");
+    const auto r = runApp("toposlam-bench-rooms",
+                          "--data '" + data + "' --sets bormann --maps Freiburg52_scan -r 1 -o '" +
+                              dir.file("b4.json") + "'");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     // Freiburg52: 10 ground-truth rooms; every method appears for both variants.
     for (const char* method : {"vdoor", "vdoor-paper", "morph", "dist"}) {
-        EXPECT_NE(r.output.find("| Freiburg52_scan_furnitures | " + std::string(method) + " |"),
+        EXPECT_NE(r.output.find("| bormann | Freiburg52_scan_furnitures | 0 | " +
+                                std::string(method) + " |"),
                   std::string::npos)
             << method;
     }
@@ -101,8 +104,49 @@ TEST(ToposlamBenchRooms, RunsOneMapAndWritesJson) {
 
 TEST(ToposlamBenchRooms, SkipsWithAMessageWithoutData) {
     const TempDir dir;
-    const auto r = runApp("toposlam-bench-rooms",
-                          "--data '" + dir.file("nothing") + "' -o '" + dir.file("b4.json") + "'");
+    const auto r =
+        runApp("toposlam-bench-rooms", "--data '" + dir.file("nothing") + "' --sets bormann -o '" +
+                                           dir.file("b4.json") + "'");
     EXPECT_EQ(r.exitCode, 0);
     EXPECT_NE(r.output.find("B4 skipped"), std::string::npos) << r.output;
+}
+
+TEST(ToposlamBenchRooms, RunsGeneratedPlansAtTwoAnglesAndWritesThem) {
+    const TempDir dir;
+    auto r = runApp("toposlam-bench-rooms",
+                    "--sets gen --gen-seeds 1 -m vdoor,morph -r 1 "
+                    "--rotations 0,17 -o '" +
+                        dir.file("gen.json") + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* row : {"| gen | gen01_furnitures | 17 | vdoor |",
+                            "| gen | gen01 | 0 | morph |", "| gen | vdoor | furnished | all |"}) {
+        EXPECT_NE(r.output.find(row), std::string::npos) << row << "\n" << r.output;
+    }
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir.file("gen.json")));
+
+    r = runApp("toposlam-bench-rooms",
+               "--write-plans '" + dir.file("plans") + "' --gen-seeds 2 --rotations 0,30");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* file : {"gen02.png", "gen02_furnitures.png", "gen02_gt_segmentation.png",
+                             "gen02_doors.json", "gen02_rot30_furnitures.png"}) {
+        EXPECT_TRUE(std::filesystem::is_regular_file(dir.file("plans/" + std::string(file))))
+            << file;
+    }
+}
+
+TEST(ToposlamBenchRooms, RejectsBadOptions) {
+    const TempDir dir;
+    // Bad usage: exit 2; a missing file: exit 1; nothing written either way.
+    for (const auto& [bad, status] :
+         std::vector<std::pair<std::string, int>>{{"--sets bogus", 2},
+                                                  {"-r 0", 2},
+                                                  {"--rotations 1e999", 2},
+                                                  {"--rotations 400", 2},
+                                                  {"--gen-seeds x", 2},
+                                                  {"-c missing.ini", 1}}) {
+        const auto r = runApp("toposlam-bench-rooms", bad + " -o '" + dir.file("b.json") + "'");
+        EXPECT_EQ(r.exitCode, status) << bad << "\n" << r.output;
+        EXPECT_NE(r.output.find("error: "), std::string::npos) << bad << "\n" << r.output;
+        EXPECT_FALSE(std::filesystem::exists(dir.file("b.json"))) << bad;
+    }
 }

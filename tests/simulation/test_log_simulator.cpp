@@ -110,8 +110,7 @@ TEST(LogSimulator, RawlogRoundTripsThroughTheLogReaderInBothFormats) {
          {io::RawlogFormat::Observations, io::RawlogFormat::SensoryFrames}) {
         toposlam::test::TempDir dir;
         const std::string rawlog = dir.file("sim.rawlog"), gtFile = dir.file("sim_gt.txt");
-        EXPECT_EQ(simulateLogToFiles(officeGrid(), gt, options, rawlog, format, gtFile, false),
-                  gt.size());
+        EXPECT_EQ(simulateLogToFiles(officeGrid(), gt, options, rawlog, format, gtFile), gt.size());
 
         // What the simulator produced, record by record, against what the reader reads back.
         LogSimulator sim(officeGrid(), gt, options);
@@ -147,7 +146,7 @@ TEST(LogSimulator, BadTrajectoriesAreRejectedAndLeaveNoFiles) {
     toposlam::test::TempDir dir;
     const std::string rawlog = dir.file("bad.rawlog"), gtFile = dir.file("bad_gt.txt");
     EXPECT_THROW(simulateLogToFiles(officeGrid(), gt, exactOptions(), rawlog,
-                                    io::RawlogFormat::Observations, gtFile, false),
+                                    io::RawlogFormat::Observations, gtFile),
                  std::invalid_argument);
     EXPECT_THROW(LogSimulator(officeGrid(), {}, exactOptions()), std::invalid_argument);
     EXPECT_TRUE(std::filesystem::is_empty(dir.path())) << "no partial output";

@@ -165,7 +165,7 @@ TEST(OdometryModel, LoadsTheConfigFileKeys) {
     ini.write("Odometry", "trans_std_m_per_sqrt_m", 0.02);
     ini.write("Odometry", "trans_std_m_per_sqrt_rad", 0.01);
     OdometryErrorModel m;
-    m.loadFromConfig(ini, "Odometry");
+    m.loadFromConfigFile(ini, "Odometry");
     EXPECT_DOUBLE_EQ(m.distanceScale, 1.03);
     EXPECT_DOUBLE_EQ(m.rotationScale, 0.98);
     EXPECT_NEAR(m.curvaturePerMetre, 0.5 * M_PI / 180, 1e-15);

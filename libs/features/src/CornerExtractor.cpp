@@ -1,4 +1,3 @@
-#include <mrpt/config/CConfigFileBase.h>
 #include <toposlam/features/CornerExtractor.h>
 #include <toposlam/features/CornerFix.h>
 #include <toposlam/features/SegmentMerge.h>
@@ -10,34 +9,30 @@
 
 namespace toposlam::features {
 
-void CornerExtractorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                                                const std::string& section) {
-    dkThreshold = cfg.read_double(section, "dk_th", dkThreshold);
-    alpha = cfg.read_double(section, "alpha", alpha);
-    thetaThreshold = cfg.read_double(section, "theta_th", thetaThreshold);
-    paperExact = cfg.read_bool(section, "paper_exact", paperExact);
-    rangeNoiseStd = cfg.read_double(section, "range_noise_std", rangeNoiseStd);
-    useScanStdError = cfg.read_bool(section, "use_scan_std_error", useScanStdError);
-    noiseSigmas = cfg.read_double(section, "noise_sigmas", noiseSigmas);
-    minBaseline =
-        static_cast<unsigned>(cfg.read_int(section, "min_baseline", static_cast<int>(minBaseline)));
-    minValidRange = cfg.read_double(section, "min_valid_range", minValidRange);
-    jumps.loadFromConfigFile(cfg, section);
-    assembly.loadFromConfigFile(cfg, section);
-}
-
-void CornerExtractorOptions::dumpToTextStream(std::ostream& out) const {
-    out << "dk_th              = " << dkThreshold << "  (paper)\n"
-        << "alpha              = " << alpha << "  (paper)\n"
-        << "theta_th           = " << thetaThreshold << "  (paper)\n"
-        << "paper_exact        = " << paperExact << "\n"
-        << "range_noise_std    = " << rangeNoiseStd << "  (m)\n"
-        << "use_scan_std_error = " << useScanStdError << "\n"
-        << "noise_sigmas       = " << noiseSigmas << "\n"
-        << "min_baseline       = " << minBaseline << "  (readings)\n"
-        << "min_valid_range    = " << minValidRange << "  (m)\n";
-    jumps.dumpToTextStream(out);
-    assembly.dumpToTextStream(out);
+void CornerExtractorOptions::declare(config::OptionsSchema& s) {
+    s.real("dk_th", dkThreshold, "", "breakpoint threshold on the slope difference |dk| (paper)")
+        .above(0);
+    s.real("alpha", alpha, "", "corners need |dk| > alpha * dk_th (paper)").above(0).atMost(1);
+    s.real("theta_th", thetaThreshold, "",
+           "merge neighbours when tan(angle between them) < theta_th (paper)")
+        .above(0);
+    s.flag("paper_exact", paperExact,
+           "eq. (2) and the paper's rules exactly as printed, no noise model");
+    s.real("range_noise_std", rangeNoiseStd, "m", "range noise when the scan does not state it")
+        .atLeast(0);
+    s.flag("use_scan_std_error", useScanStdError,
+           "take the range noise from the scan's stdError field instead");
+    s.real("noise_sigmas", noiseSigmas, "",
+           "a corner must stand this many noise sigmas above noise in dk")
+        .atLeast(0);
+    s.integer("min_baseline", minBaseline, "readings",
+              "readings each side over which dk is measured")
+        .within(1, 1000);
+    s.real("min_valid_range", minValidRange, "m",
+           "readings at or below are invalid (as are NaN, <= 0, >= maxRange)")
+        .atLeast(0);
+    s.group("jump_", jumps);
+    s.group("", assembly);
 }
 
 std::string CornerExtractor::name() const {

@@ -1,4 +1,3 @@
-#include <mrpt/config/CConfigFileBase.h>
 #include <toposlam/features/CornerIntersection.h>
 #include <toposlam/features/FeatureAssembly.h>
 #include <toposlam/features/LeastSquaresLineFit.h>
@@ -12,52 +11,61 @@ namespace toposlam::features {
 
 using mrpt::math::TPoint2D;
 
-void FeatureAssemblyOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                                                const std::string& section) {
-    const std::string fit = cfg.read_string(
-        section, "line_fit", lineFit == LineFitMethod::TwoPoint ? "two_point" : "least_squares");
-    if (fit == "two_point") {
-        lineFit = LineFitMethod::TwoPoint;
-    } else if (fit == "least_squares") {
-        lineFit = LineFitMethod::LeastSquares;
-    } else {
-        throw std::invalid_argument("[" + section + "] line_fit = '" + fit +
-                                    "': expected two_point or least_squares");
-    }
-    minSegmentPoints = static_cast<unsigned>(
-        cfg.read_int(section, "min_segment_points", static_cast<int>(minSegmentPoints)));
-    minSegmentLength = cfg.read_double(section, "min_segment_length", minSegmentLength);
-    maxCornerOffset = cfg.read_double(section, "max_corner_offset", maxCornerOffset);
-    maxLineResidual = cfg.read_double(section, "max_line_residual", maxLineResidual);
-    lineNoiseFactor = cfg.read_double(section, "line_noise_factor", lineNoiseFactor);
-    mergeCollinear = cfg.read_bool(section, "merge_collinear", mergeCollinear);
-    splitNonLines = cfg.read_bool(section, "split_non_lines", splitNonLines);
-    rejectArcs = cfg.read_bool(section, "reject_arcs", rejectArcs);
-    maxArcRadius = cfg.read_double(section, "max_arc_radius", maxArcRadius);
-    cornerAngleSigmas = cfg.read_double(section, "corner_angle_sigmas", cornerAngleSigmas);
-}
-
-void FeatureAssemblyOptions::dumpToTextStream(std::ostream& out) const {
-    out << "line_fit           = "
-        << (lineFit == LineFitMethod::TwoPoint ? "two_point" : "least_squares") << "\n"
-        << "min_segment_points = " << minSegmentPoints << "\n"
-        << "min_segment_length = " << minSegmentLength << "  (m)\n"
-        << "max_corner_offset  = " << maxCornerOffset << "  (m)\n"
-        << "min_corner_turn    = " << minCornerTurn << "  (rad)\n"
-        << "max_line_residual  = " << maxLineResidual << "  (m)\n"
-        << "line_noise_factor  = " << lineNoiseFactor << "\n"
-        << "merge_collinear    = " << mergeCollinear << "\n"
-        << "split_non_lines    = " << splitNonLines << "\n"
-        << "reject_arcs        = " << rejectArcs << "\n"
-        << "max_arc_radius     = " << maxArcRadius << "  (m)\n"
-        << "corner_angle_sigmas = " << cornerAngleSigmas << "\n";
+void FeatureAssemblyOptions::declare(config::OptionsSchema& s) {
+    s.choice(
+        "line_fit", lineFit,
+        {{"two_point", LineFitMethod::TwoPoint}, {"least_squares", LineFitMethod::LeastSquares}},
+        "fit of each segment: two_point (corner paper, step 4) or least_squares");
+    s.integer("min_segment_points", minSegmentPoints, "readings",
+              "shorter segments are dropped (their neighbours joined)")
+        .within(2, 100000);
+    s.real("min_segment_length", minSegmentLength, "m", "likewise, first to last reading")
+        .atLeast(0);
+    s.real("max_corner_offset", maxCornerOffset, "m",
+           "reject corners this far from the reading where they were found")
+        .above(0);
+    s.real("max_line_residual", maxLineResidual, "m",
+           "floor of the noise level in the line (chi-square) test")
+        .above(0);
+    s.real("line_noise_factor", lineNoiseFactor, "", "line test noise level, in range-noise sigmas")
+        .atLeast(0);
+    s.flag("split_non_lines", splitNonLines,
+           "cut a part that is no line at its two-line breakpoint and test both halves");
+    s.flag("merge_collinear", mergeCollinear,
+           "merge joined neighbours that are one line within the noise");
+    s.flag("reject_arcs", rejectArcs, "no corners on round objects (circle vs two lines)");
+    s.real("max_arc_radius", maxArcRadius, "m", "larger arcs are treated as walls").above(0);
+    s.real("corner_angle_sigmas", cornerAngleSigmas, "",
+           "no corner whose angle std times this exceeds the smallest corner turn; 0 = off")
+        .atLeast(0);
 }
 
 void FeatureAssembly::assemble(ScanPoints& pts, std::vector<LinePart>& parts, double sigma,
                                ScanFeatures& out) {
     out.clear();
+    addJumps(pts, parts, out);
+    dropShortParts(pts, parts);
+    fitLines(pts, parts, sigma);        // step 4
+    mergeCollinear(pts, parts, sigma);  // a split by noise
+    addSegments(pts, parts, out);
+    addCorners(pts, parts, sigma, out);  // step 5
+    std::sort(out.endpoints.begin(), out.endpoints.end(),
+              [](const Endpoint& x, const Endpoint& y) { return x.beam < y.beam; });
+    pts.toScanOrder(out);
+}
 
-    // Jumps, before short parts vanish.
+bool FeatureAssembly::tooShort(const ScanPoints& pts, const LinePart& p) const {
+    if (p.size() < std::max(2u, options.minSegmentPoints))
+        return true;
+    if (options.minSegmentLength <= 0)
+        return false;
+    return std::hypot(pts.x(p.end) - pts.x(p.begin), pts.y(p.end) - pts.y(p.begin)) <
+           options.minSegmentLength;
+}
+
+void FeatureAssembly::addJumps(const ScanPoints& pts, const std::vector<LinePart>& parts,
+                               ScanFeatures& out) const {
+    // Before short parts vanish.
     for (const LinePart& p : parts) {
         if (p.beginType == EndpointType::Jump) {
             out.endpoints.push_back({pts.point(p.begin), EndpointType::Jump, p.begin});
@@ -66,21 +74,15 @@ void FeatureAssembly::assemble(ScanPoints& pts, std::vector<LinePart>& parts, do
             out.endpoints.push_back({pts.point(p.end), EndpointType::Jump, p.end});
         }
     }
+}
 
-    // Drop very short parts; join the neighbours of one that sat between two corners.
-    const auto tooShort = [&](const LinePart& p) {
-        if (p.size() < std::max(2u, options.minSegmentPoints))
-            return true;
-        if (options.minSegmentLength <= 0)
-            return false;
-        return std::hypot(pts.x(p.end) - pts.x(p.begin), pts.y(p.end) - pts.y(p.begin)) <
-               options.minSegmentLength;
-    };
+void FeatureAssembly::dropShortParts(const ScanPoints& pts, std::vector<LinePart>& parts) const {
+    // Join the neighbours of a short part that sat between two corners.
     std::size_t kept = 0;
     bool prevJoined = false;  // the last kept part is joined to the part being looked at
     for (std::size_t i = 0; i < parts.size(); ++i) {
         const LinePart p = parts[i];
-        if (!tooShort(p)) {
+        if (!tooShort(pts, p)) {
             parts[kept++] = p;
             prevJoined = p.cornerAfter;
             continue;
@@ -101,42 +103,43 @@ void FeatureAssembly::assemble(ScanPoints& pts, std::vector<LinePart>& parts, do
     parts.resize(kept);
     if (kept > 0 && parts[kept - 1].cornerAfter)
         parts[kept - 1].cornerAfter = false;
+}
 
-    // Step 4: fit each part. A part whose readings are no line (residual beyond the noise)
-    // spans two walls whose corner the slope difference missed, or is clutter. With
-    // splitNonLines it is cut at its least-squares two-line breakpoint (TwoLineSplit.h), that
-    // reading left out as a joint, and each half is tested again; otherwise, or once a piece
-    // is too short, it is dropped like a short part, breaking its joints.
+bool FeatureAssembly::passesLineTest(double count, double rss) const {
     // Chi-square test on the residual: a true line of N readings leaves a sum of squares of
     // about (N - 2) s^2; allow mean + 3 std, with s the range noise made 50 % more generous
     // (sensors state their noise optimistically), at least maxLineResidual.
-    const double lineSigma = std::max(options.maxLineResidual, options.lineNoiseFactor * sigma);
-    const auto lineRss = [&](double count, double rss) {
-        const double dof = std::max(1.0, count - 2);
-        return rss <= lineSigma * lineSigma * (dof + 3 * std::sqrt(2 * dof));
-    };
-    const auto isLine = [&](const LineFit& f) {
-        return f.ok && lineRss(f.count, f.count * f.residualRms * f.residualRms);
-    };
+    const double dof = std::max(1.0, count - 2);
+    return rss <= lineSigma_ * lineSigma_ * (dof + 3 * std::sqrt(2 * dof));
+}
+
+void FeatureAssembly::fitLines(const ScanPoints& pts, std::vector<LinePart>& parts, double sigma) {
+    // A part whose readings are no line (residual beyond the noise) spans two walls whose
+    // corner the slope difference missed, or is clutter. With splitNonLines it is cut at its
+    // least-squares two-line breakpoint (TwoLineSplit.h), that reading left out as a joint, and
+    // each half is tested again; otherwise, or once a piece is too short, it is dropped like a
+    // short part, breaking its joints.
+    lineSigma_ = std::max(options.maxLineResidual, options.lineNoiseFactor * sigma);
     lineParts_.clear();
     fits_.clear();
     bool brokenBefore = false;  // the part dropped before this one was joined to it
-    for (std::size_t i = 0; i < kept; ++i) {
+    for (std::size_t i = 0; i < parts.size(); ++i) {
         pending_.clear();
         pending_.push_back(parts[i]);
         bool prepared = false;  // split_ holds the sums of parts[i]
         while (!pending_.empty()) {
             LinePart p = pending_.back();
             pending_.pop_back();
-            const bool canFit = !tooShort(p);
+            const bool canFit = !tooShort(pts, p);
             // A piece of a cut part whose least-squares residual (from the sums, no pass over
             // the readings) already fails the test fails it with any fit: no need to fit it.
             const bool hopeless =
                 prepared && canFit &&
-                !lineRss(static_cast<double>(p.size()), split_.residual(p.begin, p.end));
+                !passesLineTest(static_cast<double>(p.size()), split_.residual(p.begin, p.end));
             const LineFit fit =
                 canFit && !hopeless ? fitLine(options.lineFit, pts, p.begin, p.end) : LineFit{};
-            if (isLine(fit)) {
+            if (fit.ok &&
+                passesLineTest(fit.count, fit.count * fit.residualRms * fit.residualRms)) {
                 if (brokenBefore && p.beginType != EndpointType::Jump)
                     p.beginType = EndpointType::Open;
                 brokenBefore = false;
@@ -170,51 +173,54 @@ void FeatureAssembly::assemble(ScanPoints& pts, std::vector<LinePart>& parts, do
         }
     }
     parts.swap(lineParts_);
-    kept = parts.size();
+}
 
+void FeatureAssembly::mergeCollinear(const ScanPoints& pts, std::vector<LinePart>& parts,
+                                     double sigma) {
     // Neighbours that are one line after all: a split by noise. The union's least-squares
     // residual is compared with the two fits': if both lie on one line, the union's sum of
     // squares exceeds theirs by about (gap + 2) sigma^2 (chi-square, gap = readings between
     // them); a real corner adds far more. Merge below that mean + 3 standard deviations.
-    if (options.mergeCollinear && kept > 1) {
-        const double var = std::max(sigma, 1e-5) * std::max(sigma, 1e-5);
-        std::size_t m = 0;
-        for (std::size_t i = 1; i < kept; ++i) {
-            LinePart& last = parts[m];
-            if (last.cornerAfter) {
-                // The union's sums from the two fits' and the readings between: no new pass.
-                PointSums sums = fits_[m].sums;
-                sums.merge(fits_[i].sums);
-                for (std::size_t k = last.end + 1; k < parts[i].begin; ++k) {
-                    sums.add(pts.x(k), pts.y(k));
-                }
-                const LineFit joint = fitLeastSquares(sums);
-                const double gap = static_cast<double>(parts[i].begin - last.end - 1);
-                const auto rss = [](const LineFit& f) {
-                    return f.count * f.residualRms * f.residualRms;
-                };
-                const double excess = rss(joint) - rss(fits_[m]) - rss(fits_[i]);
-                const double dof = gap + 2;
-                if (joint.ok && excess <= var * (dof + 3 * std::sqrt(2 * dof))) {
-                    last.end = parts[i].end;
-                    last.cornerAfter = parts[i].cornerAfter;
-                    last.joint = parts[i].joint;
-                    last.endType = parts[i].endType;
-                    fits_[m] = options.lineFit == LineFitMethod::LeastSquares
-                                   ? joint
-                                   : fitLine(options.lineFit, pts, last.begin, last.end);
-                    continue;
-                }
+    const std::size_t kept = parts.size();
+    if (!options.mergeCollinear || kept <= 1)
+        return;
+    const double var = std::max(sigma, 1e-5) * std::max(sigma, 1e-5);
+    const auto rss = [](const LineFit& f) { return f.count * f.residualRms * f.residualRms; };
+    std::size_t m = 0;
+    for (std::size_t i = 1; i < kept; ++i) {
+        LinePart& last = parts[m];
+        if (last.cornerAfter) {
+            // The union's sums from the two fits' and the readings between: no new pass.
+            PointSums sums = fits_[m].sums;
+            sums.merge(fits_[i].sums);
+            for (std::size_t k = last.end + 1; k < parts[i].begin; ++k) {
+                sums.add(pts.x(k), pts.y(k));
             }
-            ++m;
-            parts[m] = parts[i];
-            fits_[m] = fits_[i];
+            const LineFit joint = fitLeastSquares(sums);
+            const double gap = static_cast<double>(parts[i].begin - last.end - 1);
+            const double excess = rss(joint) - rss(fits_[m]) - rss(fits_[i]);
+            const double dof = gap + 2;
+            if (joint.ok && excess <= var * (dof + 3 * std::sqrt(2 * dof))) {
+                last.end = parts[i].end;
+                last.cornerAfter = parts[i].cornerAfter;
+                last.joint = parts[i].joint;
+                last.endType = parts[i].endType;
+                fits_[m] = options.lineFit == LineFitMethod::LeastSquares
+                               ? joint
+                               : fitLine(options.lineFit, pts, last.begin, last.end);
+                continue;
+            }
         }
-        kept = m + 1;
-        parts.resize(kept);
+        ++m;
+        parts[m] = parts[i];
+        fits_[m] = fits_[i];
     }
+    parts.resize(m + 1);
+}
 
-    for (std::size_t i = 0; i < kept; ++i) {
+void FeatureAssembly::addSegments(const ScanPoints& pts, const std::vector<LinePart>& parts,
+                                  ScanFeatures& out) const {
+    for (std::size_t i = 0; i < parts.size(); ++i) {
         const LinePart& p = parts[i];
         LineSegment s;
         s.line = fits_[i].line;
@@ -227,11 +233,30 @@ void FeatureAssembly::assemble(ScanPoints& pts, std::vector<LinePart>& parts, do
         s.residualRms = fits_[i].residualRms;
         out.segments.push_back(s);
     }
+}
 
-    // Step 5: corners at the joints.
+bool FeatureAssembly::isArcCorner(const ScanPoints& pts, const std::vector<LinePart>& parts,
+                                  std::size_t i, double sigma) const {
+    // A segment measurably straight (its sagitta on a circle of maxArcRadius, L^2 / 8R,
+    // beyond 3 sigma of its own noise) cannot be a piece of such a circle: skip the test.
+    const auto straight = [&](std::size_t k) {
+        const LinePart& p = parts[k];
+        const double l2 = sq2(pts.x(p.end) - pts.x(p.begin), pts.y(p.end) - pts.y(p.begin));
+        return l2 / (8 * options.maxArcRadius) > 3 * std::sqrt(pointVariance(fits_[k], sigma));
+    };
+    if (straight(i) || straight(i + 1))
+        return false;
     ArcCornerTest arcTest;
     arcTest.maxRadius = options.maxArcRadius;
-    for (std::size_t i = 0; i + 1 < kept; ++i) {
+    const double na = fits_[i].count, nb = fits_[i + 1].count;
+    const double ra = fits_[i].residualRms, rb = fits_[i + 1].residualRms;
+    return arcTest.isArc(pts, parts[i].begin, parts[i].end, parts[i + 1].begin, parts[i + 1].end,
+                         na * ra * ra + nb * rb * rb, sigma);
+}
+
+void FeatureAssembly::addCorners(const ScanPoints& pts, const std::vector<LinePart>& parts,
+                                 double sigma, ScanFeatures& out) const {
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
         if (!parts[i].cornerAfter)
             continue;
         LineSegment &a = out.segments[i], &b = out.segments[i + 1];
@@ -239,21 +264,6 @@ void FeatureAssembly::assemble(ScanPoints& pts, std::vector<LinePart>& parts, do
         const bool ok = fits_[i].ok && fits_[i + 1].ok &&
                         intersectCorner(fits_[i], fits_[i + 1], a.start, b.end, sigma, c);
         const TPoint2D joint = pts.point(parts[i].joint);
-        // A segment measurably straight (its sagitta on a circle of maxArcRadius, L^2 / 8R,
-        // beyond 3 sigma of its own noise) cannot be a piece of such a circle: skip the test.
-        const auto straight = [&](std::size_t k) {
-            const LinePart& p = parts[k];
-            const double l2 = sq2(pts.x(p.end) - pts.x(p.begin), pts.y(p.end) - pts.y(p.begin));
-            return l2 / (8 * options.maxArcRadius) > 3 * std::sqrt(pointVariance(fits_[k], sigma));
-        };
-        const auto isArc = [&] {
-            if (straight(i) || straight(i + 1))
-                return false;
-            const double na = fits_[i].count, nb = fits_[i + 1].count;
-            const double ra = fits_[i].residualRms, rb = fits_[i + 1].residualRms;
-            return arcTest.isArc(pts, parts[i].begin, parts[i].end, parts[i + 1].begin,
-                                 parts[i + 1].end, na * ra * ra + nb * rb * rb, sigma);
-        };
         const bool vague =
             ok && options.cornerAngleSigmas * angleStd(fits_[i], fits_[i + 1], sigma) >
                       options.minCornerTurn;
@@ -261,7 +271,7 @@ void FeatureAssembly::assemble(ScanPoints& pts, std::vector<LinePart>& parts, do
             c.angle < options.minCornerTurn ||
             sq2(c.position.x - joint.x, c.position.y - joint.y) >
                 options.maxCornerOffset * options.maxCornerOffset ||
-            (options.rejectArcs && isArc())) {
+            (options.rejectArcs && isArcCorner(pts, parts, i, sigma))) {
             a.endType = EndpointType::Open;
             b.startType = EndpointType::Open;
             continue;
@@ -274,9 +284,6 @@ void FeatureAssembly::assemble(ScanPoints& pts, std::vector<LinePart>& parts, do
         out.corners.push_back(c);
         out.endpoints.push_back({c.position, c.type, c.beam});
     }
-    std::sort(out.endpoints.begin(), out.endpoints.end(),
-              [](const Endpoint& x, const Endpoint& y) { return x.beam < y.beam; });
-    pts.toScanOrder(out);
 }
 
 }  // namespace toposlam::features

@@ -1,4 +1,3 @@
-#include <mrpt/config/CConfigFileBase.h>
 #include <toposlam/features/JumpDetector.h>
 
 #include <algorithm>
@@ -7,17 +6,11 @@
 
 namespace toposlam::features {
 
-void JumpDetectorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                                             const std::string& section) {
-    enabled = cfg.read_bool(section, "jump_enabled", enabled);
-    k = cfg.read_double(section, "jump_k", k);
-    noiseSigmas = cfg.read_double(section, "jump_noise_sigmas", noiseSigmas);
-}
-
-void JumpDetectorOptions::dumpToTextStream(std::ostream& out) const {
-    out << "jump_enabled      = " << enabled << "  (cut runs at range jumps)\n"
-        << "jump_k            = " << k << "  (jump if gap > k * step * range)\n"
-        << "jump_noise_sigmas = " << noiseSigmas << "  (and gap > this * sqrt(2) * sigma)\n";
+void JumpDetectorOptions::declare(config::OptionsSchema& s) {
+    s.flag("enabled", enabled, "cut runs at range jumps (graph paper eq. 1)");
+    s.real("k", k, "", "jump when the gap to the next reading > k * step * range (paper: 15)")
+        .above(0);
+    s.real("noise_sigmas", noiseSigmas, "", "... and > this * sqrt(2) * range noise").atLeast(0);
 }
 
 bool JumpDetector::isJump(const ScanPoints& pts, std::size_t k, double sigma) const {

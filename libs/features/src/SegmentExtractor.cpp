@@ -1,4 +1,3 @@
-#include <mrpt/config/CConfigFileBase.h>
 #include <toposlam/features/EndpointDetector.h>
 #include <toposlam/features/LeastSquaresLineFit.h>
 #include <toposlam/features/SegmentExtractor.h>
@@ -11,45 +10,42 @@ namespace toposlam::features {
 
 using mrpt::math::TPoint2D;
 
-void SegmentExtractorOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                                                 const std::string& section) {
-    medianWindow = static_cast<unsigned>(
-        cfg.read_int(section, "median_window", static_cast<int>(medianWindow)));
-    turnThreshold = cfg.read_double(section, "turn_threshold", turnThreshold);
-    paperExact = cfg.read_bool(section, "paper_exact", paperExact);
-    rangeNoiseStd = cfg.read_double(section, "range_noise_std", rangeNoiseStd);
-    useScanStdError = cfg.read_bool(section, "use_scan_std_error", useScanStdError);
-    noiseSigmas = cfg.read_double(section, "noise_sigmas", noiseSigmas);
-    minValidRange = cfg.read_double(section, "min_valid_range", minValidRange);
-    jumps.loadFromConfigFile(cfg, section);
-    minSegmentPoints = static_cast<unsigned>(
-        cfg.read_int(section, "min_segment_points", static_cast<int>(minSegmentPoints)));
-    maxLineResidual = cfg.read_double(section, "max_line_residual", maxLineResidual);
-    mergeAngle = cfg.read_double(section, "merge_angle", mergeAngle);
-    concaveInlierRatio = cfg.read_double(section, "concave_inlier_ratio", concaveInlierRatio);
-    inlierDistance = cfg.read_double(section, "inlier_distance", inlierDistance);
-    arcTest.minMeanAngle = cfg.read_double(section, "arc_min_mean_angle", arcTest.minMeanAngle);
-    arcTest.maxMeanAngle = cfg.read_double(section, "arc_max_mean_angle", arcTest.maxMeanAngle);
-    arcTest.maxAngleStd = cfg.read_double(section, "arc_max_angle_std", arcTest.maxAngleStd);
-}
-
-void SegmentExtractorOptions::dumpToTextStream(std::ostream& out) const {
-    out << "median_window        = " << medianWindow << "\n"
-        << "turn_threshold       = " << turnThreshold << "  (rad)\n"
-        << "paper_exact          = " << paperExact << "\n"
-        << "range_noise_std      = " << rangeNoiseStd << "  (m)\n"
-        << "use_scan_std_error   = " << useScanStdError << "\n"
-        << "noise_sigmas         = " << noiseSigmas << "\n"
-        << "min_valid_range      = " << minValidRange << "  (m)\n";
-    jumps.dumpToTextStream(out);
-    out << "min_segment_points   = " << minSegmentPoints << "\n"
-        << "max_line_residual    = " << maxLineResidual << "  (m)\n"
-        << "merge_angle          = " << mergeAngle << "  (rad)\n"
-        << "concave_inlier_ratio = " << concaveInlierRatio << "\n"
-        << "inlier_distance      = " << inlierDistance << "  (m)\n"
-        << "arc_min_mean_angle   = " << arcTest.minMeanAngle << "  (rad)\n"
-        << "arc_max_mean_angle   = " << arcTest.maxMeanAngle << "  (rad)\n"
-        << "arc_max_angle_std    = " << arcTest.maxAngleStd << "  (rad)\n";
+void SegmentExtractorOptions::declare(config::OptionsSchema& s) {
+    s.integer("median_window", medianWindow, "readings", "range median filter (odd; 1 = off)")
+        .within(1, 15);
+    s.require([this] { return medianWindow % 2 == 1; }, "median_window", "must be odd");
+    s.angle("turn_threshold", turnThreshold, "convex below -it, concave above it (paper: 60)")
+        .above(0)
+        .below(180);
+    s.flag("paper_exact", paperExact, "the paper's 4-tap turning sum, no noise model");
+    s.real("range_noise_std", rangeNoiseStd, "m", "range noise when the scan does not state it")
+        .atLeast(0);
+    s.flag("use_scan_std_error", useScanStdError,
+           "take the range noise from the scan's stdError field instead");
+    s.real("noise_sigmas", noiseSigmas, "", "tolerances in range-noise sigmas").atLeast(0);
+    s.real("min_valid_range", minValidRange, "m", "readings at or below are invalid").atLeast(0);
+    s.group("jump_", jumps);
+    s.integer("min_segment_points", minSegmentPoints, "readings",
+              "of a convex-convex segment / concave-concave inliers")
+        .within(2, 100000);
+    s.real("max_line_residual", maxLineResidual, "m", "floor of the line tolerance (RMS)").above(0);
+    s.angle("merge_angle", mergeAngle, "collinear convex-convex neighbours merge below it")
+        .atLeast(0)
+        .atMost(90);
+    s.real("concave_inlier_ratio", concaveInlierRatio, "",
+           "paper: > 30 % of the readings on the concave-concave line")
+        .within(0, 1);
+    s.real("inlier_distance", inlierDistance, "m", "floor of \"on the line\"").above(0);
+    s.angle("arc_min_mean_angle", arcTest.minMeanAngle,
+            "inscribed-angle arc test (Xavier et al. 2005): smallest mean angle")
+        .above(0)
+        .atMost(180);
+    s.angle("arc_max_mean_angle", arcTest.maxMeanAngle, "... largest mean angle")
+        .above(0)
+        .atMost(180);
+    s.angle("arc_max_angle_std", arcTest.maxAngleStd, "... largest std of the angles").atLeast(0);
+    s.require([this] { return arcTest.minMeanAngle <= arcTest.maxMeanAngle; },
+              "arc_min_mean_angle_deg", "must not exceed arc_max_mean_angle_deg");
 }
 
 double SegmentExtractor::rangeNoise(const mrpt::obs::CObservation2DRangeScan& scan) const {

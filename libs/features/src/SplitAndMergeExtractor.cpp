@@ -1,4 +1,3 @@
-#include <mrpt/config/CConfigFileBase.h>
 #include <toposlam/features/SplitAndMergeExtractor.h>
 
 #include <algorithm>
@@ -7,25 +6,18 @@
 
 namespace toposlam::features {
 
-void SplitAndMergeOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                                              const std::string& section) {
-    splitDistance = cfg.read_double(section, "split_distance", splitDistance);
-    noiseSigmas = cfg.read_double(section, "noise_sigmas", noiseSigmas);
-    rangeNoiseStd = cfg.read_double(section, "range_noise_std", rangeNoiseStd);
-    useScanStdError = cfg.read_bool(section, "use_scan_std_error", useScanStdError);
-    minValidRange = cfg.read_double(section, "min_valid_range", minValidRange);
-    jumps.loadFromConfigFile(cfg, section);
-    assembly.loadFromConfigFile(cfg, section);
-}
-
-void SplitAndMergeOptions::dumpToTextStream(std::ostream& out) const {
-    out << "split_distance     = " << splitDistance << "  (m)\n"
-        << "noise_sigmas       = " << noiseSigmas << "\n"
-        << "range_noise_std    = " << rangeNoiseStd << "  (m)\n"
-        << "use_scan_std_error = " << useScanStdError << "\n"
-        << "min_valid_range    = " << minValidRange << "  (m)\n";
-    jumps.dumpToTextStream(out);
-    assembly.dumpToTextStream(out);
+void SplitAndMergeOptions::declare(config::OptionsSchema& s) {
+    s.real("split_distance", splitDistance, "m", "floor of the split threshold").above(0);
+    s.real("noise_sigmas", noiseSigmas, "",
+           "split threshold = max(split_distance, noise_sigmas * range noise)")
+        .atLeast(0);
+    s.real("range_noise_std", rangeNoiseStd, "m", "range noise when the scan does not state it")
+        .atLeast(0);
+    s.flag("use_scan_std_error", useScanStdError,
+           "take the range noise from the scan's stdError field instead");
+    s.real("min_valid_range", minValidRange, "m", "readings at or below are invalid").atLeast(0);
+    s.group("jump_", jumps);
+    s.group("", assembly);
 }
 
 double SplitAndMergeExtractor::rangeNoise(const mrpt::obs::CObservation2DRangeScan& scan) const {

@@ -160,6 +160,7 @@ CarmenScanSource::CarmenScanSource(const std::string& path, const LaserLogOption
     if (const std::string damage = pass1.streamError(); !damage.empty()) {
         throw InputError(path, "truncated or corrupt gzip data (" + damage + ")");
     }
+    lines_.setDecompressedSize(pass1.bytesParsed());  // exact, for a smooth progress fraction
     if (messages == 0) {
         throw InputError(path,
                          "not a CARMEN log: no FLASER, RLASER, ROBOTLASER1, ODOM or "
@@ -193,6 +194,12 @@ std::size_t CarmenScanSource::count(std::size_t token, const char* what) const {
     const auto res = std::from_chars(t.data(), t.data() + t.size(), v);
     if (res.ec != std::errc() || res.ptr != t.data() + t.size()) {
         fail(std::string(what) + " is not a count: '" + std::string(t) + "'");
+    }
+    // A count of fields that follow cannot exceed the fields the line has; checking it here
+    // also keeps the field arithmetic of the callers (n + 11, ...) from overflowing.
+    if (v > tokens_.size()) {
+        fail(std::string(what) + " is " + std::string(t) + " but the line has only " +
+             std::to_string(tokens_.size()) + " fields");
     }
     return v;
 }

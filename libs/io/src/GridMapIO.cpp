@@ -11,14 +11,18 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <mutex>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <stdexcept>
 
 #include "GzipInputStream.h"
+#include "LookaheadStream.h"
 #include "MrptErrorText.h"
+#include "MrptObjectCheck.h"
 #include "RosMapMetadata.h"
 
 namespace toposlam::io {
@@ -113,19 +117,35 @@ std::array<float, 256> freeProbabilityTable(const RosMapMetadata& meta) {
     return table;
 }
 
+// OpenCV refuses, before decoding, images with more pixels than OPENCV_IO_MAX_IMAGE_PIXELS
+// (default 2^30: 1 GiB of grey, several for colour) states; lower it to what a grid map may
+// have. Read once by OpenCV at its first image: a setting the user made is kept.
+void limitOpenCvImageSize() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        ::setenv("OPENCV_IO_MAX_IMAGE_PIXELS", std::to_string(kMaxGridMapCells).c_str(), 0);
+    });
+}
+
 cv::Mat readGreyImage(const std::string& path) {
     if (!fs::is_regular_file(path))
         throw InputError(path, "file not found");
+    limitOpenCvImageSize();
     cv::Mat image;
+    std::string problem = "corrupt, or not an image format OpenCV reads";
     try {
         image = cv::imread(path, cv::IMREAD_GRAYSCALE);
-    } catch (const cv::Exception&) {
+    } catch (const cv::Exception& e) {
         image.release();
+        if (std::string(e.what()).find("MAX_IMAGE") != std::string::npos) {
+            problem = "more than " + std::to_string(kMaxGridMapCells) + " pixels";
+        }
     }
-    if (image.empty()) {
-        throw InputError(path,
-                         "cannot read the image (corrupt, or not an image format OpenCV "
-                         "reads)");
+    if (image.empty())
+        throw InputError(path, "cannot read the image (" + problem + ")");
+    if (static_cast<unsigned long long>(image.total()) > kMaxGridMapCells) {
+        throw InputError(path, "cannot read the image (more than " +
+                                   std::to_string(kMaxGridMapCells) + " pixels)");
     }
     if (image.depth() != CV_8U)
         image.convertTo(image, CV_8U);
@@ -145,16 +165,25 @@ COccupancyGridMap2D gridFromImage(const cv::Mat& grey, const RosMapMetadata& met
     return grid;
 }
 
-// The sidecar of an image: "<stem>.yaml" when it exists and names this image.
+// The sidecar of an image: "<stem>.yaml" when it exists and names this image, or names the
+// "<stem>.pgm" beside it (the ROS pair saveGridMap() writes with a .png picture: the picture
+// then has the pair's geometry and its grey is p(free), as it was written).
 std::optional<RosMapMetadata> sidecarOf(const std::string& imagePath) {
     const std::string yaml = fs::path(imagePath).replace_extension(".yaml").string();
     if (!fs::is_regular_file(yaml))
         return std::nullopt;
     RosMapMetadata meta = readRosMapMetadata(yaml);
+    const std::string described = resolveRosMapImage(yaml, meta);
     std::error_code ec;
-    if (!fs::equivalent(resolveRosMapImage(yaml, meta), imagePath, ec) || ec)
-        return std::nullopt;
-    return meta;
+    if (fs::equivalent(described, imagePath, ec))
+        return meta;
+    const std::string pair = fs::path(imagePath).replace_extension(".pgm").string();
+    if (formatOf(imagePath) == MapFormat::Png && fs::equivalent(described, pair, ec)) {
+        meta.mode = RosMapMetadata::Mode::Scale;
+        meta.negate = false;
+        return meta;
+    }
+    return std::nullopt;
 }
 
 COccupancyGridMap2D loadImageMap(const std::string& path, RosMapMetadata meta,
@@ -204,13 +233,31 @@ std::optional<StoredGridHeader> readStoredGridHeader(const std::string& path) {
 
 COccupancyGridMap2D loadSerializedMap(const std::string& path) {
     GzipInputStream in(path);
+    LookaheadStream bytes(in);
+    const auto invalid = [&](const std::string& cause) {
+        const std::string damage = in.streamError();
+        return InputError(path,
+                          "not a valid .gridmap file (" + (damage.empty() ? cause : damage) + ")");
+    };
+    // Checked before MRPT reads it: MRPT allocates the cells its stored limits imply.
+    ObjectCheck check;
+    try {
+        check = checkNextObject(bytes);
+    } catch (const MalformedObject& e) {
+        throw invalid(e.what());
+    }
+    if (check.className.empty())
+        throw InputError(path, "file is empty");
+    if (check.className != "mrpt::maps::COccupancyGridMap2D" || !check.complete) {
+        throw invalid("it holds a " + check.className +
+                      ", not an mrpt::maps::COccupancyGridMap2D in MRPT's current format");
+    }
+    bytes.setReadLimit(check.size);
     COccupancyGridMap2D grid;
     try {
-        mrpt::serialization::archiveFrom(in) >> grid;
+        mrpt::serialization::archiveFrom(bytes) >> grid;
     } catch (const std::exception& e) {
-        const std::string damage = in.streamError();
-        throw InputError(path, "not a valid .gridmap file (" +
-                                   (damage.empty() ? mrptErrorSummary(e) : damage) + ")");
+        throw invalid(mrptErrorSummary(e));
     }
     if (const std::string damage = in.streamError(); !damage.empty()) {
         throw InputError(path, "corrupt gzip data (" + damage + ")");
@@ -307,6 +354,17 @@ void saveSerializedMap(const COccupancyGridMap2D& grid, const std::string& path)
     });
 }
 
+// What ROS map_saver writes: "<stem>.pgm", trinary (occupied 0, free 254, unknown 205), and
+// the YAML with mode trinary and the thresholds that classify those grey levels back.
+void saveRosMapPair(const COccupancyGridMap2D& map, const std::string& yamlPath) {
+    const fs::path image = fs::path(yamlPath).replace_extension(".pgm");
+    const RosMapMetadata meta =
+        metadataOf(map, image.filename().string(), RosMapMetadata::Mode::Trinary);
+    writeImage(imageOfGrid(map, [&](float pFree) { return trinaryGrey(pFree, meta); }),
+               image.string());
+    saveTextFile(formatRosMapMetadata(meta), yamlPath);
+}
+
 }  // namespace
 
 void setGridOrigin(COccupancyGridMap2D& map, float originX, float originY) {
@@ -364,26 +422,17 @@ void saveGridMap(const COccupancyGridMap2D& map, const std::string& path) {
         case MapFormat::Serialized:
             saveSerializedMap(map, path);
             return;
-        case MapFormat::Png: {
-            const RosMapMetadata meta =
-                metadataOf(map, p.filename().string(), RosMapMetadata::Mode::Scale);
+        case MapFormat::Png:
+            // The picture, plus the ROS pair beside it (ROS tools need a trinary image).
             writeImage(imageOfGrid(map, greyOfFreeProbability), path);
-            saveTextFile(formatRosMapMetadata(meta),
-                         fs::path(p).replace_extension(".yaml").string());
+            saveRosMapPair(map, fs::path(p).replace_extension(".yaml").string());
             return;
-        }
         case MapFormat::RosYaml:
-        case MapFormat::Pgm: {
-            const fs::path image = fs::path(p).replace_extension(".pgm");
-            const fs::path yaml = fs::path(p).replace_extension(".yaml");
-            const RosMapMetadata meta =
-                metadataOf(map, image.filename().string(), RosMapMetadata::Mode::Trinary);
-            writeImage(imageOfGrid(map, [&](float pFree) { return trinaryGrey(pFree, meta); }),
-                       image.string());
-            saveTextFile(formatRosMapMetadata(meta),
-                         formatOf(path) == MapFormat::RosYaml ? path : yaml.string());
+            saveRosMapPair(map, path);
             return;
-        }
+        case MapFormat::Pgm:
+            saveRosMapPair(map, fs::path(p).replace_extension(".yaml").string());
+            return;
         case MapFormat::OtherImage:
         case MapFormat::Unknown:
             break;

@@ -16,6 +16,15 @@ namespace {
 gzFile asGz(void* f) {
     return static_cast<gzFile>(f);
 }
+
+// The decompressed size a gzip file states in its last 4 bytes (ISIZE, modulo 2^32), or 0.
+uint64_t gzipStatedSize(std::FILE* f, uint64_t fileSize) {
+    unsigned char tail[4];
+    if (fileSize < 18 || std::fseek(f, -4, SEEK_END) != 0 || std::fread(tail, 1, 4, f) != 4)
+        return 0;
+    return uint64_t{tail[0]} | uint64_t{tail[1]} << 8 | uint64_t{tail[2]} << 16 |
+           uint64_t{tail[3]} << 24;
+}
 }  // namespace
 
 GzipInputStream::GzipInputStream(const std::string& path) : path_(path) {
@@ -30,6 +39,7 @@ GzipInputStream::GzipInputStream(const std::string& path) : path_(path) {
     if (std::FILE* probe = std::fopen(path.c_str(), "rb")) {
         unsigned char magic[2] = {0, 0};
         compressed_ = std::fread(magic, 1, 2, probe) == 2 && magic[0] == 0x1f && magic[1] == 0x8b;
+        decompressedSize_ = compressed_ ? gzipStatedSize(probe, size_) : size_;
         std::fclose(probe);
     } else {
         throw InputError(path, "cannot open the file (permission denied?)");
@@ -55,6 +65,7 @@ size_t GzipInputStream::Read(void* buffer, size_t count) {
             break;  // end of data or error (see streamError())
         total += static_cast<size_t>(n);
     }
+    delivered_ += total;
     return total;
 }
 
@@ -81,9 +92,14 @@ std::string GzipInputStream::getStreamDescription() const {
     return path_;
 }
 
-double GzipInputStream::fractionRead() const {
+double GzipInputStream::fractionAt(uint64_t position) const {
     if (size_ == 0)
         return 1.0;
+    // A stated gzip size below what has already been delivered is wrong (ISIZE wraps at 4 GiB).
+    if (decompressedSize_ > 0 && decompressedSize_ >= delivered_) {
+        return std::min(1.0,
+                        static_cast<double>(position) / static_cast<double>(decompressedSize_));
+    }
     return std::min(1.0, static_cast<double>(getPosition()) / static_cast<double>(size_));
 }
 
@@ -92,7 +108,11 @@ std::string GzipInputStream::streamError() const {
     const char* msg = gzerror(asGz(file_), &code);
     if (code == Z_OK || code == Z_STREAM_END)
         return {};
-    return msg && *msg ? msg : "zlib error " + std::to_string(code);
+    std::string text = msg && *msg ? msg : "zlib error " + std::to_string(code);
+    // zlib prefixes the message with the path, which the caller's message names already.
+    if (text.rfind(path_ + ": ", 0) == 0)
+        text.erase(0, path_.size() + 2);
+    return text;
 }
 
 }  // namespace toposlam::io

@@ -65,6 +65,7 @@ LaserLogReader::LaserLogReader(const std::string& path, const LaserLogOptions& o
 LaserLogReader::~LaserLogReader() = default;
 
 bool LaserLogReader::next(LaserLogRecord& out) {
+    out.storedFeatures.reset();
     if (!impl_->source->next(out))
         return false;
     out.index = impl_->count++;

@@ -2,6 +2,7 @@
 // Fast line-by-line reading of a text file (plain or gzip) through a large buffer: the
 // CARMEN reader touches every byte of logs of tens of megabytes.
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,7 +19,12 @@ class LineReader {
     bool next(std::string_view& line);
     /// 1-based number of the line last returned.
     std::size_t lineNumber() const { return lineNumber_; }
-    double fractionRead() const { return in_.fractionRead(); }
+    /// Decompressed bytes of the lines returned so far (including their line ends).
+    uint64_t bytesParsed() const { return in_.bytesDelivered() - (end_ - begin_); }
+    /// Fraction of the file's content returned as lines so far, in [0,1].
+    double fractionRead() const { return in_.fractionAt(bytesParsed()); }
+    /// The exact decompressed size of the file, when known (see GzipInputStream).
+    void setDecompressedSize(uint64_t bytes) { in_.setDecompressedSize(bytes); }
     /// See GzipInputStream::streamError().
     std::string streamError() const { return in_.streamError(); }
 

@@ -2,6 +2,7 @@
 #include <toposlam/io/LogConversion.h>
 #include <toposlam/io/Trajectory.h>
 
+#include <cstdio>
 #include <memory>
 
 namespace toposlam::io {
@@ -50,6 +51,29 @@ LogConversionSummary convertLaserLog(const std::string& inputPath,
         writer->commit();
     }
     return summary;
+}
+
+std::string describe(const LogConversionSummary& s, const std::string& inputPath,
+                     const LogConversionOptions& options) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf, ": %s, %zu scans of %zu readings, %.3f .. %.3f s (%.1f s)",
+                  toString(s.inputFormat), s.scans, s.beamsPerScan, s.firstStamp, s.lastStamp,
+                  s.lastStamp - s.firstStamp);
+    std::string text = inputPath + buf;
+    if (s.adjustedTimestamps > 0)
+        text += ", " + std::to_string(s.adjustedTimestamps) + " timestamps repaired";
+    if (s.scansWithoutOdometry > 0)
+        text += ", " + std::to_string(s.scansWithoutOdometry) + " scans without odometry";
+    text += "\n";
+    if (!options.rawlogPath.empty()) {
+        text += "wrote " + options.rawlogPath + " (" + toString(options.rawlogFormat) +
+                " format, " + std::to_string(s.rawlogObjects) + " objects)\n";
+    }
+    if (!options.odometryTrajectoryPath.empty()) {
+        text += "wrote " + options.odometryTrajectoryPath + " (" +
+                std::to_string(s.scans - s.scansWithoutOdometry) + " poses)\n";
+    }
+    return text;
 }
 
 }  // namespace toposlam::io

@@ -5,11 +5,15 @@
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/rtti/CObject.h>
 #include <toposlam/io/InputError.h>
 
 #include <cctype>
+#include <exception>
 
 #include "MrptErrorText.h"
+#include "MrptObjectCheck.h"
+#include "ObjectDryRun.h"
 
 namespace toposlam::io {
 
@@ -19,6 +23,9 @@ namespace {
 // odometry can be interpolated; after this many waiting scans the last earlier sample is
 // used instead (a log whose odometry stops).
 constexpr std::size_t kMaxScansAwaitingOdometry = 100;
+
+// Defined in libs/features (which depends on this library); recognised by name.
+constexpr const char* kLaserFeaturesClass = "toposlam::features::CObservationLaserFeatures";
 
 // A quoted C++ class name right after `prefix` in an MRPT error message, or "".
 std::string quotedClassAfter(const std::string& text, const std::string& prefix) {
@@ -40,7 +47,7 @@ std::string quotedClassAfter(const std::string& text, const std::string& prefix)
 }  // namespace
 
 RawlogScanSource::RawlogScanSource(const std::string& path, const LaserLogOptions& options)
-    : path_(path), options_(options), in_(path), archive_(in_) {
+    : path_(path), options_(options), in_(path), lookahead_(in_), archive_(lookahead_) {
     firstObject_ = readObject();
     if (!firstObject_)
         throw InputError(path, "empty rawlog (no objects)");
@@ -51,57 +58,129 @@ RawlogScanSource::RawlogScanSource(const std::string& path, const LaserLogOption
     }
 }
 
+std::string RawlogScanSource::position() const {
+    // 0-based, as RawLogViewer numbers objects.
+    std::string where = "object #" + std::to_string(objectsRead_);
+    if (!lastClass_.empty())
+        where += " (after a " + lastClass_ + ")";
+    return where;
+}
+
+InputError RawlogScanSource::objectError(const std::string& className,
+                                         const std::string& cause) const {
+    const std::string damage = in_.streamError();
+    // A first object whose class MRPT does not know: the file is probably no rawlog at all.
+    if (objectsRead_ == 0 && damage.empty() &&
+        (className.empty() || !mrpt::rtti::findRegisteredClass(className))) {
+        return InputError(path_,
+                          "neither a CARMEN log nor an MRPT rawlog (cannot read the first "
+                          "object: " +
+                              cause + ")");
+    }
+    std::string where = position();
+    if (!className.empty())
+        where += ", a " + className;
+    if (!damage.empty())
+        return InputError(path_, where + ": truncated or corrupt gzip data (" + damage + ")");
+    return InputError(path_, where + ": truncated or corrupt data (" + cause + ")");
+}
+
+mrpt::serialization::CSerializable::Ptr RawlogScanSource::deserialize(const ObjectCheck& check) {
+    // What MRPT may read: the checked bytes, or, for an object the check could not verify,
+    // the bytes a dry run in a child process with bounded memory and time read.
+    std::size_t size = check.size;
+    if (!check.complete && !mrpt::rtti::findRegisteredClass(check.className))
+        throw unregisteredClassError(check.className);
+    if (!check.complete) {
+        const DryRunResult dry = dryRunNextObject(lookahead_);
+        if (!dry.ok) {
+            const std::string unregistered =
+                quotedClassAfter(dry.problem, "Stored object has class ");
+            if (!unregistered.empty())
+                throw unregisteredClassError(unregistered);
+            throw objectError(check.className, dry.problem);
+        }
+        size = dry.size;
+    }
+    lookahead_.setReadLimit(size);
+    struct ClearLimit {
+        LookaheadStream& stream;
+        ~ClearLimit() { stream.setReadLimit(std::nullopt); }
+    } clearLimit{lookahead_};
+    const uint64_t start = lookahead_.position();
+    auto object = archive_.ReadObject();
+    if (lookahead_.position() - start != size) {
+        throw objectError(check.className, "MRPT read " +
+                                               std::to_string(lookahead_.position() - start) +
+                                               " of its " + std::to_string(size) + " bytes");
+    }
+    return object;
+}
+
+InputError RawlogScanSource::unregisteredClassError(const std::string& className) const {
+    return InputError(path_, position() + ": class '" + className +
+                                 "' is not registered with MRPT (it is defined by a library or "
+                                 "plugin this program does not load); the rest of the rawlog "
+                                 "cannot be read");
+}
+
 mrpt::serialization::CSerializable::Ptr RawlogScanSource::readObject() {
-    const std::size_t index = objectsRead_;  // 0-based, as RawLogViewer numbers them
-    const auto where = [&] {
-        return "object #" + std::to_string(index) +
-               (lastClass_.empty() ? std::string() : " (after a " + lastClass_ + ")");
-    };
+    ObjectCheck check;
     try {
-        auto object = archive_.ReadObject();
+        check = checkNextObject(lookahead_);
+    } catch (const MalformedObject& e) {
+        throw objectError(e.topClass(), e.what());
+    }
+    if (check.className.empty()) {
+        // No byte left where an object would start: the regular end, unless the gzip data
+        // stopped early.
+        if (const std::string damage = in_.streamError(); !damage.empty())
+            throw objectError("", damage);
+        return nullptr;
+    }
+    try {
+        auto object = deserialize(check);
         ++objectsRead_;
         lastClass_ = object ? object->GetRuntimeClass()->className : "nullptr";
         return object;
-    } catch (const mrpt::serialization::CExceptionEOF&) {
-        // No byte left where an object would start: the regular end, unless the gzip data
-        // stopped early.
-        if (const std::string damage = in_.streamError(); !damage.empty()) {
-            throw InputError(path_, where() + ": truncated or corrupt gzip data (" + damage + ")");
-        }
-        return nullptr;
+    } catch (const InputError&) {
+        throw;
     } catch (const std::exception& e) {
         const std::string what = e.what();
         const std::string unregistered = quotedClassAfter(what, "Stored object has class ");
-        if (!unregistered.empty()) {
-            throw InputError(path_, where() + ": class '" + unregistered +
-                                        "' is not registered with MRPT (it is defined by a "
-                                        "library or plugin this program does not load); the "
-                                        "rest of the rawlog cannot be read");
-        }
-        const std::string damage = in_.streamError();
-        const std::string cause = damage.empty() ? mrptErrorSummary(e) : damage;
-        if (index == 0) {
-            throw InputError(path_,
-                             "neither a CARMEN log nor an MRPT rawlog (cannot read the "
-                             "first object: " +
-                                 cause + ")");
-        }
+        if (!unregistered.empty())
+            throw unregisteredClassError(unregistered);
         const std::string cls = quotedClassAfter(what, "parsing typed object ");
-        throw InputError(path_, where() + (cls.empty() ? "" : ", a " + cls) +
-                                    ": truncated or corrupt data (" + cause + ")");
+        throw objectError(cls.empty() ? check.className : cls, mrptErrorSummary(e));
     }
 }
 
 void RawlogScanSource::addScan(const mrpt::obs::CObservation2DRangeScan::Ptr& scan) {
     if (!options_.scanLabel.empty() && scan->sensorLabel != options_.scanLabel)
         return;
-    pending_.push_back({scan, accumulatedActions_});
+    pending_.push_back({scan, accumulatedActions_, nullptr, false});
+}
+
+void RawlogScanSource::attachFeatures(const mrpt::obs::CObservation::Ptr& features) {
+    // The latest scan of the same time whose label begins the features' label
+    // (toposlam-annotate-features: "<scan label or LASER>_FEATURES", written after the scan).
+    for (auto it = pending_.rbegin(); it != pending_.rend(); ++it) {
+        const auto& scan = *it->scan;
+        const std::string base = scan.sensorLabel.empty() ? "LASER" : scan.sensorLabel;
+        if (scan.timestamp == features->timestamp &&
+            features->sensorLabel.compare(0, base.size(), base) == 0) {
+            it->features = features;
+            return;
+        }
+    }
 }
 
 void RawlogScanSource::consume(const mrpt::serialization::CSerializable::Ptr& object) {
     using namespace mrpt::obs;
     if (!object)
         return;
+    for (PendingScan& p : pending_)
+        p.followerRead = true;
     if (const auto actions = std::dynamic_pointer_cast<CActionCollection>(object)) {
         // SF format: odometry is the composition of the robot-movement increments.
         const auto movement = actions->getBestMovementEstimation();
@@ -113,19 +192,26 @@ void RawlogScanSource::consume(const mrpt::serialization::CSerializable::Ptr& ob
                 : movement->poseChange->getMeanVal();
         accumulatedActions_ = accumulatedActions_ ? *accumulatedActions_ + increment : increment;
     } else if (const auto frame = std::dynamic_pointer_cast<CSensoryFrame>(object)) {
-        for (const auto& observation : *frame) {
-            if (auto scan = std::dynamic_pointer_cast<CObservation2DRangeScan>(observation)) {
-                addScan(scan);
-            }
-        }
-    } else if (auto scan = std::dynamic_pointer_cast<CObservation2DRangeScan>(object)) {
+        for (const auto& observation : *frame)
+            consumeObservation(observation);
+    } else if (const auto observation = std::dynamic_pointer_cast<CObservation>(object)) {
+        consumeObservation(observation);
+    }
+    // Any other object (a topological map, ...) is not part of the laser stream.
+}
+
+void RawlogScanSource::consumeObservation(const mrpt::obs::CObservation::Ptr& observation) {
+    using namespace mrpt::obs;
+    if (auto scan = std::dynamic_pointer_cast<CObservation2DRangeScan>(observation)) {
         addScan(scan);
-    } else if (const auto odometry = std::dynamic_pointer_cast<CObservationOdometry>(object)) {
+    } else if (const auto odometry = std::dynamic_pointer_cast<CObservationOdometry>(observation)) {
         if (format_ == LaserLogFormat::RawlogObservations) {
             odometry_.push_back({mrpt::Clock::toDouble(odometry->timestamp), odometry->odometry});
         }
+    } else if (std::string(observation->GetRuntimeClass()->className) == kLaserFeaturesClass) {
+        attachFeatures(observation);
     }
-    // Any other object (images, IMU, features, ...) is not part of the laser stream.
+    // Any other observation (images, IMU, bearing-range, ...) is not part of the laser stream.
 }
 
 bool RawlogScanSource::readyToEmit() const {
@@ -135,6 +221,9 @@ bool RawlogScanSource::readyToEmit() const {
         return true;
     if (pending_.size() > kMaxScansAwaitingOdometry)
         return true;
+    // Observations format: the scan's features, if any, follow it.
+    if (!pending_.front().followerRead)
+        return false;
     const double t = mrpt::Clock::toDouble(pending_.front().scan->timestamp);
     return !odometry_.empty() && odometry_.back().time >= t;
 }
@@ -164,6 +253,7 @@ void RawlogScanSource::emit(LaserLogRecord& out) {
     out.hasOdometry = odometry.has_value();
     out.odometry = odometry.value_or(mrpt::poses::CPose2D());
     out.scan = std::move(p.scan);
+    out.storedFeatures = std::move(p.features);
 }
 
 bool RawlogScanSource::next(LaserLogRecord& out) {
@@ -171,12 +261,21 @@ bool RawlogScanSource::next(LaserLogRecord& out) {
         consume(std::move(firstObject_));
     firstObject_.reset();
     while (!readyToEmit()) {
-        if (end_)
+        if (end_) {
+            if (error_)
+                std::rethrow_exception(error_);
             return false;
-        const auto object = readObject();
-        if (object) {
-            consume(object);
-        } else {
+        }
+        try {
+            const auto object = readObject();
+            if (object) {
+                consume(object);
+            } else {
+                end_ = true;
+            }
+        } catch (const InputError&) {
+            // The scans read before the stream broke are delivered first.
+            error_ = std::current_exception();
             end_ = true;
         }
     }

@@ -1,15 +1,21 @@
 #pragma once
 // MRPT rawlogs (either format, plain or gzip) as a stream of laser records, read object by
 // object so that bad content is reported precisely (object index and class) instead of
-// ending the stream silently as MRPT's own readers do.
+// ending the stream silently as MRPT's own readers do. Every object is checked
+// (MrptObjectCheck.h) before MRPT deserializes it; one the check cannot verify is first
+// deserialized in a child process with bounded memory and time (ObjectDryRun.h).
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/serialization/CSerializable.h>
+#include <toposlam/io/InputError.h>
 
 #include <deque>
+#include <exception>
 #include <optional>
 #include <string>
 
 #include "GzipInputStream.h"
+#include "LookaheadStream.h"
+#include "MrptObjectCheck.h"
 #include "ScanSource.h"
 
 namespace toposlam::io {
@@ -21,7 +27,7 @@ class RawlogScanSource : public ScanSource {
 
     bool next(LaserLogRecord& out) override;
     LaserLogFormat format() const override { return format_; }
-    double fractionRead() const override { return in_.fractionRead(); }
+    double fractionRead() const override { return lookahead_.fractionRead(); }
 
   private:
     struct OdometrySample {
@@ -31,12 +37,21 @@ class RawlogScanSource : public ScanSource {
     struct PendingScan {
         mrpt::obs::CObservation2DRangeScan::Ptr scan;
         std::optional<mrpt::poses::CPose2D> odometry;  // SF format: accumulated actions
+        mrpt::obs::CObservation::Ptr features;         // its CObservationLaserFeatures
+        bool followerRead = false;  // an object after it was read: its features would be in
     };
 
     /// The next object, or nullptr at the clean end of the file.
     mrpt::serialization::CSerializable::Ptr readObject();
     void consume(const mrpt::serialization::CSerializable::Ptr& object);
+    mrpt::serialization::CSerializable::Ptr deserialize(const ObjectCheck& check);
+    /// "object #N (after a <class>)", where reading stands.
+    std::string position() const;
+    InputError objectError(const std::string& className, const std::string& cause) const;
+    InputError unregisteredClassError(const std::string& className) const;
     void addScan(const mrpt::obs::CObservation2DRangeScan::Ptr& scan);
+    void consumeObservation(const mrpt::obs::CObservation::Ptr& observation);
+    void attachFeatures(const mrpt::obs::CObservation::Ptr& features);
     bool readyToEmit() const;
     void emit(LaserLogRecord& out);
     std::optional<mrpt::poses::CPose2D> odometryAt(double time);
@@ -44,12 +59,14 @@ class RawlogScanSource : public ScanSource {
     std::string path_;
     LaserLogOptions options_;
     GzipInputStream in_;
+    LookaheadStream lookahead_;
     mrpt::serialization::CArchiveStreamBase<mrpt::io::CStream> archive_;
     LaserLogFormat format_ = LaserLogFormat::RawlogObservations;
     std::size_t objectsRead_ = 0;
     std::string lastClass_;
     mrpt::serialization::CSerializable::Ptr firstObject_;
     bool end_ = false;
+    std::exception_ptr error_;  // why the stream ended, reported after the scans before it
     std::optional<mrpt::poses::CPose2D> accumulatedActions_;
     std::deque<OdometrySample> odometry_;
     std::deque<PendingScan> pending_;

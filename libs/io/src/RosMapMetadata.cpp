@@ -1,13 +1,14 @@
 #include "RosMapMetadata.h"
 
-#include <mrpt/containers/yaml.h>
 #include <toposlam/io/InputError.h>
+#include <yaml-cpp/yaml.h>
 
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <system_error>
 
 namespace toposlam::io {
 
@@ -22,88 +23,95 @@ std::string shortest(double v) {
     return std::string(buf.data(), res.ptr);
 }
 
+// A map_server YAML is a few lines; anything much larger is not one (and is not parsed).
+constexpr std::uintmax_t kMaxYamlBytes = 1 << 20;
+
+YAML::Node loadYaml(const std::string& yamlPath) {
+    std::error_code ec;
+    if (!fs::is_regular_file(yamlPath, ec))
+        throw InputError(yamlPath, "file not found");
+    if (fs::file_size(yamlPath, ec) > kMaxYamlBytes)
+        throw InputError(yamlPath, "not a ROS map_server YAML file (larger than 1 MiB)");
+    try {
+        return YAML::LoadFile(yamlPath);
+    } catch (const YAML::BadFile&) {
+        throw InputError(yamlPath, "cannot read the file");
+    } catch (const std::exception& e) {
+        // yaml-cpp's message: "yaml-cpp: error at line 2, column 5: <problem>".
+        std::string what = e.what();
+        if (what.rfind("yaml-cpp: ", 0) == 0)
+            what.erase(0, 10);
+        throw InputError(yamlPath, "not a valid YAML file (" + what + ")");
+    }
+}
+
+RosMapMetadata::Mode modeNamed(const std::string& mode, const std::string& yamlPath) {
+    if (mode == "trinary")
+        return RosMapMetadata::Mode::Trinary;
+    if (mode == "scale")
+        return RosMapMetadata::Mode::Scale;
+    if (mode == "raw")
+        return RosMapMetadata::Mode::Raw;
+    throw InputError(yamlPath, "unknown mode '" + mode + "' (trinary, scale or raw)");
+}
+
 }  // namespace
 
 RosMapMetadata readRosMapMetadata(const std::string& yamlPath) {
-    if (!fs::is_regular_file(yamlPath))
-        throw InputError(yamlPath, "file not found");
-    mrpt::containers::yaml doc;
-    try {
-        doc = mrpt::containers::yaml::FromFile(yamlPath);
-    } catch (const std::exception&) {
-        throw InputError(yamlPath, "not a valid YAML file");
-    }
-    if (!doc.isMap())
+    const YAML::Node doc = loadYaml(yamlPath);
+    if (!doc.IsMap())
         throw InputError(yamlPath, "not a ROS map_server YAML file (no keys)");
-
-    RosMapMetadata meta;
     const auto required = [&](const char* key) {
-        if (!doc.has(key)) {
+        const YAML::Node node = doc[key];
+        if (!node) {
             throw InputError(yamlPath, std::string("missing key '") + key +
                                            "' (ROS map_server YAML needs image, resolution, "
                                            "origin, negate, occupied_thresh, free_thresh)");
         }
-        return doc[key];
+        return node;
     };
-    const auto number = [&](const char* key) {
+    const auto scalar = [&](const YAML::Node& node, const char* key, const char* expected) {
+        if (!node.IsScalar())
+            throw InputError(yamlPath, std::string("key '") + key + "' is not " + expected);
+        return node.Scalar();
+    };
+    const auto number = [&](const YAML::Node& node, const char* key) {
+        scalar(node, key, "a number");
+        double v = NAN;
         try {
-            const double v = required(key).as<double>();
-            if (!std::isfinite(v))
-                throw std::runtime_error("not finite");
-            return v;
-        } catch (const InputError&) {
-            throw;
-        } catch (const std::exception&) {
-            throw InputError(yamlPath, std::string("key '") + key + "' is not a number");
+            v = node.as<double>();  // as map_server reads it
+        } catch (const YAML::Exception&) {
         }
+        if (!std::isfinite(v))
+            throw InputError(yamlPath, std::string("key '") + key + "' is not a number");
+        return v;
     };
-    try {
-        meta.image = required("image").as<std::string>();
-    } catch (const InputError&) {
-        throw;
-    } catch (const std::exception&) {
-        throw InputError(yamlPath, "key 'image' is not a file name");
-    }
-    meta.resolution = number("resolution");
+    RosMapMetadata meta;
+    meta.image = scalar(required("image"), "image", "a file name");
+    if (meta.image.empty())
+        throw InputError(yamlPath, "key 'image' is empty");
+    meta.resolution = number(required("resolution"), "resolution");
     if (!(meta.resolution > 0))
         throw InputError(yamlPath, "resolution must be > 0");
-
-    std::vector<double> origin;
-    try {
-        origin = required("origin").toStdVector<double>();
-    } catch (const InputError&) {
-        throw;
-    } catch (const std::exception&) {
-        origin.clear();
-    }
-    if (origin.size() != 3)
+    const YAML::Node origin = required("origin");
+    if (!origin.IsSequence() || origin.size() != 3)
         throw InputError(yamlPath, "origin must be [x, y, yaw]");
-    meta.originX = origin[0];
-    meta.originY = origin[1];
-    meta.originYaw = origin[2];
+    meta.originX = number(origin[0], "origin");
+    meta.originY = number(origin[1], "origin");
+    meta.originYaw = number(origin[2], "origin");
     if (meta.originYaw != 0.0) {
         throw InputError(yamlPath, "origin yaw " + shortest(meta.originYaw) +
                                        " is not supported (only axis-aligned maps, yaw 0)");
     }
-    meta.negate = number("negate") != 0.0;
-    meta.occupiedThresh = number("occupied_thresh");
-    meta.freeThresh = number("free_thresh");
+    meta.negate = number(required("negate"), "negate") != 0.0;
+    meta.occupiedThresh = number(required("occupied_thresh"), "occupied_thresh");
+    meta.freeThresh = number(required("free_thresh"), "free_thresh");
     if (meta.freeThresh < 0 || meta.occupiedThresh > 1 || meta.freeThresh >= meta.occupiedThresh) {
         throw InputError(yamlPath,
                          "thresholds must satisfy 0 <= free_thresh < occupied_thresh <= 1");
     }
-    std::string mode = "trinary";
-    if (doc.has("mode"))
-        mode = doc["mode"].as<std::string>();
-    if (mode == "trinary") {
-        meta.mode = RosMapMetadata::Mode::Trinary;
-    } else if (mode == "scale") {
-        meta.mode = RosMapMetadata::Mode::Scale;
-    } else if (mode == "raw") {
-        meta.mode = RosMapMetadata::Mode::Raw;
-    } else {
-        throw InputError(yamlPath, "unknown mode '" + mode + "' (trinary, scale or raw)");
-    }
+    meta.mode =
+        modeNamed(doc["mode"] ? scalar(doc["mode"], "mode", "a word") : "trinary", yamlPath);
     return meta;
 }
 

@@ -21,7 +21,7 @@ CGraphSlamBuilder::~CGraphSlamBuilder() = default;
 
 void CGraphSlamBuilder::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg) {
     slamOptions.loadFromConfigFile(cfg, "GraphSlam");
-    matcherOptions.loadFromConfigFile(cfg, "GraphMatcher");
+    matcherOptions.loadFromConfigFile(cfg, "GraphScanMatcher");
     gridOptions.loadFromConfigFile(cfg, "OccupancyGrid");
     extractor_ = features::makeFeatureExtractor(slamOptions.extractor, &cfg);
 }

@@ -1,116 +1,144 @@
-#include <mrpt/config/CConfigFileBase.h>
+#include <toposlam/features/FeatureExtractor.h>
 #include <toposlam/mapping/GraphSlamOptions.h>
 
-#include <cmath>
-#include <functional>
-#include <stdexcept>
-#include <vector>
+#include <algorithm>
 
 namespace toposlam::mapping {
 
-namespace {
-/// One key of the section: how to read and write it.
-struct Key {
-    const char* name;
-    std::function<void(const mrpt::config::CConfigFileBase&, const std::string&)> read;
-    std::function<void(mrpt::config::CConfigFileBase&, const std::string&)> write;
-};
-
-constexpr double kDeg = M_PI / 180;
-
-Key number(const char* name, double& v) {
-    return {name, [&v, name](const auto& c, const auto& s) { v = c.read_double(s, name, v); },
-            [&v, name](auto& c, const auto& s) { c.write(s, name, v); }};
-}
-Key angle(const char* name, double& v) {  // radians in code, degrees in the file
-    return {
-        name,
-        [&v, name](const auto& c, const auto& s) { v = c.read_double(s, name, v / kDeg) * kDeg; },
-        [&v, name](auto& c, const auto& s) { c.write(s, name, v / kDeg); }};
-}
-Key count(const char* name, std::size_t& v) {
-    return {
-        name,
-        [&v, name](const auto& c, const auto& s) { v = std::size_t(c.read_uint64_t(s, name, v)); },
-        [&v, name](auto& c, const auto& s) { c.write(s, name, uint64_t(v)); }};
-}
-Key integer(const char* name, int& v) {
-    return {name, [&v, name](const auto& c, const auto& s) { v = c.read_int(s, name, v); },
-            [&v, name](auto& c, const auto& s) { c.write(s, name, v); }};
-}
-Key flag(const char* name, bool& v) {
-    return {name, [&v, name](const auto& c, const auto& s) { v = c.read_bool(s, name, v); },
-            [&v, name](auto& c, const auto& s) { c.write(s, name, v); }};
-}
-Key text(const char* name, std::string& v) {
-    return {name, [&v, name](const auto& c, const auto& s) { v = c.read_string(s, name, v); },
-            [&v, name](auto& c, const auto& s) { c.write(s, name, v); }};
-}
-
-std::vector<Key> keys(GraphSlamOptions& o) {
-    return {number("keyframe_distance", o.keyframeDistance),
-            angle("keyframe_angle_deg", o.keyframeAngle),
-            number("keyframe_min_overlap", o.keyframeMinOverlap),
-            count("submap_keyframes", o.submapKeyframes),
-            number("map_resolution", o.mapResolution),
-            number("map_fuse_distance", o.mapFuseDistance),
-            number("map_max_range", o.mapMaxRange),
-            integer("icp_max_iterations", o.icpMaxIterations),
-            number("icp_max_distance", o.icpMaxDistance),
-            number("icp_robust_scale", o.icpRobustScale),
-            count("icp_stride", o.icpStride),
-            number("min_inlier_ratio", o.minInlierRatio),
-            number("max_correction_distance", o.maxCorrectionDistance),
-            angle("max_correction_angle_deg", o.maxCorrectionAngle),
-            number("odometry_jump_distance", o.odometryJumpDistance),
-            angle("odometry_jump_angle_deg", o.odometryJumpAngle),
-            number("odometry_sigma_xy", o.odometrySigmaXY),
-            number("odometry_sigma_xy_per_metre", o.odometrySigmaXYPerMetre),
-            angle("odometry_sigma_phi_deg", o.odometrySigmaPhi),
-            number("odometry_sigma_phi_per_radian", o.odometrySigmaPhiPerRadian),
-            number("edge_min_sigma_xy", o.edgeMinSigmaXY),
-            angle("edge_min_sigma_phi_deg", o.edgeMinSigmaPhi),
-            flag("loop_closure", o.loopClosure),
-            number("loop_min_travel", o.loopMinTravel),
-            number("loop_overlap_distance", o.loopOverlapDistance),
-            number("loop_gate_sigmas", o.loopGateSigmas),
-            count("loop_max_candidates", o.loopMaxCandidates),
-            count("loop_search_every", o.loopSearchEvery),
-            number("drift_sigma_xy", o.driftSigmaXY),
-            angle("drift_sigma_phi_deg", o.driftSigmaPhi),
-            angle("drift_sigma_phi_deg_per_turn", o.driftSigmaPhiPerTurn),
-            count("global_search_every", o.globalSearchEvery),
-            count("global_search_candidates", o.globalSearchCandidates),
-            number("loop_min_sigma_xy", o.loopMinSigmaXY),
-            angle("loop_min_sigma_phi_deg", o.loopMinSigmaPhi),
-            number("loop_candidate_spacing", o.loopCandidateSpacing),
-            number("loop_chi2", o.loopChi2),
-            count("loop_confirm_window", o.loopConfirmWindow),
-            number("loop_pair_tolerance", o.loopPairTolerance),
-            angle("loop_pair_angle_tolerance_deg", o.loopPairAngleTolerance),
-            number("loop_loss_scale", o.loopLossScale),
-            integer("optimize_max_iterations", o.optimizeMaxIterations),
-            number("optimize_trigger_distance", o.optimizeTriggerDistance),
-            angle("optimize_trigger_angle_deg", o.optimizeTriggerAngle),
-            number("optimize_global_distance", o.optimizeGlobalDistance),
-            angle("optimize_global_angle_deg", o.optimizeGlobalAngle),
-            count("optimize_every_loops", o.optimizeEveryLoops),
-            count("optimize_window", o.optimizeWindow),
-            count("optimize_global_every", o.optimizeGlobalEvery),
-            text("extractor", o.extractor)};
-}
-}  // namespace
-
-void GraphSlamOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                                          const std::string& section) {
-    for (const Key& k : keys(*this))
-        k.read(cfg, section);
-}
-
-void GraphSlamOptions::saveToConfigFile(mrpt::config::CConfigFileBase& cfg,
-                                        const std::string& section) const {
-    for (const Key& k : keys(const_cast<GraphSlamOptions&>(*this)))
-        k.write(cfg, section);
+void GraphSlamOptions::declare(config::OptionsSchema& s) {
+    // Front end: keyframes and local submaps.
+    s.real("keyframe_distance", keyframeDistance, "m", "a keyframe every this much travel ...")
+        .above(0);
+    s.angle("keyframe_angle", keyframeAngle, "... or this much turn").above(0).atMost(180);
+    s.real("keyframe_min_overlap", keyframeMinOverlap, "",
+           "... or as soon as less than this share of the scan lies on the local map")
+        .within(0, 1);
+    s.integer("submap_keyframes", submapKeyframes, "keyframes",
+              "per submap; two overlapping submaps are active")
+        .within(2, 10000);
+    s.real("map_resolution", mapResolution, "m", "lookup cells of the submaps' line maps")
+        .within(0.005, 1);
+    s.real("map_fuse_distance", mapFuseDistance, "m",
+           "observations this close to a map point are fused into it")
+        .above(0);
+    s.real("map_max_range", mapMaxRange, "m", "farther readings are not put into submaps")
+        .above(0);
+    // Front end: registration.
+    s.integer("icp_max_iterations", icpMaxIterations, "", "point-to-line ICP iterations at most")
+        .within(1, 1000);
+    s.real("icp_max_distance", icpMaxDistance, "m", "association gate of ICP's first stage")
+        .above(0);
+    s.real("icp_robust_scale", icpRobustScale, "m", "Cauchy kernel scale of ICP").above(0);
+    s.integer("icp_stride", icpStride, "", "every stride-th point in ICP's first stage")
+        .within(1, 100);
+    s.real("min_inlier_ratio", minInlierRatio, "",
+           "a registration is good when this share of the scan's points lies on the map ...")
+        .within(0, 1);
+    s.real("max_correction_distance", maxCorrectionDistance, "m",
+           "... and it corrects the prediction by at most this ...")
+        .above(0);
+    s.angle("max_correction_angle", maxCorrectionAngle, "... and this").above(0).atMost(180);
+    s.real("odometry_jump_distance", odometryJumpDistance, "m",
+           "odometry steps longer than this between two scans are jumps, not motion ...")
+        .above(0);
+    s.angle("odometry_jump_angle", odometryJumpAngle, "... as are turns larger than this")
+        .above(0)
+        .atMost(180);
+    s.real("odometry_sigma_xy", odometrySigmaXY, "m",
+           "odometry-only edges: position noise floor ...")
+        .above(0);
+    s.real("odometry_sigma_xy_per_metre", odometrySigmaXYPerMetre, "m/m",
+           "... plus this share of the distance travelled")
+        .atLeast(0);
+    s.angle("odometry_sigma_phi", odometrySigmaPhi, "heading noise floor ...").above(0);
+    s.real("odometry_sigma_phi_per_radian", odometrySigmaPhiPerRadian, "rad/rad",
+           "... plus this share of the angle turned")
+        .atLeast(0);
+    s.real("edge_min_sigma_xy", edgeMinSigmaXY, "m",
+           "registration edges: smallest position sigma (ICP's own is too confident)")
+        .above(0);
+    s.angle("edge_min_sigma_phi", edgeMinSigmaPhi, "... and heading sigma").above(0);
+    // Loop closure.
+    s.flag("loop_closure", loopClosure, "search, verify and add loop edges");
+    s.real("loop_min_travel", loopMinTravel, "m",
+           "older keyframes are candidates beyond this travel along the trajectory")
+        .atLeast(0);
+    s.real("loop_overlap_distance", loopOverlapDistance, "m",
+           "keyframes this close see enough of the same place to be matched")
+        .above(0);
+    s.real("loop_gate_sigmas", loopGateSigmas, "",
+           "Mahalanobis gate of the pose uncertainty propagated through the graph")
+        .above(0);
+    s.integer("loop_max_candidates", loopMaxCandidates, "", "candidates verified per keyframe")
+        .within(1, 100);
+    s.integer("loop_search_every", loopSearchEvery, "keyframes",
+              "the gated loop search runs on every this-many-th keyframe")
+        .within(1, 1000);
+    s.real("drift_sigma_xy", driftSigmaXY, "m/sqrt(m)",
+           "drift model: position random walk per metre of path ...")
+        .above(0);
+    s.angle("drift_sigma_phi", driftSigmaPhi, "... heading random walk per metre ...",
+            "deg/sqrt(m)")
+        .atLeast(0);
+    s.angle("drift_sigma_phi_per_turn", driftSigmaPhiPerTurn, "... and per radian turned",
+            "deg/sqrt(rad)")
+        .atLeast(0);
+    s.integer("global_search_every", globalSearchEvery, "keyframes",
+              "guess-free search against keyframes outside the gate every this many (0: off)")
+        .within(0, 100000);
+    s.integer("global_search_candidates", globalSearchCandidates, "",
+              "keyframes of the most similar signatures matched by the guess-free search")
+        .within(1, 100);
+    s.real("loop_min_sigma_xy", loopMinSigmaXY, "m", "loop edges: smallest position sigma ...")
+        .above(0);
+    s.angle("loop_min_sigma_phi", loopMinSigmaPhi, "... and heading sigma").above(0);
+    s.real("loop_candidate_spacing", loopCandidateSpacing, "m",
+           "verified candidates are at least this far apart (look-alikes get tried)")
+        .atLeast(0);
+    s.real("loop_chi2", loopChi2, "",
+           "chi-square bound (3 dof) on a loop's disagreement with the graph (16.27 = 99.9 %)")
+        .above(0);
+    s.integer("loop_confirm_window", loopConfirmWindow, "keyframes",
+              "a guess-free or correcting loop needs an agreeing one within this many")
+        .within(1, 100000);
+    s.real("loop_pair_tolerance", loopPairTolerance, "m",
+           "two loops agree when their cycle closes within this ...")
+        .above(0);
+    s.angle("loop_pair_angle_tolerance", loopPairAngleTolerance, "... and this").above(0);
+    // Back end.
+    s.real("loop_loss_scale", loopLossScale, "sigmas",
+           "Cauchy loss on loop edges (0: plain least squares)")
+        .atLeast(0);
+    s.integer("optimize_max_iterations", optimizeMaxIterations, "",
+              "Ceres iterations per optimisation")
+        .within(1, 1000);
+    s.real("optimize_trigger_distance", optimizeTriggerDistance, "m",
+           "a loop disagreeing by more is optimised at once over the recent window ...")
+        .atLeast(0);
+    s.angle("optimize_trigger_angle", optimizeTriggerAngle, "... or by more than this")
+        .atLeast(0);
+    s.real("optimize_global_distance", optimizeGlobalDistance, "m",
+           "a loop disagreeing by more is optimised over the whole graph ...")
+        .atLeast(0);
+    s.angle("optimize_global_angle", optimizeGlobalAngle, "... or by more than this")
+        .atLeast(0);
+    s.integer("optimize_every_loops", optimizeEveryLoops, "loops",
+              "agreeing loops are optimised once this many have come")
+        .within(1, 100000);
+    s.integer("optimize_window", optimizeWindow, "keyframes",
+              "the recent keyframes a windowed optimisation moves")
+        .within(2, 1000000);
+    s.integer("optimize_global_every", optimizeGlobalEvery, "keyframes",
+              "the whole graph is optimised every this many keyframes with loops, and at the end")
+        .within(1, 1000000);
+    s.text("extractor", extractor,
+           "feature extractor of the keyframes; its options come from its own section");
+    s.require(
+        [this] {
+            const auto& names = features::featureExtractorNames();
+            return std::find(names.begin(), names.end(), extractor) != names.end();
+        },
+        "extractor", "must be one of the feature extractors (corners, segments, ...)");
 }
 
 }  // namespace toposlam::mapping

@@ -16,6 +16,12 @@
 
 namespace toposlam::mapping {
 
+void SlamEngineOptions::declare(config::OptionsSchema& s) {
+    s.text("engine", engine, "graph (TopoSLAM's graph SLAM) or icp (MRPT's icp-slam engine)");
+    s.require([this] { return engine == "graph" || engine == "icp"; }, "engine",
+              "must be graph or icp");
+}
+
 using mrpt::poses::CPose2D;
 
 namespace {
@@ -51,6 +57,8 @@ void runGraphEngine(const std::string& logPath, const mrpt::config::CConfigFileB
             odometry->sensorLabel = "ODOMETRY";
             builder.processObservation(odometry);
         }
+        if (record.storedFeatures)  // an annotated rawlog: the builder reuses them
+            builder.processObservation(record.storedFeatures);
         builder.processObservation(record.scan);
         trajectory.push_back({record.fileStamp, {}});
         scans.push_back({record.scan, {}});
@@ -79,16 +87,15 @@ void runIcpEngine(const std::string& logPath, const mrpt::config::CConfigFileBas
 }
 
 /// Turns every output about the map origin so the dominant walls run along the axes.
-void alignWithWalls(const mrpt::config::CConfigFileBase& ini, std::vector<PosedScan>& scans,
+void alignWithWalls(const OccupancyGridOptions& options, std::vector<PosedScan>& scans,
                     MappingResult& result) {
-    if (!ini.read_bool("OccupancyGrid", "alignWithWalls", true))
+    if (!options.alignWithWalls)
         return;
-    const double minStrength = ini.read_double("OccupancyGrid", "minWallDirectionStrength", 0.2);
     const auto walls = estimateWallDirection(scans);
     if (!walls)
         return;
     result.wallDirectionStrength = walls->strength;
-    if (walls->strength < minStrength)
+    if (walls->strength < options.minWallDirectionStrength)
         return;
     result.wallAlignment = -walls->angle;
     const CPose2D turn(0, 0, result.wallAlignment);
@@ -108,18 +115,17 @@ MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFile
     const auto start = std::chrono::steady_clock::now();
     const double cpuStart = processCpuSeconds();
     MappingResult result;
-    result.engine = ini.read_string("Slam", "engine", "graph");
+    SlamEngineOptions engine;
+    engine.loadFromConfigFile(ini, "Slam");
+    result.engine = engine.engine;
     OccupancyGridOptions gridOptions;
     gridOptions.loadFromConfigFile(ini, "OccupancyGrid");
 
     std::vector<PosedScan> scans;
-    if (result.engine == "graph")
+    if (engine.engine == "graph")
         runGraphEngine(logPath, ini, progress, scans, result.trajectory, result);
-    else if (result.engine == "icp")
-        runIcpEngine(logPath, ini, progress, scans, result.trajectory);
     else
-        throw std::invalid_argument("[Slam] engine = " + result.engine +
-                                    ": unknown engine (graph or icp)");
+        runIcpEngine(logPath, ini, progress, scans, result.trajectory);
     if (scans.empty())
         throw io::InputError(logPath, "the log contains no laser scans");
     const bool anyReading = std::any_of(scans.begin(), scans.end(), [](const PosedScan& s) {
@@ -132,7 +138,7 @@ MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFile
         throw io::InputError(logPath, "none of its " + std::to_string(scans.size()) +
                                           " laser scans has a valid reading");
 
-    alignWithWalls(ini, scans, result);
+    alignWithWalls(gridOptions, scans, result);
     result.scans = scans.size();
     result.logDuration =
         mrpt::system::timeDifference(scans.front().scan->timestamp, scans.back().scan->timestamp);

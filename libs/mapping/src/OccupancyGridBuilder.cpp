@@ -6,13 +6,34 @@
 
 namespace toposlam::mapping {
 
-void OccupancyGridOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& ini,
-                                              const std::string& section) {
-    resolution = ini.read_double(section, "resolution", resolution);
-    keyframeDistance = ini.read_double(section, "keyframeDistance", keyframeDistance);
-    keyframeAngle =
-        ini.read_double(section, "keyframeAngle_deg", keyframeAngle * 180.0 / M_PI) * M_PI / 180.0;
-    insertion.loadFromConfigFile(ini, section);
+void OccupancyGridOptions::declare(config::OptionsSchema& s) {
+    s.real("resolution", resolution, "m", "cell size of the output grid").within(0.001, 10);
+    s.real("keyframe_distance", keyframeDistance, "m",
+           "scans are inserted every keyframe_distance travelled ...")
+        .atLeast(0);
+    s.angle("keyframe_angle", keyframeAngle, "... or keyframe_angle_deg turned").atLeast(0);
+    s.flag("align_with_walls", alignWithWalls,
+           "turn the map so the dominant walls run along the x and y axes");
+    s.real("min_wall_direction_strength", minWallDirectionStrength, "",
+           "... when at least this fraction of local wall pieces agree on the direction")
+        .within(0, 1);
+    s.real("max_distance_insertion", insertion.maxDistanceInsertion, "m",
+           "readings beyond this range are not inserted")
+        .above(0);
+    s.real("max_occupancy_update_certainty", insertion.maxOccupancyUpdateCertainty, "",
+           "Bayesian update of an occupied cell per reading (MRPT)")
+        .within(0.5, 1);
+    s.real("max_freeness_update_certainty", insertion.maxFreenessUpdateCertainty, "",
+           "... of a free cell (0: as max_occupancy_update_certainty)")
+        .within(0, 1);
+    s.real("max_freeness_invalid_ranges", insertion.maxFreenessInvalidRanges, "",
+           "... of a free cell along a reading without return (0: the same)")
+        .within(0, 1);
+    s.flag("consider_invalid_ranges_as_free_space", insertion.considerInvalidRangesAsFreeSpace,
+           "readings without a return are evidence of free space (not in CARMEN logs, which "
+           "mark no-returns with the maximum range)");
+    s.integer("decimation", insertion.decimation, "", "insert every decimation-th reading")
+        .within(1, 1000);
 }
 
 mrpt::maps::COccupancyGridMap2D buildOccupancyGrid(const std::vector<PosedScan>& scans,

@@ -6,6 +6,18 @@
 
 namespace toposlam::matching {
 
+void AlignmentScoreOptions::declare(config::OptionsSchema& s) {
+    s.real("inlier_distance", inlierDistance, "m",
+           "a point this near the other surface is an inlier")
+        .above(0);
+    s.integer("search_beams", searchBeams, "", "reference beams looked at each side of the bearing")
+        .within(0, 1000);
+    s.integer("stride", stride, "", "score every stride-th current beam").within(1, 1000);
+    s.real("max_join_distance", maxJoinDistance, "m",
+           "neighbouring reference points farther apart (+ 3 beam arcs) are not joined")
+        .atLeast(0);
+}
+
 double AlignmentScore::inlierRms() const {
     return inliers > 0 ? std::sqrt(inlierSquaredError / double(inliers)) : 0.0;
 }

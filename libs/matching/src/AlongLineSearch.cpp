@@ -5,6 +5,19 @@
 
 namespace toposlam::matching {
 
+void AlongLineSearchOptions::declare(config::OptionsSchema& s) {
+    s.real("range", range, "m", "searched each side (at most the longest matched segment)")
+        .atLeast(0);
+    s.real("bin", bin, "m", "vote bin").above(0);
+    s.require([this] { return range / bin <= 1e6; }, "bin",
+              "too small for the range (> 10^6 bins)");
+    s.real("across_tolerance", acrossTolerance, "m", "points this near a line across vote")
+        .above(0);
+    s.real("fine_step", fineStep, "m", "scorer check around each peak (+-1 step)").above(0);
+    s.integer("peaks", peaks, "", "vote peaks checked with the scorer").within(1, 1000);
+    s.integer("stride", stride, "", "every stride-th beam of both scans").within(1, 1000);
+}
+
 mrpt::poses::CPose2D AlongLineSearch::search(const PolarScan& reference, const PolarScan& current,
                                              const mrpt::poses::CPose2D& pose,
                                              const mrpt::math::TPoint2D& u,

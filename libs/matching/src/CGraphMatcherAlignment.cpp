@@ -1,4 +1,3 @@
-#include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/core/initializer.h>
 #include <toposlam/matching/CGraphMatcherAlignment.h>
 #include <toposlam/matching/CScanFeaturesMap.h>
@@ -16,11 +15,13 @@ CGraphMatcherAlignment::CGraphMatcherAlignment() {
     setLoggerName("CGraphMatcherAlignment");
 }
 
-void CGraphMatcherAlignment::Options::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                                                         const std::string& section) {
-    matcher.loadFromConfigFile(cfg, section);
-    useGuess = cfg.read_bool(section, "useGuess", useGuess);
-    unreliableVariance = cfg.read_double(section, "unreliableVariance", unreliableVariance);
+void CGraphMatcherAlignment::Options::declare(config::OptionsSchema& s) {
+    s.group("", matcher);
+    s.flag("use_guess", useGuess,
+           "CGraphMatcherAlignment: prune with the guess (false: guess-free, loop closure)");
+    s.real("unreliable_variance", unreliableVariance, "m^2, rad^2",
+           "CGraphMatcherAlignment: covariance returned for a non-reliable match")
+        .above(0);
 }
 
 namespace {

@@ -25,43 +25,19 @@ MAP_DEFINITION_REGISTER("toposlam::matching::CScanFeaturesMap,scanFeaturesMap",
 
 // --- options -------------------------------------------------------------------------------
 
-void CScanFeaturesMap::TInsertionOptions::loadFromConfigFile(
-    const mrpt::config::CConfigFileBase& cfg, const std::string& section) {
-    merge.loadFromConfigFile(cfg, section);
-    const std::string s =
-        cfg.read_string(section, "source", source == Source::Scans ? "scans" : "features");
-    if (s == "scans")
-        source = Source::Scans;
-    else if (s == "features")
-        source = Source::Features;
-    else
-        throw std::invalid_argument("CScanFeaturesMap: [" + section + "] source must be scans or " +
-                                    "features, not '" + s + "'");
+void CScanFeaturesMap::TInsertionOptions::declare(config::OptionsSchema& s) {
+    s.choice("source", source, {{"scans", Source::Scans}, {"features", Source::Features}},
+             "scans: extract from each inserted CObservation2DRangeScan; features: use the "
+             "CObservationLaserFeatures of a toposlam-annotate-features rawlog");
+    s.group("", merge);
 }
 
-void CScanFeaturesMap::TInsertionOptions::dumpToTextStream(std::ostream& out) const {
-    out << "source              = " << (source == Source::Scans ? "scans" : "features") << "\n";
-    merge.dumpToTextStream(out);
-}
-
-void CScanFeaturesMap::TLikelihoodOptions::loadFromConfigFile(
-    const mrpt::config::CConfigFileBase& cfg, const std::string& section) {
-    sigma_dist = cfg.read_double(section, "sigma_dist", sigma_dist);
-    max_corr_distance = cfg.read_double(section, "max_corr_distance", max_corr_distance);
-    const int d = cfg.read_int(section, "decimation", static_cast<int>(decimation));
-    if (!std::isfinite(sigma_dist) || sigma_dist <= 0 || !std::isfinite(max_corr_distance) ||
-        max_corr_distance <= 0 || d < 1) {
-        throw std::invalid_argument("CScanFeaturesMap: [" + section +
-                                    "] needs sigma_dist > 0, max_corr_distance > 0 and "
-                                    "decimation >= 1");
-    }
-    decimation = static_cast<unsigned>(d);
-}
-
-void CScanFeaturesMap::TLikelihoodOptions::dumpToTextStream(std::ostream& out) const {
-    out << "sigma_dist          = " << sigma_dist << "\n"
-        << "max_corr_distance   = " << max_corr_distance << "\n"
-        << "decimation          = " << decimation << "\n";
+void CScanFeaturesMap::TLikelihoodOptions::declare(config::OptionsSchema& s) {
+    s.real("sigma_dist", sigma_dist, "m^2", "variance of a point's distance to the map's lines")
+        .above(0);
+    s.real("max_corr_distance", max_corr_distance, "m", "farther points count as this far")
+        .above(0);
+    s.integer("decimation", decimation, "", "use every decimation-th scan point").within(1, 10000);
 }
 
 CScanFeaturesMap::TMapDefinition::TMapDefinition() = default;
@@ -139,7 +115,12 @@ void CScanFeaturesMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t 
             if (source > 1 || decimation < 1)
                 throw std::runtime_error("CScanFeaturesMap: corrupt options");
             extractorObject_ = features::makeFeatureExtractor(extractor_);  // validates the name
-            o.validate();
+            try {
+                o.validate("FeatureMap");
+            } catch (const std::exception& e) {
+                throw std::runtime_error(std::string("CScanFeaturesMap: corrupt options: ") +
+                                         e.what());
+            }
             insertionOptions.source = static_cast<Source>(source);
             likelihoodOptions.decimation = decimation;
             in >> n;

@@ -88,68 +88,33 @@ void mergeSegmentInto(MapSegment& into, const MapSegment& from) {
     refit(into, ends, 2);
 }
 
-void requirePositive(double v, const char* name) {
-    if (!std::isfinite(v) || v <= 0)
-        throw std::invalid_argument(std::string("FeatureMap option ") + name +
-                                    " must be a positive number, not " + std::to_string(v));
-}
-
-void requireNonNegative(double v, const char* name) {
-    if (!std::isfinite(v) || v < 0)
-        throw std::invalid_argument(std::string("FeatureMap option ") + name +
-                                    " must be a non-negative number, not " + std::to_string(v));
-}
-
 }  // namespace
 
 // --- options -------------------------------------------------------------------------------
 
-void FeatureMapOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                                           const std::string& section) {
-    mergeAngle = cfg.read_double(section, "mergeAngle_deg", mergeAngle * 180 / M_PI) * M_PI / 180;
-    mergeDistance = cfg.read_double(section, "mergeDistance", mergeDistance);
-    mergeGap = cfg.read_double(section, "mergeGap", mergeGap);
-    minSegmentLength = cfg.read_double(section, "minSegmentLength", minSegmentLength);
-    cornerMergeRadius = cfg.read_double(section, "cornerMergeRadius", cornerMergeRadius);
-    endpointMergeRadius = cfg.read_double(section, "endpointMergeRadius", endpointMergeRadius);
-    poseStd = cfg.read_double(section, "poseStd", poseStd);
-    minCoverageRatio = cfg.read_double(section, "minCoverageRatio", minCoverageRatio);
-    minPieceLength = cfg.read_double(section, "minPieceLength", minPieceLength);
-    const int minObs = cfg.read_int(section, "minObservations", static_cast<int>(minObservations));
-    if (minObs < 1)
-        throw std::invalid_argument("FeatureMap option minObservations must be >= 1, not " +
-                                    std::to_string(minObs));
-    minObservations = static_cast<std::uint32_t>(minObs);
-    validate();
-}
-
-void FeatureMapOptions::validate() const {
-    requirePositive(mergeAngle, "mergeAngle_deg");
-    requirePositive(mergeDistance, "mergeDistance");
-    requireNonNegative(mergeGap, "mergeGap");
-    requireNonNegative(minSegmentLength, "minSegmentLength");
-    requirePositive(cornerMergeRadius, "cornerMergeRadius");
-    requirePositive(endpointMergeRadius, "endpointMergeRadius");
-    requirePositive(poseStd, "poseStd");
-    requireNonNegative(minCoverageRatio, "minCoverageRatio");
-    if (minCoverageRatio > 1)
-        throw std::invalid_argument("FeatureMap option minCoverageRatio must be <= 1");
-    requireNonNegative(minPieceLength, "minPieceLength");
-    if (minObservations < 1)
-        throw std::invalid_argument("FeatureMap option minObservations must be >= 1");
-}
-
-void FeatureMapOptions::dumpToTextStream(std::ostream& out) const {
-    out << "mergeAngle_deg      = " << mergeAngle * 180 / M_PI << "\n"
-        << "mergeDistance       = " << mergeDistance << "\n"
-        << "mergeGap            = " << mergeGap << "\n"
-        << "minSegmentLength    = " << minSegmentLength << "\n"
-        << "cornerMergeRadius   = " << cornerMergeRadius << "\n"
-        << "endpointMergeRadius = " << endpointMergeRadius << "\n"
-        << "poseStd             = " << poseStd << "\n"
-        << "minObservations     = " << minObservations << "\n"
-        << "minCoverageRatio    = " << minCoverageRatio << "\n"
-        << "minPieceLength      = " << minPieceLength << "\n";
+void FeatureMapOptions::declare(config::OptionsSchema& s) {
+    s.angle("merge_angle", mergeAngle, "facing directions this close may merge")
+        .above(0)
+        .atMost(90);
+    s.real("merge_distance", mergeDistance, "m", "ends this close to a map line may merge")
+        .above(0);
+    s.real("merge_gap", mergeGap, "m", "gap along the line bridged by a merge").atLeast(0);
+    s.real("min_segment_length", minSegmentLength, "m",
+           "shorter observed segments are not inserted")
+        .atLeast(0);
+    s.real("corner_merge_radius", cornerMergeRadius, "m", "corners this close merge").above(0);
+    s.real("endpoint_merge_radius", endpointMergeRadius, "m", "endpoints this close merge")
+        .above(0);
+    s.real("pose_std", poseStd, "m",
+           "std of the insertion pose's position error, added to every corner's covariance")
+        .above(0);
+    s.integer("min_observations", minObservations, "", "observations that make a feature confirmed")
+        .within(1, 1000000);
+    s.real("min_coverage_ratio", minCoverageRatio, "",
+           "of the line's median beams per bin: a gap below it splits the line into pieces")
+        .within(0, 1);
+    s.real("min_piece_length", minPieceLength, "m", "shorter pieces of a line are dropped")
+        .atLeast(0);
 }
 
 // --- moments -------------------------------------------------------------------------------

@@ -1,4 +1,3 @@
-#include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/math/wrap2pi.h>
 #include <toposlam/io/CpuTime.h>
 #include <toposlam/matching/GraphScanMatcher.h>
@@ -445,106 +444,76 @@ const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
     return r;
 }
 
-namespace {
-void read(const mrpt::config::CConfigFileBase& c, const std::string& s, const std::string& key,
-          double& v) {
-    v = c.read_double(s, key, v);
+void GraphMatcherOptions::declare(config::OptionsSchema& s) {
+    // Attributed graph (paper sec. 2.2) and candidate assignments.
+    s.real("min_segment_length", minSegmentLength, "m", "shorter segments are not graph nodes")
+        .atLeast(0);
+    // The similarity matrix grows with the fourth power of this.
+    s.integer("max_segments", maxSegments, "",
+              "per scan, the longest ones (bounds the (n n')^2 similarity cost)")
+        .within(2, 64);
+    s.real("min_length_ratio", minLengthRatio, "",
+           "no guess: shorter/longer length of a candidate pair (occlusion!)")
+        .within(0, 1);
+    s.real("guess_translation_window", guessTranslationWindow, "m",
+           "with a guess: predicted position error accepted")
+        .atLeast(0);
+    s.angle("guess_rotation_window", guessRotationWindow,
+            "with a guess: predicted direction error accepted")
+        .within(0, 180);
+    s.flag("guess_free_retry", guessFreeRetry, "guided match failed: retry without the guess");
+    // Steps 3-6.
+    s.group("similarity_", similarity);
+    s.group("spgm_", spgm);
+    s.group("ransac_", ransac);
+    declareRefinement(s);
+    declareDecision(s);
 }
-void read(const mrpt::config::CConfigFileBase& c, const std::string& s, const std::string& key,
-          std::size_t& v) {
-    v = static_cast<std::size_t>(c.read_uint64_t(s, key, v));
-}
-void read(const mrpt::config::CConfigFileBase& c, const std::string& s, const std::string& key,
-          int& v) {
-    v = c.read_int(s, key, v);
-}
-}  // namespace
 
-void GraphMatcherOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
-                                             const std::string& s) {
-    read(c, s, "minSegmentLength", minSegmentLength);
-    read(c, s, "maxSegments", maxSegments);
-    read(c, s, "minLengthRatio", minLengthRatio);
-    read(c, s, "guessTranslationWindow", guessTranslationWindow);
-    read(c, s, "guessRotationWindow", guessRotationWindow);
-    int retry = guessFreeRetry ? 1 : 0;
-    read(c, s, "guessFreeRetry", retry);
-    guessFreeRetry = retry != 0;
-    read(c, s, "similarity_alpha", similarity.alpha);
-    read(c, s, "similarity_maxAngleDifference", similarity.maxAngleDifference);
-    read(c, s, "spgm_maxIterations", spgm.maxIterations);
-    read(c, s, "spgm_tolerance", spgm.tolerance);
-    read(c, s, "spgm_projectionCycles", spgm.projectionCycles);
-    read(c, s, "spgm_projectionTolerance", spgm.projectionTolerance);
-    read(c, s, "ransac_maxHypotheses", ransac.maxHypotheses);
-    read(c, s, "ransac_maxSingleHypotheses", ransac.maxSingleHypotheses);
-    read(c, s, "ransac_alternativesPerSegment", ransac.alternativesPerSegment);
-    read(c, s, "ransac_probabilityFloor", ransac.probabilityFloor);
-    read(c, s, "ransac_minSampleAngle", ransac.minSampleAngle);
-    read(c, s, "ransac_sampleAngleTolerance", ransac.sampleAngleTolerance);
-    read(c, s, "ransac_consensusAngle", ransac.consensusAngle);
-    read(c, s, "ransac_shortSegmentAngleSlack", ransac.shortSegmentAngleSlack);
-    read(c, s, "ransac_consensusDistance", ransac.consensusDistance);
-    read(c, s, "ransac_overlapMargin", ransac.overlapMargin);
-    read(c, s, "ransac_maxKept", ransac.maxKept);
-    read(c, s, "ransac_distinctTranslation", ransac.distinctTranslation);
-    read(c, s, "ransac_distinctRotation", ransac.distinctRotation);
-    read(c, s, "icp_maxIterations", icp.maxIterations);
-    read(c, s, "icp_maxDistance", icp.maxDistance);
-    read(c, s, "icp_robustScale", icp.robustScale);
-    read(c, s, "icp_translationTolerance", icp.translationTolerance);
-    read(c, s, "icp_rotationTolerance", icp.rotationTolerance);
-    read(c, s, "icp_stride", icp.stride);
-    read(c, s, "icp_minNoiseStd", icp.minNoiseStd);
-    read(c, s, "icp_minEigenRatio", icp.minEigenRatio);
-    read(c, s, "scanIcp_minEigenRatio", scanIcp.minEigenRatio);
-    int scan = scanRefinement ? 1 : 0;
-    read(c, s, "scanRefinement", scan);
-    scanRefinement = scan != 0;
-    read(c, s, "scanIcp_maxIterations", scanIcp.maxIterations);
-    read(c, s, "scanIcp_maxDistance", scanIcp.maxDistance);
-    read(c, s, "scanIcp_robustScale", scanIcp.robustScale);
-    read(c, s, "scanIcp_stride", scanIcp.stride);
-    read(c, s, "scanIcp_minNoiseStd", scanIcp.minNoiseStd);
-    int symmetric = symmetricScore ? 1 : 0;
-    read(c, s, "symmetricScore", symmetric);
-    symmetricScore = symmetric != 0;
-    read(c, s, "score_inlierDistance", score.inlierDistance);
-    long searchBeams = score.searchBeams;
-    searchBeams = c.read_int(s, "score_searchBeams", int(searchBeams));
-    score.searchBeams = searchBeams;
-    read(c, s, "score_stride", score.stride);
-    read(c, s, "score_maxJoinDistance", score.maxJoinDistance);
-    read(c, s, "alongLineConditioning", alongLineConditioning);
-    read(c, s, "alongLine_range", alongLine.range);
-    read(c, s, "alongLine_bin", alongLine.bin);
-    read(c, s, "alongLine_acrossTolerance", alongLine.acrossTolerance);
-    read(c, s, "alongLine_fineStep", alongLine.fineStep);
-    read(c, s, "alongLine_peaks", alongLine.peaks);
-    read(c, s, "alongLine_stride", alongLine.stride);
-    read(c, s, "refineTop", refineTop);
-    read(c, s, "weakDirectionRange", weakDirectionRange);
-    read(c, s, "weakDirectionElongation", weakDirectionElongation);
-    read(c, s, "screenStride", screenStride);
-    read(c, s, "polishRatio", polishRatio);
-    int fallback = houghFallback ? 1 : 0;
-    read(c, s, "houghFallback", fallback);
-    houghFallback = fallback != 0;
-    read(c, s, "houghRefineTop", houghRefineTop);
-    read(c, s, "hough_maxRotations", hough.maxRotations);
-    read(c, s, "hough_rotationBin", hough.rotationBin);
-    read(c, s, "hough_minRotationWeight", hough.minRotationWeight);
-    read(c, s, "hough_window", hough.window);
-    read(c, s, "hough_cell", hough.cell);
-    read(c, s, "hough_stride", hough.stride);
-    read(c, s, "hough_peaksPerRotation", hough.peaksPerRotation);
-    read(c, s, "hough_minPeakFraction", hough.minPeakFraction);
-    read(c, s, "minInliers", minInliers);
-    read(c, s, "minInlierRatio", minInlierRatio);
-    read(c, s, "minVisibleInlierRatio", minVisibleInlierRatio);
-    read(c, s, "minInlierFraction", minInlierFraction);
-    read(c, s, "maxTranslationStd", maxTranslationStd);
-    read(c, s, "ambiguityMargin", ambiguityMargin);
+void GraphMatcherOptions::declareRefinement(config::OptionsSchema& s) {
+    s.integer("refine_top", refineTop, "", "RANSAC hypotheses refined").within(1, 1000);
+    s.integer("screen_stride", screenStride, "", "screening score on every n-th point ...")
+        .within(1, 1000);
+    s.real("polish_ratio", polishRatio, "",
+           "... only those within this ratio of the best are polished")
+        .within(0, 1);
+    s.group("icp_", icp);
+    s.real("along_line_conditioning", alongLineConditioning, "",
+           "consensus lines this near parallel (eigenvalue ratio): search along them")
+        .within(0, 1);
+    s.group("along_line_", alongLine);
+    s.real("weak_direction_range", weakDirectionRange, "m",
+           "search the best pose's weakest direction this far (0: off) ...")
+        .atLeast(0);
+    s.real("weak_direction_elongation", weakDirectionElongation, "",
+           "... when its std there is at least this many times the std across")
+        .atLeast(0);
+    s.flag("scan_refinement", scanRefinement, "polish with scan-mode ICP on all points");
+    s.group("scan_icp_", scanIcp);
+    s.flag("symmetric_score", symmetricScore, "score both ways (current on reference and back)");
+    s.group("score_", score);
+    s.flag("hough_fallback", houghFallback,
+           "search with HoughPoseSearch when the graph finds nothing reliable");
+    s.integer("hough_refine_top", houghRefineTop, "", "Hough poses refined").within(0, 1000);
+    s.group("hough_", hough);
+}
+
+void GraphMatcherOptions::declareDecision(config::OptionsSchema& s) {
+    s.integer("min_inliers", minInliers, "", "current points on the reference surface")
+        .within(0, 1000000);
+    s.real("min_inlier_ratio", minInlierRatio, "", "of the scored points (both ways) ...")
+        .within(0, 1);
+    s.real("min_visible_inlier_ratio", minVisibleInlierRatio, "",
+           "... or of those inside the other sensor's view, e.g. 0.7 (0: off)")
+        .within(0, 1);
+    s.real("min_inlier_fraction", minInlierFraction, "",
+           "inliers / (inliers + free-space violations)")
+        .within(0, 1);
+    s.real("max_translation_std", maxTranslationStd, "m", "worst direction of the refined pose")
+        .above(0);
+    s.real("ambiguity_margin", ambiguityMargin, "",
+           "best must beat any distinct pose by this fraction of the points")
+        .within(0, 1);
 }
 
 }  // namespace toposlam::matching

@@ -6,6 +6,23 @@
 
 namespace toposlam::matching {
 
+void HoughPoseSearchOptions::declare(config::OptionsSchema& s) {
+    s.integer("max_rotations", maxRotations, "", "rotation candidates from segment pairs")
+        .within(1, 1000);
+    s.angle("rotation_bin", rotationBin, "rotation vote bin").above(0);
+    s.real("min_rotation_weight", minRotationWeight, "m", "of segment length behind a rotation")
+        .atLeast(0);
+    s.real("window", window, "m", "translations searched in [-window, window]^2").above(0);
+    s.real("cell", cell, "m", "translation vote cell").above(0);
+    s.require([this] { return window / cell <= 5000; }, "cell",
+              "too small for the window (more than 10^8 vote cells)");
+    s.integer("stride", stride, "", "every stride-th beam of both scans").within(1, 1000);
+    s.integer("peaks_per_rotation", peaksPerRotation, "", "translation peaks refined per rotation")
+        .within(1, 1000);
+    s.real("min_peak_fraction", minPeakFraction, "", "of the voting current points, for a peak")
+        .within(0, 1);
+}
+
 void HoughPoseSearch::rotationCandidates(const AttributedGraph& currentGraph,
                                          const AttributedGraph& referenceGraph,
                                          const std::vector<ScoredAssignment>& pairs,

@@ -7,6 +7,21 @@
 
 namespace toposlam::matching {
 
+void IcpOptions::declare(config::OptionsSchema& s) {
+    s.integer("max_iterations", maxIterations, "", "Gauss-Newton iterations at most")
+        .within(0, 10000);
+    s.real("max_distance", maxDistance, "m", "points farther from their line are not used")
+        .above(0);
+    s.real("robust_scale", robustScale, "m", "Cauchy kernel scale").above(0);
+    s.real("translation_tolerance", translationTolerance, "m", "stop below this step").atLeast(0);
+    s.angle("rotation_tolerance", rotationTolerance, "... and this turn").atLeast(0);
+    s.integer("stride", stride, "", "every stride-th beam").within(1, 1000);
+    s.real("min_noise_std", minNoiseStd, "m", "floor of sigma in the covariance").atLeast(0);
+    s.real("min_eigen_ratio", minEigenRatio, "",
+           "steps only along directions the lines determine (eigenvalue / largest)")
+        .within(0, 1);
+}
+
 /// Normal equations of one Gauss-Newton step.
 struct PointToLineIcp::Accumulator {
     Eigen::Matrix3d H = Eigen::Matrix3d::Zero();

@@ -6,6 +6,39 @@
 
 namespace toposlam::matching {
 
+void RansacOptions::declare(config::OptionsSchema& s) {
+    s.integer("max_hypotheses", maxHypotheses, "",
+              "segment-pair samples tried, most probable first")
+        .within(0, 100000);
+    s.integer("max_single_hypotheses", maxSingleHypotheses, "",
+              "single-segment samples (x3 anchors) after the pairs")
+        .within(0, 100000);
+    s.integer("alternatives_per_segment", alternativesPerSegment, "",
+              "reference candidates per observed segment from P")
+        .within(1, 100);
+    s.real("probability_floor", probabilityFloor, "",
+           "added to P in the sample weights (look-alikes get tried)")
+        .atLeast(0);
+    s.angle("min_sample_angle", minSampleAngle, "sampled segments at least this far from parallel")
+        .within(0, 90);
+    s.angle("sample_angle_tolerance", sampleAngleTolerance,
+            "relative angles of a sample must agree within it")
+        .within(0, 180);
+    s.angle("consensus_angle", consensusAngle, "direction agreement for the consensus")
+        .above(0)
+        .atMost(180);
+    s.angle("short_segment_angle_slack", shortSegmentAngleSlack,
+            "the angle tolerances grow by this / the shorter segment's length", "deg x m")
+        .atLeast(0);
+    s.real("consensus_distance", consensusDistance, "m", "end points to the matched line").above(0);
+    s.real("overlap_margin", overlapMargin, "m", "gap allowed along the line").atLeast(0);
+    s.integer("max_kept", maxKept, "", "distinct hypotheses kept").within(1, 1000);
+    s.real("distinct_translation", distinctTranslation, "m",
+           "poses farther apart are different solutions")
+        .atLeast(0);
+    s.angle("distinct_rotation", distinctRotation, "... or turned further apart").atLeast(0);
+}
+
 bool posesDistinct(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b, double translation,
                    double rotation) {
     return std::hypot(a.x() - b.x(), a.y() - b.y()) > translation ||
@@ -93,8 +126,18 @@ const std::vector<Hypothesis>& RansacMatcher::run(
     const std::optional<mrpt::poses::CPose2D>& guess) {
     kept_.clear();
     evaluated_ = 0;
+    buildPool(assignments);
+    offerPairs(current, reference, options);
+    offerSingles(current, reference, options);
+    if (guess)
+        offer(current, reference, *guess, options);
+    for (Hypothesis& h : kept_)
+        consensus(current, reference, h.pose, options, &h.consensus);
+    return kept_;
+}
 
-    // Pool: unique (current, reference) pairs, best probability first.
+void RansacMatcher::buildPool(const std::vector<ScoredAssignment>& assignments) {
+    // Unique (current, reference) pairs, best probability first.
     pool_ = assignments;
     std::sort(pool_.begin(), pool_.end(), [](const ScoredAssignment& a, const ScoredAssignment& b) {
         if (a.current != b.current)
@@ -108,7 +151,10 @@ const std::vector<Hypothesis>& RansacMatcher::run(
                                 return a.current == b.current && a.reference == b.reference;
                             }),
                 pool_.end());
+}
 
+void RansacMatcher::offerPairs(const AttributedGraph& current, const AttributedGraph& reference,
+                               const RansacOptions& options) {
     // Samples: pairs of pool entries with distinct segments on both sides, non-parallel
     // observed segments and matching relative angles.
     samples_.clear();
@@ -160,7 +206,10 @@ const std::vector<Hypothesis>& RansacMatcher::run(
             continue;
         offer(current, reference, t.pose, options);
     }
+}
 
+void RansacMatcher::offerSingles(const AttributedGraph& current, const AttributedGraph& reference,
+                                 const RansacOptions& options) {
     // Single matches: one segment fixes the rotation and the across-line translation; the
     // along-line one is taken from the midpoints and from either end (one end of a partly
     // occluded wall is usually its true corner). Weaker than pairs, but the only hypotheses
@@ -195,13 +244,6 @@ const std::vector<Hypothesis>& RansacMatcher::run(
                   options);
         }
     }
-
-    if (guess)
-        offer(current, reference, *guess, options);
-
-    for (Hypothesis& h : kept_)
-        consensus(current, reference, h.pose, options, &h.consensus);
-    return kept_;
 }
 
 }  // namespace toposlam::matching

@@ -5,6 +5,14 @@
 
 namespace toposlam::matching {
 
+void SimilarityOptions::declare(config::OptionsSchema& s) {
+    s.real("alpha", alpha, "", "control parameter of eqs. 2-3 (paper: 1)").above(0);
+    s.angle("max_angle_difference", maxAngleDifference,
+            "edge pairs with more angle difference get X = 0")
+        .above(0)
+        .atMost(180);
+}
+
 void Similarity::build(const AttributedGraph& rows, const AttributedGraph& cols,
                        const std::vector<Assignment>& candidates,
                        const SimilarityOptions& options) {

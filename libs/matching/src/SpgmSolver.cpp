@@ -5,6 +5,16 @@
 
 namespace toposlam::matching {
 
+void SpgmOptions::declare(config::OptionsSchema& s) {
+    s.integer("max_iterations", maxIterations, "", "SPGM iterations at most").within(1, 10000);
+    s.real("tolerance", tolerance, "", "stop when no entry of P changes by more").above(0);
+    s.integer("projection_cycles", projectionCycles, "",
+              "Dykstra cycles per projection onto the constraints of eq. 5")
+        .within(1, 1000);
+    s.real("projection_tolerance", projectionTolerance, "", "Dykstra's stopping tolerance")
+        .above(0);
+}
+
 const std::vector<double>& SpgmSolver::solve(const Similarity& similarity,
                                              const std::vector<Assignment>& candidates,
                                              std::size_t rowCount, std::size_t colCount,

@@ -2,31 +2,19 @@
 
 #include "GridRay.h"
 
+#include <boost/pending/disjoint_sets.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <unordered_map>
 
 namespace toposlam::rooms {
 
 namespace {
 
-struct UnionFind {
-    std::vector<int> parent;
-    explicit UnionFind(int n) : parent(static_cast<std::size_t>(n)) {
-        std::iota(parent.begin(), parent.end(), 0);
-    }
-    int find(int i) {
-        while (parent[static_cast<std::size_t>(i)] != i) {
-            parent[static_cast<std::size_t>(i)] =
-                parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
-            i = parent[static_cast<std::size_t>(i)];
-        }
-        return i;
-    }
-};
+// Union-find over 0..n-1 (union by rank, path compression).
+using DisjointSets = boost::disjoint_sets_with_storage<>;
 
 // Length (pixels, capped at `cap`) of the obstacle that starts at `jamb` in direction (ux, uy).
 // A free cell ends it only when its two neighbours across the walking direction are free too: a
@@ -55,6 +43,21 @@ double freeWidth(const cv::Mat& free, const cv::Point& at, double ux, double uy,
     return std::hypot(a.x - b.x, a.y - b.y);
 }
 
+// Whether two cuts fan out from one jamb (their other ends apart): two cross-sections of one
+// opening, measured from the same jamb cell to different far cells. Cut as two 8-connected
+// lines that diverge at a small angle, they touch the rooms on both sides of each other, so
+// keeping both would join the rooms when the filters drop one.
+bool fanFromOneJamb(const VirtualDoor& a, const VirtualDoor& b) {
+    auto near = [](const cv::Point& p, const cv::Point& q) {
+        return std::abs(p.x - q.x) <= 1 && std::abs(p.y - q.y) <= 1;
+    };
+    const cv::Point2d da = cv::Point2d(a.jambB - a.jambA) * (1.0 / a.width);
+    const cv::Point2d db = cv::Point2d(b.jambB - b.jambA) * (1.0 / b.width);
+    const bool shared = near(a.jambA, b.jambA) || near(a.jambB, b.jambB) ||
+                        near(a.jambA, b.jambB) || near(a.jambB, b.jambA);
+    return shared && std::abs(da.x * db.x + da.y * db.y) > std::cos(M_PI / 6);  // < 30 deg
+}
+
 double jambDistance(const VirtualDoor& a, const VirtualDoor& b) {
     auto d = [](const cv::Point& p, const cv::Point& q) {
         return std::hypot(p.x - q.x, p.y - q.y);
@@ -67,7 +70,8 @@ double jambDistance(const VirtualDoor& a, const VirtualDoor& b) {
 
 std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
                                                 std::vector<VirtualDoor> doors,
-                                                const std::vector<LineSegment>& walls) const {
+                                                const std::vector<LineSegment>& walls,
+                                                const WallThickness* wallThickness) const {
     if (!options_.requireWallJambs || doors.empty())
         return doors;
     const double extent = detail::toCells(options_.minWallExtent, space.frame.resolution);
@@ -112,14 +116,30 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
                    ? std::hypot(hit.x - from.x, hit.y - from.y)
                    : 1e9;
     };
-    auto wallEnd = [&](const cv::Point& jamb, double ux, double uy) {
-        if (wallRun(space.free, jamb, ux, uy, length) < length)
-            return false;
-        const cv::Point inside(cvRound(jamb.x + ux * length), cvRound(jamb.y + uy * length));
-        const double a = toFree(inside, -uy, ux), b = toFree(inside, uy, -ux);
-        if (a <= thickness && b <= thickness)
-            return a + b <= thickness + 1.0;
+    const WallThickness* measured = options_.wallThicknessFromMap ? wallThickness : nullptr;
+    // At `at` cells from the jamb along (ux, uy), inside the obstacle, the obstacle is a wall
+    // along that line: free on both sides of it at most `thickness` apart, as thick as the
+    // building's walls (or free on one side only: the edge of the mapped space).
+    auto wallAcross = [&](const cv::Point& jamb, double ux, double uy, double at) {
+        const cv::Point probe(cvRound(jamb.x + ux * at), cvRound(jamb.y + uy * at));
+        if (isFree(probe.x, probe.y))
+            return false;  // the run went on through a gap in a wall at an angle, not along it
+        const double a = toFree(probe, -uy, ux), b = toFree(probe, uy, -ux);
+        if (a <= thickness && b <= thickness) {
+            // a + b - 1 obstacle cells across: as thick as the building's walls?
+            return a + b <= thickness + 1.0 &&
+                   (measured == nullptr || measured->isWallThickness(a + b - 1.0));
+        }
         return std::min(a, b) <= thickness && std::max(a, b) > 2 * thickness;
+    };
+    // Probed a third of the way in, past the corner of the jamb: where the wall the door is in
+    // goes on (a wall stub beside a corner door meets the other wall farther on). Probing at
+    // the end of the run instead took a line that crosses a cabinet and the wall behind it for
+    // a wall end: there it reaches the wall's face, where a wall at an angle to the grid
+    // measures a cell or two across along its staircase.
+    auto wallEnd = [&](const cv::Point& jamb, double ux, double uy) {
+        return wallRun(space.free, jamb, ux, uy, length) >= length &&
+               wallAcross(jamb, ux, uy, std::round(length / 3));
     };
     // The sides of the door line (bit 0: (-uy, ux), bit 1: the other) to which a wall goes on
     // from the jamb across the door line.
@@ -232,18 +252,18 @@ std::vector<VirtualDoor> DoorFilters::distance(std::vector<VirtualDoor> doors,
         const cv::Point b = bucketOf(doors[i]);
         grid[keyOf(b.x, b.y)].push_back(i);
     }
-    UnionFind groups(static_cast<int>(doors.size()));
+    DisjointSets groups(doors.size());
     for (std::size_t i = 0; i < doors.size(); ++i) {
         forNeighbours(doors[i], [&](std::size_t j) {
-            if (j > i && jambDistance(doors[i], doors[j]) <= nd) {
-                groups.parent[static_cast<std::size_t>(groups.find(static_cast<int>(j)))] =
-                    groups.find(static_cast<int>(i));
+            if (j > i &&
+                (jambDistance(doors[i], doors[j]) <= nd || fanFromOneJamb(doors[i], doors[j]))) {
+                groups.union_set(i, j);
             }
         });
     }
-    std::unordered_map<int, std::vector<std::size_t>> members;
+    std::unordered_map<std::size_t, std::vector<std::size_t>> members;
     for (std::size_t i = 0; i < doors.size(); ++i)
-        members[groups.find(static_cast<int>(i))].push_back(i);
+        members[groups.find_set(i)].push_back(i);
     std::vector<std::size_t> chosen;
     for (auto& [root, group] : members) {
         (void)root;
@@ -285,126 +305,166 @@ std::vector<std::size_t> DoorFilters::adjacency(const RegionPartition& partition
     return kept;
 }
 
-DoorFilters::Rooms DoorFilters::minimumArea(const RegionPartition& partition,
-                                            const std::vector<VirtualDoor>& doors,
-                                            const std::vector<std::size_t>& candidates,
-                                            double cellArea, double doorWidth) const {
-    const int regions = partition.regionCount();
-    const double minCells = detail::toCells(options_.minRoomArea, cellArea);
-    UnionFind merged(regions + 1);
-    std::vector<double> area(partition.areas().begin(), partition.areas().end());
-    auto join = [&](int a, int b) {
-        a = merged.find(a);
-        b = merged.find(b);
-        if (a == b)
-            return;
-        merged.parent[static_cast<std::size_t>(b)] = a;
-        area[static_cast<std::size_t>(a)] += area[static_cast<std::size_t>(b)];
-    };
-    auto sideA = [&](std::size_t door) { return partition.regionsAt(door)[0].first; };
-    auto sideB = [&](std::size_t door) { return partition.regionsAt(door)[1].first; };
-    std::vector<bool> removed(candidates.size(), false);
-    auto removeDoor = [&](std::size_t k) {
-        removed[k] = true;
-        for (const auto& [region, contacts] : partition.regionsAt(candidates[k])) {
-            (void)contacts;
-            join(sideA(candidates[k]), region);
-        }
-    };
+namespace {
 
-    if (!options_.mergeSmallestFirst) {  // the paper: one pass over all doors
-        std::vector<std::size_t> failing;
-        for (std::size_t k = 0; k < candidates.size(); ++k) {
-            const std::size_t d = candidates[k];
-            if (area[static_cast<std::size_t>(sideA(d))] <= minCells ||
-                area[static_cast<std::size_t>(sideB(d))] <= minCells) {
-                failing.push_back(k);
-            }
-        }
-        for (std::size_t k : failing)
-            removeDoor(k);
-    } else {
-        while (true) {
-            // The smallest too-small region that still has a door to another region...
-            auto liveSides = [&](std::size_t k) {
-                return std::pair{merged.find(sideA(candidates[k])),
-                                 merged.find(sideB(candidates[k]))};
-            };
-            int smallest = -1;
-            double smallestArea = minCells;
-            for (std::size_t k = 0; k < candidates.size(); ++k) {
-                const auto [a, b] = liveSides(k);
-                if (removed[k] || a == b)
-                    continue;
-                for (int r : {a, b}) {
-                    if (area[static_cast<std::size_t>(r)] <= smallestArea) {
-                        smallest = r;
-                        smallestArea = area[static_cast<std::size_t>(r)];
-                    }
-                }
-            }
-            if (smallest < 0)
-                break;
-            // ... is merged through its least door-like door (eq. 10's |width - w| largest: a
-            // sliver between a doorway's cut and a cut along a wall face keeps the doorway's),
-            // ties through the door to its smallest neighbour.
-            std::size_t through = 0;
-            double worstFit = -1, neighbourArea = 1e300;
-            for (std::size_t k = 0; k < candidates.size(); ++k) {
-                const auto [a, b] = liveSides(k);
-                if (removed[k] || a == b || (a != smallest && b != smallest))
-                    continue;
-                const double fit = std::abs(doors[candidates[k]].width - doorWidth);
-                const double other = area[static_cast<std::size_t>(a == smallest ? b : a)];
-                if (fit > worstFit + 0.5 ||
-                    (std::abs(fit - worstFit) <= 0.5 && other < neighbourArea)) {
-                    worstFit = fit;
-                    neighbourArea = other;
-                    through = k;
-                }
-            }
-            removeDoor(through);
+// The regions of a partition merged through removed doors (the minimum-area filter's state):
+// a union-find over the regions with each set's area at its representative, and which of the
+// candidate doors are removed.
+class RegionMerge {
+  public:
+    RegionMerge(const RegionPartition& partition, const std::vector<std::size_t>& candidates)
+        : partition_(partition),
+          candidates_(candidates),
+          sets_(static_cast<std::size_t>(partition.regionCount()) + 1),
+          area_(partition.areas().begin(), partition.areas().end()),
+          removed_(candidates.size(), false) {}
+
+    int rootOf(int region) {
+        return static_cast<int>(sets_.find_set(static_cast<std::size_t>(region)));
+    }
+    double area(int root) const { return area_[static_cast<std::size_t>(root)]; }
+    bool removed(std::size_t k) const { return removed_[k]; }
+    std::size_t size() const { return candidates_.size(); }
+    int sideA(std::size_t k) const { return partition_.regionsAt(candidates_[k])[0].first; }
+    int sideB(std::size_t k) const { return partition_.regionsAt(candidates_[k])[1].first; }
+    /// The sets on the two sides of candidate k.
+    std::pair<int, int> liveSides(std::size_t k) { return {rootOf(sideA(k)), rootOf(sideB(k))}; }
+
+    /// Removes candidate k and joins every region it touches.
+    void removeDoor(std::size_t k) {
+        removed_[k] = true;
+        for (const auto& [region, contacts] : partition_.regionsAt(candidates_[k])) {
+            (void)contacts;
+            join(sideA(k), region);
         }
     }
 
+    /// Whether candidate k still touches three or more sets (crossing cuts).
+    bool touchesMoreThanTwo(std::size_t k) {
+        std::vector<int> roots;
+        for (const auto& [region, contacts] : partition_.regionsAt(candidates_[k])) {
+            (void)contacts;
+            roots.push_back(rootOf(region));
+        }
+        std::sort(roots.begin(), roots.end());
+        return std::unique(roots.begin(), roots.end()) - roots.begin() > 2;
+    }
+
+    DoorFilters::Rooms rooms() {
+        const int regions = partition_.regionCount();
+        DoorFilters::Rooms out;
+        out.roomOfRegion.assign(static_cast<std::size_t>(regions) + 1, 0);
+        std::vector<int> roomOfRoot(static_cast<std::size_t>(regions) + 1, 0);
+        for (int r = 1; r <= regions; ++r) {
+            int& room = roomOfRoot[static_cast<std::size_t>(rootOf(r))];
+            if (room == 0)
+                room = ++out.roomCount;
+            out.roomOfRegion[static_cast<std::size_t>(r)] = room;
+        }
+        for (std::size_t k = 0; k < candidates_.size(); ++k) {
+            if (removed_[k])
+                continue;
+            const int a = out.roomOfRegion[static_cast<std::size_t>(sideA(k))];
+            const int b = out.roomOfRegion[static_cast<std::size_t>(sideB(k))];
+            if (a != b)
+                out.doors.push_back({candidates_[k], std::min(a, b), std::max(a, b)});
+        }
+        return out;
+    }
+
+  private:
+    void join(int a, int b) {
+        a = rootOf(a);
+        b = rootOf(b);
+        if (a == b)
+            return;
+        const double total = area(a) + area(b);
+        sets_.link(static_cast<std::size_t>(a), static_cast<std::size_t>(b));
+        area_[static_cast<std::size_t>(rootOf(a))] = total;
+    }
+
+    const RegionPartition& partition_;
+    const std::vector<std::size_t>& candidates_;
+    DisjointSets sets_;
+    std::vector<double> area_;  // cells
+    std::vector<bool> removed_;
+};
+
+// The smallest too-small set that still has a door to another set; -1 when none.
+int smallestTooSmall(RegionMerge& m, double minCells) {
+    int smallest = -1;
+    double smallestArea = minCells;
+    for (std::size_t k = 0; k < m.size(); ++k) {
+        const auto [a, b] = m.liveSides(k);
+        if (m.removed(k) || a == b)
+            continue;
+        for (int r : {a, b}) {
+            if (m.area(r) <= smallestArea) {
+                smallest = r;
+                smallestArea = m.area(r);
+            }
+        }
+    }
+    return smallest;
+}
+
+// The widest door of set `smallest` (of two cuts through one doorway the waist stays; a sliver
+// between a doorway's cut and a cut along a wall face keeps the doorway's), ties (half a cell):
+// the door to its smallest neighbour.
+std::size_t widestDoor(RegionMerge& m, int smallest, const std::vector<VirtualDoor>& doors,
+                       const std::vector<std::size_t>& candidates) {
+    std::size_t through = 0;
+    double worstFit = -1, neighbourArea = 1e300;
+    for (std::size_t k = 0; k < m.size(); ++k) {
+        const auto [a, b] = m.liveSides(k);
+        if (m.removed(k) || a == b || (a != smallest && b != smallest))
+            continue;
+        const double fit = doors[candidates[k]].width;
+        const double other = m.area(a == smallest ? b : a);
+        if (fit > worstFit + 0.5 || (std::abs(fit - worstFit) <= 0.5 && other < neighbourArea)) {
+            worstFit = fit;
+            neighbourArea = other;
+            through = k;
+        }
+    }
+    return through;
+}
+
+}  // namespace
+
+DoorFilters::Rooms DoorFilters::minimumArea(const RegionPartition& partition,
+                                            const std::vector<VirtualDoor>& doors,
+                                            const std::vector<std::size_t>& candidates,
+                                            double cellArea) const {
+    const double minCells = detail::toCells(options_.minRoomArea, cellArea);
+    RegionMerge merge(partition, candidates);
+    if (!options_.mergeSmallestFirst) {  // the paper: one pass over all doors
+        std::vector<std::size_t> failing;
+        for (std::size_t k = 0; k < candidates.size(); ++k) {
+            if (merge.area(merge.sideA(k)) <= minCells || merge.area(merge.sideB(k)) <= minCells)
+                failing.push_back(k);
+        }
+        for (std::size_t k : failing)
+            merge.removeDoor(k);
+    } else {
+        // The smallest too-small region is merged through its widest door, again and again.
+        for (int smallest = smallestTooSmall(merge, minCells); smallest >= 0;
+             smallest = smallestTooSmall(merge, minCells)) {
+            merge.removeDoor(widestDoor(merge, smallest, doors, candidates));
+        }
+    }
     // A door separates exactly two rooms: one that still touches three or more (crossing cuts)
     // is removed as well, until none is left, so that every two rooms that touch share a door.
     for (bool changed = true; changed;) {
         changed = false;
         for (std::size_t k = 0; k < candidates.size(); ++k) {
-            if (removed[k])
-                continue;
-            std::vector<int> roots;
-            for (const auto& [region, contacts] : partition.regionsAt(candidates[k])) {
-                (void)contacts;
-                roots.push_back(merged.find(region));
-            }
-            std::sort(roots.begin(), roots.end());
-            if (std::unique(roots.begin(), roots.end()) - roots.begin() > 2) {
-                removeDoor(k);
+            if (!merge.removed(k) && merge.touchesMoreThanTwo(k)) {
+                merge.removeDoor(k);
                 changed = true;
             }
         }
     }
-
-    Rooms out;
-    out.roomOfRegion.assign(static_cast<std::size_t>(regions) + 1, 0);
-    std::vector<int> roomOfRoot(static_cast<std::size_t>(regions) + 1, 0);
-    for (int r = 1; r <= regions; ++r) {
-        int& room = roomOfRoot[static_cast<std::size_t>(merged.find(r))];
-        if (room == 0)
-            room = ++out.roomCount;
-        out.roomOfRegion[static_cast<std::size_t>(r)] = room;
-    }
-    for (std::size_t k = 0; k < candidates.size(); ++k) {
-        if (removed[k])
-            continue;
-        const int a = out.roomOfRegion[static_cast<std::size_t>(sideA(candidates[k]))];
-        const int b = out.roomOfRegion[static_cast<std::size_t>(sideB(candidates[k]))];
-        if (a != b)
-            out.doors.push_back({candidates[k], std::min(a, b), std::max(a, b)});
-    }
-    return out;
+    return merge.rooms();
 }
 
 }  // namespace toposlam::rooms

@@ -4,12 +4,16 @@
 
 #include "GridRay.h"
 
-#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 
+#include <toposlam/io/InputError.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <filesystem>
 #include <stdexcept>
 
 namespace toposlam::rooms {
@@ -73,6 +77,73 @@ void fillCuts(const cv::Mat& free, cv::Mat& labels) {
     }
 }
 
+// The diagnostics of `result`, found on the cropped frame, in full-frame pixels.
+void toFullFrame(RoomSegmenter::Result& result, const cv::Rect& roi) {
+    auto shift = [&](std::vector<VirtualDoor>& doors) {
+        for (VirtualDoor& d : doors) {
+            d.jambA += roi.tl();
+            d.jambB += roi.tl();
+            d.pathCell += roi.tl();
+        }
+    };
+    shift(result.candidates);
+    shift(result.afterTests);
+    shift(result.wideOpenings);
+    shift(result.afterDistance);
+    for (cv::Point& p : result.searchCells)
+        p += roi.tl();
+    const cv::Point2f offset(static_cast<float>(roi.x), static_cast<float>(roi.y));
+    for (LineSegment& l : result.lines) {
+        l.start += offset;
+        l.end += offset;
+    }
+}
+
+// Gives the cells of every non-free island of `space` (an obstacle that does not reach the
+// map's edge: furniture, a pillar) the room around it, when all its free 4-neighbours are in
+// that one room (an island between two rooms, such as a free-standing partition, stays
+// unlabelled: it is a border).
+void labelIslands(const FreeSpace& space, cv::Mat& labels) {
+    const cv::Mat& obstacles = space.obstacles;
+    std::vector<std::vector<std::pair<int, int>>> votes(space.obstacleOnBorder.size());
+    const cv::Point around[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    const cv::Rect image(0, 0, labels.cols, labels.rows);
+    for (int r = 0; r < obstacles.rows; ++r) {
+        const int* row = obstacles.ptr<int>(r);
+        for (int c = 0; c < obstacles.cols; ++c) {
+            const auto island = static_cast<std::size_t>(row[c]);
+            if (island == 0 || space.obstacleOnBorder[island])
+                continue;
+            for (const cv::Point& o : around) {
+                const cv::Point q(c + o.x, r + o.y);
+                const int room = image.contains(q) ? labels.at<int>(q) : 0;
+                if (room <= 0)
+                    continue;
+                auto& v = votes[island];
+                auto it = std::find_if(v.begin(), v.end(),
+                                       [&](const auto& p) { return p.first == room; });
+                if (it == v.end())
+                    v.emplace_back(room, 1);
+                else
+                    ++it->second;
+            }
+        }
+    }
+    std::vector<int> roomOf(votes.size(), 0);
+    for (std::size_t i = 0; i < votes.size(); ++i) {
+        if (votes[i].size() == 1)
+            roomOf[i] = votes[i].front().first;
+    }
+    for (int r = 0; r < obstacles.rows; ++r) {
+        const int* row = obstacles.ptr<int>(r);
+        int* out = labels.ptr<int>(r);
+        for (int c = 0; c < obstacles.cols; ++c) {
+            if (row[c] != 0 && roomOf[static_cast<std::size_t>(row[c])] != 0)
+                out[c] = roomOf[static_cast<std::size_t>(row[c])];
+        }
+    }
+}
+
 void require(bool ok, const std::string& what) {
     if (!ok)
         throw std::invalid_argument("room segmentation option out of range: " + what);
@@ -82,14 +153,34 @@ void require(bool ok, const std::string& what) {
 
 RoomSegmenter::Options RoomSegmenter::Options::paperExact() {
     Options o;
-    o.freeSpace.maxSpeckArea = 0;
-    o.door.localDirection = false;
-    o.filters.keepNarrowestOfGroup = false;
-    o.filters.mergeSmallestFirst = false;
-    o.filters.requireWallJambs = false;
-    o.filters.requireWallEnd = false;
-    o.filters.requireConstriction = false;
-    o.wide.enabled = false;
+    o.applyPaperPreset();
+    return o;
+}
+
+void RoomSegmenter::Options::applyPaperPreset() {
+    freeSpace.maxSpeckArea = 0;
+    door.localDirection = false;
+    filters.keepNarrowestOfGroup = false;
+    filters.mergeSmallestFirst = false;
+    filters.requireWallJambs = false;
+    filters.requireWallEnd = false;
+    filters.requireConstriction = false;
+    filters.wallThicknessFromMap = false;
+    wide.enabled = false;
+    labelIslands = false;
+    medialAxisWithTrajectory = false;
+}
+
+RoomSegmenter::Options RoomSegmenter::Options::load(const std::string& iniPath, bool paper) {
+    Options o;
+    if (!iniPath.empty()) {
+        if (!std::filesystem::is_regular_file(iniPath))
+            throw io::InputError(iniPath, "no such config file");
+        o.loadFromConfigFile(mrpt::config::CConfigFile(iniPath), "RoomSegmenter");
+    }
+    if (paper)
+        o.applyPaperPreset();
+    o.validate();
     return o;
 }
 
@@ -153,10 +244,15 @@ void RoomSegmenter::Options::loadFromConfigFile(const mrpt::config::CConfigFileB
     filters.requireWallEnd = ini.read_bool(s, "requireWallEnd", filters.requireWallEnd);
     filters.maxWallThickness = ini.read_double(s, "maxWallThickness", filters.maxWallThickness);
     filters.wallEndProbe = ini.read_double(s, "wallEndProbe", filters.wallEndProbe);
+    filters.wallThicknessFromMap =
+        ini.read_bool(s, "wallThicknessFromMap", filters.wallThicknessFromMap);
     filters.requireConstriction =
         ini.read_bool(s, "requireConstriction", filters.requireConstriction);
     filters.openingMargin = ini.read_double(s, "openingMargin", filters.openingMargin);
     wide.enabled = ini.read_bool(s, "wideOpenings", wide.enabled);
+    labelIslands = ini.read_bool(s, "labelIslands", labelIslands);
+    medialAxisWithTrajectory =
+        ini.read_bool(s, "medialAxisWithTrajectory", medialAxisWithTrajectory);
     wide.maxWidth = ini.read_double(s, "maxOpeningWidth", wide.maxWidth);
     wide.openingMargin = ini.read_double(s, "wideOpeningMargin", wide.openingMargin);
     validate();
@@ -180,6 +276,7 @@ struct RoomSegmenter::Workspace {
     WideOpeningDetector wide;
     FreeSpace space;
     Clearance clearance;
+    WallThickness wallThickness;
     RegionPartition partition;
 };
 
@@ -216,20 +313,10 @@ RoomSegmenter::Result RoomSegmenter::segment(const mrpt::maps::COccupancyGridMap
     return result;
 }
 
-RoomSegmenter::Result RoomSegmenter::segment(
-    const FreeSpace& fullSpace, const std::vector<mrpt::math::TPose2D>& trajectory) const {
-    const auto start = std::chrono::steady_clock::now();
+DoorFilters::Rooms RoomSegmenter::findRooms(const FreeSpace& space,
+                                            const std::vector<mrpt::math::TPose2D>& trajectory,
+                                            Result& result, const Lap& lap) const {
     Workspace& ws = *workspace_;
-    Result result;
-    auto last = start;
-    auto lap = [&](const char* stage) {
-        const auto now = std::chrono::steady_clock::now();
-        result.stageMilliseconds.emplace_back(
-            stage, std::chrono::duration<double, std::milli>(now - last).count());
-        last = now;
-    };
-    cv::Rect roi;
-    const FreeSpace space = cropToBounds(fullSpace, roi);
     const double res = space.frame.resolution;
     const auto& door = options_.door;
 
@@ -241,28 +328,38 @@ RoomSegmenter::Result RoomSegmenter::segment(
     // Step 4: virtual doors along the main directions from the search paths.
     result.fromTrajectory = !trajectory.empty();
     ws.clearance.compute(space.free);
+    const bool measureWalls = options_.filters.wallThicknessFromMap &&
+                              options_.filters.requireWallJambs &&
+                              (options_.filters.requireWallEnd || options_.wide.enabled);
+    if (measureWalls)
+        ws.wallThickness.measure(space, ws.clearance, options_.filters.maxWallThickness);
+    const WallThickness* walls = measureWalls ? &ws.wallThickness : nullptr;
     lap("clearance");
-    result.searchCells = result.fromTrajectory
-                             ? DoorSearchPaths::fromTrajectory(space, trajectory)
-                             : DoorSearchPaths::fromMedialAxis(
-                                   space, ws.clearance, door.doorWidth - door.doorWidthTolerance,
-                                   door.doorWidth + door.doorWidthTolerance);
+    const bool medialAxis = !result.fromTrajectory || options_.medialAxisWithTrajectory;
+    if (result.fromTrajectory)
+        result.searchCells = DoorSearchPaths::fromTrajectory(space, trajectory);
+    result.trajectoryCells = result.searchCells.size();
+    if (medialAxis) {
+        const std::vector<cv::Point> axis = DoorSearchPaths::fromMedialAxis(
+            space, ws.clearance, door.doorWidth - door.doorWidthTolerance,
+            door.doorWidth + door.doorWidthTolerance);
+        result.searchCells.insert(result.searchCells.end(), axis.begin(), axis.end());
+    }
     const std::vector<double> localDirections =
         door.localDirection ? ws.clearance.acrossRidge(result.searchCells) : std::vector<double>{};
     lap("search paths");
-    result.candidates =
-        ws.detector.detect(space, result.searchCells,
-                           {result.directions.phi1, result.directions.phi2}, localDirections);
+    const std::vector<double> directions = {result.directions.phi1, result.directions.phi2};
+    result.candidates = ws.detector.detect(space, result.searchCells, directions, localDirections);
     lap("door search");
 
     // Step 5: filters.
     result.afterTests = ws.filters.constriction(
-        space, ws.filters.wallJambs(space, result.candidates, result.lines), door.doorWidth);
+        space, ws.filters.wallJambs(space, result.candidates, result.lines, walls), door.doorWidth);
     lap("door tests");
     const std::vector<cv::Point> noPath;  // the wide pass searches its own medial axis
     result.wideOpenings =
-        ws.wide.detect(space, ws.clearance, result.fromTrajectory ? result.searchCells : noPath,
-                       {result.directions.phi1, result.directions.phi2}, result.lines);
+        ws.wide.detect(space, ws.clearance, medialAxis ? noPath : result.searchCells, directions,
+                       result.lines, walls);
     result.afterTests.insert(result.afterTests.end(), result.wideOpenings.begin(),
                              result.wideOpenings.end());
     lap("wide openings");
@@ -271,10 +368,27 @@ RoomSegmenter::Result RoomSegmenter::segment(
     ws.partition.compute(space.free, result.afterDistance);
     const std::vector<std::size_t> adjacent = DoorFilters::adjacency(ws.partition);
     result.afterAdjacency = adjacent.size();
-    const DoorFilters::Rooms rooms =
-        ws.filters.minimumArea(ws.partition, result.afterDistance, adjacent, space.frame.cellArea(),
-                               detail::toCells(door.doorWidth, res));
+    const DoorFilters::Rooms rooms = ws.filters.minimumArea(ws.partition, result.afterDistance,
+                                                            adjacent, space.frame.cellArea());
     lap("partition+filters");
+    return rooms;
+}
+
+RoomSegmenter::Result RoomSegmenter::segment(
+    const FreeSpace& fullSpace, const std::vector<mrpt::math::TPose2D>& trajectory) const {
+    const auto start = std::chrono::steady_clock::now();
+    Workspace& ws = *workspace_;
+    Result result;
+    auto last = start;
+    const Lap lap = [&](const char* stage) {
+        const auto now = std::chrono::steady_clock::now();
+        result.stageMilliseconds.emplace_back(
+            stage, std::chrono::duration<double, std::milli>(now - last).count());
+        last = now;
+    };
+    cv::Rect roi;
+    const FreeSpace space = cropToBounds(fullSpace, roi);
+    const DoorFilters::Rooms rooms = findRooms(space, trajectory, result, lap);
 
     // Step 6: the rooms. Region labels become room ids in place; cut cells join a neighbour.
     cv::Mat& labels = ws.partition.mutableLabels();
@@ -284,6 +398,8 @@ RoomSegmenter::Result RoomSegmenter::segment(
             row[c] = rooms.roomOfRegion[static_cast<std::size_t>(row[c])];
     }
     fillCuts(space.free, labels);
+    if (options_.labelIslands && !space.obstacles.empty())
+        labelIslands(space, labels);
     lap("labels");
     // Room geometry on the cropped frame (world coordinates do not depend on the crop), then the
     // labels are put back on the full frame.
@@ -297,32 +413,13 @@ RoomSegmenter::Result RoomSegmenter::segment(
         out.id = static_cast<int>(result.map.doors.size()) + 1;
         out.jambA = space.frame.toWorld(cv::Point2f(d.jambA));
         out.jambB = space.frame.toWorld(cv::Point2f(d.jambB));
-        out.width = d.width * res;
+        out.width = d.width * space.frame.resolution;
         out.roomA = link.roomA;
         out.roomB = link.roomB;
         result.map.doors.push_back(out);
     }
     lap("room geometry");
-
-    // Diagnostics in full-frame pixels.
-    auto shift = [&](std::vector<VirtualDoor>& doors) {
-        for (VirtualDoor& d : doors) {
-            d.jambA += roi.tl();
-            d.jambB += roi.tl();
-            d.pathCell += roi.tl();
-        }
-    };
-    shift(result.candidates);
-    shift(result.afterTests);
-    shift(result.wideOpenings);
-    shift(result.afterDistance);
-    for (cv::Point& p : result.searchCells)
-        p += roi.tl();
-    const cv::Point2f offset(static_cast<float>(roi.x), static_cast<float>(roi.y));
-    for (LineSegment& l : result.lines) {
-        l.start += offset;
-        l.end += offset;
-    }
+    toFullFrame(result, roi);
     result.milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return result;

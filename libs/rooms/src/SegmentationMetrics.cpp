@@ -34,6 +34,34 @@ GroundTruthRooms groundTruthRooms(const cv::Mat& groundTruthGrey) {
     return out;
 }
 
+GroundTruthRooms groundTruthFromLabels(const cv::Mat& roomLabels) {
+    CV_Assert(roomLabels.type() == CV_32S);
+    std::map<int, int> size;
+    for (int r = 0; r < roomLabels.rows; ++r) {
+        const int* row = roomLabels.ptr<int>(r);
+        for (int c = 0; c < roomLabels.cols; ++c) {
+            if (row[c] != 0)
+                ++size[row[c]];
+        }
+    }
+    GroundTruthRooms out;
+    std::unordered_map<int, int> renumber;
+    for (const auto& [label, pixels] : size) {
+        if (pixels > kMaxIgnoredRegionPixels)
+            renumber[label] = ++out.count;
+    }
+    out.labels = cv::Mat(roomLabels.size(), CV_32S);
+    for (int r = 0; r < roomLabels.rows; ++r) {
+        const int* in = roomLabels.ptr<int>(r);
+        int* o = out.labels.ptr<int>(r);
+        for (int c = 0; c < roomLabels.cols; ++c) {
+            const auto it = renumber.find(in[c]);
+            o[c] = it == renumber.end() ? 0 : it->second;
+        }
+    }
+    return out;
+}
+
 PrecisionRecall bormannPrecisionRecall(const GroundTruthRooms& truth, const cv::Mat& segmentation) {
     CV_Assert(segmentation.type() == CV_32S && segmentation.size() == truth.labels.size());
     // Segment label -> dense index; per segment its size and its overlap with every GT room.

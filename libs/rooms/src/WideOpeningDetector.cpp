@@ -38,7 +38,8 @@ std::vector<VirtualDoor> WideOpeningDetector::detect(const FreeSpace& space,
                                                      const Clearance& clearance,
                                                      const std::vector<cv::Point>& pathCells,
                                                      const std::vector<double>& directions,
-                                                     const std::vector<LineSegment>& walls) const {
+                                                     const std::vector<LineSegment>& walls,
+                                                     const WallThickness* thickness) const {
     if (!options_.enabled || options_.maxWidth <= minWidth_)
         return {};
     std::vector<cv::Point> medialAxis;
@@ -49,8 +50,8 @@ std::vector<VirtualDoor> WideOpeningDetector::detect(const FreeSpace& space,
     const std::vector<double> local =
         detector_.options().localDirection ? clearance.acrossRidge(cells) : std::vector<double>{};
     std::vector<VirtualDoor> openings = detector_.detect(space, cells, directions, local);
-    return filters_.constriction(space, filters_.wallJambs(space, std::move(openings), walls),
-                                 options_.maxWidth);
+    return filters_.constriction(
+        space, filters_.wallJambs(space, std::move(openings), walls, thickness), options_.maxWidth);
 }
 
 }  // namespace toposlam::rooms

@@ -1,6 +1,5 @@
 #include <mrpt/core/Clock.h>
 #include <mrpt/math/wrap2pi.h>
-#include <toposlam/io/ProgressDisplay.h>
 #include <toposlam/simulation/LogSimulator.h>
 
 #include <algorithm>
@@ -99,23 +98,16 @@ std::size_t simulateLogToFiles(const mrpt::maps::COccupancyGridMap2D& map,
                                const io::Trajectory2D& groundTruth,
                                const LogSimulationOptions& options, const std::string& rawlogPath,
                                io::RawlogFormat format, const std::string& groundTruthPath,
-                               bool showProgress) {
+                               const io::ProgressCallback& progress) {
     LogSimulator sim(map, groundTruth, options);
-    const std::string label = "simulating " + std::filesystem::path(rawlogPath).filename().string();
-    // Quiet unless asked for and stderr is a terminal (the two-argument constructor checks).
-    std::optional<io::ProgressDisplay> progress;
-    if (showProgress) {
-        progress.emplace(label, "scans");
-    } else {
-        progress.emplace(label, "scans", false);
-    }
     io::RawlogWriter writer(rawlogPath, format);
     io::LaserLogRecord record;
     std::size_t written = 0;
     while (sim.next(record)) {
         writer.write(record);
         ++written;
-        progress->update(static_cast<double>(written) / static_cast<double>(sim.size()), written);
+        if (progress)
+            progress(static_cast<double>(written) / static_cast<double>(sim.size()), written);
     }
     // Both files or neither: the writer deletes its temporary file unless committed.
     io::saveTrajectory(sim.groundTruth(), groundTruthPath);
@@ -126,7 +118,6 @@ std::size_t simulateLogToFiles(const mrpt::maps::COccupancyGridMap2D& map,
         std::filesystem::remove(groundTruthPath, ec);
         throw;
     }
-    progress->finish();
     return written;
 }
 

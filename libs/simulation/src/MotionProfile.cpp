@@ -2,8 +2,6 @@
 #include <mrpt/math/wrap2pi.h>
 #include <toposlam/simulation/MotionProfile.h>
 
-#include "ConfigReading.h"
-
 #include <algorithm>
 #include <cmath>
 
@@ -11,12 +9,14 @@ namespace toposlam::simulation {
 
 using mrpt::math::TPoint2D;
 
-void MotionOptions::loadFromConfig(const mrpt::config::CConfigFileBase& c, const std::string& s) {
-    detail::readKey(c, s, "max_speed", maxSpeed);
-    detail::readDegrees(c, s, "max_turn_rate_deg", maxTurnRate);
-    detail::readKey(c, s, "scan_distance", scanDistance);
-    detail::readDegrees(c, s, "scan_angle_deg", scanAngle);
-    detail::readKey(c, s, "start_time", startTime);
+void MotionOptions::declare(config::OptionsSchema& s) {
+    s.real("max_speed", maxSpeed, "m/s", "speed limit of the robot").above(0);
+    s.angle("max_turn_rate", maxTurnRate, "turn rate limit of the robot", "deg/s").above(0);
+    s.real("scan_distance", scanDistance, "m",
+           "the logger records a scan each scan_distance driven")
+        .above(0);
+    s.angle("scan_angle", scanAngle, "... or scan_angle_deg turned since the last one").above(0);
+    s.real("start_time", startTime, "s", "Unix time of the first scan").atLeast(0);
 }
 
 namespace {

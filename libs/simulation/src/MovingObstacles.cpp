@@ -1,4 +1,3 @@
-#include <mrpt/config/CConfigFileBase.h>
 #include <toposlam/simulation/MovingObstacles.h>
 #include <toposlam/simulation/PathSmoother.h>
 
@@ -8,14 +7,21 @@ namespace toposlam::simulation {
 
 using mrpt::math::TPoint2D;
 
-void PeopleOptions::loadFromConfig(const mrpt::config::CConfigFileBase& c, const std::string& s) {
-    count = static_cast<std::size_t>(c.read_uint64_t(s, "count", count));
-    radius = c.read_double(s, "radius", radius);
-    minSpeed = c.read_double(s, "min_speed", minSpeed);
-    maxSpeed = c.read_double(s, "max_speed", maxSpeed);
-    maxPause = c.read_double(s, "max_pause", maxPause);
-    maxTripLength = c.read_double(s, "max_trip_length", maxTripLength);
-    robotKeepOut = c.read_double(s, "robot_keep_out", robotKeepOut);
+void PeopleOptions::declare(config::OptionsSchema& s) {
+    s.integer("count", count, "",
+              "people walking between random places (discs); 0 = a static world")
+        .within(0, 1000);
+    s.real("radius", radius, "m", "a person's disc (shoulder half-width)").above(0);
+    s.real("min_speed", minSpeed, "m/s", "each walk picks a speed in [min_speed, max_speed]")
+        .above(0);
+    s.real("max_speed", maxSpeed, "m/s", "fastest walk").above(0);
+    s.require([this] { return minSpeed <= maxSpeed; }, "min_speed", "must not exceed max_speed");
+    s.real("max_pause", maxPause, "s", "pause at each destination, uniform in [0, max_pause]")
+        .atLeast(0);
+    s.real("max_trip_length", maxTripLength, "m", "destinations at most this far (straight line)")
+        .above(0);
+    s.real("robot_keep_out", robotKeepOut, "m", "people keep this far from the robot's centre")
+        .atLeast(0);
 }
 
 namespace {

@@ -1,9 +1,6 @@
-#include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/core/bits_math.h>
 #include <mrpt/math/wrap2pi.h>
 #include <toposlam/simulation/OdometryModel.h>
-
-#include "ConfigReading.h"
 
 #include <cmath>
 
@@ -16,17 +13,30 @@ OdometryErrorModel OdometryErrorModel::exact() {
     return m;
 }
 
-void OdometryErrorModel::loadFromConfig(const mrpt::config::CConfigFileBase& c,
-                                        const std::string& s) {
+void OdometryErrorModel::declare(config::OptionsSchema& s) {
+    // Variances in code, standard deviations in the file.
     const auto squaredDegrees = [](double deg) { return mrpt::square(mrpt::DEG2RAD(deg)); };
+    const auto degrees = [](double variance) { return mrpt::RAD2DEG(std::sqrt(variance)); };
     const auto squared = [](double v) { return v * v; };
-    detail::readKey(c, s, "distance_scale", distanceScale);
-    detail::readKey(c, s, "rotation_scale", rotationScale);
-    detail::readDegrees(c, s, "curvature_deg_per_m", curvaturePerMetre);
-    detail::readKey(c, s, "rot_std_deg_per_sqrt_rad", alpha1, squaredDegrees);
-    detail::readKey(c, s, "rot_std_deg_per_sqrt_m", alpha2, squaredDegrees);
-    detail::readKey(c, s, "trans_std_m_per_sqrt_m", alpha3, squared);
-    detail::readKey(c, s, "trans_std_m_per_sqrt_rad", alpha4, squared);
+    const auto root = [](double variance) { return std::sqrt(variance); };
+    s.real("distance_scale", distanceScale, "", "measured / true distance (1 = exact)").above(0);
+    s.real("rotation_scale", rotationScale, "", "measured / true rotation (1 = exact)").above(0);
+    s.converted(
+        "curvature_deg_per_m", curvaturePerMetre, [](double v) { return mrpt::DEG2RAD(v); },
+        [](double v) { return mrpt::RAD2DEG(v); }, "deg/m",
+        "spurious rotation per metre driven (unequal wheels: a straight run curves)");
+    s.converted("rot_std_deg_per_sqrt_rad", alpha1, squaredDegrees, degrees, "deg/sqrt(rad)",
+                "heading error std after turning 1 rad")
+        .atLeast(0);
+    s.converted("rot_std_deg_per_sqrt_m", alpha2, squaredDegrees, degrees, "deg/sqrt(m)",
+                "heading error std after driving 1 m")
+        .atLeast(0);
+    s.converted("trans_std_m_per_sqrt_m", alpha3, squared, root, "m/sqrt(m)",
+                "distance error std after driving 1 m")
+        .atLeast(0);
+    s.converted("trans_std_m_per_sqrt_rad", alpha4, squared, root, "m/sqrt(rad)",
+                "distance error std after turning 1 rad")
+        .atLeast(0);
 }
 
 OdometryModel::OdometryModel(const OdometryErrorModel& model, const mrpt::poses::CPose2D& start)

@@ -16,7 +16,7 @@ namespace toposlam::simulation {
 namespace fs = std::filesystem;
 
 OfficeDataset writeOfficeDataset(const std::string& dir, const SimulatorConfig& config,
-                                 bool showProgress) {
+                                 const io::ProgressCallback& progress) {
     validate(config);
     fs::create_directories(dir);
     const auto file = [&](const std::string& name) { return (fs::path(dir) / name).string(); };
@@ -26,7 +26,9 @@ OfficeDataset writeOfficeDataset(const std::string& dir, const SimulatorConfig& 
     const auto grid = plan.rasterise(OfficeDataset::kResolution, OfficeDataset::kMargin);
     io::saveGridMap(grid, file("office.gridmap.gz"));
     io::saveGridMap(grid, file("office.png"));
-    out.files = {file("office.gridmap.gz"), file("office.png"), file("office.yaml")};
+    // office.png is the picture; office.yaml + office.pgm the ROS map_server pair.
+    out.files = {file("office.gridmap.gz"), file("office.png"), file("office.yaml"),
+                 file("office.pgm")};
 
     // Room labels as an image with the map's geometry (top row = highest y).
     const GridGeometry g = GridGeometry::of(grid);
@@ -50,7 +52,7 @@ OfficeDataset writeOfficeDataset(const std::string& dir, const SimulatorConfig& 
     const ClearanceMap clearance(grid, config.log.world.thresholds);
     const Tour tour = planTour(clearance, config.tour);
     simulateLogToFiles(grid, tour.poses, config.log, file("office.rawlog"), config.format,
-                       file("office_gt.txt"), showProgress);
+                       file("office_gt.txt"), progress);
     std::vector<mrpt::math::TPoint2D> centres;
     for (std::size_t a : tour.visitOrder)
         centres.push_back(tour.areas[a].centre);

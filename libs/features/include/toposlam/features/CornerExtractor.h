@@ -25,7 +25,7 @@
 //
 // Output (ScanFeatures, sensor frame): segments, corners (with covariance), endpoints = every
 // corner (convex / concave) and every jump. Not thread-safe (one workspace per object).
-#include <mrpt/config/CLoadableOptions.h>
+#include <toposlam/config/Options.h>
 #include <toposlam/features/FeatureAssembly.h>
 #include <toposlam/features/FeatureExtractor.h>
 #include <toposlam/features/JumpDetector.h>
@@ -37,7 +37,8 @@
 
 namespace toposlam::features {
 
-struct CornerExtractorOptions : public mrpt::config::CLoadableOptions {
+/// Section [CornerExtractor] of config_ini/features.ini.
+struct CornerExtractorOptions : public config::Options {
     double dkThreshold = 1.0;     ///< dk_th: breakpoint threshold on |dk| (paper)
     double alpha = 0.6;           ///< corners need |dk| > alpha * dk_th (paper)
     double thetaThreshold = 0.3;  ///< theta_th: merge when tan(angle) < it (paper)
@@ -58,9 +59,7 @@ struct CornerExtractorOptions : public mrpt::config::CLoadableOptions {
         assembly.splitNonLines = true;
         assembly.cornerAngleSigmas = 3;
     }
-    void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                            const std::string& section) override;
-    void dumpToTextStream(std::ostream& out) const override;
+    void declare(config::OptionsSchema& s) override;
 };
 
 class CornerExtractor : public FeatureExtractor {

@@ -31,7 +31,7 @@
 //  - Segment ends get their types (corner type, Jump, Open); endpoints lists every corner
 //    (convex / concave) and every jump (the nearer reading of a range discontinuity).
 // The result is in the scan's own beam order (ScanPoints::toScanOrder).
-#include <mrpt/config/CLoadableOptions.h>
+#include <toposlam/config/Options.h>
 #include <toposlam/features/ArcCornerTest.h>
 #include <toposlam/features/LineFit.h>
 #include <toposlam/features/LinePart.h>
@@ -44,7 +44,9 @@
 
 namespace toposlam::features {
 
-struct FeatureAssemblyOptions : public mrpt::config::CLoadableOptions {
+/// Keys line_fit, min_segment_points, ... (see declare()). minCornerTurn is no key: the corner
+/// extractor derives it from theta_th.
+struct FeatureAssemblyOptions : public config::Options {
     LineFitMethod lineFit = LineFitMethod::TwoPoint;
     unsigned minSegmentPoints = 4;          ///< readings
     double minSegmentLength = 0;            ///< m, first to last reading
@@ -58,9 +60,7 @@ struct FeatureAssemblyOptions : public mrpt::config::CLoadableOptions {
     double maxArcRadius = 1.0;     ///< m, see ArcCornerTest
     double cornerAngleSigmas = 0;  ///< angle-precision test (see above); 0 = off
 
-    void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                            const std::string& section) override;
-    void dumpToTextStream(std::ostream& out) const override;
+    void declare(config::OptionsSchema& s) override;
 };
 
 class FeatureAssembly {
@@ -72,9 +72,28 @@ class FeatureAssembly {
     void assemble(ScanPoints& pts, std::vector<LinePart>& parts, double sigma, ScanFeatures& out);
 
   private:
-    std::vector<LineFit> fits_;
+    // The steps of assemble(), in order (see the file comment).
+    void addJumps(const ScanPoints& pts, const std::vector<LinePart>& parts,
+                  ScanFeatures& out) const;
+    void dropShortParts(const ScanPoints& pts, std::vector<LinePart>& parts) const;
+    void fitLines(const ScanPoints& pts, std::vector<LinePart>& parts, double sigma);
+    void mergeCollinear(const ScanPoints& pts, std::vector<LinePart>& parts, double sigma);
+    void addSegments(const ScanPoints& pts, const std::vector<LinePart>& parts,
+                     ScanFeatures& out) const;
+    void addCorners(const ScanPoints& pts, const std::vector<LinePart>& parts, double sigma,
+                    ScanFeatures& out) const;
+
+    bool tooShort(const ScanPoints& pts, const LinePart& p) const;
+    /// The chi-square line test of a part of `count` readings with residual sum of squares rss.
+    bool passesLineTest(double count, double rss) const;
+    /// Parts i and i + 1 are pieces of one small circle (ArcCornerTest), no corner.
+    bool isArcCorner(const ScanPoints& pts, const std::vector<LinePart>& parts, std::size_t i,
+                     double sigma) const;
+
+    std::vector<LineFit> fits_;                  // one per part, from step 4 on
     std::vector<LinePart> lineParts_, pending_;  // step 4's output and the parts still to test
     TwoLineSplit split_;
+    double lineSigma_ = 0;  // noise level of the line test for the current scan (m)
 };
 
 }  // namespace toposlam::features

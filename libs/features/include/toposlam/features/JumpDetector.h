@@ -11,7 +11,7 @@
 //    range noise alone never makes a jump at short range, where k * psi * d is tiny.
 // The result is the scan cut into runs: maximal stretches of consecutive valid readings with
 // no jump inside, the unit every extractor works on.
-#include <mrpt/config/CLoadableOptions.h>
+#include <toposlam/config/Options.h>
 #include <toposlam/features/ScanFeatures.h>
 #include <toposlam/features/ScanPoints.h>
 
@@ -29,13 +29,12 @@ struct PointRun {
     std::uint32_t size() const { return end - begin + 1; }
 };
 
-struct JumpDetectorOptions : public mrpt::config::CLoadableOptions {
+/// Keys enabled, k, noise_sigmas (jump_enabled, ... inside the extractors' sections).
+struct JumpDetectorOptions : public config::Options {
     bool enabled = true;     ///< false: runs are cut only at invalid readings
     double k = 15;           ///< paper's scale factor of the dynamic threshold
     double noiseSigmas = 5;  ///< noise floor of the threshold, in sigmas of a range difference
-    void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                            const std::string& section) override;
-    void dumpToTextStream(std::ostream& out) const override;
+    void declare(config::OptionsSchema& s) override;
 };
 
 class JumpDetector {

@@ -26,7 +26,7 @@
 //
 // Output (ScanFeatures, sensor frame): segments (Convex/Jump ends = convex-convex,
 // Concave/Concave = concave-concave), endpoints (Convex, Concave, Jump); no corners.
-#include <mrpt/config/CLoadableOptions.h>
+#include <toposlam/config/Options.h>
 #include <toposlam/features/FeatureExtractor.h>
 #include <toposlam/features/InscribedAngleArcTest.h>
 #include <toposlam/features/JumpDetector.h>
@@ -39,7 +39,8 @@
 
 namespace toposlam::features {
 
-struct SegmentExtractorOptions : public mrpt::config::CLoadableOptions {
+/// Section [SegmentExtractor] of config_ini/features.ini.
+struct SegmentExtractorOptions : public config::Options {
     unsigned medianWindow = 3;        ///< readings (odd; 1 = off)
     double turnThreshold = M_PI / 3;  ///< rad: convex below -it, concave above it (paper)
     bool paperExact = false;          ///< the paper's 4-tap turning sum, no noise model
@@ -55,9 +56,7 @@ struct SegmentExtractorOptions : public mrpt::config::CLoadableOptions {
     double inlierDistance = 0.03;        ///< m, floor of "on the line"
     InscribedAngleArcTest arcTest;
 
-    void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                            const std::string& section) override;
-    void dumpToTextStream(std::ostream& out) const override;
+    void declare(config::OptionsSchema& s) override;
 };
 
 class SegmentExtractor : public FeatureExtractor {

@@ -10,7 +10,7 @@
 //  - fit (least squares by default), segments, corners and endpoints exactly as for the corner
 //    extractor (FeatureAssembly), so the two differ only in how they split the scan.
 // Split distance: max(splitDistance, noiseSigmas * sigma), sigma the range noise.
-#include <mrpt/config/CLoadableOptions.h>
+#include <toposlam/config/Options.h>
 #include <toposlam/features/FeatureAssembly.h>
 #include <toposlam/features/FeatureExtractor.h>
 #include <toposlam/features/JumpDetector.h>
@@ -22,7 +22,8 @@
 
 namespace toposlam::features {
 
-struct SplitAndMergeOptions : public mrpt::config::CLoadableOptions {
+/// Section [SplitAndMergeExtractor] of config_ini/features.ini.
+struct SplitAndMergeOptions : public config::Options {
     double splitDistance = 0.04;  ///< m, floor of the split threshold
     double noiseSigmas = 3;       ///< split threshold in range-noise sigmas
     double rangeNoiseStd = 0.01;  ///< m, when the scan does not state one
@@ -32,9 +33,7 @@ struct SplitAndMergeOptions : public mrpt::config::CLoadableOptions {
     FeatureAssemblyOptions assembly;  ///< lineFit defaults to least squares here
 
     SplitAndMergeOptions() { assembly.lineFit = LineFitMethod::LeastSquares; }
-    void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                            const std::string& section) override;
-    void dumpToTextStream(std::ostream& out) const override;
+    void declare(config::OptionsSchema& s) override;
 };
 
 class SplitAndMergeExtractor : public FeatureExtractor {

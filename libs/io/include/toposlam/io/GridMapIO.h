@@ -8,18 +8,24 @@
 //                           size MRPT would then misread (use .png or .yaml for those).
 //   .yaml (.yml)            ROS map_server: the YAML metadata (image, resolution, origin,
 //                           negate, occupied_thresh, free_thresh, mode) plus its image.
-//                           Written as map_server's map_saver does: a trinary 8-bit PGM beside
-//                           the YAML (occupied 0, free 254, unknown 205).
-//   .png                    8-bit grey picture of p(free) (0 black = occupied, 255 white =
-//                           free, 128 = unknown, as MRPT draws grids) with its geometry in the
-//                           sidecar "<stem>.yaml" next to it: ROS map_server metadata with
-//                           "image: <stem>.png" and "mode: scale", so ROS tools load it too.
+//                           Written exactly as ROS map_saver writes a map: "<stem>.pgm", an
+//                           8-bit trinary PGM (occupied 0, free 254, unknown 205), and the YAML
+//                           with "mode: trinary", negate 0, occupied_thresh 0.65, free_thresh
+//                           0.196, so map_server loads every cell as the grid has it: p(occ) =
+//                           1 - p(free) > 0.65 -> 100, < 0.196 -> 0, otherwise -1 (unknown).
+//   .png                    8-bit grey picture of p(free) for people to look at (0 black =
+//                           occupied, 255 white = free, 128 = unknown, as MRPT draws grids),
+//                           plus the ROS pair "<stem>.yaml" + "<stem>.pgm" beside it (as .yaml).
 //   .pgm                    as .yaml (trinary PGM + "<stem>.yaml").
 //   .png .pgm .bmp .jpg .jpeg .tif .tiff on input: the sidecar "<stem>.yaml" is used when it
-//                           exists and its `image` is this file; otherwise the image is bare:
-//                           p(free) = grey / 255 (colour and alpha images are read as grey),
-//                           with the geometry given by the caller (default 0.05 m/cell,
+//                           exists and its `image` is this file (or, for a .png, the
+//                           "<stem>.pgm" of the pair written with it: the picture then takes the
+//                           YAML's geometry and p(free) = grey / 255); otherwise the image is
+//                           bare: p(free) = grey / 255 (colour and alpha images are read as
+//                           grey), with the geometry given by the caller (default 0.05 m/cell,
 //                           origin (0,0)).
+// Size limits: at most kMaxGridMapCells cells, checked before they are allocated (from a
+// .gridmap's stored limits, an image's header).
 // Reading ROS metadata: mode trinary (the default) follows map_server exactly
 // (p_occ = (255 - grey)/255, or grey/255 with negate; p_occ > occupied_thresh: occupied,
 // p_occ < free_thresh: free, otherwise unknown); mode scale keeps the grey level as a
@@ -38,6 +44,10 @@
 
 namespace toposlam::io {
 
+/// Most cells a grid map read from a file may have: 2^28 (16 384 x 16 384; a building at
+/// 5 cm is a few million). Checked before the cells are allocated.
+constexpr unsigned long long kMaxGridMapCells = 1ULL << 28;
+
 /// Geometry for image maps that carry none themselves.
 struct GridMapGeometry {
     double resolution = 0.05;  ///< m per cell
@@ -54,10 +64,11 @@ mrpt::maps::COccupancyGridMap2D loadGridMap(
     const std::string& path, const std::optional<GridMapGeometry>& geometry = std::nullopt);
 
 /// Saves `map`, choosing the format from the extension (.gridmap, .gridmap.gz, .png, .yaml,
-/// .yml, .pgm). Image formats also write their metadata (.png: "<stem>.yaml" sidecar; .yaml:
-/// "<stem>.pgm" image), so that loadGridMap restores the geometry. Atomic: each file is
-/// written to a temporary name and renamed. Throws std::runtime_error naming the file for an
-/// unsupported extension or a write failure.
+/// .yml, .pgm). Image formats also write the ROS pair (.png: "<stem>.yaml" + "<stem>.pgm";
+/// .yaml: "<stem>.pgm"; .pgm: "<stem>.yaml"), so that ROS map_server and loadGridMap restore
+/// the geometry and the cells. Atomic: each file is written to a temporary name and renamed.
+/// Throws std::runtime_error naming the file for an unsupported extension or a write
+/// failure.
 void saveGridMap(const mrpt::maps::COccupancyGridMap2D& map, const std::string& path);
 
 /// Sets the grid's limits to exactly [originX, originX + sizeX*res] x [originY, ...] without

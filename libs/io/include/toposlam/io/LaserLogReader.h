@@ -49,7 +49,17 @@
 //    after the last sample that sample is held; before the first one hasOdometry is false.
 //  - fileStamp is the scan's own timestamp (Unix seconds); scan->timestamp is the same,
 //    except that non-increasing times are moved 1 us after their predecessor.
+//  - Objects of other classes are skipped: camera images, IMU, bearing-range observations,
+//    topological maps... provided their class is registered with MRPT in this program
+//    (TopoSLAM's apps call toposlam::classes::registerTopoSlamClasses()). Scan features
+//    written by toposlam-annotate-features come with their scan (storedFeatures).
+//  - Every object is checked before MRPT deserializes it (libs/io/src/MrptObjectCheck.h):
+//    lengths against the bytes the file has, versions, nested classes, so corrupt files end
+//    with an InputError instead of huge allocations or crashes inside MRPT. Objects of
+//    classes the check does not know are first deserialized in a child process with 1 GiB
+//    and 5 s (libs/io/src/ObjectDryRun.h).
 #include <mrpt/math/TPose2D.h>
+#include <mrpt/obs/CObservation.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 
@@ -58,6 +68,10 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+namespace toposlam::features {
+class CObservationLaserFeatures;  // libs/features
+}  // namespace toposlam::features
 
 namespace toposlam::io {
 
@@ -93,6 +107,20 @@ struct LaserLogRecord {
     mrpt::poses::CPose2D odometry;
     /// False when the log has no odometry for this scan (odometry is then 0,0,0).
     bool hasOdometry = false;
+    /// The features stored with this scan in the rawlog, so they need not be extracted
+    /// again: a toposlam::features::CObservationLaserFeatures of the same timestamp whose
+    /// sensor label begins with the scan's (toposlam-annotate-features writes
+    /// "<scan label>_FEATURES" right after each scan, or in the same sensory frame). Null when
+    /// the log has none (CARMEN logs never have). The class lives in libs/features, which
+    /// builds on this library; read it with laserFeatures().
+    mrpt::obs::CObservation::Ptr storedFeatures;
+
+    /// storedFeatures as its class, or null; include
+    /// <toposlam/features/CObservationLaserFeatures.h> to call it.
+    template <typename Features = features::CObservationLaserFeatures>
+    std::shared_ptr<const Features> laserFeatures() const {
+        return std::dynamic_pointer_cast<const Features>(storedFeatures);
+    }
 };
 
 class LaserLogReader {
@@ -112,7 +140,8 @@ class LaserLogReader {
 
     LaserLogFormat format() const;
     const std::string& path() const;
-    /// Fraction of the file consumed so far, in [0,1] (for progress display).
+    /// Fraction of the log's content parsed so far, in [0,1] (for progress display): it
+    /// advances with every scan, whatever the file's buffering or compression.
     double fractionRead() const;
     /// Scans so far whose scan->timestamp differs from their fileStamp by more than 1 us
     /// (recovered CARMEN stamps, times made strictly increasing).

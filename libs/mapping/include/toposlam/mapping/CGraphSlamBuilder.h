@@ -8,7 +8,7 @@
 // and its features) and an occupancy grid of them at their optimised poses
 // (getCurrentlyBuiltMetricMap, built when asked for).
 //
-// Configuration (loadFromConfigFile): [GraphSlam] (GraphSlamOptions), [GraphMatcher]
+// Configuration (loadFromConfigFile): [GraphSlam] (GraphSlamOptions), [GraphScanMatcher]
 // (matching::GraphMatcherOptions), the feature extractor's own section (e.g.
 // [CornerExtractor]) and [OccupancyGrid] (OccupancyGridOptions) of one .ini file; see
 // config_ini/toposlam-slam.ini.

@@ -1,15 +1,15 @@
 #pragma once
 // Settings of the graph SLAM (CGraphSlamBuilder), one .ini section ([GraphSlam] in
 // config_ini/toposlam-slam.ini, every key commented there). Units: m, and degrees in the file
-// (keys ending in _deg), radians in code.
-#include <mrpt/config/CLoadableOptions.h>
+// (keys ending in _deg), radians in code. Loading is strict (config/Options.h).
+#include <toposlam/config/Options.h>
 
 #include <cstddef>
 #include <string>
 
 namespace toposlam::mapping {
 
-struct GraphSlamOptions : public mrpt::config::CLoadableOptions {
+struct GraphSlamOptions : public config::Options {
     // --- Front end: keyframes and local submaps ---
     double keyframeDistance = 0.3;  ///< m travelled since the last keyframe
     double keyframeAngle = 0.2618;  ///< rad turned since the last keyframe (15 deg)
@@ -110,10 +110,7 @@ struct GraphSlamOptions : public mrpt::config::CLoadableOptions {
     /// come from its own section of the same file.
     std::string extractor = "corners";
 
-    void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                            const std::string& section) override;
-    void saveToConfigFile(mrpt::config::CConfigFileBase& cfg,
-                          const std::string& section) const override;
+    void declare(config::OptionsSchema& s) override;
 };
 
 }  // namespace toposlam::mapping

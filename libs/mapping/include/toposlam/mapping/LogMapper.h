@@ -9,6 +9,7 @@
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/maps/CSimpleMap.h>
+#include <toposlam/config/Options.h>
 #include <toposlam/io/ProgressCallback.h>
 #include <toposlam/io/Trajectory.h>
 #include <toposlam/mapping/PoseGraph.h>
@@ -19,6 +20,14 @@
 #include <string>
 
 namespace toposlam::mapping {
+
+/// Section [Slam] of config_ini/toposlam-slam.ini: which SLAM engine maps the log.
+struct SlamEngineOptions : public config::Options {
+    /// "graph": TopoSLAM's graph SLAM (CGraphSlamBuilder); "icp": MRPT's ICP map builder,
+    /// the engine of icp-slam (IcpSlam), kept as the comparison row of B3.
+    std::string engine = "graph";
+    void declare(config::OptionsSchema& s) override;
+};
 
 struct MappingResult {
     std::string engine;  ///< "graph" or "icp"
@@ -43,11 +52,11 @@ struct MappingResult {
 
 /// Runs SLAM on `logPath` with the settings in `ini`: [Slam] engine (graph, the default, or
 /// icp); the graph engine's sections (CGraphSlamBuilder.h) or icp-slam's [MappingApplication]
-/// and [ICP] (IcpSlam.h); and [OccupancyGrid] (OccupancyGridOptions, plus alignWithWalls
-/// (default 1) and minWallDirectionStrength (default 0.2): turn the map so its dominant walls
-/// run along the axes, when they are that dominant; see ManhattanAlignment.h). Reports progress
+/// and [ICP] (IcpSlam.h); and [OccupancyGrid] (OccupancyGridOptions, with the alignment of
+/// the map to its dominant walls, ManhattanAlignment.h; a bad value there is a
+/// config::ConfigError naming the file when `ini` is an mrpt::config::CConfigFile). Reports progress
 /// through `progress` (fraction of the file read, scans). Throws io::InputError for unreadable
-/// or malformed logs and for a log without scans, std::invalid_argument for a bad engine name.
+/// or malformed logs and for a log without scans, config::ConfigError for bad settings.
 MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFileBase& ini,
                      const io::ProgressCallback& progress = {});
 

@@ -17,6 +17,7 @@
 // inlierFraction = inliers / (inliers + violations) is a quality in [0, 1] that does not
 // punish partial overlap; the inlier count says how much of the scan supports the pose.
 #include <mrpt/poses/CPose2D.h>
+#include <toposlam/config/OptionsSchema.h>
 #include <toposlam/matching/PolarScan.h>
 
 #include <cstddef>
@@ -30,6 +31,9 @@ struct AlignmentScoreOptions {
     /// Two neighbouring reference points farther apart than this (m) plus 3 beam arcs are
     /// not joined into a polyline piece (a range jump, not a surface).
     double maxJoinDistance = 0.30;
+
+    /// Its .ini keys (GraphScanMatcher.h gives them a prefix).
+    void declare(config::OptionsSchema& s);
 };
 
 struct AlignmentScore {

@@ -14,6 +14,7 @@
 // O((n/stride)^2) per search, far cheaper than scoring every offset.
 #include <mrpt/math/TPoint2D.h>
 #include <mrpt/poses/CPose2D.h>
+#include <toposlam/config/OptionsSchema.h>
 #include <toposlam/matching/AlignmentScorer.h>
 #include <toposlam/matching/PolarScan.h>
 
@@ -29,6 +30,9 @@ struct AlongLineSearchOptions {
     std::size_t stride = 2;         ///< use every stride-th beam of both scans
     double fineStep = 0.03;         ///< m, scorer check around each peak (+-1 step)
     std::size_t peaks = 3;          ///< vote peaks checked with the scorer
+
+    /// Its .ini keys (GraphScanMatcher.h gives them a prefix).
+    void declare(config::OptionsSchema& s);
 };
 
 class AlongLineSearch {

@@ -28,13 +28,13 @@ struct TGraphMatcherAlignmentResult : public mrpt::slam::TMetricMapAlignmentResu
 
 class CGraphMatcherAlignment : public mrpt::slam::CMetricMapsAlignmentAlgorithm {
   public:
-    struct Options {
+    /// Section [GraphScanMatcher] of config_ini/graph-matcher.ini: the matcher's keys plus
+    /// use_guess and unreliable_variance.
+    struct Options : public config::Options {
         GraphMatcherOptions matcher;
         bool useGuess = true;
         double unreliableVariance = 1e4;  ///< m^2 and rad^2
-        /// Reads [section] keys as GraphScanMatcher's plus useGuess, unreliableVariance.
-        void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                                const std::string& section);
+        void declare(config::OptionsSchema& s) override;
     } options;
 
     CGraphMatcherAlignment();

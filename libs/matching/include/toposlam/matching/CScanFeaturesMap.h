@@ -5,7 +5,7 @@
 // an .ini map definition once libtoposlam-plugin.so is loaded:
 //     [MappingApplication]   scanFeaturesMap_count = 1
 //     [MappingApplication_scanFeaturesMap_00_creationOpts]    extractor = split-merge
-//     [MappingApplication_scanFeaturesMap_00_insertOpts]      (FeatureMapOptions keys, source)
+//     [MappingApplication_scanFeaturesMap_00_insertOpts]      (source, FeatureMapOptions' keys)
 //     [MappingApplication_scanFeaturesMap_00_likelihoodOpts]  sigma_dist, max_corr_distance,
 //                                                             decimation
 // e.g. icp-slam (LD_PRELOAD), rbpf-slam, observations2map, RawLogViewer's "Raw map" dialog.
@@ -72,23 +72,19 @@ class CScanFeaturesMap : public mrpt::maps::CMetricMap {
     /// Which observations insertObservation() takes.
     enum class Source { Scans, Features };
 
-    struct TInsertionOptions : public mrpt::config::CLoadableOptions {
+    /// Keys: source = scans | features, and FeatureMapOptions' (merge_angle_deg, ...).
+    struct TInsertionOptions : public config::Options {
         FeatureMapOptions merge;
         Source source = Source::Scans;
-        /// Keys: FeatureMapOptions' (mergeAngle_deg, mergeDistance, ...) and source =
-        /// scans | features. Throws std::invalid_argument for a bad value.
-        void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                                const std::string& section) override;
-        void dumpToTextStream(std::ostream& out) const override;
+        void declare(config::OptionsSchema& s) override;
     } insertionOptions;
 
-    struct TLikelihoodOptions : public mrpt::config::CLoadableOptions {
+    /// Keys sigma_dist, max_corr_distance, decimation (MRPT's CPointsMap names).
+    struct TLikelihoodOptions : public config::Options {
         double sigma_dist = 0.0025;      ///< m^2 (MRPT's CPointsMap default)
         double max_corr_distance = 1.0;  ///< m
         unsigned decimation = 10;        ///< use every decimation-th scan point
-        void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                                const std::string& section) override;
-        void dumpToTextStream(std::ostream& out) const override;
+        void declare(config::OptionsSchema& s) override;
     } likelihoodOptions;
 
     CScanFeaturesMap() = default;

@@ -29,6 +29,7 @@
 #include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/math/TPoint2D.h>
 #include <mrpt/poses/CPose2D.h>
+#include <toposlam/config/Options.h>
 #include <toposlam/features/ScanFeatures.h>
 
 #include <cstddef>
@@ -39,7 +40,9 @@
 
 namespace toposlam::matching {
 
-struct FeatureMapOptions {
+/// How observations merge into the map: keys of the scanFeaturesMap insertOpts section
+/// (merge_angle_deg, merge_distance, ...; see declare()).
+struct FeatureMapOptions : public config::Options {
     double mergeAngle = 5.0 * M_PI / 180;  ///< rad: facing directions this close may merge
     double mergeDistance = 0.08;           ///< m: ends this close to a map line may merge
     double mergeGap = 0.25;                ///< m: gap along the line bridged by a merge
@@ -53,13 +56,7 @@ struct FeatureMapOptions {
     double minCoverageRatio = 0.2;      ///< of the line's median beams per bin: a gap below it
     double minPieceLength = 0.1;        ///< m: shorter pieces of a line are dropped
 
-    /// Keys as the member names, angles in degrees: mergeAngle_deg. Throws
-    /// std::invalid_argument for a negative, zero (where it matters) or non-finite value.
-    void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
-    /// The same keys as .ini lines.
-    void dumpToTextStream(std::ostream& out) const;
-    /// Throws std::invalid_argument naming the first value out of range.
-    void validate() const;
+    void declare(config::OptionsSchema& s) override;
 };
 
 /// Weighted first and second moments of a set of segments, each spread evenly along its

@@ -42,6 +42,7 @@
 // All workspaces live in the object: reuse one matcher for many pairs. Not thread-safe.
 #include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/poses/CPose2D.h>
+#include <toposlam/config/Options.h>
 #include <toposlam/features/ScanFeatures.h>
 #include <toposlam/matching/AlignmentScorer.h>
 #include <toposlam/matching/AlongLineSearch.h>
@@ -58,13 +59,11 @@
 #include <string>
 #include <vector>
 
-namespace mrpt::config {
-class CConfigFileBase;
-}
-
 namespace toposlam::matching {
 
-struct GraphMatcherOptions {
+/// Section [GraphScanMatcher] of config_ini/graph-matcher.ini; each step's options are keys
+/// with the step's prefix (ransac_max_hypotheses, icp_max_distance, ...).
+struct GraphMatcherOptions : public config::Options {
     // Graph
     double minSegmentLength = 0.25;  ///< m; shorter segments are not graph nodes
     std::size_t maxSegments = 16;    ///< per scan, the longest ones
@@ -115,10 +114,11 @@ struct GraphMatcherOptions {
     /// clearly different pose (score = inliers - violations), else the match is ambiguous.
     double ambiguityMargin = 0.05;
 
-    /// Reads every field from `section` (keys named as the fields; the step options as
-    /// <step>_<field>, e.g. ransac_maxHypotheses, icp_maxDistance); absent keys keep their
-    /// value. See config_ini/graph-matcher.ini.
-    void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+    void declare(config::OptionsSchema& s) override;
+
+  private:
+    void declareRefinement(config::OptionsSchema& s);
+    void declareDecision(config::OptionsSchema& s);
 };
 
 enum class MatchStatus {

@@ -18,6 +18,7 @@
 // Cost: (n/stride)^2 votes per rotation, a few hundred microseconds for ~10 rotations of
 // 180-360-beam scans, which is why it runs only when the graph pipeline found nothing reliable.
 #include <mrpt/poses/CPose2D.h>
+#include <toposlam/config/OptionsSchema.h>
 #include <toposlam/matching/AttributedGraph.h>
 #include <toposlam/matching/PolarScan.h>
 #include <toposlam/matching/RansacMatcher.h>
@@ -37,6 +38,9 @@ struct HoughPoseSearchOptions {
     std::size_t stride = 2;          ///< use every stride-th beam of both scans
     std::size_t peaksPerRotation = 3;
     double minPeakFraction = 0.1;  ///< of the voting current points, for a peak to count
+
+    /// Its .ini keys (GraphScanMatcher.h gives them a prefix).
+    void declare(config::OptionsSchema& s);
 };
 
 struct PoseCandidate {

@@ -25,6 +25,7 @@
 // parallel: a corridor), H is singular in that direction and the covariance says so.
 #include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/poses/CPose2D.h>
+#include <toposlam/config/OptionsSchema.h>
 #include <toposlam/matching/AttributedGraph.h>
 #include <toposlam/matching/LineMap.h>
 #include <toposlam/matching/LocalLine.h>
@@ -55,6 +56,9 @@ struct IcpOptions {
     /// of the largest: nearly parallel lines fix nothing along themselves, and a plain
     /// Gauss-Newton step there is noise amplified, sliding the pose down a corridor.
     double minEigenRatio = 1e-2;
+
+    /// Its .ini keys (GraphScanMatcher.h gives them a prefix).
+    void declare(config::OptionsSchema& s);
 };
 
 struct IcpResult {

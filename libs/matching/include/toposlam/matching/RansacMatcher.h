@@ -27,6 +27,7 @@
 // Output: the best-supported transforms, at most maxKept of them, pairwise distinct (they
 // differ by more than distinctTranslation or distinctRotation), each with its consensus.
 #include <mrpt/poses/CPose2D.h>
+#include <toposlam/config/OptionsSchema.h>
 #include <toposlam/matching/AttributedGraph.h>
 #include <toposlam/matching/PointToLineIcp.h>
 #include <toposlam/matching/RigidTransform2D.h>
@@ -57,6 +58,9 @@ struct RansacOptions {
     std::size_t maxKept = 6;
     double distinctTranslation = 0.30;  ///< m
     double distinctRotation = 0.15;     ///< rad
+
+    /// Its .ini keys (GraphScanMatcher.h gives them a prefix).
+    void declare(config::OptionsSchema& s);
 };
 
 /// A candidate assignment observed (current) node -> reference node with its probability.
@@ -94,6 +98,13 @@ class RansacMatcher {
     std::size_t evaluated() const { return evaluated_; }
 
   private:
+    // The steps of run(): the candidate pool, hypotheses from pairs of matched segments, from
+    // single matched segments.
+    void buildPool(const std::vector<ScoredAssignment>& assignments);
+    void offerPairs(const AttributedGraph& current, const AttributedGraph& reference,
+                    const RansacOptions& options);
+    void offerSingles(const AttributedGraph& current, const AttributedGraph& reference,
+                      const RansacOptions& options);
     void offer(const AttributedGraph& current, const AttributedGraph& reference,
                const mrpt::poses::CPose2D& pose, const RansacOptions& options);
 

@@ -11,6 +11,7 @@
 // and whose edge angles differ by at most maxAngleDifference: two edges that disagree by
 // more cannot be the same pair of walls, and dropping them turns the (n n')^2 matrix into a
 // few entries per assignment.
+#include <toposlam/config/OptionsSchema.h>
 #include <toposlam/matching/AttributedGraph.h>
 
 #include <cstddef>
@@ -28,6 +29,9 @@ struct Assignment {
 struct SimilarityOptions {
     double alpha = 1.0;                ///< control parameter of eqs. 2-3 (paper: 1)
     double maxAngleDifference = 0.35;  ///< rad; edge pairs beyond it get X = 0
+
+    /// Its .ini keys (GraphScanMatcher.h gives them a prefix).
+    void declare(config::OptionsSchema& s);
 };
 
 class Similarity {

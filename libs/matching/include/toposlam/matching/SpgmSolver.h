@@ -33,6 +33,7 @@
 // assignments sensibly; the matcher avoids most such cases by using the smaller graph as
 // rows. All work vectors live in the object: solving allocates only when a problem is bigger
 // than every previous one.
+#include <toposlam/config/OptionsSchema.h>
 #include <toposlam/matching/Similarity.h>
 
 #include <cstddef>
@@ -45,6 +46,9 @@ struct SpgmOptions {
     double tolerance = 1e-3;  ///< on max |change| of an entry of P per iteration
     int projectionCycles = 5;
     double projectionTolerance = 1e-6;
+
+    /// Its .ini keys (GraphScanMatcher.h gives them a prefix).
+    void declare(config::OptionsSchema& s);
 };
 
 class SpgmSolver {

@@ -18,9 +18,10 @@
 //                 carries one of the wall segments of step 2) and extends at least
 //                 minWallExtent from the jamb along or across the door line; and at least one
 //                 jamb is the end of the wall the door is in: from it, away from the opening,
-//                 the obstacle goes on along the door line for wallEndProbe and is no thicker
-//                 than maxWallThickness there (or is the edge of the mapped space, free on one
-//                 side only). Rules out chairs, bins and plants as door frames, gaps between
+//                 the obstacle goes on along the door line for wallEndProbe and, a third of
+//                 the way in, is no thicker than maxWallThickness and as thick as the
+//                 building's walls are (WallThickness; or is the edge of the mapped space,
+//                 free on one side only). Rules out chairs, bins and plants as door frames, gaps between
 //                 desks (too deep to be walls) and the
 //                 cross-sections of corridors between doors (both jambs on side walls);
 //   constriction: a door is a narrow place between two wider spaces: walking away from the door
@@ -31,6 +32,7 @@
 #include <toposlam/rooms/LineSegment.h>
 #include <toposlam/rooms/RegionPartition.h>
 #include <toposlam/rooms/VirtualDoorDetector.h>
+#include <toposlam/rooms/WallThickness.h>
 
 #include <cstddef>
 #include <vector>
@@ -42,17 +44,18 @@ class DoorFilters {
     struct Options {
         /// N_d (m). The paper gives it in cells (N_d = 2 at 5 cm, fig. 5b), for SLAM maps whose
         /// walls are a few cells thick. Groups are chained (closer pairs linked), so the
-        /// cross-sections found all along a doorway count as one door however thick the wall.
+        /// cross-sections found all along a doorway count as one door however thick the wall;
+        /// cuts fanning out from one jamb cell at less than 30 degrees are linked too.
         double frameDistance = 0.5;
         double minRoomArea = 2.0;  ///< N_s (m^2)
         /// Distance filter: of a group of doors closer than N_d, keep the narrowest (the
         /// waist of the opening; ties: the one nearest the group's middle). Off: the paper's
         /// greedy reading, keep each door that is more than N_d from every door kept before it.
         bool keepNarrowestOfGroup = true;
-        /// Minimum-area filter: merge the smallest too-small region first, through its least
-        /// door-like door (eq. 10's |width - w| largest; ties: to its smallest neighbour), and
-        /// re-evaluate. Off: the paper's single pass, remove every door with a too-small region
-        /// on either side.
+        /// Minimum-area filter: merge the smallest too-small region first, through its widest
+        /// door (of two cuts through one doorway the waist stays; ties: to its smallest
+        /// neighbour), and re-evaluate. Off: the paper's single pass, remove every door with a
+        /// too-small region on either side.
         bool mergeSmallestFirst = true;
         bool requireWallJambs = true;  ///< the wall-jamb test (deviation, see above)
         double minWallExtent = 0.3;    ///< m
@@ -67,6 +70,10 @@ class DoorFilters {
         /// m: how far from a wall-end jamb, along the door line, the wall must go on and is
         /// measured for its thickness (and the reach of the wide openings' framing test).
         double wallEndProbe = 0.55;
+        /// Part of the wall-end test: the wall end must also be as thick as the building's
+        /// walls are, measured on the map (WallThickness.h), so that a cabinet, a fridge or a
+        /// shelf standing against a wall is no wall end.
+        bool wallThicknessFromMap = true;
         bool requireConstriction = true;  ///< the constriction test (deviation, see above)
         double openingMargin = 0.3;       ///< m
     };
@@ -75,9 +82,11 @@ class DoorFilters {
     explicit DoorFilters(const Options& options) : options_(options) {}
 
     /// The wall-jamb test (a no-op when switched off); `walls`: the merged wall segments of
-    /// step 2 (pixels).
+    /// step 2 (pixels); `thickness`: the map's wall thicknesses (nullptr: any up to
+    /// maxWallThickness).
     std::vector<VirtualDoor> wallJambs(const FreeSpace& space, std::vector<VirtualDoor> doors,
-                                       const std::vector<LineSegment>& walls) const;
+                                       const std::vector<LineSegment>& walls,
+                                       const WallThickness* thickness = nullptr) const;
     /// The constriction test; `probeDistance` (how far from the door line to look, m) is the
     /// door width (a no-op when off).
     std::vector<VirtualDoor> constriction(const FreeSpace& space, std::vector<VirtualDoor> doors,
@@ -100,12 +109,11 @@ class DoorFilters {
         std::vector<Link> doors;
     };
     /// The minimum-area filter over the doors `candidates` (indices into `doors`, the doors
-    /// `partition` was cut with); regions are merged through removed doors. `cellArea` in m^2,
-    /// `doorWidth` (w) in pixels. Doors whose two sides end up in one room are dropped too
-    /// (they no longer separate anything).
+    /// `partition` was cut with); regions are merged through removed doors. `cellArea` in m^2.
+    /// Doors whose two sides end up in one room are dropped too (they no longer separate
+    /// anything).
     Rooms minimumArea(const RegionPartition& partition, const std::vector<VirtualDoor>& doors,
-                      const std::vector<std::size_t>& candidates, double cellArea,
-                      double doorWidth) const;
+                      const std::vector<std::size_t>& candidates, double cellArea) const;
 
     const Options& options() const { return options_; }
 

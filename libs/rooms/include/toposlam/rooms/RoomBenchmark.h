@@ -1,33 +1,42 @@
 #pragma once
-// Benchmark B4 (shared/BENCHMARKS.md): room segmentation of the 20 maps of Bormann et al.'s
-// evaluation, unfurnished and furnished (a furnished map is scored against its unfurnished
-// ground truth), by the virtual-door segmenter (TopoSLAM's default and the paper-exact
-// variant) and by the morphological and distance baselines, all in one run.
+// Benchmark B4 (shared/BENCHMARKS.md): room segmentation scored against ground-truth rooms and
+// doors, by the virtual-door segmenter (TopoSLAM's default and the paper-exact variant) and by
+// the morphological and distance baselines, all in one run. The maps come as
+// RoomBenchmarkCase: Bormann et al.'s 20 maps, unfurnished and furnished (a furnished map is
+// scored against its unfurnished ground truth), at any rotation (bormannCases), or any other
+// set with ground truth (generated plans, grids built by SLAM: libs/roomsbench).
+#include <toposlam/io/ProgressCallback.h>
+#include <toposlam/rooms/RoomBenchmarkCase.h>
 #include <toposlam/rooms/RoomSegmenter.h>
 #include <toposlam/rooms/SegmentationMetrics.h>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace toposlam::rooms {
 
 struct RoomBenchmarkOptions {
-    std::string dataDir;   ///< the folder with the maps (shared/data/rooms)
+    std::string dataDir;   ///< the folder with Bormann's maps (shared/data/rooms)
     int repeats = 3;       ///< runs per map and method; the median time is reported
     std::string imageDir;  ///< when not empty, a PNG of every segmentation is written there
     /// Methods to run, of "vdoor", "vdoor-paper", "morph", "dist" (empty: all four).
     std::vector<std::string> methods;
     /// Maps to run, base names of benchmarkMaps() (empty: all 20).
     std::vector<std::string> maps;
+    /// Angles (deg, counter-clockwise) each map is turned by (nearest neighbour); {0}: as drawn.
+    std::vector<double> rotationsDeg = {0};
     RoomSegmenter::Options virtualDoor = RoomSegmenter::Options::improved();
     RoomSegmenter::Options virtualDoorPaper = RoomSegmenter::Options::paperExact();
 };
 
 /// One method on one map.
 struct RoomBenchmarkScore {
-    std::string map;  ///< e.g. "office_a_furnitures"
+    std::string dataset;  ///< RoomBenchmarkCase::dataset
+    std::string map;      ///< e.g. "office_a_furnitures"
     bool furnished = false;
+    double rotationDeg = 0;
     std::string method;
     PrecisionRecall pr;
     int segments = 0;          ///< labels returned (65280 excluded, tiny included)
@@ -36,15 +45,17 @@ struct RoomBenchmarkScore {
     DoorMatchCounts doors1m;   ///< at 1.0 m (20 px)
     double seconds = 0;        ///< median wall time over the repeats
     double minSeconds = 0;     ///< fastest repeat
+    double cpuSeconds = 0;     ///< median CPU time of the calling thread over the repeats
 };
 
 /// Aggregate of one method over a group of maps.
 struct RoomBenchmarkSummary {
-    std::string method, group;  ///< group: "unfurnished", "furnished", "all"
+    std::string dataset, method, group;  ///< group: "unfurnished", "furnished", "all"
+    std::optional<double> rotationDeg;   ///< nullopt: every angle of the run pooled
     int maps = 0;
     double recallMean = 0, recallSd = 0, precisionMean = 0, precisionSd = 0;
     double recallPixels = 0, precisionPixels = 0;  ///< means over maps
-    double secondsMean = 0, secondsMax = 0, minSecondsMean = 0;
+    double secondsMean = 0, secondsMax = 0, minSecondsMean = 0, cpuSecondsMean = 0;
     int segments = 0, groundTruthRooms = 0;
     DoorMatchCounts doors, doors1m;  ///< pooled counts
     double doorPrecisionMeanOfMaps = 0, doorRecallMeanOfMaps = 0;
@@ -57,20 +68,33 @@ class RoomBenchmark {
     /// All four method names, in table order.
     static const std::vector<std::string>& methodNames();
 
+    /// Throws std::invalid_argument for an unknown method or map name.
     explicit RoomBenchmark(RoomBenchmarkOptions options);
+    const RoomBenchmarkOptions& options() const { return options_; }
 
-    /// Runs every selected method on every selected map (unfurnished and furnished).
-    /// `progress(done, total, what)` is called before each map. Throws toposlam::io::InputError
-    /// for a missing or unreadable map file.
-    std::vector<RoomBenchmarkScore> run(
-        const std::function<void(std::size_t, std::size_t, const std::string&)>& progress = {})
-        const;
+    /// Every selected method on every selected Bormann map (unfurnished and furnished) at every
+    /// angle. Throws toposlam::io::InputError for a missing or unreadable map file.
+    std::vector<RoomBenchmarkScore> run(const io::ProgressCallback& progress = {}) const;
 
+    /// Every selected method on `count` cases made one at a time by `makeCase(i)` (so that only
+    /// one is in memory). Single-threaded; `progress` after each case.
+    std::vector<RoomBenchmarkScore> runCases(
+        std::size_t count,
+        const std::function<std::vector<RoomBenchmarkCase>(std::size_t)>& makeCases,
+        const io::ProgressCallback& progress = {}) const;
+
+    /// Every selected method on one case (the images of options().imageDir included).
+    std::vector<RoomBenchmarkScore> score(const RoomBenchmarkCase& c) const;
+
+    /// Per dataset, method, group and angle (and, with more than one angle, all angles
+    /// pooled).
     static std::vector<RoomBenchmarkSummary> summarize(
         const std::vector<RoomBenchmarkScore>& scores);
     /// Per-map table then the summary table (Markdown).
     static std::string table(const std::vector<RoomBenchmarkScore>& scores,
                              const std::vector<RoomBenchmarkSummary>& summary);
+    /// The summary only, one row per method and group (and angle) (Markdown).
+    static std::string summaryTable(const std::vector<RoomBenchmarkSummary>& summary);
     static std::string json(const std::vector<RoomBenchmarkScore>& scores,
                             const std::vector<RoomBenchmarkSummary>& summary,
                             const RoomBenchmarkOptions& options);
@@ -81,6 +105,9 @@ class RoomBenchmark {
 
   private:
     RoomBenchmarkOptions options_;
+    // One segmenter per variant for the whole run: it keeps its scratch images between calls,
+    // as an application that segments its maps again and again would.
+    RoomSegmenter virtualDoor_, virtualDoorPaper_;
 };
 
 }  // namespace toposlam::rooms

@@ -23,6 +23,7 @@
 
 #include <mrpt/math/TPose2D.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -49,11 +50,29 @@ class RoomSegmenter {
         DoorFilters::Options filters;
         /// Openings wider than a door that are room borders (deviation, WideOpeningDetector.h).
         WideOpeningDetector::Options wide;
+        /// Free-standing things inside the free space (furniture, pillars, shadows behind them:
+        /// non-free islands that do not reach the map's edge) belong to the room around them:
+        /// their cells take the room's id in the label image, and its area includes them
+        /// (deviation: the paper labels free cells only).
+        bool labelIslands = true;
+        /// With a trajectory, search from the medial axis too (deviation: the paper searches
+        /// the trajectory only, assuming the robot went through every door; a tour that visits
+        /// every room need not, e.g. through the second door of a room).
+        bool medialAxisWithTrajectory = true;
 
         /// The defaults: the paper plus TopoSLAM's documented deviations (DoorFilters.h).
         static Options improved() { return {}; }
         /// The paper's method as published: every deviation switched off.
         static Options paperExact();
+        /// Switches off every deviation of paperExact() (speck removal, local directions,
+        /// narrowest-of-group, smallest-first merging, wall-jamb, wall-end and constriction
+        /// tests, wide openings) and keeps every other value (door width, areas, Hough, ...):
+        /// `--paper` on top of an ini file. The one place that knows what "paper" means.
+        void applyPaperPreset();
+        /// The options of the apps' `-c file.ini [--paper]`: the built-in defaults, then the
+        /// [RoomSegmenter] section of `iniPath` when not empty (io::InputError when the file
+        /// does not exist), then applyPaperPreset() when `paper`.
+        static Options load(const std::string& iniPath, bool paper);
 
         /// Reads the keys of `section` (see config_ini/rooms.ini for names, units and
         /// defaults); `variant = paper` first resets to paperExact(). Keys not present keep
@@ -70,7 +89,8 @@ class RoomSegmenter {
         std::vector<LineSegment> lines;  ///< merged wall segments (pixels)
         MainDirections directions;
         bool fromTrajectory = false;             ///< search paths: trajectory or medial axis
-        std::vector<cv::Point> searchCells;      ///< pixels
+        std::vector<cv::Point> searchCells;      ///< pixels: trajectory cells, then medial axis
+        std::size_t trajectoryCells = 0;         ///< of searchCells, from the trajectory
         std::vector<VirtualDoor> candidates;     ///< step 4 output (pixels)
         std::vector<VirtualDoor> afterTests;     ///< after wall-jamb + constriction tests
         std::vector<VirtualDoor> wideOpenings;   ///< WideOpeningDetector's (also in afterTests)
@@ -101,6 +121,13 @@ class RoomSegmenter {
     const Options& options() const { return options_; }
 
   private:
+    using Lap = std::function<void(const char*)>;  // records the time of a stage
+    /// Steps 2-5 on the cropped `space`, leaving the partition in the workspace: the rooms
+    /// (diagnostics into `result`).
+    DoorFilters::Rooms findRooms(const FreeSpace& space,
+                                 const std::vector<mrpt::math::TPose2D>& trajectory, Result& result,
+                                 const Lap& lap) const;
+
     Options options_;
     // The steps with their scratch images, reused from call to call (no reallocation while the
     // map size stays the same). A segmenter is therefore not thread-safe: one per thread.

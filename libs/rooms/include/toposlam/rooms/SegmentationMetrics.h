@@ -28,6 +28,10 @@ struct GroundTruthRooms {
     int count = 0;
 };
 GroundTruthRooms groundTruthRooms(const cv::Mat& groundTruthGrey);
+/// Ground-truth rooms from a label image (CV_32S, 0 = no room, any other value a room, such as
+/// a rotated GroundTruthRooms::labels or a generated plan's rooms): the labels with more than
+/// 100 pixels, renumbered 1..count in order of their values; the others become 0.
+GroundTruthRooms groundTruthFromLabels(const cv::Mat& roomLabels);
 
 struct PrecisionRecall {
     double recall = 0;  ///< mean over GT rooms of best overlap / room area ("recall_micro")

@@ -16,7 +16,7 @@
 //     openingMargin on both sides: the opening is a waist between two wider spaces.
 // The found openings join the doors before the distance filter, which prefers the narrowest of
 // a group (a door in the same place wins), and the minimum-area filter, which merges through
-// the least door-like (widest) cut first.
+// the widest cut first.
 #include <toposlam/rooms/DoorFilters.h>
 #include <toposlam/rooms/DoorSearchPaths.h>
 #include <toposlam/rooms/FreeSpaceBinarizer.h>
@@ -49,7 +49,8 @@ class WideOpeningDetector {
     std::vector<VirtualDoor> detect(const FreeSpace& space, const Clearance& clearance,
                                     const std::vector<cv::Point>& pathCells,
                                     const std::vector<double>& directions,
-                                    const std::vector<LineSegment>& walls) const;
+                                    const std::vector<LineSegment>& walls,
+                                    const WallThickness* thickness = nullptr) const;
 
     const Options& options() const { return options_; }
 

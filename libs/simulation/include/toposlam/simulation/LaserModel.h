@@ -5,6 +5,7 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
+#include <toposlam/config/Options.h>
 #include <toposlam/simulation/RangeWorld.h>
 
 #include <cstddef>
@@ -13,7 +14,8 @@
 
 namespace toposlam::simulation {
 
-struct LaserModel {
+/// Section [Laser] of config_ini/sim-office.ini.
+struct LaserModel : public config::Options {
     std::size_t beams = 361;
     double aperture = M_PI;      ///< rad, angle from the first to the last beam
     double maxRange = 30.0;      ///< m; farther (or no) returns are invalid readings
@@ -23,6 +25,8 @@ struct LaserModel {
     bool rightToLeft = true;
     mrpt::poses::CPose3D sensorPose;  ///< laser pose in the robot frame
     std::string sensorLabel = "LASER";
+
+    void declare(config::OptionsSchema& s) override;
 };
 
 /// Simulates one scan taken with the robot at `robotPose` (world frame). The returned scan

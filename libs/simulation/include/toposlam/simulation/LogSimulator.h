@@ -5,6 +5,7 @@
 #include <mrpt/core/bits_math.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <toposlam/io/LaserLogReader.h>
+#include <toposlam/io/ProgressCallback.h>
 #include <toposlam/io/RawlogWriter.h>
 #include <toposlam/io/Trajectory.h>
 #include <toposlam/simulation/GridWorld.h>
@@ -63,12 +64,12 @@ class LogSimulator {
 
 /// Simulates the whole log and writes `rawlogPath` (in `format`; gzip when it ends in .gz) and
 /// the ground truth `groundTruthPath` ("timestamp x y yaw", io/Trajectory.h). Both files appear
-/// only if everything succeeded. Shows progress on a terminal when `showProgress`.
+/// only if everything succeeded. Reports progress after every scan (scans written).
 /// Returns the number of scans written.
 std::size_t simulateLogToFiles(const mrpt::maps::COccupancyGridMap2D& map,
                                const io::Trajectory2D& groundTruth,
                                const LogSimulationOptions& options, const std::string& rawlogPath,
                                io::RawlogFormat format, const std::string& groundTruthPath,
-                               bool showProgress = true);
+                               const io::ProgressCallback& progress = {});
 
 }  // namespace toposlam::simulation

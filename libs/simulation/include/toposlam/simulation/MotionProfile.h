@@ -6,13 +6,10 @@
 // time it has driven scanDistance or turned scanAngle since the last one.
 #include <mrpt/core/bits_math.h>
 #include <mrpt/math/TPoint2D.h>
+#include <toposlam/config/OptionsSchema.h>
 #include <toposlam/io/Trajectory.h>
 
 #include <vector>
-
-namespace mrpt::config {
-class CConfigFileBase;
-}
 
 namespace toposlam::simulation {
 
@@ -23,8 +20,9 @@ struct MotionOptions {
     double scanAngle = mrpt::DEG2RAD(15.0);    ///< rad turned between recorded scans
     double startTime = 1700000000.0;           ///< s (Unix time) of the first scan
 
-    /// Reads max_speed, max_turn_rate_deg, scan_distance, scan_angle_deg, start_time.
-    void loadFromConfig(const mrpt::config::CConfigFileBase& config, const std::string& section);
+    /// Keys max_speed, max_turn_rate_deg, scan_distance, scan_angle_deg, start_time (part of
+    /// [Tour], see TourOptions).
+    void declare(config::OptionsSchema& s);
 };
 
 /// The timed robot poses (world frame; stamps in s) at which scans are recorded while driving

@@ -6,6 +6,7 @@
 // them for two seconds, and step aside when it drives up to them (a person cornered by the
 // robot may still end up within the keep-out distance).
 #include <mrpt/math/TPoint2D.h>
+#include <toposlam/config/Options.h>
 #include <toposlam/simulation/ClearanceMap.h>
 #include <toposlam/simulation/GridPathPlanner.h>
 #include <toposlam/simulation/PolygonWorld.h>
@@ -20,7 +21,8 @@ class CConfigFileBase;
 
 namespace toposlam::simulation {
 
-struct PeopleOptions {
+/// Section [People] of config_ini/sim-office.ini.
+struct PeopleOptions : public config::Options {
     std::size_t count = 0;        ///< number of people
     double radius = 0.25;         ///< m (shoulder half-width)
     double minSpeed = 0.8;        ///< m/s; each walk picks a speed in [minSpeed, maxSpeed]
@@ -30,8 +32,7 @@ struct PeopleOptions {
     /// m between a person's centre and the robot's centre (robot radius + person radius + 0.1)
     double robotKeepOut = 0.6;
 
-    /// Reads count, radius, min_speed, max_speed, max_pause, max_trip_length, robot_keep_out.
-    void loadFromConfig(const mrpt::config::CConfigFileBase& config, const std::string& section);
+    void declare(config::OptionsSchema& s) override;
 };
 
 class MovingObstacles {

@@ -25,17 +25,16 @@
 // raw logs of real robots show.
 #include <mrpt/core/bits_math.h>
 #include <mrpt/poses/CPose2D.h>
+#include <toposlam/config/Options.h>
 
 #include <random>
 #include <string>
 
-namespace mrpt::config {
-class CConfigFileBase;
-}
-
 namespace toposlam::simulation {
 
-struct OdometryErrorModel {
+/// Section [Odometry] of config_ini/sim-office.ini: the file states the random errors as the
+/// standard deviation after one unit of motion (deg or m per sqrt(rad) / sqrt(m)).
+struct OdometryErrorModel : public config::Options {
     double distanceScale = 1.01;   ///< measured / true distance (1 = exact)
     double rotationScale = 1.015;  ///< measured / true rotation (1 = exact)
     /// rad of spurious rotation per metre driven (0.1 deg/m)
@@ -49,11 +48,7 @@ struct OdometryErrorModel {
 
     /// Perfect odometry: readings equal the true motion.
     static OdometryErrorModel exact();
-    /// Reads the keys of config_ini/sim-office.ini's [Odometry] section from `section`
-    /// (distance_scale, rotation_scale, curvature_deg_per_m, rot_std_deg_per_sqrt_rad,
-    /// rot_std_deg_per_sqrt_m, trans_std_m_per_sqrt_m, trans_std_m_per_sqrt_rad); keys that are
-    /// absent keep the current value.
-    void loadFromConfig(const mrpt::config::CConfigFileBase& config, const std::string& section);
+    void declare(config::OptionsSchema& s) override;
 };
 
 /// Integrates noisy odometry along the true motion of a robot.

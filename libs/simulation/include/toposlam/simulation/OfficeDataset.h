@@ -3,6 +3,7 @@
 // ground truth (room labels, doors), and a simulated robot log of a tour through every room
 // with its ground-truth trajectory. `toposlam-sim --make-office <dir>` calls this, so the bundled
 // data can always be regenerated bit for bit from the code and config_ini/sim-office.ini.
+#include <toposlam/io/ProgressCallback.h>
 #include <toposlam/simulation/SimulatorConfig.h>
 
 #include <string>
@@ -24,13 +25,15 @@ struct OfficeDataset {
 
 /// Writes into `dir` (created if needed):
 ///   office.gridmap.gz        the map (MRPT serialization)
-///   office.png, office.yaml  the same map as an image + ROS map_server metadata
+///   office.png               the same map as a picture (grey p(free))
+///   office.yaml, office.pgm  the same map as a ROS map_server pair (trinary)
 ///   office_rooms.png         ground-truth room labels: 8-bit, pixel = room id, 0 = none
 ///   office_rooms.json        rooms (id, name, kind, floor box) and doors (jambs, width, rooms)
 ///   office.rawlog            the simulated log (config.format; 'config' gives every parameter)
 ///   office_gt.txt            its ground-truth trajectory (timestamp x y yaw)
 ///   office_tour.png          a picture of the tour over the map
+/// `progress`: of the log's simulation (scans written).
 OfficeDataset writeOfficeDataset(const std::string& dir, const SimulatorConfig& config,
-                                 bool showProgress = true);
+                                 const io::ProgressCallback& progress = {});
 
 }  // namespace toposlam::simulation

@@ -1,11 +1,15 @@
 #pragma once
 // Every parameter of toposlam-sim in one place, with the defaults of config_ini/sim-office.ini
-// (the configuration of share/office's log), and how they are read from an .ini file.
+// (the configuration of share/office's log), and how they are read from an .ini file: one
+// config::Options struct per section, [Laser] LaserModel, [Odometry] OdometryErrorModel,
+// [People] PeopleOptions, [Tour] TourOptions, and [Simulation] this struct's own keys.
+#include <toposlam/config/Options.h>
 #include <toposlam/io/RawlogWriter.h>
 #include <toposlam/simulation/LogSimulator.h>
 #include <toposlam/simulation/TourPlanner.h>
 
 #include <string>
+#include <vector>
 
 namespace mrpt::config {
 class CConfigFileBase;
@@ -13,7 +17,7 @@ class CConfigFileBase;
 
 namespace toposlam::simulation {
 
-struct SimulatorConfig {
+struct SimulatorConfig : public config::Options {
     /// Laser: a Hokuyo UTM-30LX-class scanner (270 deg, 1 cm range noise) read out at 0.75 deg,
     /// 0.2 m ahead of the robot's centre and 0.3 m above the floor; odometry: see
     /// OdometryErrorModel; no people.
@@ -22,15 +26,20 @@ struct SimulatorConfig {
     io::RawlogFormat format = io::RawlogFormat::Observations;
 
     static LogSimulationOptions defaultLog();
+    /// The sections of a simulator .ini file.
+    static const std::vector<std::string>& sections();
+    /// [Simulation]: format, seed, odometry steps, occupancy thresholds of the map.
+    void declare(config::OptionsSchema& s) override;
 };
 
-/// Reads the sections [Laser], [Odometry], [People], [Tour], [Simulation] (keys documented in
+/// Reads the sections of SimulatorConfig::sections() (keys documented in
 /// config_ini/sim-office.ini) into `config`; absent keys keep their values. Throws
-/// std::invalid_argument for values out of range (e.g. fewer than 2 beams, an unknown format).
+/// config::ConfigError for an unknown section or key, or a bad value.
 void loadSimulatorConfig(const mrpt::config::CConfigFileBase& ini, SimulatorConfig& config);
 
-/// Checks ranges of the values a user can set (beams >= 2, 0 < aperture <= 2 pi, ranges > 0,
-/// noise >= 0, speeds > 0, ...); throws std::invalid_argument naming the offending parameter.
+/// Checks every value against its declared range (beams >= 2, 0 < field of view <= 360 deg,
+/// 0 <= min range < max range, noise >= 0, speeds > 0, ...); throws config::ConfigError naming
+/// the section and key.
 void validate(const SimulatorConfig& config);
 
 /// "sf" / "obs" (also the enum names' spellings "sensoryframes" / "observations").

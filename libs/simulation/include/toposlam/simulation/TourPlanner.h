@@ -4,6 +4,7 @@
 // consecutive ones (GridPathPlanner), smooth it (PathSmoother) and drive it (MotionProfile),
 // which gives the timed poses at which the laser records.
 #include <mrpt/math/TPose2D.h>
+#include <toposlam/config/Options.h>
 #include <toposlam/io/Trajectory.h>
 #include <toposlam/simulation/ClearanceMap.h>
 #include <toposlam/simulation/GridPathPlanner.h>
@@ -13,13 +14,10 @@
 #include <optional>
 #include <vector>
 
-namespace mrpt::config {
-class CConfigFileBase;
-}
-
 namespace toposlam::simulation {
 
-struct TourOptions {
+/// Section [Tour] of config_ini/sim-office.ini (`start` is no key: toposlam-sim --start).
+struct TourOptions : public config::Options {
     double robotRadius = 0.25;        ///< m
     double safetyMargin = 0.05;       ///< m kept between the robot's outline and any obstacle
     double preferredClearance = 0.8;  ///< m; see PathCostOptions
@@ -35,9 +33,7 @@ struct TourOptions {
     PathCostOptions pathCost() const {
         return {robotRadius + safetyMargin, preferredClearance, clearanceWeight};
     }
-    /// Reads robot_radius, safety_margin, preferred_clearance, clearance_weight,
-    /// door_width_max, min_area_m2, smoothing_sigma, return_to_start, and MotionOptions' keys.
-    void loadFromConfig(const mrpt::config::CConfigFileBase& config, const std::string& section);
+    void declare(config::OptionsSchema& s) override;
 };
 
 struct Tour {

@@ -1,0 +1,26 @@
+#pragma once
+// Opening an options file for the apps. MRPT's CConfigFile reads anything (random bytes, a
+// missing file) without complaint; openIniFile() first checks that the file is there and is
+// an .ini file at all, so that options never silently fall back to their defaults:
+//  - every line is blank, a comment (# ; //), a [section] or key = value;
+//  - no key outside a section, no key twice in a section, no control characters, UTF-8.
+// Errors are ConfigError naming the file (and the line).
+#include <mrpt/config/CConfigFile.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace toposlam::config {
+
+/// The checked file, read by MRPT (nothing is ever written back to it).
+std::unique_ptr<mrpt::config::CConfigFile> openIniFile(const std::string& path);
+
+/// Throws ConfigError unless `config` has [section] (naming the nearest section it has).
+void requireSection(const mrpt::config::CConfigFileBase& config, const std::string& section);
+
+/// Throws ConfigError for a section of `config` not in `known` (naming the nearest known one).
+void requireKnownSections(const mrpt::config::CConfigFileBase& config,
+                          const std::vector<std::string>& known);
+
+}  // namespace toposlam::config

@@ -1,0 +1,44 @@
+#include <toposlam/io/MapConversion.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+
+namespace toposlam::io {
+
+bool isGridMapPath(const std::string& path) {
+    std::string p = path;
+    std::transform(p.begin(), p.end(), p.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    for (const std::string ext : {".gridmap", ".gridmap.gz", ".yaml", ".yml", ".png", ".pgm",
+                                  ".bmp", ".jpg", ".jpeg", ".tif", ".tiff"}) {
+        if (p.size() >= ext.size() && p.compare(p.size() - ext.size(), ext.size(), ext) == 0)
+            return true;
+    }
+    return false;
+}
+
+MapConversionSummary convertGridMap(const std::string& inputPath, const std::string& outputPath,
+                                    const std::optional<GridMapGeometry>& geometry) {
+    const auto map = loadGridMap(inputPath, geometry);
+    saveGridMap(map, outputPath);
+    MapConversionSummary s;
+    s.sizeX = map.getSizeX();
+    s.sizeY = map.getSizeY();
+    s.resolution = map.getResolution();
+    s.originX = map.getXMin();
+    s.originY = map.getYMin();
+    s.freeCells = countFreeCells(map);
+    return s;
+}
+
+std::string describe(const MapConversionSummary& s, const std::string& inputPath,
+                     const std::string& outputPath) {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  ": %u x %u cells of %.4g m, origin (%.6g, %.6g) m, %zu free cells -> ", s.sizeX,
+                  s.sizeY, s.resolution, s.originX, s.originY, s.freeCells);
+    return inputPath + text + outputPath;
+}
+
+}  // namespace toposlam::io

@@ -1,0 +1,40 @@
+#pragma once
+// How thick the building's walls are, measured on the map: from every free cell next to an
+// obstacle, walk into the obstacle along the clearance gradient (across the wall, whatever its
+// direction on the grid) to the next free cell. The obstacle runs between two free cells are
+// wall thicknesses (or furniture plus the wall it stands against); walls are by far the longest
+// obstacle boundary of a building, so the thicknesses its walls have are the frequent ones.
+// Outer walls (unknown space behind them) give no run.
+//
+// TopoSLAM uses it to tell a wall end from a cabinet, a fridge or a shelf standing against a
+// wall (DoorFilters, wall-end test): a wall end is as thick as the building's walls are.
+#include <toposlam/rooms/DoorSearchPaths.h>
+#include <toposlam/rooms/FreeSpaceBinarizer.h>
+
+#include <vector>
+
+namespace toposlam::rooms {
+
+class WallThickness {
+  public:
+    /// Measures the runs of space.free (`clearance` of space.free) up to `maxThickness` m.
+    void measure(const FreeSpace& space, const Clearance& clearance, double maxThickness);
+    /// Forgets the measurement: every thickness up to the maximum is a wall's.
+    void clear() { counts_.clear(); }
+
+    /// Whether an obstacle `cells` thick is as thick as this building's walls: within a cell
+    /// of the most frequent run, or itself at least `minShare` as frequent as it (counts
+    /// summed over a cell either way). Without a measurement (or no run): true.
+    bool isWallThickness(double cells, double minShare = 0.25) const;
+    /// The most frequent run (cells); 0 without one.
+    int mostFrequent() const { return mode_; }
+    /// Runs per length in cells (index = obstacle cells crossed).
+    const std::vector<double>& counts() const { return counts_; }
+
+  private:
+    double smoothed(int cells) const;
+    std::vector<double> counts_;
+    int mode_ = 0;
+};
+
+}  // namespace toposlam::rooms

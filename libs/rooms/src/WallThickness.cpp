@@ -1,0 +1,67 @@
+#include <toposlam/rooms/WallThickness.h>
+
+#include "GridRay.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace toposlam::rooms {
+
+void WallThickness::measure(const FreeSpace& space, const Clearance& clearance,
+                            double maxThickness) {
+    const cv::Mat& free = space.free;
+    const cv::Mat& d = clearance.distances();
+    const int cap =
+        static_cast<int>(std::ceil(detail::toCells(maxThickness, space.frame.resolution))) + 2;
+    counts_.assign(static_cast<std::size_t>(cap) + 2, 0.0);
+    auto isFree = [&](int x, int y) { return detail::isSet(free, x, y); };
+    for (int r = 1; r + 1 < free.rows; ++r) {
+        const auto* row = free.ptr<std::uint8_t>(r);
+        const float* dist = d.ptr<float>(r);
+        for (int c = 1; c + 1 < free.cols; ++c) {
+            // Free cells next to an obstacle (clearance 1: a 4-neighbour is not free).
+            if (row[c] == 0 || dist[c] > 1.0f)
+                continue;
+            // Into the obstacle: against the clearance gradient (central differences).
+            const double gx = dist[c + 1] - dist[c - 1];
+            const double gy = d.at<float>(r + 1, c) - d.at<float>(r - 1, c);
+            const double norm = std::hypot(gx, gy);
+            if (norm < 1e-6)
+                continue;
+            cv::Point hit;
+            if (!detail::walkRay({c, r}, -gx / norm, -gy / norm, cap, isFree, hit))
+                continue;
+            const double run = std::hypot(hit.x - c, hit.y - r) - 1.0;  // obstacle cells crossed
+            if (run >= 0.5)  // shorter: a diagonal gap, not an obstacle
+                counts_[static_cast<std::size_t>(std::lround(run))] += 1.0;
+        }
+    }
+    mode_ = 0;
+    double best = 0;
+    for (int k = 1; k + 1 < static_cast<int>(counts_.size()); ++k) {
+        if (smoothed(k) > best) {
+            best = smoothed(k);
+            mode_ = k;
+        }
+    }
+}
+
+double WallThickness::smoothed(int k) const {
+    auto at = [&](int i) {
+        return i >= 0 && i < static_cast<int>(counts_.size()) ? counts_[static_cast<std::size_t>(i)]
+                                                              : 0.0;
+    };
+    return at(k - 1) + 2 * at(k) + at(k + 1);
+}
+
+bool WallThickness::isWallThickness(double cells, double minShare) const {
+    if (mode_ == 0)
+        return true;
+    const int k = static_cast<int>(std::lround(cells));
+    if (std::abs(k - mode_) <= 1)
+        return true;
+    return smoothed(k) >= minShare * smoothed(mode_);
+}
+
+}  // namespace toposlam::rooms

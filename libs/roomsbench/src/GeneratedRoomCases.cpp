@@ -1,0 +1,47 @@
+#include <toposlam/roomsbench/GeneratedRoomCases.h>
+#include <toposlam/simulation/FloorPlanGenerator.h>
+
+#include <cstdio>
+
+namespace toposlam::roomsbench {
+
+const std::vector<unsigned>& b4GenSeeds() {
+    static const std::vector<unsigned> seeds = [] {
+        std::vector<unsigned> s;
+        for (unsigned k = 1; k <= 20; ++k)
+            s.push_back(k);
+        return s;
+    }();
+    return seeds;
+}
+
+std::string generatedPlanName(unsigned seed) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "gen%02u", seed);
+    return buf;
+}
+
+std::vector<rooms::RoomBenchmarkCase> casesOfDrawing(const simulation::FloorPlanImages& images,
+                                                     const std::string& name) {
+    const cv::Mat free = images.map == 255;
+    const cv::Mat furnished = images.furnished == 255;
+    return {rooms::drawnCase("gen", name, false, images.rotationDeg, free, free, images.rooms,
+                             images.resolution),
+            rooms::drawnCase("gen", name + "_furnitures", true, images.rotationDeg, furnished, free,
+                             images.rooms, images.resolution)};
+}
+
+std::vector<rooms::RoomBenchmarkCase> generatedCases(unsigned seed,
+                                                     const std::vector<double>& rotationsDeg) {
+    const simulation::GeneratedFloorPlan plan = simulation::generateFloorPlan(seed);
+    std::vector<rooms::RoomBenchmarkCase> cases;
+    for (const double angle : rotationsDeg) {
+        for (auto& c : casesOfDrawing(simulation::drawFloorPlan(plan, 0.05, angle),
+                                      generatedPlanName(seed))) {
+            cases.push_back(std::move(c));
+        }
+    }
+    return cases;
+}
+
+}  // namespace toposlam::roomsbench

@@ -1,0 +1,99 @@
+#include <toposlam/roomsbench/GeneratedRoomCases.h>
+#include <toposlam/roomsbench/RoomBenchmarkSuite.h>
+
+#include <toposlam/io/JsonFile.h>
+
+#include <cstdio>
+#include <stdexcept>
+
+namespace toposlam::roomsbench {
+
+RoomBenchmarkSuiteResult runRoomBenchmarkSuite(const RoomBenchmarkSuiteOptions& options,
+                                               const io::ProgressCallback& progress) {
+    const rooms::RoomBenchmark bench(options.bench);
+    const auto& o = bench.options();
+    const std::size_t bormann = options.bormann ? o.maps.size() : 0;
+    const std::size_t generated = options.generatedSeeds.size();
+    const std::size_t endToEnd = options.endToEndSeeds.size() + options.endToEndBormannMaps.size();
+    const std::size_t total = bormann + generated + endToEnd;
+    if (total == 0)
+        throw std::invalid_argument(
+            "nothing to run: no Bormann map, generated plan or end-to-end plan");
+    if (endToEnd > 0 && options.endToEnd.slamConfig == nullptr)
+        throw std::invalid_argument("the end-to-end set needs a SLAM configuration");
+    // Each set reports its part of the whole.
+    auto part = [&](std::size_t before, std::size_t count) -> io::ProgressCallback {
+        if (!progress)
+            return {};
+        return [&progress, before, count, total](double fraction, std::size_t) {
+            const double done = static_cast<double>(before) + fraction * static_cast<double>(count);
+            progress(done / static_cast<double>(total), static_cast<std::size_t>(done));
+        };
+    };
+    RoomBenchmarkSuiteResult result;
+    auto append = [&](const std::vector<rooms::RoomBenchmarkScore>& s) {
+        result.scores.insert(result.scores.end(), s.begin(), s.end());
+    };
+    if (bormann > 0)
+        append(bench.run(part(0, bormann)));
+    append(bench.runCases(
+        generated,
+        [&](std::size_t i) { return generatedCases(options.generatedSeeds[i], o.rotationsDeg); },
+        part(bormann, generated)));
+    if (endToEnd > 0) {
+        const auto plans =
+            plansToTour(options.endToEndSeeds, options.endToEndBormannMaps, o.dataDir);
+        append(bench.runCases(
+            plans.size(),
+            [&](std::size_t i) {
+                EndToEndRecord record{plans[i].name, {}};
+                auto slam = endToEndCase(plans[i], options.endToEnd, record.run);
+                result.endToEnd.push_back(record);
+                std::vector<rooms::RoomBenchmarkCase> cases;
+                cases.push_back(drawnPlanCase(plans[i]));
+                cases.push_back(std::move(slam));
+                return cases;
+            },
+            part(bormann + generated, endToEnd)));
+    }
+    result.summary = rooms::RoomBenchmark::summarize(result.scores);
+    return result;
+}
+
+std::string suiteTable(const RoomBenchmarkSuiteResult& result) {
+    std::string text = rooms::RoomBenchmark::table(result.scores, result.summary);
+    if (result.endToEnd.empty())
+        return text;
+    text +=
+        "\n| plan | scans | tour m | SLAM s | SLAM -> plan (x m, y m, yaw °) | trajectory RMSE m "
+        "|\n"
+        "|---|---|---|---|---|---|\n";
+    char buf[256];
+    for (const auto& e : result.endToEnd) {
+        std::snprintf(buf, sizeof buf, "| %s | %zu | %.0f | %.1f | %.2f, %.2f, %.1f | %.3f |\n",
+                      e.map.c_str(), e.run.scans, e.run.tourLength, e.run.slamSeconds,
+                      e.run.slamToPlan.x, e.run.slamToPlan.y, e.run.slamToPlan.phi * 180 / M_PI,
+                      e.run.alignmentRmse);
+        text += buf;
+    }
+    return text;
+}
+
+std::string suiteJson(const RoomBenchmarkSuiteResult& result,
+                      const RoomBenchmarkSuiteOptions& options) {
+    io::Json j = io::parseJson(rooms::RoomBenchmark::json(result.scores, result.summary, options.bench), "B4 report");
+    j["generated_seeds"] = options.generatedSeeds;
+    j["end_to_end"] = io::Json::array();
+    for (const auto& e : result.endToEnd) {
+        j["end_to_end"].push_back(
+            {{"map", e.map},
+             {"scans", e.run.scans},
+             {"tour_length_m", e.run.tourLength},
+             {"slam_seconds", e.run.slamSeconds},
+             {"slam_to_plan", {e.run.slamToPlan.x, e.run.slamToPlan.y, e.run.slamToPlan.phi}},
+             {"alignment_rmse_m", e.run.alignmentRmse}});
+    }
+    return io::formatJson(j);
+}
+
+}  // namespace toposlam::roomsbench

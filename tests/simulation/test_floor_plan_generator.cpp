@@ -1,0 +1,125 @@
+// The furnished floor-plan generator of B4-gen and its drawings: the same seed gives the same
+// plan; every plan is a closed building whose rooms are all reachable, doors join two rooms
+// and stay clear of furniture; drawings at an angle keep every room's area and the doors.
+#include <toposlam/simulation/FloorPlanGenerator.h>
+#include <toposlam/simulation/FloorPlanImages.h>
+
+#include "TestSupport.h"
+
+#include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <set>
+
+using namespace toposlam::simulation;
+
+namespace {
+
+// Pixels per ground-truth room.
+std::map<int, int> roomAreas(const cv::Mat& rooms) {
+    std::map<int, int> areas;
+    for (int r = 0; r < rooms.rows; ++r) {
+        for (int c = 0; c < rooms.cols; ++c) {
+            if (rooms.at<int>(r, c) > 0)
+                ++areas[rooms.at<int>(r, c)];
+        }
+    }
+    return areas;
+}
+
+// The labels of the 4-connected free region of `free` (CV_8U) that holds the most pixels.
+cv::Mat largestRegion(const cv::Mat& free) {
+    cv::Mat labels, stats, centroids;
+    const int n = cv::connectedComponentsWithStats(free, labels, stats, centroids, 4, CV_32S);
+    int best = 1;
+    for (int i = 2; i < n; ++i) {
+        if (stats.at<int>(i, cv::CC_STAT_AREA) > stats.at<int>(best, cv::CC_STAT_AREA))
+            best = i;
+    }
+    return labels == best;
+}
+
+}  // namespace
+
+TEST(FloorPlanGenerator, SameSeedSamePlan) {
+    const auto a = generateFloorPlan(5), b = generateFloorPlan(5), c = generateFloorPlan(6);
+    EXPECT_EQ(a.summary, b.summary);
+    EXPECT_EQ(a.plan.furnitureBoxes().size(), b.plan.furnitureBoxes().size());
+    EXPECT_EQ(a.plan.doors().size(), b.plan.doors().size());
+    EXPECT_NE(a.summary, c.summary);
+    EXPECT_TRUE(a.unfurnished.furnitureBoxes().empty());
+}
+
+TEST(FloorPlanGenerator, RoomsAreReachableAndDoorsClear) {
+    for (unsigned seed = 1; seed <= 20; ++seed) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        const auto plan = generateFloorPlan(seed);
+        const auto images = drawFloorPlan(plan);
+        EXPECT_GE(plan.roomCount, 5);
+        const auto areas = roomAreas(images.rooms);
+        EXPECT_EQ(static_cast<int>(areas.size()), plan.roomCount);
+        for (const auto& [room, pixels] : areas)
+            EXPECT_GT(pixels * 0.05 * 0.05, 2.0) << "room " << room;
+        // Every room is reached, through doors only, in the furnished building.
+        const cv::Mat reached = largestRegion(images.furnished == 255);
+        std::set<int> reachedRooms;
+        for (int r = 0; r < reached.rows; ++r) {
+            for (int c = 0; c < reached.cols; ++c) {
+                if (reached.at<std::uint8_t>(r, c) != 0 && images.rooms.at<int>(r, c) > 0)
+                    reachedRooms.insert(images.rooms.at<int>(r, c));
+            }
+        }
+        EXPECT_EQ(static_cast<int>(reachedRooms.size()), plan.roomCount);
+        // Doors join two rooms, and their openings are free of furniture.
+        for (const auto& d : images.doors) {
+            EXPECT_NE(d.roomA, d.roomB);
+            EXPECT_GE(d.width, 0.8 - 1e-9);
+            const cv::Point middle(cvRound(0.5f * (d.jambA.x + d.jambB.x)),
+                                   cvRound(0.5f * (d.jambA.y + d.jambB.y)));
+            EXPECT_EQ(images.furnished.at<std::uint8_t>(middle), 255);
+        }
+        // The building is closed: nothing free on the image border.
+        EXPECT_EQ(cv::countNonZero(images.map.row(0) == 255), 0);
+        EXPECT_EQ(cv::countNonZero(images.map.col(0) == 255), 0);
+    }
+}
+
+TEST(FloorPlanGenerator, DrawingAtAnAngleKeepsRoomsAndDoors) {
+    const auto plan = generateFloorPlan(3);
+    const auto upright = drawFloorPlan(plan);
+    const auto turned = drawFloorPlan(plan, 0.05, 30);
+    const auto a = roomAreas(upright.rooms), b = roomAreas(turned.rooms);
+    ASSERT_EQ(a.size(), b.size());
+    for (const auto& [room, pixels] : a)
+        EXPECT_NEAR(b.at(room), pixels, 0.03 * pixels + 40) << "room " << room;
+    ASSERT_EQ(upright.doors.size(), turned.doors.size());
+    for (std::size_t i = 0; i < turned.doors.size(); ++i) {
+        const auto& d = turned.doors[i];
+        // Jambs 'width' apart, and the plan point of a jamb pixel is the jamb.
+        EXPECT_NEAR(std::hypot(d.jambA.x - d.jambB.x, d.jambA.y - d.jambB.y) * 0.05, d.width,
+                    1e-4);  // jambs are stored as float pixels
+        const auto p = turned.toPlan(d.jambA.x, d.jambA.y);
+        EXPECT_NEAR(p.x, plan.plan.doors()[i].jambA.x, 1e-4);
+        EXPECT_NEAR(p.y, plan.plan.doors()[i].jambA.y, 1e-4);
+    }
+}
+
+TEST(FloorPlanGenerator, SavesTheBenchmarkFiles) {
+    const toposlam::test::TempDir dir;
+    const auto images = drawFloorPlan(generateFloorPlan(2));
+    const auto files = saveFloorPlanImages(images, dir.path(), "plan");
+    ASSERT_EQ(files.size(), 4u);
+    for (const auto& f : files)
+        EXPECT_TRUE(std::filesystem::is_regular_file(f)) << f;
+    // The ground-truth image's white 8-connected regions are the rooms (Bormann's reading).
+    const cv::Mat truth = cv::imread(dir.file("plan_gt_segmentation.png"), cv::IMREAD_GRAYSCALE);
+    cv::Mat labels;
+    const int n = cv::connectedComponents(truth > 250, labels, 8, CV_32S) - 1;
+    EXPECT_EQ(n, generateFloorPlan(2).roomCount);
+    const cv::Mat map = cv::imread(dir.file("plan_furnitures.png"), cv::IMREAD_GRAYSCALE);
+    EXPECT_EQ(cv::countNonZero(map != images.furnished), 0);
+}

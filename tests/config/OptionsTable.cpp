@@ -6,6 +6,7 @@
 #include <toposlam/mapping/OccupancyGridBuilder.h>
 #include <toposlam/matching/CGraphMatcherAlignment.h>
 #include <toposlam/matching/CScanFeaturesMap.h>
+#include <toposlam/rooms/RoomSegmenter.h>
 #include <toposlam/simulation/SimulatorConfig.h>
 
 #include <TestSupport.h>
@@ -31,6 +32,7 @@ const std::map<std::string, OptionsFactory>& sectionStructs() {
         {"OccupancyGrid", make<mapping::OccupancyGridOptions>()},
         {"GraphSlam", make<mapping::GraphSlamOptions>()},
         {"Slam", make<mapping::SlamEngineOptions>()},
+        {"RoomSegmenter", make<rooms::RoomSegmenter::Options>()},
     };
     return table;
 }
@@ -59,11 +61,6 @@ bool isMrptSection(const std::string& section) {
     // [RangeBearingKFSLAM*]: kf-slam's filter.
     return section == "ICP" || section.rfind("MappingApplication", 0) == 0 ||
            section.rfind("RangeBearingKFSLAM", 0) == 0;
-}
-
-const std::set<std::string>& pendingSections() {
-    static const std::set<std::string> pending = {"RoomSegmenter"};
-    return pending;
 }
 
 std::vector<std::string> configFiles() {

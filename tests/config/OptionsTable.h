@@ -27,10 +27,6 @@ OptionsFactory structOfSection(const std::string& section);
 /// definitions): not ours to check.
 bool isMrptSection(const std::string& section);
 
-/// Sections not converted yet (owned by work in progress elsewhere), listed so that nothing
-/// else slips by.
-const std::set<std::string>& pendingSections();
-
 /// config_ini/*.ini, sorted.
 std::vector<std::string> configFiles();
 

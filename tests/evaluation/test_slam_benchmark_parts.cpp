@@ -222,8 +222,8 @@ TEST(MapComparisonImage, PanelsSideBySideAtOneScale) {
     cv::imwrite(dir.file("fine.png"), fine);
     cv::imwrite(dir.file("coarse.png"), coarse);
     const std::string out = dir.file("maps.png");
-    saveMapComparison({{"fine", dir.file("fine.png"), 0.05},
-                       {"coarse", dir.file("coarse.png"), 0.10},
+    saveMapComparison({{"fine", dir.file("fine.png"), 0.05, 0, ""},
+                       {"coarse", dir.file("coarse.png"), 0.10, 0, ""},
                        {"failed", "", 0.05, 0, "failed: exit status 1"}},
                       "heading", out);
     const cv::Mat image = cv::imread(out);
@@ -231,7 +231,7 @@ TEST(MapComparisonImage, PanelsSideBySideAtOneScale) {
     // Each mapped part (100 x 50 px at 0.05 m) plus its 10 px border, and the grey box.
     EXPECT_GE(image.cols, 2 * 120 + 300);
     EXPECT_GE(image.rows, 70);
-    EXPECT_THROW(saveMapComparison({{"x", dir.file("none.png"), 0.05}}, "h", out),
+    EXPECT_THROW(saveMapComparison({{"x", dir.file("none.png"), 0.05, 0, ""}}, "h", out),
                  std::runtime_error);
     EXPECT_THROW(saveMapComparison({}, "h", out), std::invalid_argument);
 }
@@ -260,9 +260,9 @@ TEST(MapComparisonImage, TurnsPicturesBeforeCropping) {
     bar(cv::Rect(50, 90, 100, 20)).setTo(255);  // 100 px wide, 20 px high
     cv::imwrite(dir.file("bar.png"), bar);
     const std::string out = dir.file("turned.png");
-    saveMapComparison({{"t", dir.file("bar.png"), 0.05, 0.0}}, "", out);
+    saveMapComparison({{"t", dir.file("bar.png"), 0.05, 0.0, ""}}, "", out);
     const cv::Mat flat = cv::imread(out);
-    saveMapComparison({{"t", dir.file("bar.png"), 0.05, M_PI / 2}}, "", out);
+    saveMapComparison({{"t", dir.file("bar.png"), 0.05, M_PI / 2, ""}}, "", out);
     const cv::Mat upright = cv::imread(out);
     ASSERT_FALSE(flat.empty());
     ASSERT_FALSE(upright.empty());

@@ -1,6 +1,7 @@
 // RoomSegmenter on drawn floor plans with exact ground truth (DrawnMaps.h): room count, doors
 // and which room each ground-truth room point falls in; maps without doors, one room, an
 // open-plan hall, furniture, noise, a rotated building, with and without trajectory; bad maps.
+#include <toposlam/config/ConfigError.h>
 #include <toposlam/io/InputError.h>
 #include <toposlam/rooms/RoomSegmenter.h>
 
@@ -240,7 +241,7 @@ TEST(RoomSegmenter, PaperPresetSwitchesOffEveryDeviationAndKeepsTheRest) {
     const toposlam::test::TempDir dir;
     {
         std::ofstream ini(dir.file("rooms.ini"));
-        ini << "[RoomSegmenter]\nvariant = improved\ndoorWidth = 0.95\nwideOpenings = true\n";
+        ini << "[RoomSegmenter]\nvariant = improved\ndoor_width = 0.95\nwide_openings = true\n";
     }
     const auto loaded = RoomSegmenter::Options::load(dir.file("rooms.ini"), true);
     EXPECT_EQ(loaded.door.doorWidth, 0.95);
@@ -248,16 +249,16 @@ TEST(RoomSegmenter, PaperPresetSwitchesOffEveryDeviationAndKeepsTheRest) {
     EXPECT_EQ(loaded.freeSpace.maxSpeckArea, 0.0);
     EXPECT_TRUE(RoomSegmenter::Options::load(dir.file("rooms.ini"), false).wide.enabled);
     EXPECT_THROW(RoomSegmenter::Options::load(dir.file("missing.ini"), false),
-                 toposlam::io::InputError);
+                 toposlam::config::ConfigError);
 }
 
 TEST(RoomSegmenter, OptionsOutOfRangeAreRejected) {
     RoomSegmenter::Options o;
     o.door.doorWidthTolerance = o.door.doorWidth + 0.1;
-    EXPECT_THROW(RoomSegmenter{o}, std::invalid_argument);
+    EXPECT_THROW(RoomSegmenter{o}, toposlam::config::ConfigError);
     o = RoomSegmenter::Options();
     o.filters.minRoomArea = -1;
-    EXPECT_THROW(RoomSegmenter{o}, std::invalid_argument);
+    EXPECT_THROW(RoomSegmenter{o}, toposlam::config::ConfigError);
 }
 
 TEST(RoomSegmenter, LabelsRoomsAndDoorsAreConsistent) {

@@ -76,7 +76,6 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
     if (firstActiveSubmap_ < submaps_.size()) {
         p.submap = &submaps_[firstActiveSubmap_];
         p.inSubmap = predicted - graph_.pose(p.submap->anchor());
-
     }
     return p;
 }
@@ -134,7 +133,6 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
             break;
     }
     const CPose2D pose = graph_.pose(r.reference) + r.pose;
-                current_.x(), current_.y(), current_.phi()*57.3, odometryIncrement ? odometryIncrement->x() : -99., odometryIncrement ? odometryIncrement->y() : -99., odometryIncrement ? odometryIncrement->phi()*57.3 : -99., pose.x(), pose.y(), pose.phi()*57.3);
     const CPose2D step = pose - current_;
     lastMotion_ = step;
     travelled_ += step.norm();

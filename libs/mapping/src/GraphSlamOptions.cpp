@@ -1,12 +1,20 @@
 #include <toposlam/features/FeatureExtractor.h>
 #include <toposlam/mapping/GraphSlamOptions.h>
 
-#include <algorithm>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace toposlam::mapping {
 
 void GraphSlamOptions::declare(config::OptionsSchema& s) {
-    // Front end: keyframes and local submaps.
+    declareFrontEnd(s);
+    declareLoopClosure(s);
+    declareBackEnd(s);
+}
+
+void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
+    // Keyframes and local submaps.
     s.real("keyframe_distance", keyframeDistance, "m", "a keyframe every this much travel ...")
         .above(0);
     s.angle("keyframe_angle", keyframeAngle, "... or this much turn").above(0).atMost(180);
@@ -21,8 +29,7 @@ void GraphSlamOptions::declare(config::OptionsSchema& s) {
     s.real("map_fuse_distance", mapFuseDistance, "m",
            "observations this close to a map point are fused into it")
         .above(0);
-    s.real("map_max_range", mapMaxRange, "m", "farther readings are not put into submaps")
-        .above(0);
+    s.real("map_max_range", mapMaxRange, "m", "farther readings are not put into submaps").above(0);
     // Front end: registration.
     s.integer("icp_max_iterations", icpMaxIterations, "", "point-to-line ICP iterations at most")
         .within(1, 1000);
@@ -58,7 +65,14 @@ void GraphSlamOptions::declare(config::OptionsSchema& s) {
            "registration edges: smallest position sigma (ICP's own is too confident)")
         .above(0);
     s.angle("edge_min_sigma_phi", edgeMinSigmaPhi, "... and heading sigma").above(0);
-    // Loop closure.
+    std::vector<std::pair<std::string, std::string>> extractors;
+    for (const std::string& name : features::featureExtractorNames())
+        extractors.emplace_back(name, name);
+    s.choice("extractor", extractor, extractors,
+             "feature extractor of the keyframes; its options come from its own section");
+}
+
+void GraphSlamOptions::declareLoopClosure(config::OptionsSchema& s) {
     s.flag("loop_closure", loopClosure, "search, verify and add loop edges");
     s.real("loop_min_travel", loopMinTravel, "m",
            "older keyframes are candidates beyond this travel along the trajectory")
@@ -105,7 +119,9 @@ void GraphSlamOptions::declare(config::OptionsSchema& s) {
            "two loops agree when their cycle closes within this ...")
         .above(0);
     s.angle("loop_pair_angle_tolerance", loopPairAngleTolerance, "... and this").above(0);
-    // Back end.
+}
+
+void GraphSlamOptions::declareBackEnd(config::OptionsSchema& s) {
     s.real("loop_loss_scale", loopLossScale, "sigmas",
            "Cauchy loss on loop edges (0: plain least squares)")
         .atLeast(0);
@@ -115,13 +131,11 @@ void GraphSlamOptions::declare(config::OptionsSchema& s) {
     s.real("optimize_trigger_distance", optimizeTriggerDistance, "m",
            "a loop disagreeing by more is optimised at once over the recent window ...")
         .atLeast(0);
-    s.angle("optimize_trigger_angle", optimizeTriggerAngle, "... or by more than this")
-        .atLeast(0);
+    s.angle("optimize_trigger_angle", optimizeTriggerAngle, "... or by more than this").atLeast(0);
     s.real("optimize_global_distance", optimizeGlobalDistance, "m",
            "a loop disagreeing by more is optimised over the whole graph ...")
         .atLeast(0);
-    s.angle("optimize_global_angle", optimizeGlobalAngle, "... or by more than this")
-        .atLeast(0);
+    s.angle("optimize_global_angle", optimizeGlobalAngle, "... or by more than this").atLeast(0);
     s.integer("optimize_every_loops", optimizeEveryLoops, "loops",
               "agreeing loops are optimised once this many have come")
         .within(1, 100000);
@@ -131,14 +145,6 @@ void GraphSlamOptions::declare(config::OptionsSchema& s) {
     s.integer("optimize_global_every", optimizeGlobalEvery, "keyframes",
               "the whole graph is optimised every this many keyframes with loops, and at the end")
         .within(1, 1000000);
-    s.text("extractor", extractor,
-           "feature extractor of the keyframes; its options come from its own section");
-    s.require(
-        [this] {
-            const auto& names = features::featureExtractorNames();
-            return std::find(names.begin(), names.end(), extractor) != names.end();
-        },
-        "extractor", "must be one of the feature extractors (corners, segments, ...)");
 }
 
 }  // namespace toposlam::mapping

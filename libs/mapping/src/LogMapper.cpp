@@ -17,9 +17,8 @@
 namespace toposlam::mapping {
 
 void SlamEngineOptions::declare(config::OptionsSchema& s) {
-    s.text("engine", engine, "graph (TopoSLAM's graph SLAM) or icp (MRPT's icp-slam engine)");
-    s.require([this] { return engine == "graph" || engine == "icp"; }, "engine",
-              "must be graph or icp");
+    s.choice<std::string>("engine", engine, {{"graph", "graph"}, {"icp", "icp"}},
+                          "graph (TopoSLAM's graph SLAM) or icp (MRPT's icp-slam engine)");
 }
 
 using mrpt::poses::CPose2D;

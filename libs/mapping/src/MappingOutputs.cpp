@@ -2,6 +2,8 @@
 #include <mrpt/serialization/CArchive.h>
 #include <toposlam/io/AtomicFile.h>
 #include <toposlam/io/GridMapIO.h>
+#include <toposlam/io/JsonFile.h>
+#include <toposlam/io/TextFile.h>
 #include <toposlam/mapping/MappingOutputs.h>
 
 #include <cmath>
@@ -118,7 +120,8 @@ std::vector<std::string> saveMappingOutputs(const MappingResult& result,
     io::saveTrajectory(result.trajectory, path("trajectory.txt"));
     io::saveGridMap(result.grid, path("map.gridmap.gz"));
     io::saveGridMap(result.grid, path("map.png"));
-    files.push_back((out / "map.yaml").string());
+    files.push_back((out / "map.yaml").string());  // with map.png: the ROS map_server pair
+    files.push_back((out / "map.pgm").string());
     if (result.graph)
         result.graph->save(path("keyframes.graph"));
     if (!result.keyframes.empty()) {
@@ -127,16 +130,8 @@ std::vector<std::string> saveMappingOutputs(const MappingResult& result,
             mrpt::serialization::archiveFrom(f) << result.keyframes;
         });
     }
-    const auto writeText = [&](const char* name, const std::string& text) {
-        io::writeFileAtomically(path(name), [&](const std::string& tmp) {
-            std::ofstream f(tmp);
-            f << text;
-            if (!f)
-                throw std::runtime_error(tmp + ": cannot write");
-        });
-    };
-    writeText("summary.txt", formatSummary(result));
-    writeText("summary.json", summaryJson(result).dump(2) + "\n");
+    io::saveTextFile(formatSummary(result), path("summary.txt"));
+    io::saveJsonFile(summaryJson(result), path("summary.json"));
     return files;
 }
 

@@ -69,8 +69,7 @@ CMatrixDouble33 ScanRegistration::edgeCovariance(const CMatrixDouble33& icp, dou
 
 ScanRegistration::IcpAttempt ScanRegistration::icpFrom(const matching::PolarScan& scan,
                                                        const CPose2D& sensorOnRobot,
-                                                       const Submap& submap,
-                                                       const CPose2D& start) {
+                                                       const Submap& submap, const CPose2D& start) {
     IcpAttempt a;
     a.icp = icp_.refineOnMap(submap.map(), scan, start + sensorOnRobot, icpOptions_);
     a.robot = a.icp.pose + (-sensorOnRobot);  // sensor pose (+) mounting^-1

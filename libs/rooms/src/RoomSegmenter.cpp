@@ -6,6 +6,7 @@
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
+#include <toposlam/config/IniFile.h>
 
 #include <toposlam/io/InputError.h>
 
@@ -144,11 +145,6 @@ void labelIslands(const FreeSpace& space, cv::Mat& labels) {
     }
 }
 
-void require(bool ok, const std::string& what) {
-    if (!ok)
-        throw std::invalid_argument("room segmentation option out of range: " + what);
-}
-
 }  // namespace
 
 RoomSegmenter::Options RoomSegmenter::Options::paperExact() {
@@ -174,9 +170,9 @@ void RoomSegmenter::Options::applyPaperPreset() {
 RoomSegmenter::Options RoomSegmenter::Options::load(const std::string& iniPath, bool paper) {
     Options o;
     if (!iniPath.empty()) {
-        if (!std::filesystem::is_regular_file(iniPath))
-            throw io::InputError(iniPath, "no such config file");
-        o.loadFromConfigFile(mrpt::config::CConfigFile(iniPath), "RoomSegmenter");
+        const auto ini = config::openIniFile(iniPath);  // InputError / ConfigError
+        config::requireSection(*ini, "RoomSegmenter");
+        o.loadFromConfigFile(*ini, "RoomSegmenter");
     }
     if (paper)
         o.applyPaperPreset();
@@ -185,77 +181,84 @@ RoomSegmenter::Options RoomSegmenter::Options::load(const std::string& iniPath, 
 }
 
 void RoomSegmenter::Options::validate() const {
-    require(freeSpace.freeThreshold >= 0 && freeSpace.freeThreshold < 1,
-            "freeThreshold must be in [0, 1)");
-    require(freeSpace.maxSpeckArea >= 0, "maxSpeckArea must be >= 0");
-    require(hough.angleResolutionDeg > 0 && hough.angleResolutionDeg <= 45,
-            "houghAngleResolutionDeg must be in (0, 45]");
-    require(hough.minVotesLength > 0, "houghMinVotesLength must be > 0");
-    require(hough.minLineLength > 0, "houghMinLineLength must be > 0");
-    require(hough.maxLineGap >= 0, "houghMaxLineGap must be >= 0");
-    require(lineMerge.maxAngleDeg > 0 && lineMerge.maxAngleDeg <= 45,
-            "maxAngleDeg must be in (0, 45]");
-    require(lineMerge.maxDistance >= 0, "mergeMaxDistance must be >= 0");
-    require(door.doorWidth > 0, "doorWidth must be > 0");
-    require(door.doorWidthTolerance > 0 && door.doorWidthTolerance < door.doorWidth,
-            "doorWidthTolerance must be in (0, doorWidth)");
-    require(filters.frameDistance >= 0, "frameDistance must be >= 0");
-    require(filters.minRoomArea >= 0, "minRoomArea must be >= 0");
-    require(filters.minWallExtent > 0, "minWallExtent must be > 0");
-    require(filters.maxWallThickness > 0, "maxWallThickness must be > 0");
-    require(filters.wallEndProbe > 0, "wallEndProbe must be > 0");
-    require(filters.openingMargin >= 0, "openingMargin must be >= 0");
-    require(wide.maxWidth > 0, "maxOpeningWidth must be > 0");
-    require(wide.openingMargin >= 0, "wideOpeningMargin must be >= 0");
+    config::Options::validate("RoomSegmenter");
 }
 
 void RoomSegmenter::Options::loadFromConfigFile(const mrpt::config::CConfigFileBase& ini,
-                                                const std::string& s) {
-    const std::string variant = ini.read_string(s, "variant", "", false);
-    if (variant == "paper") {
-        *this = paperExact();
-    } else if (variant == "improved") {
-        *this = improved();
-    } else if (!variant.empty()) {
-        throw std::invalid_argument(
-            "room segmentation option out of range: variant must be "
-            "'improved' or 'paper', not '" +
-            variant + "'");
-    }
-    freeSpace.freeThreshold = ini.read_double(s, "freeThreshold", freeSpace.freeThreshold);
-    freeSpace.maxSpeckArea = ini.read_double(s, "maxSpeckArea", freeSpace.maxSpeckArea);
-    hough.angleResolutionDeg =
-        ini.read_double(s, "houghAngleResolutionDeg", hough.angleResolutionDeg);
-    hough.minVotesLength = ini.read_double(s, "houghMinVotesLength", hough.minVotesLength);
-    hough.minLineLength = ini.read_double(s, "houghMinLineLength", hough.minLineLength);
-    hough.maxLineGap = ini.read_double(s, "houghMaxLineGap", hough.maxLineGap);
-    lineMerge.maxAngleDeg = ini.read_double(s, "maxAngleDeg", lineMerge.maxAngleDeg);
-    lineMerge.maxDistance = ini.read_double(s, "mergeMaxDistance", lineMerge.maxDistance);
-    door.doorWidth = ini.read_double(s, "doorWidth", door.doorWidth);
-    door.doorWidthTolerance = ini.read_double(s, "doorWidthTolerance", door.doorWidthTolerance);
-    door.localDirection = ini.read_bool(s, "localDirection", door.localDirection);
-    filters.frameDistance = ini.read_double(s, "frameDistance", filters.frameDistance);
-    filters.minRoomArea = ini.read_double(s, "minRoomArea", filters.minRoomArea);
-    filters.keepNarrowestOfGroup =
-        ini.read_bool(s, "keepNarrowestOfGroup", filters.keepNarrowestOfGroup);
-    filters.mergeSmallestFirst = ini.read_bool(s, "mergeSmallestFirst", filters.mergeSmallestFirst);
-    filters.requireWallJambs = ini.read_bool(s, "requireWallJambs", filters.requireWallJambs);
-    filters.minWallExtent = ini.read_double(s, "minWallExtent", filters.minWallExtent);
-    filters.requireWallEnd = ini.read_bool(s, "requireWallEnd", filters.requireWallEnd);
-    filters.maxWallThickness = ini.read_double(s, "maxWallThickness", filters.maxWallThickness);
-    filters.wallEndProbe = ini.read_double(s, "wallEndProbe", filters.wallEndProbe);
-    filters.wallThicknessFromMap =
-        ini.read_bool(s, "wallThicknessFromMap", filters.wallThicknessFromMap);
-    filters.requireConstriction =
-        ini.read_bool(s, "requireConstriction", filters.requireConstriction);
-    filters.openingMargin = ini.read_double(s, "openingMargin", filters.openingMargin);
-    wide.enabled = ini.read_bool(s, "wideOpenings", wide.enabled);
-    labelIslands = ini.read_bool(s, "labelIslands", labelIslands);
-    medialAxisWithTrajectory =
-        ini.read_bool(s, "medialAxisWithTrajectory", medialAxisWithTrajectory);
-    wide.maxWidth = ini.read_double(s, "maxOpeningWidth", wide.maxWidth);
-    wide.openingMargin = ini.read_double(s, "wideOpeningMargin", wide.openingMargin);
-    validate();
+                                                const std::string& section) {
+    if (config::rawValue(ini, section, "variant") == "paper")
+        applyPaperPreset();  // the keys of the section override it
+    config::Options::loadFromConfigFile(ini, section);
+}
+
+void RoomSegmenter::Options::declare(config::OptionsSchema& s) {
+    s.choice("variant", variant, {{"improved", Variant::Improved}, {"paper", Variant::Paper}},
+             "improved: the defaults (paper + TopoSLAM's deviations); paper: every deviation "
+             "off, before the keys below");
+    // Step 1: binarisation.
+    s.real("free_threshold", freeSpace.freeThreshold, "", "a cell is free when p(free) > this")
+        .atLeast(0)
+        .below(1);
+    s.real("max_speck_area", freeSpace.maxSpeckArea, "m^2",
+           "non-free specks up to this area inside free space count as free (0: paper)")
+        .atLeast(0);
+    // Step 2: wall segments and their merge.
+    s.real("hough_angle_resolution_deg", hough.angleResolutionDeg, "deg",
+           "Hough accumulator angle step")
+        .above(0)
+        .atMost(45);
+    s.real("hough_min_votes_length", hough.minVotesLength, "m",
+           "accumulator threshold as metres of wall voting for a line")
+        .above(0);
+    s.real("hough_min_line_length", hough.minLineLength, "m", "shortest wall segment kept")
+        .above(0);
+    s.real("hough_max_line_gap", hough.maxLineGap, "m", "largest gap bridged inside a segment")
+        .atLeast(0);
+    s.real("merge_max_angle_deg", lineMerge.maxAngleDeg, "deg",
+           "delta_phi of the line merge and the main-direction voter")
+        .above(0)
+        .atMost(45);
+    s.real("merge_max_distance", lineMerge.maxDistance, "m", "delta_d of the line merge")
+        .atLeast(0);
+    // Step 4: virtual doors.
+    s.real("door_width", door.doorWidth, "m", "openings of door_width ...").above(0);
+    s.real("door_width_tolerance", door.doorWidthTolerance, "m", "... +- this are doors").above(0);
+    s.require([this] { return door.doorWidthTolerance < door.doorWidth; }, "door_width_tolerance",
+              "must be below door_width");
+    s.flag("local_direction", door.localDirection,
+           "search doors across the local wall direction too (deviation)");
+    // Step 5: filters.
+    s.real("frame_distance", filters.frameDistance, "m",
+           "doors closer than this to each other are one group")
+        .atLeast(0);
+    s.real("min_room_area", filters.minRoomArea, "m^2", "smaller regions are merged (N_s)")
+        .atLeast(0);
+    s.flag("keep_narrowest_of_group", filters.keepNarrowestOfGroup,
+           "keep the narrowest door of a group (deviation)");
+    s.flag("merge_smallest_first", filters.mergeSmallestFirst,
+           "merge the smallest region first (deviation)");
+    s.flag("require_wall_jambs", filters.requireWallJambs,
+           "both ends of a door must be walls (deviation)");
+    s.real("min_wall_extent", filters.minWallExtent, "m", "a jamb's wall extends this far")
+        .above(0);
+    s.flag("require_wall_end", filters.requireWallEnd,
+           "one jamb must be the end of a wall (deviation)");
+    s.real("max_wall_thickness", filters.maxWallThickness, "m", "thickest wall end").above(0);
+    s.real("wall_end_probe", filters.wallEndProbe, "m", "probe length along the wall").above(0);
+    s.flag("wall_thickness_from_map", filters.wallThicknessFromMap,
+           "wall ends as thick as the building's walls, measured on the map (deviation)");
+    s.flag("require_constriction", filters.requireConstriction,
+           "a door must be narrower than the space on both sides (deviation)");
+    s.real("opening_margin", filters.openingMargin, "m", "by at least this").atLeast(0);
+    // Wide openings (deviation).
+    s.flag("wide_openings", wide.enabled, "openings wider than a door may be room borders");
+    s.real("max_opening_width", wide.maxWidth, "m", "widest such opening").above(0);
+    s.real("wide_opening_margin", wide.openingMargin, "m", "the space behind must be wider by this")
+        .atLeast(0);
+    s.flag("label_islands", labelIslands,
+           "free-standing furniture inside a room takes its label (deviation)");
+    s.flag("medial_axis_with_trajectory", medialAxisWithTrajectory,
+           "with a trajectory, search the medial axis too (deviation)");
 }
 
 struct RoomSegmenter::Workspace {

@@ -150,7 +150,7 @@ rooms::RoomBenchmarkCase endToEndCase(const PlanToTour& plan, const EndToEndOpti
     const std::string rawlog = (fs::path(options.workDir) / (plan.name + ".rawlog")).string();
     const std::string truthPath = (fs::path(options.workDir) / (plan.name + "_gt.txt")).string();
     run.scans = simulation::simulateLogToFiles(grid, tour.poses, options.simulator.log, rawlog,
-                                               options.simulator.format, truthPath, false);
+                                               options.simulator.format, truthPath);
     run.tourLength = tour.length;
     const mapping::MappingResult slam = mapping::mapLog(rawlog, *options.slamConfig);
     run.slamSeconds = slam.wallSeconds;

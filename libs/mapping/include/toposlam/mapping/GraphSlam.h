@@ -97,7 +97,7 @@ class GraphSlam {
     mrpt::poses::CPose2D initialPose_;
     mrpt::poses::CPose2D current_;  ///< last scan's robot pose, world frame
     mrpt::math::CMatrixDouble33 currentCovariance_;
-    mrpt::poses::CPose2D lastMotion_;  ///< the last scan's registered motion
+    mrpt::poses::CPose2D lastMotion_;         ///< the last scan's registered motion
     double travelled_ = 0;                    ///< m along the estimated trajectory
     double turned_ = 0;                       ///< rad turned along it (absolute)
     double odometrySinceKeyframe_ = 0;        ///< m by odometry since the last keyframe

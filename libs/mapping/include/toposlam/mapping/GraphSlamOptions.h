@@ -64,8 +64,8 @@ struct GraphSlamOptions : public config::Options {
     /// Drift model of the uncertainty propagated through the graph (PathUncertainty.h): an
     /// edge of length l turning by t adds the variances a^2 l to position and b^2 l + c^2 t
     /// to heading (a random walk), and at least its own covariance.
-    double driftSigmaXY = 0.05;         ///< a, m per sqrt(m)
-    double driftSigmaPhi = 0.01;        ///< b, rad per sqrt(m) (0.57 deg)
+    double driftSigmaXY = 0.05;          ///< a, m per sqrt(m)
+    double driftSigmaPhi = 0.01;         ///< b, rad per sqrt(m) (0.57 deg)
     double driftSigmaPhiPerTurn = 0.02;  ///< c, rad per sqrt(rad) (1.15 deg)
     /// Guess-free search against the keyframes outside the gate every this many keyframes
     /// (0 = off), matching the globalSearchCandidates most similar ones.
@@ -111,6 +111,11 @@ struct GraphSlamOptions : public config::Options {
     std::string extractor = "corners";
 
     void declare(config::OptionsSchema& s) override;
+
+  private:
+    void declareFrontEnd(config::OptionsSchema& s);
+    void declareLoopClosure(config::OptionsSchema& s);
+    void declareBackEnd(config::OptionsSchema& s);
 };
 
 }  // namespace toposlam::mapping

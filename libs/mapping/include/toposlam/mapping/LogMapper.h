@@ -54,9 +54,9 @@ struct MappingResult {
 /// icp); the graph engine's sections (CGraphSlamBuilder.h) or icp-slam's [MappingApplication]
 /// and [ICP] (IcpSlam.h); and [OccupancyGrid] (OccupancyGridOptions, with the alignment of
 /// the map to its dominant walls, ManhattanAlignment.h; a bad value there is a
-/// config::ConfigError naming the file when `ini` is an mrpt::config::CConfigFile). Reports progress
-/// through `progress` (fraction of the file read, scans). Throws io::InputError for unreadable
-/// or malformed logs and for a log without scans, config::ConfigError for bad settings.
+/// config::ConfigError naming the file when `ini` is an mrpt::config::CConfigFile). Reports
+/// progress through `progress` (fraction of the file read, scans). Throws io::InputError for
+/// unreadable or malformed logs and for a log without scans, config::ConfigError for bad settings.
 MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFileBase& ini,
                      const io::ProgressCallback& progress = {});
 

@@ -12,6 +12,7 @@
 //     WideOpeningDetector      TopoSLAM: openings wider than a door framed by wall ends
 //   6 RegionPartition          connected components after cutting the doors -> rooms
 // The result is a TopologicalMap (rooms = nodes, doors = edges).
+#include <toposlam/config/Options.h>
 #include <toposlam/rooms/DoorFilters.h>
 #include <toposlam/rooms/FreeSpaceBinarizer.h>
 #include <toposlam/rooms/HoughLineExtractor.h>
@@ -40,7 +41,8 @@ namespace toposlam::rooms {
 
 class RoomSegmenter {
   public:
-    struct Options {
+    /// Section [RoomSegmenter] of config_ini/rooms.ini (keys, units and defaults there).
+    struct Options : public config::Options {
         FreeSpaceBinarizer::Options freeSpace;
         HoughLineExtractor::Options hough;
         /// maxAngleDeg is the paper's delta_phi, shared by the merge (eq. 5) and the voter's
@@ -70,16 +72,21 @@ class RoomSegmenter {
         /// `--paper` on top of an ini file. The one place that knows what "paper" means.
         void applyPaperPreset();
         /// The options of the apps' `-c file.ini [--paper]`: the built-in defaults, then the
-        /// [RoomSegmenter] section of `iniPath` when not empty (io::InputError when the file
-        /// does not exist), then applyPaperPreset() when `paper`.
+        /// [RoomSegmenter] section of `iniPath` when not empty (config::ConfigError naming the
+        /// file when it is missing, no .ini file, lacks the section or has a bad key or value),
+        /// then applyPaperPreset() when `paper`.
         static Options load(const std::string& iniPath, bool paper);
 
-        /// Reads the keys of `section` (see config_ini/rooms.ini for names, units and
-        /// defaults); `variant = paper` first resets to paperExact(). Keys not present keep
-        /// their current value. Throws std::invalid_argument for out-of-range values.
+        /// "variant = paper" in a file first applies applyPaperPreset(); the keys then
+        /// override it (config::Options: strict, every key checked).
+        enum class Variant { Improved, Paper };
+        Variant variant = Variant::Improved;
+
+        void declare(config::OptionsSchema& s) override;
         void loadFromConfigFile(const mrpt::config::CConfigFileBase& ini,
-                                const std::string& section);
-        /// Throws std::invalid_argument naming the first value out of range.
+                                const std::string& section) override;
+        using config::Options::validate;
+        /// Throws config::ConfigError naming the first value out of range ([RoomSegmenter]).
         void validate() const;
     };
 

@@ -1,0 +1,119 @@
+// CGraphSlamBuilder driven the way MRPT drives its own map builders (actions + sensory
+// frames), and the files toposlam-slam writes from it read back with MRPT's own readers.
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/graphs/CNetworkOfPoses.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/maps/CSimpleMap.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/serialization/CArchive.h>
+#include <toposlam/features/CObservationLaserFeatures.h>
+#include <toposlam/io/JsonFile.h>
+#include <toposlam/mapping/CGraphSlamBuilder.h>
+
+#include <cmath>
+
+#include "SimulatedDrive.h"
+#include "TestSupport.h"
+
+using mrpt::poses::CPose2D;
+using namespace toposlam;
+
+namespace {
+
+const std::string kConfig = std::string(TOPOSLAM_TEST_SOURCE_DIR) + "/config_ini/toposlam-slam.ini";
+
+/// A room with a cabinet and a pillar, and a path round it that ends where it began.
+test::SimulatedDrive roomTour() {
+    simulation::PolygonWorld w;
+    w.addPolygon({{0, 0}, {10, 0}, {10, 7}, {0, 7}});
+    w.addPolygon({{4, 3}, {6, 3}, {6, 4}, {4, 4}});
+    w.addPolygon({{0.01, 5}, {0.6, 5}, {0.6, 6.2}, {0.01, 6.2}});
+    w.addDisc({{8, 5.5}, 0.2});
+    const auto truth =
+        test::drivePath({{1.5, 1.5}, {8.5, 1.5}, {8.5, 5.5}, {1.5, 5.5}, {1.5, 1.5}});
+    test::OdometryErrors errors;
+    errors.distanceScale = 1.03;
+    errors.turnScale = 1.03;
+    return test::simulateDrive(w, truth, errors, 11);
+}
+
+}  // namespace
+
+TEST(CGraphSlamBuilder, DrivenByActionsAndSensoryFramesLikeMrptBuilders) {
+    const auto drive = roomTour();
+    mapping::CGraphSlamBuilder builder;
+    builder.loadFromConfigFile(mrpt::config::CConfigFile(kConfig));
+    builder.initialize();
+    for (std::size_t i = 0; i < drive.scans.size(); ++i) {
+        mrpt::obs::CActionCollection actions;
+        if (i > 0) {
+            mrpt::obs::CActionRobotMovement2D move;
+            move.computeFromOdometry(drive.odometry[i] - drive.odometry[i - 1], {});
+            actions.insert(move);
+        }
+        mrpt::obs::CSensoryFrame frame;
+        frame.insert(drive.scans[i]);
+        builder.processActionObservation(actions, frame);
+    }
+    builder.finish();
+
+    // The estimate follows the truth far better than the odometry (3 % scale errors).
+    mrpt::poses::CPose3D mean;
+    builder.getCurrentPoseEstimation()->getMean(mean);
+    const CPose2D estimate(mean);
+    const CPose2D truthEnd = drive.truth.back() - drive.truth.front();
+    const CPose2D odometryEnd = drive.odometry.back() - drive.odometry.front();
+    const double error = (estimate - truthEnd).norm(),
+                 odometryError = (odometryEnd - truthEnd).norm();
+    EXPECT_LT(error, 0.1) << "odometry is off by " << odometryError << " m";
+    EXPECT_GT(odometryError, 0.3);
+
+    // The map handed out: one frame per keyframe, with its scan and its features.
+    mrpt::maps::CSimpleMap keyframes;
+    builder.getCurrentlyBuiltMap(keyframes);
+    ASSERT_GT(keyframes.size(), 5u);
+    EXPECT_EQ(keyframes.size(), builder.getCurrentlyBuiltMapSize());
+    for (std::size_t i = 0; i < keyframes.size(); ++i) {
+        const auto& frame = *keyframes.getAsPair(i).sf;
+        EXPECT_TRUE(frame.getObservationByClass<mrpt::obs::CObservation2DRangeScan>());
+        const auto features = frame.getObservationByClass<features::CObservationLaserFeatures>();
+        ASSERT_TRUE(features);
+        EXPECT_FALSE(features->features.segments.empty());
+    }
+    const auto* metric = builder.getCurrentlyBuiltMetricMap();
+    ASSERT_TRUE(metric);
+    const auto grid = metric->mapByClass<mrpt::maps::COccupancyGridMap2D>();
+    ASSERT_TRUE(grid);
+    EXPECT_GT(grid->getSizeX() * grid->getSizeY(), 0u);
+}
+
+TEST(CGraphSlamBuilder, AppOutputsAreReadByMrpt) {
+    const test::TempDir dir;
+    const auto drive = roomTour();
+    test::writeRawlog(drive, dir.file("tour.rawlog"));
+    const auto run = test::runApp("toposlam-slam", "'" + kConfig + "' '" + dir.file("tour.rawlog") +
+                                                       "' -o '" + dir.file("out") + "'");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const auto summary = io::loadJsonFile(dir.file("out/summary.json"));
+    const std::size_t keyframes = summary.at("keyframes").get<std::size_t>();
+    EXPECT_EQ(summary.at("scans").get<std::size_t>(), drive.scans.size());
+    EXPECT_FALSE(summary.at("mostly_unregistered").get<bool>());
+
+    // keyframes.graph: MRPT's .graph text format, one node per keyframe.
+    mrpt::graphs::CNetworkOfPoses2DInf graph;
+    graph.loadFromTextFile(dir.file("out/keyframes.graph"));
+    EXPECT_EQ(graph.nodes.size(), keyframes);
+    EXPECT_GE(graph.edgeCount(), keyframes - 1);
+
+    // keyframes.simplemap: MRPT's CSimpleMap, scans with their features.
+    mrpt::maps::CSimpleMap simplemap;
+    mrpt::io::CFileGZInputStream in(dir.file("out/keyframes.simplemap"));
+    mrpt::serialization::archiveFrom(in) >> simplemap;
+    ASSERT_EQ(simplemap.size(), keyframes);
+    EXPECT_TRUE(
+        simplemap.getAsPair(0).sf->getObservationByClass<features::CObservationLaserFeatures>());
+}

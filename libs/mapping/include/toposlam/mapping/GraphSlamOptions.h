@@ -69,7 +69,7 @@ struct GraphSlamOptions : public config::Options {
     double driftSigmaPhiPerTurn = 0.02;  ///< c, rad per sqrt(rad) (1.15 deg)
     /// Guess-free search against the keyframes outside the gate every this many keyframes
     /// (0 = off), matching the globalSearchCandidates most similar ones.
-    std::size_t globalSearchEvery = 10;
+    std::size_t globalSearchEvery = 0;
     std::size_t globalSearchCandidates = 4;
     /// Smallest standard deviations of a loop edge (the graph matcher's covariance is as
     /// confident as ICP's).
@@ -98,10 +98,10 @@ struct GraphSlamOptions : public config::Options {
     /// first closure of a long loop) over the whole graph. Loops that agree wait for
     /// optimizeEveryLoops of them. The whole graph is optimised every optimizeGlobalEvery
     /// keyframes that added loops, and at the end.
-    double optimizeTriggerDistance = 0.05;  ///< m
-    double optimizeTriggerAngle = 0.0175;   ///< rad (1 deg)
-    double optimizeGlobalDistance = 0.3;    ///< m
-    double optimizeGlobalAngle = 0.0524;    ///< rad (3 deg)
+    double optimizeTriggerDistance = 0.1;  ///< m
+    double optimizeTriggerAngle = 0.0349;  ///< rad (2 deg)
+    double optimizeGlobalDistance = 0.3;   ///< m
+    double optimizeGlobalAngle = 0.0524;   ///< rad (3 deg)
     std::size_t optimizeEveryLoops = 30;
     std::size_t optimizeWindow = 200;       ///< keyframes
     std::size_t optimizeGlobalEvery = 500;  ///< keyframes

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace toposlam::evaluation {
 
@@ -27,6 +28,27 @@ ErrorStatistics summarizeErrors(const std::vector<double>& values) {
         s.std = std::sqrt(squaredDeviations / (n - 1));
     }
     return s;
+}
+
+std::string formatFixed(double value, int decimals) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    return text;
+}
+
+int significantDecimals(double reference) {
+    if (!(std::abs(reference) > 0))
+        return 4;
+    const int magnitude = static_cast<int>(std::floor(std::log10(std::abs(reference))));
+    return std::clamp(3 - magnitude, 0, 8);
+}
+
+std::string formatMeanStd(const ErrorStatistics& s, int decimals) {
+    return formatFixed(s.mean, decimals) + " ± " + formatFixed(s.std, decimals);
+}
+
+std::string formatMeanStd(const ErrorStatistics& s) {
+    return formatMeanStd(s, significantDecimals(std::max(s.mean, s.std)));
 }
 
 }  // namespace toposlam::evaluation

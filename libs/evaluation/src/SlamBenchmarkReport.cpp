@@ -15,41 +15,19 @@ namespace {
 constexpr double kMiB = 1024.0 * 1024.0;
 const char* const kNone = "–";
 
-std::string fixed(double value, int decimals) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.*f", decimals, value);
-    return text;
-}
-
-// Decimals that show `reference` with 4 significant digits (0 to 8), as toposlam-eval-slam.
-int significantDecimals(double reference) {
-    if (!(std::abs(reference) > 0))
-        return 4;
-    const int magnitude = static_cast<int>(std::floor(std::log10(std::abs(reference))));
-    return std::clamp(3 - magnitude, 0, 8);
-}
-
-std::string meanStd(const ErrorStatistics& s, int decimals) {
-    return fixed(s.mean, decimals) + " ± " + fixed(s.std, decimals);
-}
-
-std::string meanStdSignificant(const ErrorStatistics& s) {
-    return meanStd(s, significantDecimals(std::max(s.mean, s.std)));
-}
-
 // 1234× / 56.7×: real-time factors, whole numbers from 10 up.
 std::string factor(double duration, double seconds) {
     if (!(seconds > 0))
         return kNone;
     const double f = duration / seconds;
-    return fixed(f, f >= 10 ? 0 : 1) + "×";
+    return formatFixed(f, f >= 10 ? 0 : 1) + "×";
 }
 
 std::string logLine(const SlamBenchmarkLogResult& log) {
     std::string line = log.log.name + " (" + log.log.logFile + ": ";
     if (!log.error.empty() && log.scans == 0)
         return line + "not read)";
-    line += std::to_string(log.scans) + " scans, " + fixed(log.durationSeconds, 0) + " s; ";
+    line += std::to_string(log.scans) + " scans, " + formatFixed(log.durationSeconds, 0) + " s; ";
     if (log.log.groundTruthFile.empty())
         return line + std::to_string(log.relations) + " relations)";
     return line + "ground truth " + log.log.groundTruthFile + ": " + std::to_string(log.relations) +
@@ -64,9 +42,9 @@ std::string header(const SlamBenchmarkResult& result) {
            "sample std; ATE RMSE / max after the best rigid alignment (ground-truth logs). "
            "Real-time factor = log duration / wall time and / CPU time.\n"
         << "Machine: " << result.cores << " hardware threads, 1-minute load average "
-        << (result.loadAverageBefore >= 0 ? fixed(result.loadAverageBefore, 1) : "?")
+        << (result.loadAverageBefore >= 0 ? formatFixed(result.loadAverageBefore, 1) : "?")
         << " before and "
-        << (result.loadAverageAfter >= 0 ? fixed(result.loadAverageAfter, 1) : "?")
+        << (result.loadAverageAfter >= 0 ? formatFixed(result.loadAverageAfter, 1) : "?")
         << " after the runs (other load inflates wall time, not CPU time).\n"
         << "Logs:\n";
     for (const SlamBenchmarkLogResult& log : result.logs)
@@ -97,15 +75,14 @@ std::string accuracyCells(const SlamBenchmarkRow& row, bool withAte) {
     std::string cells;
     const RelativePoseErrorResult& r = row.evaluation->relative;
     cells = " " + std::to_string(r.matchedRelations) + " / " + std::to_string(r.totalRelations) +
-            " | " + meanStd(r.translation, 4) + " | " + meanStd(r.rotation, 3) + " | " +
-            meanStdSignificant(r.translationSquared) + " | " +
-            meanStdSignificant(r.rotationSquared) + " | " + fixed(r.translation.max, 4) + " / " +
-            fixed(r.rotation.max, 3) + " |";
+            " | " + formatMeanStd(r.translation, 4) + " | " + formatMeanStd(r.rotation, 3) + " | " +
+            formatMeanStd(r.translationSquared) + " | " + formatMeanStd(r.rotationSquared) + " | " +
+            formatFixed(r.translation.max, 4) + " / " + formatFixed(r.rotation.max, 3) + " |";
     if (withAte) {
         const auto& a = row.evaluation->absolute;
-        cells += a && a->matchedPoses > 0
-                     ? " " + fixed(a->position.rms, 4) + " / " + fixed(a->position.max, 4) + " |"
-                     : dashes(1);
+        cells += a && a->matchedPoses > 0 ? " " + formatFixed(a->position.rms, 4) + " / " +
+                                                formatFixed(a->position.max, 4) + " |"
+                                          : dashes(1);
     }
     return cells;
 }
@@ -116,9 +93,9 @@ std::string costCells(const SlamBenchmarkRow& row, double duration) {
     if (!ran)
         return dashes(4);
     const ChildProcessResult& p = run.process;
-    return " " + fixed(p.wallSeconds, 1) + " | " + fixed(p.cpuSeconds(), 1) + " | " +
+    return " " + formatFixed(p.wallSeconds, 1) + " | " + formatFixed(p.cpuSeconds(), 1) + " | " +
            factor(duration, p.wallSeconds) + " / " + factor(duration, p.cpuSeconds()) + " | " +
-           fixed(double(p.peakRssBytes) / kMiB, 0) + " |";
+           formatFixed(double(p.peakRssBytes) / kMiB, 0) + " |";
 }
 
 std::string loopCells(const SlamBenchmarkRow& row) {

@@ -52,32 +52,6 @@ MethodEvaluation evaluateMethod(const std::string& name, const std::string& sour
 
 // ---- table --------------------------------------------------------------------------------
 
-namespace {
-
-std::string fixed(double v, int decimals) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    return buf;
-}
-
-// Decimals that show `reference` with 4 significant digits (0 to 8 decimals).
-int decimalsFor(double reference) {
-    if (!(std::abs(reference) > 0))
-        return 4;
-    const int magnitude = static_cast<int>(std::floor(std::log10(std::abs(reference))));
-    return std::clamp(3 - magnitude, 0, 8);
-}
-
-std::string meanStd(const ErrorStatistics& s, int decimals) {
-    return fixed(s.mean, decimals) + " ± " + fixed(s.std, decimals);
-}
-
-std::string meanStdSignificant(const ErrorStatistics& s) {
-    return meanStd(s, decimalsFor(std::max(s.mean, s.std)));
-}
-
-}  // namespace
-
 std::string formatEvaluationTable(const SlamEvaluation& ev) {
     std::ostringstream out;
     out << "Reference: " << ev.referenceFile << " (";
@@ -85,8 +59,8 @@ std::string formatEvaluationTable(const SlamEvaluation& ev) {
         out << "ground-truth trajectory, " << ev.groundTruthPoses << " poses -> "
             << ev.relationCount << " relations: consecutive"
             << (ev.groundTruthRelations.baseSeparation > 0
-                    ? " + path separations " + fixed(ev.groundTruthRelations.baseSeparation, 2) +
-                          " m x 2^k"
+                    ? " + path separations " +
+                          formatFixed(ev.groundTruthRelations.baseSeparation, 2) + " m x 2^k"
                     : std::string())
             << ")\n";
     } else {
@@ -109,15 +83,15 @@ std::string formatEvaluationTable(const SlamEvaluation& ev) {
         if (r.matchedRelations == 0) {
             out << "– | – | – | – | – |";
         } else {
-            out << meanStd(r.translation, 4) << " | " << meanStd(r.rotation, 3) << " | "
-                << meanStdSignificant(r.translationSquared) << " | "
-                << meanStdSignificant(r.rotationSquared) << " | " << fixed(r.translation.max, 4)
-                << " / " << fixed(r.rotation.max, 3) << " |";
+            out << formatMeanStd(r.translation, 4) << " | " << formatMeanStd(r.rotation, 3) << " | "
+                << formatMeanStd(r.translationSquared) << " | " << formatMeanStd(r.rotationSquared)
+                << " | " << formatFixed(r.translation.max, 4) << " / "
+                << formatFixed(r.rotation.max, 3) << " |";
         }
         if (withAte) {
             if (m.absolute && m.absolute->matchedPoses > 0) {
-                out << " " << fixed(m.absolute->position.rms, 4) << " | "
-                    << fixed(m.absolute->position.max, 4) << " |";
+                out << " " << formatFixed(m.absolute->position.rms, 4) << " | "
+                    << formatFixed(m.absolute->position.max, 4) << " |";
             } else {
                 out << " – | – |";
             }
@@ -132,7 +106,8 @@ std::string formatEvaluationTable(const SlamEvaluation& ev) {
                "(relations):\n\n| method |";
         for (const SeparationErrors& s : scales) {
             out << " "
-                << (s.separation == 0 ? std::string("consecutive") : fixed(s.separation, 2) + " m")
+                << (s.separation == 0 ? std::string("consecutive")
+                                      : formatFixed(s.separation, 2) + " m")
                 << " (" << s.totalRelations << ") |";
         }
         out << "\n|---|";
@@ -142,7 +117,8 @@ std::string formatEvaluationTable(const SlamEvaluation& ev) {
         for (const MethodEvaluation& m : ev.methods) {
             out << "| " << m.name << " |";
             for (const SeparationErrors& s : m.bySeparation) {
-                out << " " << (s.translation.count ? meanStd(s.translation, 4) : std::string("–"))
+                out << " "
+                    << (s.translation.count ? formatMeanStd(s.translation, 4) : std::string("–"))
                     << " |";
             }
             out << "\n";
@@ -247,8 +223,9 @@ void saveEvaluationPlot(const SlamEvaluation& ev, const std::vector<io::Trajecto
     for (std::size_t i = 0; i < estimates.size(); ++i) {
         const RelativePoseErrorResult& r = ev.methods[i].relative;
         plotted.push_back(
-            {ev.methods[i].name + (r.matchedRelations ? ": " + fixed(r.translation.mean, 4) + " m"
-                                                      : std::string(": no relation matched")),
+            {ev.methods[i].name + (r.matchedRelations
+                                       ? ": " + formatFixed(r.translation.mean, 4) + " m"
+                                       : std::string(": no relation matched")),
              estimates[i]});
         const RelativePoseErrorResult& b = ev.methods[best].relative;
         if (r.matchedRelations &&

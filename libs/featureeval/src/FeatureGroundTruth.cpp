@@ -48,6 +48,42 @@ double castRay(const std::vector<Edge>& edges, const std::vector<simulation::Dis
     return best;
 }
 
+/// The edges of every polygon of `scene`, in order; firstEdge[p] = index of polygon p's first.
+std::vector<Edge> polygonEdges(const SyntheticScene& scene, std::vector<std::size_t>& firstEdge) {
+    std::vector<Edge> edges;
+    for (const Polygon& p : scene.polygons) {
+        firstEdge.push_back(edges.size());
+        for (std::size_t i = 0; i < p.size(); ++i)
+            edges.push_back({p[i], p[(i + 1) % p.size()]});
+    }
+    return edges;
+}
+
+/// Runs of at least `minRunBeams` consecutive beams (counter-clockwise order k) on one edge.
+template <typename ScanIndex>
+std::vector<GroundTruthRun> wallRuns(const std::vector<int>& edgeOf,
+                                     const std::vector<TPoint2D>& hitPoint, ScanIndex scanIndex,
+                                     std::size_t minRunBeams) {
+    std::vector<GroundTruthRun> runs;
+    const std::size_t n = edgeOf.size();
+    for (std::size_t k = 0; k < n;) {
+        std::size_t e = k;
+        while (e + 1 < n && edgeOf[e + 1] == edgeOf[k])
+            ++e;
+        if (edgeOf[k] >= 0 && e - k + 1 >= minRunBeams) {
+            GroundTruthRun run;
+            const std::size_t i0 = scanIndex(k), i1 = scanIndex(e);
+            run.firstBeam = static_cast<std::uint32_t>(std::min(i0, i1));
+            run.lastBeam = static_cast<std::uint32_t>(std::max(i0, i1));
+            run.start = i0 < i1 ? hitPoint[k] : hitPoint[e];
+            run.end = i0 < i1 ? hitPoint[e] : hitPoint[k];
+            runs.push_back(run);
+        }
+        k = e + 1;
+    }
+    return runs;
+}
+
 }  // namespace
 
 ScanGroundTruth computeGroundTruth(const SyntheticScene& scene,
@@ -58,14 +94,8 @@ ScanGroundTruth computeGroundTruth(const SyntheticScene& scene,
     const std::size_t n = scan.getScanSize();
     if (n < 2)
         return gt;
-
-    std::vector<Edge> edges;
     std::vector<std::size_t> firstEdge;  // of each polygon
-    for (const Polygon& p : scene.polygons) {
-        firstEdge.push_back(edges.size());
-        for (std::size_t i = 0; i < p.size(); ++i)
-            edges.push_back({p[i], p[(i + 1) % p.size()]});
-    }
+    const std::vector<Edge> edges = polygonEdges(scene, firstEdge);
 
     // Beams in counter-clockwise order k (scan index: k, or n-1-k for left-to-right scans).
     const auto scanIndex = [&](std::size_t k) { return scan.rightToLeft ? k : n - 1 - k; };
@@ -73,7 +103,7 @@ ScanGroundTruth computeGroundTruth(const SyntheticScene& scene,
     const double firstBearing = -0.5 * static_cast<double>(scan.aperture);
     const TPoint2D origin(sensorPose.x(), sensorPose.y());
     const double yaw = sensorPose.phi(), maxRange = scan.maxRange;
-    std::vector<int> edgeOf(n);
+    std::vector<int> edgeOf(n);  // the edge each beam hits (-1: none), and where (sensor frame)
     std::vector<TPoint2D> hitPoint(n);
     for (std::size_t k = 0; k < n; ++k) {
         const double bearing = scan.getScanAngle(scanIndex(k));  // the simulator's own angle
@@ -156,22 +186,7 @@ ScanGroundTruth computeGroundTruth(const SyntheticScene& scene,
         }
     }
 
-    // Wall runs.
-    for (std::size_t k = 0; k < n;) {
-        std::size_t e = k;
-        while (e + 1 < n && edgeOf[e + 1] == edgeOf[k])
-            ++e;
-        if (edgeOf[k] >= 0 && e - k + 1 >= options.minRunBeams) {
-            GroundTruthRun run;
-            const std::size_t i0 = scanIndex(k), i1 = scanIndex(e);
-            run.firstBeam = static_cast<std::uint32_t>(std::min(i0, i1));
-            run.lastBeam = static_cast<std::uint32_t>(std::max(i0, i1));
-            run.start = i0 < i1 ? hitPoint[k] : hitPoint[e];
-            run.end = i0 < i1 ? hitPoint[e] : hitPoint[k];
-            gt.runs.push_back(run);
-        }
-        k = e + 1;
-    }
+    gt.runs = wallRuns(edgeOf, hitPoint, scanIndex, options.minRunBeams);
     return gt;
 }
 

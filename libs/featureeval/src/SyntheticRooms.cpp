@@ -76,13 +76,13 @@ simulation::PolygonWorld SyntheticScene::world() const {
     return w;
 }
 
-SyntheticScene makeSyntheticRoom(std::mt19937& rng, const SyntheticRoomOptions& o) {
+namespace {
+
+/// A W x D rectangle, counter-clockwise from (0, 0), maybe with a rectangular bite out of one
+/// corner (notch) and another corner cut off (chamfer).
+Polygon roomOutline(std::mt19937& rng, const SyntheticRoomOptions& o, double W, double D) {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     const auto uniform = [&](double a, double b) { return a + (b - a) * unit(rng); };
-    SyntheticScene scene;
-
-    // Room outline, counter-clockwise, corners 0:(0,0) 1:(W,0) 2:(W,D) 3:(0,D).
-    const double W = uniform(o.minWidth, o.maxWidth), D = uniform(o.minDepth, o.maxDepth);
     std::vector<Polygon> corner(4);
     corner[0] = {{0, 0}};
     corner[1] = {{W, 0}};
@@ -120,6 +120,33 @@ SyntheticScene makeSyntheticRoom(std::mt19937& rng, const SyntheticRoomOptions& 
     Polygon room;
     for (const Polygon& c : corner)
         room.insert(room.end(), c.begin(), c.end());
+    return room;
+}
+
+/// Reverses the furniture polygons (all but the first, the room) that run clockwise.
+void makeFurnitureCounterClockwise(std::vector<Polygon>& polygons) {
+    for (std::size_t i = 1; i < polygons.size(); ++i) {
+        Polygon& p = polygons[i];
+        double area2 = 0;
+        for (std::size_t k = 0; k < p.size(); ++k) {
+            const TPoint2D &a = p[k], &b = p[(k + 1) % p.size()];
+            area2 += a.x * b.y - b.x * a.y;
+        }
+        if (area2 < 0)
+            std::reverse(p.begin(), p.end());
+    }
+}
+
+}  // namespace
+
+SyntheticScene makeSyntheticRoom(std::mt19937& rng, const SyntheticRoomOptions& o) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const auto uniform = [&](double a, double b) { return a + (b - a) * unit(rng); };
+    SyntheticScene scene;
+
+    // Room outline, counter-clockwise, corners 0:(0,0) 1:(W,0) 2:(W,D) 3:(0,D).
+    const double W = uniform(o.minWidth, o.maxWidth), D = uniform(o.minDepth, o.maxDepth);
+    Polygon room = roomOutline(rng, o, W, D);
     const double roomYaw = uniform(-M_PI, M_PI);
     room = transformed(room, uniform(-3, 3), uniform(-3, 3), roomYaw);
     scene.polygons.push_back(room);
@@ -161,17 +188,7 @@ SyntheticScene makeSyntheticRoom(std::mt19937& rng, const SyntheticRoomOptions& 
         if (ok)
             scene.polygons.push_back(piece);
     }
-    // Make every furniture polygon counter-clockwise.
-    for (std::size_t i = 1; i < scene.polygons.size(); ++i) {
-        Polygon& p = scene.polygons[i];
-        double area2 = 0;
-        for (std::size_t k = 0; k < p.size(); ++k) {
-            const TPoint2D &a = p[k], &b = p[(k + 1) % p.size()];
-            area2 += a.x * b.y - b.x * a.y;
-        }
-        if (area2 < 0)
-            std::reverse(p.begin(), p.end());
-    }
+    makeFurnitureCounterClockwise(scene.polygons);
 
     // Pillars.
     const int pillars = o.maxPillars > 0 ? static_cast<int>(rng() % (o.maxPillars + 1)) : 0;

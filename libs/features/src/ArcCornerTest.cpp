@@ -1,6 +1,8 @@
 #include <toposlam/features/ArcCornerTest.h>
 #include <toposlam/features/LineFit.h>
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cmath>
 
@@ -26,6 +28,15 @@ struct CircleSums {
         zz += pz * pz;
     }
 };
+
+/// Solves a x = b; false when a is singular (a degenerate point set).
+bool solve3(const Eigen::Matrix3d& a, const Eigen::Vector3d& b, Eigen::Vector3d& x) {
+    const Eigen::FullPivLU<Eigen::Matrix3d> lu(a);
+    if (!lu.isInvertible())
+        return false;
+    x = lu.solve(b);
+    return x.allFinite();
+}
 }  // namespace
 
 bool ArcCornerTest::isArc(const ScanPoints& pts, std::size_t a0, std::size_t a1, std::size_t b0,
@@ -40,27 +51,13 @@ bool ArcCornerTest::isArc(const ScanPoints& pts, std::size_t a0, std::size_t a1,
     if (s.n < 5)
         return false;
     // Circle x^2 + y^2 + D x + E y + F = 0, least squares in D, E, F (3x3 normal equations,
-    // Cramer's rule).
-    const double m[3][3] = {{s.xx, s.xy, s.x}, {s.xy, s.yy, s.y}, {s.x, s.y, s.n}};
-    const double r[3] = {-s.xz, -s.yz, -s.z};
-    const auto det3 = [](const double a[3][3]) {
-        return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
-               a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-               a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-    };
-    const double det = det3(m);
-    if (!(std::abs(det) > 1e-300))
+    // solved by LU).
+    Eigen::Matrix3d normal;
+    normal << s.xx, s.xy, s.x, s.xy, s.yy, s.y, s.x, s.y, s.n;
+    Eigen::Vector3d sol;
+    if (!solve3(normal, Eigen::Vector3d(-s.xz, -s.yz, -s.z), sol))
         return false;
-    double sol[3];
-    for (int c = 0; c < 3; ++c) {
-        double mc[3][3];
-        for (int i = 0; i < 3; ++i) {
-            for (int j = 0; j < 3; ++j)
-                mc[i][j] = j == c ? r[i] : m[i][j];
-        }
-        sol[c] = det3(mc) / det;
-    }
-    const double D = sol[0], E = sol[1], F = sol[2];
+    const double D = sol(0), E = sol(1), F = sol(2);
     const double radius2 = 0.25 * (D * D + E * E) - F;
     // Far too large a circle (a straight-ish pair of walls): no arc of interest.
     if (!(radius2 > 0) || radius2 > 4 * maxRadius * maxRadius)
@@ -98,51 +95,44 @@ bool ArcCornerTest::isArc(const ScanPoints& pts, std::size_t a0, std::size_t a1,
     }
     double bestRss = HUGE_VAL, bestRadius = radius;
     for (int iteration = 0; iteration < 6; ++iteration) {
-        double jtj[3][3] = {}, jtr[3] = {}, rss = 0;
+        Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
+        Eigen::Vector3d jtr = Eigen::Vector3d::Zero();
+        double rss = 0;
         const auto add = [&](std::size_t k) {
             const double dx = pts.x(k) - cx, dy = pts.y(k) - cy, d = std::sqrt(sq2(dx, dy));
             if (!(d > 0))
                 return;
             const double inv = 1 / d, jx = -dx * inv, jy = -dy * inv, r = d - radius;
             rss += r * r;
-            jtr[0] += jx * r;
-            jtr[1] += jy * r;
-            jtr[2] -= r;
-            jtj[0][0] += jx * jx;
-            jtj[0][1] += jx * jy;
-            jtj[0][2] -= jx;
-            jtj[1][1] += jy * jy;
-            jtj[1][2] -= jy;
-            jtj[2][2] += 1;
+            jtr(0) += jx * r;
+            jtr(1) += jy * r;
+            jtr(2) -= r;
+            jtj(0, 0) += jx * jx;
+            jtj(0, 1) += jx * jy;
+            jtj(0, 2) -= jx;
+            jtj(1, 1) += jy * jy;
+            jtj(1, 2) -= jy;
+            jtj(2, 2) += 1;
         };
         for (std::size_t k = a0; k <= a1; ++k)
             add(k);
         for (std::size_t k = b0; k <= b1; ++k)
             add(k);
-        jtj[1][0] = jtj[0][1];
-        jtj[2][0] = jtj[0][2];
-        jtj[2][1] = jtj[1][2];
+        jtj(1, 0) = jtj(0, 1);
+        jtj(2, 0) = jtj(0, 2);
+        jtj(2, 1) = jtj(1, 2);
         if (!(rss < bestRss))
             break;  // the last step made it worse: keep the best
         bestRss = rss;
         bestRadius = radius;
         if (rss <= allowed)
             break;  // an arc
-        const double dj = det3(jtj);
-        if (!(std::abs(dj) > 1e-300))
+        Eigen::Vector3d step;
+        if (!solve3(jtj, -jtr, step))
             break;
-        double step[3];
-        for (int c = 0; c < 3; ++c) {
-            double mc[3][3];
-            for (int i = 0; i < 3; ++i) {
-                for (int j = 0; j < 3; ++j)
-                    mc[i][j] = j == c ? -jtr[i] : jtj[i][j];
-            }
-            step[c] = det3(mc) / dj;
-        }
-        cx += step[0];
-        cy += step[1];
-        radius += step[2];
+        cx += step(0);
+        cy += step(1);
+        radius += step(2);
     }
     return bestRadius > 0 && bestRadius <= maxRadius && bestRss <= allowed;
 }

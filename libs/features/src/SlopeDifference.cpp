@@ -22,15 +22,7 @@ void SlopeDifference::compute(const ScanPoints& pts, const std::vector<PointRun>
         return;
 
     if (paperForm) {
-        for (const PointRun& run : runs) {
-            for (std::size_t i = run.begin + 1; i < run.end; ++i) {
-                numerator[i] =
-                    slopeDifferencePaper(pts.range(i - 1), pts.range(i), pts.range(i + 1), step);
-                scale[i] = 1;
-                baseline[i] = 1;
-                threshold[i] = cornerThreshold;
-            }
-        }
+        computePaperForm(pts, runs, step);
         return;
     }
 
@@ -41,32 +33,10 @@ void SlopeDifference::compute(const ScanPoints& pts, const std::vector<PointRun>
     //     std(dk) = sqrt(6) sigma / (r dtheta * s sqrt(2m+1)) = sqrt(6) sigma / (r dtheta gain(s)).
     maxBaseline_ = static_cast<std::size_t>(3.0 / step) + 2;  // 3 rad at most
     smooth_ = sigma > 0;
-    if (tableStep_ != step || tableSmooth_ != smooth_) {  // per scan geometry, not per scan
-        tableStep_ = step;
-        tableSmooth_ = smooth_;
-        cosTable_.resize(maxBaseline_ + 1);
-        invSinTable_.resize(maxBaseline_ + 1);
-        invGain_.resize(maxBaseline_ + 1);
-        for (std::size_t k = 0; k <= maxBaseline_; ++k) {
-            const double a = static_cast<double>(k) * step;
-            cosTable_[k] = std::cos(a);
-            invSinTable_[k] = k > 0 ? 1 / std::sin(a) : 0;
-            const double m = smooth_ ? static_cast<double>(k / 2) : 0.0;
-            invGain_[k] = k > 0 ? 1 / (static_cast<double>(k) * std::sqrt(2 * m + 1)) : HUGE_VAL;
-        }
-    }
-    // Running sums of inverse ranges: a window mean costs two lookups. (The three windows have
-    // the same size, so their sums can stand for their means in dk.)
-    prefix_.resize(n + 1);
-    inverse_.resize(n);
+    updateTables(step);
+    computeRunningSums(pts);
     double* __restrict prefix = prefix_.data();
     double* __restrict inverse = inverse_.data();
-    const double* __restrict range = pts.rangeData();  // 0 where invalid
-    for (std::size_t k = 0; k < n; ++k)
-        inverse[k] = range[k] > 0 ? 1.0 / range[k] : 0.0;
-    prefix[0] = 0;
-    for (std::size_t k = 0; k < n; ++k)
-        prefix[k + 1] = prefix[k] + inverse[k];
     // z * noise of dk_s = noiseScale / (r gain(s)): a baseline is enough when that is below
     // the threshold.
     noiseScale_ = z * std::sqrt(6.0) * sigma / step;
@@ -135,6 +105,52 @@ void SlopeDifference::compute(const ScanPoints& pts, const std::vector<PointRun>
             }
         }
     }
+}
+
+void SlopeDifference::computePaperForm(const ScanPoints& pts, const std::vector<PointRun>& runs,
+                                       double step) {
+    for (const PointRun& run : runs) {
+        for (std::size_t i = run.begin + 1; i < run.end; ++i) {
+            numerator[i] =
+                slopeDifferencePaper(pts.range(i - 1), pts.range(i), pts.range(i + 1), step);
+            scale[i] = 1;
+            baseline[i] = 1;
+            threshold[i] = cornerThreshold_;
+        }
+    }
+}
+
+void SlopeDifference::updateTables(double step) {
+    if (tableStep_ == step && tableSmooth_ == smooth_)
+        return;  // per scan geometry, not per scan
+    tableStep_ = step;
+    tableSmooth_ = smooth_;
+    cosTable_.resize(maxBaseline_ + 1);
+    invSinTable_.resize(maxBaseline_ + 1);
+    invGain_.resize(maxBaseline_ + 1);
+    for (std::size_t k = 0; k <= maxBaseline_; ++k) {
+        const double a = static_cast<double>(k) * step;
+        cosTable_[k] = std::cos(a);
+        invSinTable_[k] = k > 0 ? 1 / std::sin(a) : 0;
+        const double m = smooth_ ? static_cast<double>(k / 2) : 0.0;
+        invGain_[k] = k > 0 ? 1 / (static_cast<double>(k) * std::sqrt(2 * m + 1)) : HUGE_VAL;
+    }
+}
+
+void SlopeDifference::computeRunningSums(const ScanPoints& pts) {
+    // Running sums of inverse ranges: a window mean costs two lookups. (The three windows have
+    // the same size, so their sums can stand for their means in dk.)
+    const std::size_t n = pts.size();
+    prefix_.resize(n + 1);
+    inverse_.resize(n);
+    double* __restrict prefix = prefix_.data();
+    double* __restrict inverse = inverse_.data();
+    const double* __restrict range = pts.rangeData();  // 0 where invalid
+    for (std::size_t k = 0; k < n; ++k)
+        inverse[k] = range[k] > 0 ? 1.0 / range[k] : 0.0;
+    prefix[0] = 0;
+    for (std::size_t k = 0; k < n; ++k)
+        prefix[k + 1] = prefix[k] + inverse[k];
 }
 
 bool SlopeDifference::evaluateAt(std::size_t i, std::size_t runBegin, std::size_t runEnd,

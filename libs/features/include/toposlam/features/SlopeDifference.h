@@ -77,6 +77,12 @@ class SlopeDifference {
     }
 
   private:
+    /// The paper's eq. (2) on neighbouring readings (paperForm).
+    void computePaperForm(const ScanPoints& pts, const std::vector<PointRun>& runs, double step);
+    /// cos, 1/sin and noise gain per baseline, rebuilt only when the scan geometry changes.
+    void updateTables(double step);
+    /// inverse_ = 1/range (0 where invalid) and prefix_ = its running sums.
+    void computeRunningSums(const ScanPoints& pts);
     /// Evaluates the exact form at reading i of a run [runBegin, runEnd] with baseline s (the
     /// noise-wanted one; clipped to the run here). False when it does not fit.
     bool evaluateAt(std::size_t i, std::size_t runBegin, std::size_t runEnd, std::size_t s,

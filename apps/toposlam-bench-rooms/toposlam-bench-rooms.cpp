@@ -5,9 +5,9 @@
 #include <toposlam/cli/CommandLine.h>
 #include <toposlam/cli/NumberArg.h>
 #include <toposlam/cli/UsageError.h>
-#include <toposlam/io/TextFile.h>
 #include <toposlam/io/InputError.h>
 #include <toposlam/io/ProgressDisplay.h>
+#include <toposlam/io/TextFile.h>
 #include <toposlam/roomsbench/GeneratedRoomCases.h>
 #include <toposlam/roomsbench/RoomBenchmarkSuite.h>
 #include <toposlam/simulation/FloorPlanGenerator.h>
@@ -125,9 +125,13 @@ struct Arguments {
         "",
         "dir",
         cmd};
-    cli::NumberArg<int> repeats{"r", "repeats",
+    cli::NumberArg<int> repeats{"r",
+                                "repeats",
                                 "runs per map and method; the median time is reported (default: 3)",
-                                3, cli::NumberRange<int>::positive(1000), "n", cmd};
+                                3,
+                                cli::NumberRange<int>::positive(1000),
+                                "n",
+                                cmd};
     TCLAP::ValueArg<std::string> methods{
         "m",   "methods", "comma-separated subset of vdoor,vdoor-paper,morph,dist (default: all)",
         false, "",        "list",

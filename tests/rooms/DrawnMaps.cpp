@@ -230,6 +230,20 @@ DrawnMap openPlan() {
     return m;
 }
 
+DrawnMap tableShadow() {
+    DrawnMap m;
+    m.image = cv::Mat(168, 208, CV_8U, cv::Scalar(128));
+    cv::Mat& img = m.image;
+    fill(img, 1, 1, 9.4, 7.4, 0);
+    fill(img, 1.2, 1.2, 9.2, 7.2, 255);
+    fill(img, 1.2, 2.8, 2.0, 3.0, 0);    // wall stub, ending at x = 2
+    fill(img, 3.0, 4.6, 4.2, 5.0, 0);    // the table's face, seen by the laser
+    fill(img, 3.0, 1.2, 4.2, 4.6, 128);  // its shadow, down to the bottom wall
+    m.rooms = {{6, 5}};
+    m.tour = {{6, 5}, {2.5, 3.9}, {2.2, 2.0}, {2.5, 3.9}, {6, 5}};
+    return m;
+}
+
 DrawnMap cubicles() {
     DrawnMap m;
     m.image = cv::Mat(200, 300, CV_8U, cv::Scalar(128));

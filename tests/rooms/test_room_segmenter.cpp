@@ -156,6 +156,24 @@ TEST(RoomSegmenter, OpenPlanHallIsOneRoom) {
     EXPECT_TRUE(result.map.doors.empty());
 }
 
+TEST(RoomSegmenter, ShadowBehindATableIsNoWall) {
+    const DrawnMap drawn = toposlam::rooms::test::tableShadow();
+    const auto grid = toposlam::rooms::test::gridOf(drawn.image);
+    for (const bool withTour : {false, true}) {
+        SCOPED_TRACE(withTour ? "with trajectory" : "medial axis");
+        const auto result = RoomSegmenter().segment(
+            grid, withTour ? posesOf(drawn.tour) : std::vector<mrpt::math::TPose2D>{});
+        expectMatchesDrawing(result.map, drawn, kDoorTolerance);
+        EXPECT_EQ(result.map.roomAt(2.2, 2.0), result.map.roomAt(6, 5));  // the pocket
+    }
+    // Every non-free cell a wall (as before occupied_threshold): the shadow frames a door.
+    RoomSegmenter::Options wallsEverywhere;
+    wallsEverywhere.freeSpace.occupiedThreshold = 1;
+    const auto cut = RoomSegmenter(wallsEverywhere).segment(grid);
+    EXPECT_EQ(cut.map.rooms.size(), 2u);
+    EXPECT_NE(cut.map.roomAt(2.2, 2.0), cut.map.roomAt(6, 5));
+}
+
 TEST(RoomSegmenter, CubicleFrontsWiderThanDoorsAreCut) {
     const DrawnMap drawn = toposlam::rooms::test::cubicles();
     const auto result = RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image));

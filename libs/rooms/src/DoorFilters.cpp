@@ -88,18 +88,22 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
         }
     }
     structure[0] = false;  // label 0: free cells
+    // Where no wall can be: free cells, and on SLAM grids also the unknown cells away from
+    // every occupied cell (FreeSpace::noWall): a shadow behind a table is no jamb and no wall.
+    const cv::Mat& open = space.noWall.empty() ? space.free : space.noWall;
     auto onStructure = [&](const cv::Point& jamb) {
         const bool inside = jamb.x >= 0 && jamb.y >= 0 && jamb.x < obstacleLabels.cols &&
                             jamb.y < obstacleLabels.rows;
-        return !inside || structure[static_cast<std::size_t>(obstacleLabels.at<int>(jamb))];
+        return !inside || (structure[static_cast<std::size_t>(obstacleLabels.at<int>(jamb))] &&
+                           !detail::isSet(open, jamb.x, jamb.y));
     };
     auto onWall = [&](const cv::Point& jamb, double ux, double uy) {
         // Along the door line (both ways: one leads back into the opening and stops at once)
         // and across it; walls drawn as thin digital lines at an angle are followed.
-        return wallRun(space.free, jamb, ux, uy, extent) >= extent ||
-               wallRun(space.free, jamb, -ux, -uy, extent) >= extent ||
-               wallRun(space.free, jamb, -uy, ux, extent) >= extent ||
-               wallRun(space.free, jamb, uy, -ux, extent) >= extent;
+        return wallRun(open, jamb, ux, uy, extent) >= extent ||
+               wallRun(open, jamb, -ux, -uy, extent) >= extent ||
+               wallRun(open, jamb, -uy, ux, extent) >= extent ||
+               wallRun(open, jamb, uy, -ux, extent) >= extent;
     };
     // The wall the door is in: from the jamb, away from the opening, the obstacle goes on for
     // wallEndProbe (past the corner of the jamb), and there it is a wall: free space on both
@@ -122,7 +126,7 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
     // building's walls (or free on one side only: the edge of the mapped space).
     auto wallAcross = [&](const cv::Point& jamb, double ux, double uy, double at) {
         const cv::Point probe(cvRound(jamb.x + ux * at), cvRound(jamb.y + uy * at));
-        if (isFree(probe.x, probe.y))
+        if (detail::isSet(open, probe.x, probe.y))
             return false;  // the run went on through a gap in a wall at an angle, not along it
         const double a = toFree(probe, -uy, ux), b = toFree(probe, uy, -ux);
         if (a <= thickness && b <= thickness) {
@@ -138,14 +142,14 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
     // a wall end: there it reaches the wall's face, where a wall at an angle to the grid
     // measures a cell or two across along its staircase.
     auto wallEnd = [&](const cv::Point& jamb, double ux, double uy) {
-        return wallRun(space.free, jamb, ux, uy, length) >= length &&
+        return wallRun(open, jamb, ux, uy, length) >= length &&
                wallAcross(jamb, ux, uy, std::round(length / 3));
     };
     // The sides of the door line (bit 0: (-uy, ux), bit 1: the other) to which a wall goes on
     // from the jamb across the door line.
     auto wallsAcross = [&](const cv::Point& jamb, double ux, double uy) {
-        return (wallRun(space.free, jamb, -uy, ux, length) >= length ? 1 : 0) |
-               (wallRun(space.free, jamb, uy, -ux, length) >= length ? 2 : 0);
+        return (wallRun(open, jamb, -uy, ux, length) >= length ? 1 : 0) |
+               (wallRun(open, jamb, uy, -ux, length) >= length ? 2 : 0);
     };
     // Both jambs framed by wall ends: neither in the middle of a wall that runs across the door
     // line, and the two not on walls that go on to the same side (the two side walls of a

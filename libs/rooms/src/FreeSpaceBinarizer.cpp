@@ -105,6 +105,26 @@ void FreeSpaceBinarizer::keepLargestComponent(const cv::Mat& all, const std::str
     out.freeCells = static_cast<std::size_t>(area[static_cast<std::size_t>(best)]);
 }
 
+// out.noWall from `all` (255 = free, specks included) and unknown_ (255 = unknown cell).
+void FreeSpaceBinarizer::markNoWall(const cv::Mat& all, FreeSpace& out) const {
+    cv::bitwise_and(unknown_, ~all, unknown_);  // specks made free are no longer unknown
+    if (cv::countNonZero(unknown_) == 0) {
+        out.noWall.release();
+        return;
+    }
+    cv::bitwise_or(all, unknown_, nearOccupied_);
+    cv::bitwise_not(nearOccupied_, nearOccupied_);  // occupied cells
+    const int reach =
+        static_cast<int>(std::round(detail::toCells(options_.wallHoleReach, out.frame.resolution)));
+    if (reach > 0) {
+        cv::dilate(
+            nearOccupied_, nearOccupied_,
+            cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * reach + 1, 2 * reach + 1)));
+    }
+    cv::bitwise_and(unknown_, ~nearOccupied_, out.noWall);
+    cv::bitwise_or(out.noWall, out.free, out.noWall);
+}
+
 FreeSpace FreeSpaceBinarizer::binarize(const COccupancyGridMap2D& grid,
                                        const std::string& sourceName) const {
     FreeSpace out;
@@ -124,24 +144,31 @@ void FreeSpaceBinarizer::binarize(const COccupancyGridMap2D& grid, FreeSpace& ou
         throw io::InputError(sourceName, "the map has no cells: there are no rooms to segment");
     }
     // Cells hold log-odds (int8); one lookup per value instead of one l2p() per cell.
-    std::array<std::uint8_t, 256> isFree{};
+    std::array<std::uint8_t, 256> isFree{}, isUnknown{};
     using Cell = COccupancyGridMap2D::cellType;
     for (int v = std::numeric_limits<Cell>::min(); v <= std::numeric_limits<Cell>::max(); ++v) {
-        isFree[static_cast<std::uint8_t>(v)] =
-            COccupancyGridMap2D::l2p(static_cast<Cell>(v)) > options_.freeThreshold ? 255 : 0;
+        const double p = COccupancyGridMap2D::l2p(static_cast<Cell>(v));
+        isFree[static_cast<std::uint8_t>(v)] = p > options_.freeThreshold ? 255 : 0;
+        isUnknown[static_cast<std::uint8_t>(v)] =
+            p >= options_.occupiedThreshold && p <= options_.freeThreshold ? 255 : 0;
     }
     const auto& raw = grid.getRawMap();
     cv::Mat& all = all_;
     all.create(out.frame.rows, out.frame.cols, CV_8U);
+    unknown_.create(out.frame.rows, out.frame.cols, CV_8U);
     for (int r = 0; r < out.frame.rows; ++r) {
         const Cell* src = raw.data() + static_cast<std::size_t>(out.frame.rows - 1 - r) *
                                            static_cast<std::size_t>(out.frame.cols);
         auto* dst = all.ptr<std::uint8_t>(r);
-        for (int c = 0; c < out.frame.cols; ++c)
+        auto* unknown = unknown_.ptr<std::uint8_t>(r);
+        for (int c = 0; c < out.frame.cols; ++c) {
             dst[c] = isFree[static_cast<std::uint8_t>(src[c])];
+            unknown[c] = isUnknown[static_cast<std::uint8_t>(src[c])];
+        }
     }
     removeSpecksAndLabelObstacles(all, out);
     keepLargestComponent(all, sourceName, out);
+    markNoWall(all, out);
 }
 
 FreeSpace FreeSpaceBinarizer::binarize(const cv::Mat& freeImage, GridImageFrame frame,
@@ -157,6 +184,7 @@ FreeSpace FreeSpaceBinarizer::binarize(const cv::Mat& freeImage, GridImageFrame 
     cv::compare(freeImage, 0, all_, cv::CMP_NE);
     removeSpecksAndLabelObstacles(all_, out);
     keepLargestComponent(all_, sourceName, out);
+    out.noWall.release();  // free or not: every non-free cell is a wall
     return out;
 }
 

@@ -29,6 +29,7 @@ FreeSpace cropToBounds(const FreeSpace& space, cv::Rect& roi) {
     out.free = space.free(roi);
     out.otherFree = space.otherFree.empty() ? cv::Mat() : space.otherFree(roi);
     out.obstacles = space.obstacles.empty() ? cv::Mat() : space.obstacles(roi);
+    out.noWall = space.noWall.empty() ? cv::Mat() : space.noWall(roi);
     out.obstacleOnBorder = space.obstacleOnBorder;
     out.specksRemoved = space.specksRemoved;
     out.bounds = space.bounds - roi.tl();
@@ -155,6 +156,7 @@ RoomSegmenter::Options RoomSegmenter::Options::paperExact() {
 
 void RoomSegmenter::Options::applyPaperPreset() {
     freeSpace.maxSpeckArea = 0;
+    freeSpace.occupiedThreshold = 1;  // every non-free cell is a wall
     door.localDirection = false;
     filters.keepNarrowestOfGroup = false;
     filters.mergeSmallestFirst = false;
@@ -201,6 +203,13 @@ void RoomSegmenter::Options::declare(config::OptionsSchema& s) {
         .below(1);
     s.real("max_speck_area", freeSpace.maxSpeckArea, "m^2",
            "non-free specks up to this area inside free space count as free (0: paper)")
+        .atLeast(0);
+    s.real("occupied_threshold", freeSpace.occupiedThreshold, "",
+           "a non-free cell is occupied when p(free) < this, else unknown (deviation)")
+        .atLeast(0)
+        .atMost(1);
+    s.real("wall_hole_reach", freeSpace.wallHoleReach, "m",
+           "unknown cells this close to an occupied cell are wall, farther ones no wall")
         .atLeast(0);
     // Step 2: wall segments and their merge.
     s.real("hough_angle_resolution_deg", hough.angleResolutionDeg, "deg",

@@ -81,7 +81,8 @@ std::string suiteTable(const RoomBenchmarkSuiteResult& result) {
 
 std::string suiteJson(const RoomBenchmarkSuiteResult& result,
                       const RoomBenchmarkSuiteOptions& options) {
-    io::Json j = io::parseJson(rooms::RoomBenchmark::json(result.scores, result.summary, options.bench), "B4 report");
+    io::Json j = io::parseJson(
+        rooms::RoomBenchmark::json(result.scores, result.summary, options.bench), "B4 report");
     j["generated_seeds"] = options.generatedSeeds;
     j["end_to_end"] = io::Json::array();
     for (const auto& e : result.endToEnd) {

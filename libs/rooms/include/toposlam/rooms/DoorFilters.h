@@ -21,9 +21,11 @@
 //                 the obstacle goes on along the door line for wallEndProbe and, a third of
 //                 the way in, is no thicker than maxWallThickness and as thick as the
 //                 building's walls are (WallThickness; or is the edge of the mapped space,
-//                 free on one side only). Rules out chairs, bins and plants as door frames, gaps between
-//                 desks (too deep to be walls) and the
-//                 cross-sections of corridors between doors (both jambs on side walls);
+//                 free on one side only). Rules out chairs, bins and plants as door frames, gaps
+//                 between desks (too deep to be walls) and the cross-sections of corridors between
+//                 doors (both jambs on side walls). On SLAM grids unknown space away from
+//                 every occupied cell (FreeSpace::noWall: the shadow behind a table) is no
+//                 jamb and no wall;
 //   constriction: a door is a narrow place between two wider spaces: walking away from the door
 //                 line on each side, within one door width the free space along the door line
 //                 becomes wider than the door by openingMargin (rules out the cross-sections

@@ -11,6 +11,12 @@
 // doorway would stop the door search short of the jambs. The non-free cells are labelled
 // into 8-connected obstacles on the way; the door filters use that to tell walls from
 // free-standing things.
+//
+// Deviation (Options::occupiedThreshold, SLAM grids): the paper's background holds occupied
+// and unknown cells alike, so the shadow behind a table, joined to the unknown outside by thin
+// unseen rays, looks like a wall. FreeSpace::noWall marks the unknown cells away from every
+// occupied one: the door tests find no wall there (holes where the laser grazed a wall, next
+// to its occupied cells, stay wall). Drawn maps without unknown cells are not affected.
 #include <toposlam/rooms/GridImageFrame.h>
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
@@ -43,6 +49,11 @@ struct FreeSpace {
     std::vector<std::uint8_t> obstacleOnBorder;
     /// Specks made free (see maxSpeckArea).
     std::size_t specksRemoved = 0;
+    /// CV_8U, 255 = where no wall can be: the cells of `free` and the unknown cells (p(free)
+    /// from occupiedThreshold to freeThreshold) farther than wallHoleReach from every occupied
+    /// cell (shadows behind furniture, unexplored space). Empty when the map has no such
+    /// unknown cell: then `free` is where no wall can be.
+    cv::Mat noWall;
 };
 
 class FreeSpaceBinarizer {
@@ -57,6 +68,14 @@ class FreeSpaceBinarizer {
         /// Isolated non-free specks of at most this area (m^2) inside the free space count as
         /// free; 0 keeps every speck (the paper). 0.01 m^2 is four 5 cm cells.
         double maxSpeckArea = 0.01;
+        /// A non-free cell is occupied (the laser hit something there) when its p(free) is
+        /// below this, else unknown (never or hardly ever seen: MRPT's 0.5). At or above
+        /// freeThreshold every non-free cell counts as occupied (the paper, FreeSpace::noWall
+        /// empty).
+        double occupiedThreshold = 0.45;
+        /// m: unknown cells within this of an occupied cell are part of its wall (holes where
+        /// the laser grazed the wall); farther ones are no wall (FreeSpace::noWall).
+        double wallHoleReach = 0.15;
     };
 
     FreeSpaceBinarizer() = default;
@@ -82,10 +101,11 @@ class FreeSpaceBinarizer {
     void removeSpecksAndLabelObstacles(cv::Mat& all, FreeSpace& out) const;
     void keepLargestComponent(const cv::Mat& all, const std::string& sourceName,
                               FreeSpace& out) const;
+    void markNoWall(const cv::Mat& all, FreeSpace& out) const;
 
     Options options_;
     // Scratch images, reused across calls (one binarizer per thread).
-    mutable cv::Mat all_, labels_, notFree_;
+    mutable cv::Mat all_, labels_, notFree_, unknown_, nearOccupied_;
 };
 
 }  // namespace toposlam::rooms

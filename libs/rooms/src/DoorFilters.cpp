@@ -66,6 +66,21 @@ double jambDistance(const VirtualDoor& a, const VirtualDoor& b) {
                     std::max(d(a.jambA, b.jambB), d(a.jambB, b.jambA)));
 }
 
+/// Per obstacle label (FreeSpace::obstacles): whether it belongs to the building. Those that
+/// reach the border of the map (the outer walls and everything joined to them) and those that
+/// carry a wall segment do; the others are free-standing things: furniture, bins, plants.
+std::vector<bool> buildingStructure(const FreeSpace& space, const std::vector<LineSegment>& walls) {
+    std::vector<bool> structure(space.obstacleOnBorder.begin(), space.obstacleOnBorder.end());
+    for (const LineSegment& w : walls) {
+        cv::LineIterator it(space.obstacles, cv::Point(cvRound(w.start.x), cvRound(w.start.y)),
+                            cv::Point(cvRound(w.end.x), cvRound(w.end.y)), 8);
+        for (int k = 0; k < it.count; ++k, ++it)
+            structure[static_cast<std::size_t>(space.obstacles.at<int>(it.pos()))] = true;
+    }
+    structure[0] = false;  // label 0: free cells
+    return structure;
+}
+
 }  // namespace
 
 std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
@@ -75,19 +90,8 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
     if (!options_.requireWallJambs || doors.empty())
         return doors;
     const double extent = detail::toCells(options_.minWallExtent, space.frame.resolution);
-    // Obstacles (8-connected non-free cells) that belong to the building: those that reach the
-    // border of the map (the outer walls and everything joined to them) and those that carry
-    // a wall segment. The others are free-standing things: furniture, bins, plants.
     const cv::Mat& obstacleLabels = space.obstacles;
-    std::vector<bool> structure(space.obstacleOnBorder.begin(), space.obstacleOnBorder.end());
-    for (const LineSegment& w : walls) {
-        cv::LineIterator it(obstacleLabels, cv::Point(cvRound(w.start.x), cvRound(w.start.y)),
-                            cv::Point(cvRound(w.end.x), cvRound(w.end.y)), 8);
-        for (int k = 0; k < it.count; ++k, ++it) {
-            structure[static_cast<std::size_t>(obstacleLabels.at<int>(it.pos()))] = true;
-        }
-    }
-    structure[0] = false;  // label 0: free cells
+    const std::vector<bool> structure = buildingStructure(space, walls);
     // Where no wall can be: free cells, and on SLAM grids also the unknown cells away from
     // every occupied cell (FreeSpace::noWall): a shadow behind a table is no jamb and no wall.
     const cv::Mat& open = space.noWall.empty() ? space.free : space.noWall;

@@ -60,7 +60,7 @@ TEST(IniFile, RefusesWhatIsNoIniFile) {
     EXPECT_EQ(openError(std::string("[S]\nmax_range = 1\x01\n")),
               "line 2: control character (byte 1): not a text file");
     EXPECT_EQ(openError(std::string("[S]\nmax_range = \xff\xfe\n")), "line 2: not UTF-8 text");
-    EXPECT_EQ(openError(std::string("\x7f\x45LF\x02\x01\x01\0\0\0", 12)),
+    EXPECT_EQ(openError(std::string("\x7f\x45LF\x02\x01\x01\0\0\0", 10)),
               "line 1: control character (byte 2): not a text file");
 }
 

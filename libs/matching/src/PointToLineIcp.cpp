@@ -59,7 +59,7 @@ struct PointToLineIcp::Accumulator {
 };
 
 namespace {
-/// Smallest association gate of scan-mode ICP's second stage (m).
+/// Smallest association gate of the second stage (m).
 constexpr double kMinGate = 0.02;
 
 /// Distance from p to the segment of node n, clamped at its ends.
@@ -135,49 +135,31 @@ void PointToLineIcp::prepareReference(const PolarScan& reference, double maxJoin
     }
 }
 
-IcpResult PointToLineIcp::refineOnScan(const PolarScan& reference, const PolarScan& current,
-                                       const mrpt::poses::CPose2D& initial,
-                                       const IcpOptions& options, long searchBeams) {
+template <typename Correspond>
+IcpResult PointToLineIcp::twoStageRefine(const PolarScan& current,
+                                         const mrpt::poses::CPose2D& initial,
+                                         const IcpOptions& options, double gate,
+                                         Correspond&& correspond) const {
     IcpResult out;
     double x = initial.x(), y = initial.y(), phi = initial.phi();
     // Stage 1 (wide gate) on every stride-th point, stage 2 (tight gate) on all of them.
     std::size_t stride = std::max<std::size_t>(1, options.stride);
     const double c2 = options.robustScale * options.robustScale;
-    double gate2 = options.maxDistance * options.maxDistance;
+    const double widestGate = gate;
     bool tightened = false;
     Accumulator acc;
-    if (lines_.size() != reference.size())
-        prepareReference(reference);  // never prepared
     for (int it = 0; it < options.maxIterations; ++it) {
         acc = Accumulator();
         const double c = std::cos(phi), s = std::sin(phi);
+        const double gate2 = gate * gate;
         for (std::size_t i = 0; i < current.size(); i += stride) {
             if (!current.valid(i))
                 continue;
             const mrpt::math::TPoint2D& p = current.point(i);
             const double rx = c * p.x - s * p.y, ry = s * p.x + c * p.y;
-            const double qx = rx + x, qy = ry + y;
-            const long b = reference.beamAtPoint(qx, qy);
-            if (b < 0)
-                continue;
-            long best = -1;
-            double bestD2 = gate2;
-            for (long o = -searchBeams; o <= searchBeams; ++o) {
-                const long k = reference.neighbour(b, o);
-                if (k < 0 || !lines_[std::size_t(k)])
-                    continue;
-                const mrpt::math::TPoint2D& q = reference.point(std::size_t(k));
-                const double d2 = (qx - q.x) * (qx - q.x) + (qy - q.y) * (qy - q.y);
-                if (d2 < bestD2)
-                    bestD2 = d2, best = k;
-            }
-            if (best < 0)
-                continue;
-            const LocalLine& l = *lines_[std::size_t(best)];
-            const double r = l.nx * qx + l.ny * qy - l.offset;
-            if (r * r > gate2)
-                continue;
-            acc.add(l.nx, l.ny, r, rx, ry, c2);
+            double nx, ny, r;
+            if (correspond(rx + x, ry + y, gate2, nx, ny, r))
+                acc.add(nx, ny, r, rx, ry, c2);
         }
         out.iterations = it + 1;
         if (acc.used < 3)
@@ -192,8 +174,7 @@ IcpResult PointToLineIcp::refineOnScan(const PolarScan& reference, const PolarSc
             }
             tightened = true;
             const double sigma = std::sqrt(acc.weightedSq / std::max(1.0, acc.weightSum));
-            const double gate = std::clamp(3 * sigma, kMinGate, options.maxDistance);
-            gate2 = gate * gate;
+            gate = std::clamp(3 * sigma, kMinGate, widestGate);
             stride = 1;
         }
     }
@@ -202,53 +183,54 @@ IcpResult PointToLineIcp::refineOnScan(const PolarScan& reference, const PolarSc
     return out;
 }
 
+IcpResult PointToLineIcp::refineOnScan(const PolarScan& reference, const PolarScan& current,
+                                       const mrpt::poses::CPose2D& initial,
+                                       const IcpOptions& options, long searchBeams) {
+    if (lines_.size() != reference.size())
+        prepareReference(reference);  // never prepared
+    // The local line of the nearest reference point among the beams around q's bearing.
+    const auto correspond = [&](double qx, double qy, double gate2, double& nx, double& ny,
+                                double& r) {
+        const long b = reference.beamAtPoint(qx, qy);
+        if (b < 0)
+            return false;
+        long best = -1;
+        double bestD2 = gate2;
+        for (long o = -searchBeams; o <= searchBeams; ++o) {
+            const long k = reference.neighbour(b, o);
+            if (k < 0 || !lines_[std::size_t(k)])
+                continue;
+            const mrpt::math::TPoint2D& q = reference.point(std::size_t(k));
+            const double d2 = (qx - q.x) * (qx - q.x) + (qy - q.y) * (qy - q.y);
+            if (d2 < bestD2)
+                bestD2 = d2, best = k;
+        }
+        if (best < 0)
+            return false;
+        const LocalLine& l = *lines_[std::size_t(best)];
+        nx = l.nx, ny = l.ny, r = l.nx * qx + l.ny * qy - l.offset;
+        return r * r <= gate2;
+    };
+    return twoStageRefine(current, initial, options, options.maxDistance, correspond);
+}
+
 IcpResult PointToLineIcp::refineOnMap(const LineMap& map, const PolarScan& current,
                                       const mrpt::poses::CPose2D& initial,
                                       const IcpOptions& options) {
-    IcpResult out;
-    double x = initial.x(), y = initial.y(), phi = initial.phi();
-    std::size_t stride = std::max<std::size_t>(1, options.stride);
-    const double c2 = options.robustScale * options.robustScale;
-    double gate = std::min(options.maxDistance, map.options().radius);
-    bool tightened = false;
-    Accumulator acc;
-    for (int it = 0; it < options.maxIterations; ++it) {
-        acc = Accumulator();
-        const double c = std::cos(phi), s = std::sin(phi);
-        const double gate2 = gate * gate;
-        for (std::size_t i = 0; i < current.size(); i += stride) {
-            if (!current.valid(i))
-                continue;
-            const mrpt::math::TPoint2D& p = current.point(i);
-            const double rx = c * p.x - s * p.y, ry = s * p.x + c * p.y;
-            const double qx = rx + x, qy = ry + y;
-            const LineMapPoint* m = map.nearest(qx, qy);
-            if (!m)
-                continue;
-            const double dx = qx - m->x, dy = qy - m->y;
-            if (dx * dx + dy * dy > gate2)
-                continue;
-            const double r = m->nx * dx + m->ny * dy;
-            acc.add(m->nx, m->ny, r, rx, ry, c2);
-        }
-        out.iterations = it + 1;
-        if (acc.used < 3)
-            break;
-        if (acc.step(x, y, phi, options)) {
-            if (tightened) {
-                out.converged = true;
-                break;
-            }
-            // As in scan mode: once more with a gate of 3 sigma of the residuals.
-            tightened = true;
-            const double sigma = std::sqrt(acc.weightedSq / std::max(1.0, acc.weightSum));
-            gate = std::clamp(3 * sigma, kMinGate, gate);
-            stride = 1;
-        }
-    }
-    out.pose = mrpt::poses::CPose2D(x, y, phi);
-    finish(out, acc, options);
-    return out;
+    // The local line of the map point nearest to q (O(1) lookup).
+    const auto correspond = [&](double qx, double qy, double gate2, double& nx, double& ny,
+                                double& r) {
+        const LineMapPoint* m = map.nearest(qx, qy);
+        if (!m)
+            return false;
+        const double dx = qx - m->x, dy = qy - m->y;
+        if (dx * dx + dy * dy > gate2)
+            return false;
+        nx = m->nx, ny = m->ny, r = m->nx * dx + m->ny * dy;
+        return true;
+    };
+    return twoStageRefine(current, initial, options,
+                          std::min(options.maxDistance, map.options().radius), correspond);
 }
 
 void PointToLineIcp::finish(IcpResult& out, const Accumulator& acc,

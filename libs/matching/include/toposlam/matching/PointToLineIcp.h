@@ -100,6 +100,12 @@ class PointToLineIcp {
 
   private:
     struct Accumulator;
+    /// The two stages of scan and map mode around `correspond(qx, qy, gate2, nx, ny, r)`,
+    /// which finds the line for the current point moved to the world point q and its residual,
+    /// false when there is none within the squared gate (PointToLineIcp.cpp).
+    template <typename Correspond>
+    IcpResult twoStageRefine(const PolarScan& current, const mrpt::poses::CPose2D& initial,
+                             const IcpOptions& options, double gate, Correspond&& correspond) const;
     void finish(IcpResult& out, const Accumulator& acc, const IcpOptions& options) const;
 
     std::vector<SegmentMatch> sorted_;

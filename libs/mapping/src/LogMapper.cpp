@@ -1,6 +1,7 @@
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/poses/CPose3DPDF.h>
 #include <mrpt/system/datetime.h>
+#include <toposlam/io/CpuTime.h>
 #include <toposlam/io/InputError.h>
 #include <toposlam/io/LaserLogReader.h>
 #include <toposlam/mapping/CGraphSlamBuilder.h>
@@ -11,7 +12,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <stdexcept>
 
 namespace toposlam::mapping {
@@ -24,10 +24,6 @@ void SlamEngineOptions::declare(config::OptionsSchema& s) {
 using mrpt::poses::CPose2D;
 
 namespace {
-double processCpuSeconds() {
-    return double(std::clock()) / CLOCKS_PER_SEC;
-}
-
 /// Every record of the log, in order, to `consume`; progress reported on the way.
 template <typename Consume>
 void readLog(const std::string& logPath, const io::ProgressCallback& progress, Consume&& consume) {
@@ -112,7 +108,7 @@ void alignWithWalls(const OccupancyGridOptions& options, std::vector<PosedScan>&
 MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFileBase& ini,
                      const io::ProgressCallback& progress) {
     const auto start = std::chrono::steady_clock::now();
-    const double cpuStart = processCpuSeconds();
+    const double cpuStart = io::processCpuSeconds();
     MappingResult result;
     SlamEngineOptions engine;
     engine.loadFromConfigFile(ini, "Slam");
@@ -144,7 +140,7 @@ MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFile
     result.grid = buildOccupancyGrid(scans, gridOptions);
     result.wallSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    result.cpuSeconds = processCpuSeconds() - cpuStart;
+    result.cpuSeconds = io::processCpuSeconds() - cpuStart;
     return result;
 }
 

@@ -1,16 +1,11 @@
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/poses/CPosePDF.h>
+#include <toposlam/io/CpuTime.h>
 #include <toposlam/matchingbench/PairMatcher.h>
-
-#include <ctime>
 
 namespace toposlam::matchingbench {
 
-double threadCpuSeconds() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
+using io::threadCpuSeconds;
 
 GraphPairMatcher::GraphPairMatcher(std::string name, const std::string& extractor,
                                    const matching::GraphMatcherOptions& options,

@@ -1,3 +1,4 @@
+#include <toposlam/io/CpuTime.h>
 #include <toposlam/rooms/DistanceSegmentation.h>
 #include <toposlam/rooms/MorphologicalSegmentation.h>
 #include <toposlam/rooms/RoomBenchmark.h>
@@ -11,7 +12,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <ctime>
 #include <filesystem>
 #include <map>
 #include <stdexcept>
@@ -28,13 +28,6 @@ double median(std::vector<double> v) {
 
 double ratio(std::size_t a, std::size_t b) {
     return b == 0 ? 0.0 : static_cast<double>(a) / static_cast<double>(b);
-}
-
-// CPU time (s) of the calling thread: what the method cost, whatever else the machine runs.
-double threadCpuSeconds() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 // Every method single-threaded while a benchmark runs (OpenCV would otherwise parallelise some
@@ -175,7 +168,7 @@ std::vector<RoomBenchmarkScore> RoomBenchmark::score(const RoomBenchmarkCase& c)
         RoomSegmenter::Result topo;
         for (int k = 0; k < options_.repeats; ++k) {
             const auto t0 = std::chrono::steady_clock::now();
-            const double cpu0 = threadCpuSeconds();
+            const double cpu0 = io::threadCpuSeconds();
             if (virtualDoor) {
                 topo = (method == "vdoor" ? virtualDoor_ : virtualDoorPaper_)
                            .segment(c.grid, c.trajectory, c.name());
@@ -184,7 +177,7 @@ std::vector<RoomBenchmarkScore> RoomBenchmark::score(const RoomBenchmarkCase& c)
             } else {
                 labels = DistanceSegmentation().segment(c.inputFree, resolution);
             }
-            cpu.push_back(threadCpuSeconds() - cpu0);
+            cpu.push_back(io::threadCpuSeconds() - cpu0);
             seconds.push_back(
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         }

@@ -67,7 +67,4 @@ class CicpPairMatcher : public PairMatcher {
     mrpt::slam::CICP icp_;
 };
 
-/// CPU seconds of the calling thread.
-double threadCpuSeconds();
-
 }  // namespace toposlam::matchingbench

@@ -16,7 +16,27 @@ PathUncertainty::PathUncertainty(double driftSigmaXY, double driftSigmaPhi,
                                  double driftSigmaPhiPerTurn)
     : driftXY_(driftSigmaXY), driftPhi_(driftSigmaPhi), driftTurn_(driftSigmaPhiPerTurn) {}
 
+void PathUncertainty::cacheNewEdges(const PoseGraph& graph) {
+    // Edges are only ever appended (a withdrawn one leaves the adjacency lists), so each
+    // edge's contribution is computed once.
+    const std::vector<PoseGraphEdge>& edges = graph.edges();
+    if (edges.size() < steps_.size())
+        steps_.clear();  // another graph
+    for (std::size_t e = steps_.size(); e < edges.size(); ++e) {
+        const PoseGraphEdge& edge = edges[e];
+        const double length = edge.measurement.norm();
+        Step s;
+        s.from = edge.from;
+        s.to = edge.to;
+        s.position = std::max(
+            {edge.covariance(0, 0), edge.covariance(1, 1), driftXY_ * driftXY_ * length * length});
+        s.heading = std::max(edge.covariance(2, 2), driftPhi_ * driftPhi_ * length * length);
+        steps_.push_back(s);
+    }
+}
+
 const std::vector<PathVariance>& PathUncertainty::from(const PoseGraph& graph, std::size_t source) {
+    cacheNewEdges(graph);
     const std::size_t n = graph.nodeCount();
     variance_.assign(n, PathVariance());
     cost_.assign(n, std::numeric_limits<double>::infinity());
@@ -31,22 +51,16 @@ const std::vector<PathVariance>& PathUncertainty::from(const PoseGraph& graph, s
         heap_.pop_back();
         if (cost > cost_[node])
             continue;  // stale entry
+        const PathVariance here = variance_[node];
         for (std::size_t e : graph.edgesAt(node)) {
-            const PoseGraphEdge& edge = graph.edges()[e];
-            const std::size_t next = edge.from == node ? edge.to : edge.from;
-            const double length = edge.measurement.norm();
-            const double edgePosition = std::max({edge.covariance(0, 0), edge.covariance(1, 1),
-                                                  driftXY_ * driftXY_ * length * length});
-            const double edgeHeading =
-                std::max(edge.covariance(2, 2), driftPhi_ * driftPhi_ * length * length);
-            PathVariance v = variance_[node];
-            v.position += edgePosition;
-            v.heading += edgeHeading;
-            const double c = v.position + v.heading * kLeverArm * kLeverArm;
+            const Step& step = steps_[e];
+            const std::size_t next = step.from == node ? step.to : step.from;
+            const double position = here.position + step.position;
+            const double heading = here.heading + step.heading;
+            const double c = position + heading * kLeverArm * kLeverArm;
             if (c < cost_[next]) {
                 cost_[next] = c;
-                v.reached = true;
-                variance_[next] = v;
+                variance_[next] = {position, heading, true};
                 heap_.push_back({c, next});
                 std::push_heap(heap_.begin(), heap_.end(), later);
             }

@@ -4,6 +4,7 @@
 #include <toposlam/io/AtomicFile.h>
 #include <toposlam/io/CpuTime.h>
 #include <toposlam/mapping/PoseGraph.h>
+#include <toposlam/mapping/RelativePoseError.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -27,31 +28,6 @@ const char* toString(EdgeKind k) {
 }
 
 namespace {
-/// Residual of one edge: the measured pose of b in a's frame against the estimate's,
-/// whitened by the square root of the measurement's information matrix.
-struct RelativePoseError {
-    RelativePoseError(const CPose2D& z, const Eigen::Matrix3d& sqrtInformation)
-        : x(z.x()), y(z.y()), phi(z.phi()), sqrtInformation(sqrtInformation) {}
-
-    template <typename T>
-    bool operator()(const T* a, const T* b, T* residual) const {
-        const T c = ceres::cos(a[2]), s = ceres::sin(a[2]);
-        const T dx = b[0] - a[0], dy = b[1] - a[1];
-        Eigen::Matrix<T, 3, 1> e;
-        e(0) = c * dx + s * dy - T(x);
-        e(1) = -s * dx + c * dy - T(y);
-        // Heading difference wrapped to [-pi, pi).
-        const T d = b[2] - a[2] - T(phi);
-        e(2) = d - T(2 * M_PI) * ceres::floor((d + T(M_PI)) / T(2 * M_PI));
-        Eigen::Map<Eigen::Matrix<T, 3, 1>> out(residual);
-        out = sqrtInformation.cast<T>() * e;
-        return true;
-    }
-
-    double x, y, phi;
-    Eigen::Matrix3d sqrtInformation;
-};
-
 ceres::Problem::Options problemOptions() {
     ceres::Problem::Options o;
     // The problem owns the cost and loss functions; the parameter blocks are the graph's.
@@ -112,8 +88,7 @@ void PoseGraph::addResidual(std::size_t index) {
     const PoseGraphEdge& e = edges_[index];
     const Eigen::Matrix3d information = e.covariance.asEigen().inverse();
     const Eigen::Matrix3d sqrtInformation = information.llt().matrixU();
-    costs_[index] = new ceres::AutoDiffCostFunction<RelativePoseError, 3, 3, 3>(
-        new RelativePoseError(e.measurement, sqrtInformation));
+    costs_[index] = makeRelativePoseError(e.measurement, sqrtInformation);
     losses_[index] = e.kind == EdgeKind::Loop && loopLossScale_ > 0
                          ? new ceres::CauchyLoss(loopLossScale_)
                          : nullptr;
@@ -194,6 +169,7 @@ mrpt::graphs::CNetworkOfPoses2DInf PoseGraph::network() const {
 std::size_t PoseGraph::solve(ceres::Problem& problem, int maxIterations) {
     ceres::Solver::Options options;
     options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+    options.sparse_linear_algebra_library_type = ceres::EIGEN_SPARSE;
     options.max_num_iterations = maxIterations;
     options.num_threads = 1;
     options.logging_type = ceres::SILENT;

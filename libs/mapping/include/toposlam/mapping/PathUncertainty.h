@@ -32,7 +32,15 @@ class PathUncertainty {
     const std::vector<PathVariance>& from(const PoseGraph& graph, std::size_t source);
 
   private:
+    /// What an edge adds to a chain: its variances, at least the drift model's.
+    struct Step {
+        std::size_t from = 0, to = 0;
+        double position = 0, heading = 0;  ///< m^2, rad^2
+    };
+    void cacheNewEdges(const PoseGraph& graph);
+
     double driftXY_, driftPhi_, driftTurn_;
+    std::vector<Step> steps_;  // by edge index
     std::vector<PathVariance> variance_;
     std::vector<double> cost_;
     std::vector<std::pair<double, std::size_t>> heap_;

@@ -47,7 +47,7 @@ struct PoseGraphEdge {
 struct OptimizationResult {
     std::size_t iterations = 0;
     double chi2Before = 0, chi2After = 0;  ///< sum over active edges
-    double seconds = 0;                    ///< wall time
+    double seconds = 0;                    ///< CPU time of this thread
 };
 
 class PoseGraph {

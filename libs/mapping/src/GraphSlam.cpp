@@ -156,6 +156,7 @@ void GraphSlam::addKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
     kf.scanIndex = scans_.size();
     kf.scan = scan;
     kf.polar = polar_;
+    matching::surfacePoints(polar_, lineMapOptions(options_), kf.surface);
     kf.sensorOnRobot = CPose2D(scan->sensorPose);
     kf.travelled = travelled_;
     kf.turned = turned_;
@@ -234,6 +235,10 @@ void GraphSlam::updateSubmaps(const Keyframe& kf) {
         firstActiveSubmap_ + 1 < submaps_.size()) {
         submaps_[firstActiveSubmap_].finish();
         ++firstActiveSubmap_;
+        // Keyframes older than every active submap are never inserted into one again.
+        for (std::size_t id = submaps_[firstActiveSubmap_ - 1].anchor(); id < firstActiveKeyframe();
+             ++id)
+            std::vector<matching::SurfacePoint>().swap(keyframes_[id].surface);
     }
     if (submaps_.back().keyframes().size() >= perSubmap / 2) {
         submaps_.emplace_back(kf.id, lineMapOptions(options_));

@@ -7,7 +7,7 @@ Submap::Submap(std::size_t anchor, const matching::LineMapOptions& options)
 
 void Submap::insert(const Keyframe& kf, const mrpt::poses::CPose2D& robotInSubmap) {
     keyframes_.push_back(kf.id);
-    map_.insertScan(kf.polar, robotInSubmap + kf.sensorOnRobot);
+    map_.insertSurface(kf.surface, robotInSubmap + kf.sensorOnRobot);
 }
 
 void Submap::clear() {

@@ -23,20 +23,34 @@ void LineMap::clear() {
     std::fill(cells_.begin(), cells_.end(), Cell());
 }
 
-void LineMap::insertScan(const PolarScan& scan, const mrpt::poses::CPose2D& sensorPose) {
-    const double c = std::cos(sensorPose.phi()), s = std::sin(sensorPose.phi());
+void surfacePoints(const PolarScan& scan, const LineMapOptions& options,
+                   std::vector<SurfacePoint>& out) {
+    out.clear();
     for (std::size_t b = 0; b < scan.size(); ++b) {
-        if (!scan.valid(b) || scan.range(b) > options_.maxRange)
+        if (!scan.valid(b) || scan.range(b) > options.maxRange)
             continue;
-        const auto line = fitLocalLine(scan, b, options_.maxJoinDistance);
+        const auto line = fitLocalLine(scan, b, options.maxJoinDistance);
         if (!line)
             continue;
         const mrpt::math::TPoint2D& p = scan.point(b);
+        out.push_back({p.x, p.y, line->nx, line->ny});
+    }
+}
+
+void LineMap::insertScan(const PolarScan& scan, const mrpt::poses::CPose2D& sensorPose) {
+    surfacePoints(scan, options_, surface_);
+    insertSurface(surface_, sensorPose);
+}
+
+void LineMap::insertSurface(const std::vector<SurfacePoint>& points,
+                            const mrpt::poses::CPose2D& sensorPose) {
+    const double c = std::cos(sensorPose.phi()), s = std::sin(sensorPose.phi());
+    for (const SurfacePoint& p : points) {
         LineMapPoint m;
         m.x = float(sensorPose.x() + c * p.x - s * p.y);
         m.y = float(sensorPose.y() + s * p.x + c * p.y);
-        m.nx = float(c * line->nx - s * line->ny);
-        m.ny = float(s * line->nx + c * line->ny);
+        m.nx = float(c * p.nx - s * p.ny);
+        m.ny = float(s * p.nx + c * p.ny);
         m.weight = 1;
         insert(m);
     }

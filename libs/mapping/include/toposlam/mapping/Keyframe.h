@@ -4,10 +4,12 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 #include <toposlam/features/CObservationLaserFeatures.h>
+#include <toposlam/matching/LineMap.h>
 #include <toposlam/matching/PolarScan.h>
 
 #include <array>
 #include <cstddef>
+#include <vector>
 
 namespace toposlam::mapping {
 
@@ -20,6 +22,8 @@ struct Keyframe {
     std::size_t scanIndex = 0;  ///< index of its scan among all scans processed
     mrpt::obs::CObservation2DRangeScan::Ptr scan;
     matching::PolarScan polar;  ///< the scan's readings, sensor frame
+    /// Its readings with their local lines (sensor frame), as every submap inserts them.
+    std::vector<matching::SurfacePoint> surface;
     /// Its features (sensor frame), extracted once (or taken from the log when it has them).
     features::CObservationLaserFeatures::Ptr features;
     mrpt::poses::CPose2D sensorOnRobot;  ///< the laser's pose on the robot (2D part)

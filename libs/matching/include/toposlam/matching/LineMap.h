@@ -24,6 +24,13 @@ struct LineMapPoint {
     float weight = 0;      ///< observations fused into it
 };
 
+/// A reading with the normal of its local line, in the sensor frame of its scan (m): what a
+/// scan contributes to any line map, whatever pose it is inserted at.
+struct SurfacePoint {
+    double x = 0, y = 0;
+    double nx = 0, ny = 0;
+};
+
 struct LineMapOptions {
     double resolution = 0.05;  ///< m, lookup cell size
     double radius = 0.4;       ///< m, largest association distance the lookup supports
@@ -44,6 +51,10 @@ class LineMap {
     /// Adds every valid reading of `scan` that has a local line, seen from `sensorPose` (the
     /// scan's sensor in the map frame).
     void insertScan(const PolarScan& scan, const mrpt::poses::CPose2D& sensorPose);
+    /// The same from the scan's surface points (surfacePoints), e.g. computed once for a scan
+    /// that goes into several maps.
+    void insertSurface(const std::vector<SurfacePoint>& points,
+                       const mrpt::poses::CPose2D& sensorPose);
     /// Adds one point (fused into a close one with a similar normal).
     void insert(const LineMapPoint& p);
 
@@ -73,11 +84,17 @@ class LineMap {
 
     LineMapOptions options_;
     std::vector<LineMapPoint> points_;
+    std::vector<SurfacePoint> surface_;  // insertScan's scratch
     std::vector<Cell> cells_;
     long width_ = 0, height_ = 0;
     double x0_ = 0, y0_ = 0;  ///< corner of cell (0, 0), m
     double inverseResolution_ = 20;
     long stampRadius_ = 8;  ///< radius in cells
 };
+
+/// The readings of `scan` within options.maxRange that have a local line (fitLocalLine with
+/// options.maxJoinDistance), with its normal, in the sensor frame; `out` is replaced.
+void surfacePoints(const PolarScan& scan, const LineMapOptions& options,
+                   std::vector<SurfacePoint>& out);
 
 }  // namespace toposlam::matching

@@ -28,8 +28,8 @@ class RegionBoundary {
     /// neither.
     void measure(const FreeSpace& space, const RegionPartition& partition);
 
-    /// Cell edges, index = region label ([0] unused); all open counts are zero when the map
-    /// has no unknown cell away from the walls (FreeSpace::noWall empty).
+    /// Cell edges, index = region label ([0] unused); all zero when the map has no unknown
+    /// cell away from the walls (FreeSpace::noWall empty: nothing is measured).
     const std::vector<int>& closed() const { return closed_; }
     const std::vector<int>& open() const { return open_; }
 

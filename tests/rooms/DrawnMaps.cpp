@@ -244,6 +244,36 @@ DrawnMap tableShadow() {
     return m;
 }
 
+DrawnMap cabinetPocket() {
+    DrawnMap m;
+    m.image = cv::Mat(168, 208, CV_8U, cv::Scalar(128));
+    cv::Mat& img = m.image;
+    fill(img, 1, 1, 9.4, 7.4, 0);
+    fill(img, 1.2, 1.2, 9.2, 7.2, 255);
+    // The closet, bottom right: walls 0.1 m, door y in [1.8, 2.7]; the unseen shadow of a
+    // table fills its lower-right corner, enclosed by the walls the laser saw.
+    fill(img, 6.6, 1.2, 6.7, 3.7, 0);
+    fill(img, 6.6, 3.6, 9.2, 3.7, 0);
+    fill(img, 6.6, 1.8, 6.7, 2.7, 255);
+    m.doors.push_back({{6.65, 2.25}, 0.9});
+    fill(img, 7.6, 1.2, 9.2, 2.8, 128);
+    // The two cabinets along the top wall, x in [1.2, 4.2] and [5.4, 9.2], y in [5.0, 7.2]:
+    // fronts seen, bodies and the wall behind them unknown.
+    fill(img, 1.0, 5.0, 4.2, 7.4, 128);
+    fill(img, 5.4, 5.0, 9.4, 7.4, 128);
+    fill(img, 1.0, 5.0, 4.2, 5.1, 0);
+    fill(img, 5.4, 5.0, 9.4, 5.1, 0);
+    fill(img, 5.4, 5.1, 5.5, 5.4, 0);  // the right cabinet's flank, seen near its front
+    // The pocket behind the mouth: the right flank's diagonal shadow, the back wall seen.
+    const std::vector<cv::Point> seen = {pixel(img, 5.4, 5.4), pixel(img, 6.6, 7.2),
+                                         pixel(img, 5.4, 7.2)};
+    cv::fillConvexPoly(img, seen, cv::Scalar(255));
+    fill(img, 4.2, 7.2, 6.6, 7.4, 0);
+    m.rooms = {{3, 3}, {7.9, 3.0}};
+    m.tour = {{3, 3}, {4.8, 4.5}, {4.8, 6.0}, {4.8, 4.5}, {5.5, 2.25}, {7.9, 3.0}};
+    return m;
+}
+
 DrawnMap cubicles() {
     DrawnMap m;
     m.image = cv::Mat(200, 300, CV_8U, cv::Scalar(128));

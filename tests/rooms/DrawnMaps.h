@@ -68,5 +68,14 @@ DrawnMap openPlan();
 /// the shadow is door-wide, the pocket below it 2.9 m^2; but the shadow is no wall: one room,
 /// no door.
 DrawnMap tableShadow();
+/// An 8 x 6 m room as a SLAM grid shows it, with a 2.5 x 2.4 m closet (0.9 m door; the unseen
+/// shadow of a table in its corner, a third of its boundary, enclosed by the walls the laser
+/// saw) and, along the top wall, two cabinets of which
+/// the laser saw the fronts only (their bodies and the wall behind them unknown, joined to the
+/// unknown outside). Between them a pocket 1.2 m wide at its mouth, widening behind it where
+/// the right cabinet's flank lies in a diagonal shadow: the cabinet fronts frame the mouth like
+/// wall ends (with unknown behind, a face looks like the building's edge), but most of the
+/// pocket's boundary was never observed. 2 rooms (the pocket belongs to the room), 1 door.
+DrawnMap cabinetPocket();
 
 }  // namespace toposlam::rooms::test

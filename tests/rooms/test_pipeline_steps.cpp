@@ -4,6 +4,7 @@
 #include <toposlam/rooms/FreeSpaceBinarizer.h>
 #include <toposlam/rooms/LineMerger.h>
 #include <toposlam/rooms/MainDirectionVoter.h>
+#include <toposlam/rooms/RegionBoundary.h>
 #include <toposlam/rooms/RegionPartition.h>
 #include <toposlam/rooms/VirtualDoorDetector.h>
 
@@ -221,6 +222,39 @@ TEST(DoorFilters, WallJambTestRejectsFreeStandingObstacles) {
     DoorFilters::Options off;
     off.requireWallJambs = false;
     EXPECT_EQ(DoorFilters(off).wallJambs(space, {between}, {}).size(), 1u);
+}
+
+TEST(RegionBoundary, OpenIsUnobservedSpaceReachingTheMapsEdgeNotShadowsInside) {
+    // The closet's door and the pocket's mouth cut (DrawnMaps.h, cabinetPocket).
+    const auto drawn = toposlam::rooms::test::cabinetPocket();
+    const FreeSpace space =
+        FreeSpaceBinarizer().binarize(toposlam::rooms::test::gridOf(drawn.image));
+    ASSERT_FALSE(space.noWall.empty());
+    const auto px = [&](double x, double y) {
+        return cv::Point(static_cast<int>(x / kRes),
+                         drawn.image.rows - 1 - static_cast<int>(y / kRes));
+    };
+    const VirtualDoor closetDoor{px(6.62, 1.77), px(6.62, 2.73), 19, 0, px(6.62, 2.25)};
+    const VirtualDoor mouth{px(4.17, 5.02), px(5.42, 5.02), 25, 0, px(4.8, 5.02)};
+    const RegionPartition partition(space.free, {closetDoor, mouth});
+    ASSERT_EQ(partition.regionCount(), 3);
+    RegionBoundary boundary;
+    boundary.measure(space, partition);
+    const auto fraction = [&](int region) {
+        const auto i = static_cast<std::size_t>(region);
+        return static_cast<double>(boundary.open()[i]) /
+               (boundary.open()[i] + boundary.closed()[i]);
+    };
+    const int room = partition.labels().at<int>(px(3, 3));
+    const int closet = partition.labels().at<int>(px(7.9, 3.0));
+    const int pocket = partition.labels().at<int>(px(4.8, 6.5));
+    // The closet's third of unseen table shadow is enclosed by walls the laser saw: no opening.
+    EXPECT_EQ(boundary.open()[static_cast<std::size_t>(closet)], 0);
+    // Its walls without the door are 5.6 m long, the shadow's edges 3.2 m more.
+    EXPECT_GT(boundary.closed()[static_cast<std::size_t>(closet)], 8 / kRes);
+    // The pocket's flanks and the cabinets behind them reach the unknown outside.
+    EXPECT_GT(fraction(pocket), 0.5);
+    EXPECT_LT(fraction(room), 0.4);
 }
 
 TEST(FreeSpaceBinarizer, KeepsTheLargestFreeRegionAboveTheThreshold) {

@@ -174,6 +174,24 @@ TEST(RoomSegmenter, ShadowBehindATableIsNoWall) {
     EXPECT_NE(cut.map.roomAt(2.2, 2.0), cut.map.roomAt(6, 5));
 }
 
+TEST(RoomSegmenter, PocketOpenToTheUnobservedOutsideIsNoRoom) {
+    const DrawnMap drawn = toposlam::rooms::test::cabinetPocket();
+    const auto grid = toposlam::rooms::test::gridOf(drawn.image);
+    for (const bool withTour : {false, true}) {
+        SCOPED_TRACE(withTour ? "with trajectory" : "medial axis");
+        const auto result = RoomSegmenter().segment(
+            grid, withTour ? posesOf(drawn.tour) : std::vector<mrpt::math::TPose2D>{});
+        expectMatchesDrawing(result.map, drawn, kDoorTolerance);
+        EXPECT_EQ(result.map.roomAt(4.8, 6.5), result.map.roomAt(3, 3));  // the pocket
+    }
+    // Without the rule the cabinet fronts frame a door and the pocket is a room of its own.
+    RoomSegmenter::Options anyBoundary;
+    anyBoundary.filters.maxOpenBoundary = 1;
+    const auto cut = RoomSegmenter(anyBoundary).segment(grid);
+    EXPECT_EQ(cut.map.rooms.size(), 3u);
+    EXPECT_NE(cut.map.roomAt(4.8, 6.5), cut.map.roomAt(3, 3));
+}
+
 TEST(RoomSegmenter, CubicleFrontsWiderThanDoorsAreCut) {
     const DrawnMap drawn = toposlam::rooms::test::cubicles();
     const auto result = RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image));
@@ -251,6 +269,8 @@ TEST(RoomSegmenter, PaperPresetSwitchesOffEveryDeviationAndKeepsTheRest) {
     EXPECT_EQ(o.filters.requireWallEnd, paper.filters.requireWallEnd);
     EXPECT_EQ(o.filters.requireConstriction, paper.filters.requireConstriction);
     EXPECT_EQ(o.filters.wallThicknessFromMap, paper.filters.wallThicknessFromMap);
+    EXPECT_EQ(o.filters.maxOpenBoundary, paper.filters.maxOpenBoundary);
+    EXPECT_EQ(o.filters.maxOpenBoundary, 1.0);  // off
     EXPECT_EQ(o.wide.enabled, paper.wide.enabled);
     EXPECT_FALSE(o.wide.enabled || o.filters.requireWallEnd || o.door.localDirection);
     EXPECT_EQ(o.door.doorWidth, 0.9);  // the rest is kept

@@ -320,17 +320,31 @@ namespace {
 // candidate doors are removed.
 class RegionMerge {
   public:
-    RegionMerge(const RegionPartition& partition, const std::vector<std::size_t>& candidates)
+    RegionMerge(const RegionPartition& partition, const std::vector<std::size_t>& candidates,
+                const RegionBoundary* boundary)
         : partition_(partition),
           candidates_(candidates),
           sets_(static_cast<std::size_t>(partition.regionCount()) + 1),
           area_(partition.areas().begin(), partition.areas().end()),
-          removed_(candidates.size(), false) {}
+          closed_(area_.size(), 0),
+          open_(area_.size(), 0),
+          removed_(candidates.size(), false) {
+        if (boundary != nullptr) {
+            closed_.assign(boundary->closed().begin(), boundary->closed().end());
+            open_.assign(boundary->open().begin(), boundary->open().end());
+        }
+    }
 
     int rootOf(int region) {
         return static_cast<int>(sets_.find_set(static_cast<std::size_t>(region)));
     }
     double area(int root) const { return area_[static_cast<std::size_t>(root)]; }
+    /// Whether more than `maxFraction` of the set's boundary is open to the unobserved
+    /// outside (RegionBoundary).
+    bool mostlyOpen(int root, double maxFraction) const {
+        const auto i = static_cast<std::size_t>(root);
+        return open_[i] > maxFraction * (closed_[i] + open_[i]);
+    }
     bool removed(std::size_t k) const { return removed_[k]; }
     std::size_t size() const { return candidates_.size(); }
     int sideA(std::size_t k) const { return partition_.regionsAt(candidates_[k])[0].first; }
@@ -387,27 +401,37 @@ class RegionMerge {
         if (a == b)
             return;
         const double total = area(a) + area(b);
+        const double closed =
+            closed_[static_cast<std::size_t>(a)] + closed_[static_cast<std::size_t>(b)];
+        const double open = open_[static_cast<std::size_t>(a)] + open_[static_cast<std::size_t>(b)];
         sets_.link(static_cast<std::size_t>(a), static_cast<std::size_t>(b));
-        area_[static_cast<std::size_t>(rootOf(a))] = total;
+        const auto root = static_cast<std::size_t>(rootOf(a));
+        area_[root] = total;
+        closed_[root] = closed;
+        open_[root] = open;
     }
 
     const RegionPartition& partition_;
     const std::vector<std::size_t>& candidates_;
     DisjointSets sets_;
-    std::vector<double> area_;  // cells
+    std::vector<double> area_;           // cells
+    std::vector<double> closed_, open_;  // boundary cell edges (RegionBoundary)
     std::vector<bool> removed_;
 };
 
-// The smallest too-small set that still has a door to another set; -1 when none.
-int smallestTooSmall(RegionMerge& m, double minCells) {
+// The smallest set that is too small or mostly open to the unobserved outside (not known to be
+// enclosed) and still has a door to another set; -1 when none.
+int smallestToMerge(RegionMerge& m, double minCells, double maxOpen) {
     int smallest = -1;
-    double smallestArea = minCells;
+    double smallestArea = 0;
     for (std::size_t k = 0; k < m.size(); ++k) {
         const auto [a, b] = m.liveSides(k);
         if (m.removed(k) || a == b)
             continue;
         for (int r : {a, b}) {
-            if (m.area(r) <= smallestArea) {
+            if (m.area(r) > minCells && !m.mostlyOpen(r, maxOpen))
+                continue;
+            if (smallest < 0 || m.area(r) <= smallestArea) {
                 smallest = r;
                 smallestArea = m.area(r);
             }
@@ -443,21 +467,25 @@ std::size_t widestDoor(RegionMerge& m, int smallest, const std::vector<VirtualDo
 DoorFilters::Rooms DoorFilters::minimumArea(const RegionPartition& partition,
                                             const std::vector<VirtualDoor>& doors,
                                             const std::vector<std::size_t>& candidates,
-                                            double cellArea) const {
+                                            double cellArea, const RegionBoundary* boundary) const {
     const double minCells = detail::toCells(options_.minRoomArea, cellArea);
-    RegionMerge merge(partition, candidates);
+    const double maxOpen = options_.maxOpenBoundary;
+    RegionMerge merge(partition, candidates, boundary);
     if (!options_.mergeSmallestFirst) {  // the paper: one pass over all doors
+        auto fails = [&](int region) {
+            return merge.area(region) <= minCells || merge.mostlyOpen(region, maxOpen);
+        };
         std::vector<std::size_t> failing;
         for (std::size_t k = 0; k < candidates.size(); ++k) {
-            if (merge.area(merge.sideA(k)) <= minCells || merge.area(merge.sideB(k)) <= minCells)
+            if (fails(merge.sideA(k)) || fails(merge.sideB(k)))
                 failing.push_back(k);
         }
         for (std::size_t k : failing)
             merge.removeDoor(k);
     } else {
-        // The smallest too-small region is merged through its widest door, again and again.
-        for (int smallest = smallestTooSmall(merge, minCells); smallest >= 0;
-             smallest = smallestTooSmall(merge, minCells)) {
+        // The smallest region to merge is merged through its widest door, again and again.
+        for (int smallest = smallestToMerge(merge, minCells, maxOpen); smallest >= 0;
+             smallest = smallestToMerge(merge, minCells, maxOpen)) {
             merge.removeDoor(widestDoor(merge, smallest, doors, candidates));
         }
     }

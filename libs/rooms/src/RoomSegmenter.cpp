@@ -164,6 +164,7 @@ void RoomSegmenter::Options::applyPaperPreset() {
     filters.requireWallEnd = false;
     filters.requireConstriction = false;
     filters.wallThicknessFromMap = false;
+    filters.maxOpenBoundary = 1;
     wide.enabled = false;
     labelIslands = false;
     medialAxisWithTrajectory = false;
@@ -259,6 +260,11 @@ void RoomSegmenter::Options::declare(config::OptionsSchema& s) {
     s.flag("require_constriction", filters.requireConstriction,
            "a door must be narrower than the space on both sides (deviation)");
     s.real("opening_margin", filters.openingMargin, "m", "by at least this").atLeast(0);
+    s.real("max_open_boundary", filters.maxOpenBoundary, "",
+           "a region whose boundary is more than this fraction open to the unobserved outside is "
+           "merged (deviation; 1 = off)")
+        .atLeast(0)
+        .atMost(1);
     // Wide openings (deviation).
     s.flag("wide_openings", wide.enabled, "openings wider than a door may be room borders");
     s.real("max_opening_width", wide.maxWidth, "m", "widest such opening").above(0);
@@ -290,6 +296,7 @@ struct RoomSegmenter::Workspace {
     Clearance clearance;
     WallThickness wallThickness;
     RegionPartition partition;
+    RegionBoundary boundary;
 };
 
 RoomSegmenter::RoomSegmenter() : RoomSegmenter(Options{}) {}
@@ -380,8 +387,12 @@ DoorFilters::Rooms RoomSegmenter::findRooms(const FreeSpace& space,
     ws.partition.compute(space.free, result.afterDistance);
     const std::vector<std::size_t> adjacent = DoorFilters::adjacency(ws.partition);
     result.afterAdjacency = adjacent.size();
-    const DoorFilters::Rooms rooms = ws.filters.minimumArea(ws.partition, result.afterDistance,
-                                                            adjacent, space.frame.cellArea());
+    const bool openRule = options_.filters.maxOpenBoundary < 1;
+    if (openRule)
+        ws.boundary.measure(space, ws.partition);
+    const DoorFilters::Rooms rooms =
+        ws.filters.minimumArea(ws.partition, result.afterDistance, adjacent, space.frame.cellArea(),
+                               openRule ? &ws.boundary : nullptr);
     lap("partition+filters");
     return rooms;
 }

@@ -30,8 +30,13 @@
 //                 line on each side, within one door width the free space along the door line
 //                 becomes wider than the door by openingMargin (rules out the cross-sections
 //                 of door-wide corridors and of gaps along furniture).
+// And one more reason for the minimum-area filter to merge a region (SLAM grids): its boundary
+// is mostly open to unobserved space that reaches the edge of the map (maxOpenBoundary,
+// RegionBoundary.h), so it is not known to be enclosed: the pocket between two cabinets whose
+// back the laser never saw.
 #include <toposlam/rooms/FreeSpaceBinarizer.h>
 #include <toposlam/rooms/LineSegment.h>
+#include <toposlam/rooms/RegionBoundary.h>
 #include <toposlam/rooms/RegionPartition.h>
 #include <toposlam/rooms/VirtualDoorDetector.h>
 #include <toposlam/rooms/WallThickness.h>
@@ -78,6 +83,11 @@ class DoorFilters {
         bool wallThicknessFromMap = true;
         bool requireConstriction = true;  ///< the constriction test (deviation, see above)
         double openingMargin = 0.3;       ///< m
+        /// Minimum-area filter (deviation, SLAM grids): a region whose boundary (door cuts
+        /// excepted) is more than this fraction open to the unobserved outside
+        /// (RegionBoundary.h) is not known to be a room and is merged like a too-small one;
+        /// 1 = off.
+        double maxOpenBoundary = 0.4;
     };
 
     DoorFilters() = default;
@@ -113,9 +123,12 @@ class DoorFilters {
     /// The minimum-area filter over the doors `candidates` (indices into `doors`, the doors
     /// `partition` was cut with); regions are merged through removed doors. `cellArea` in m^2.
     /// Doors whose two sides end up in one room are dropped too (they no longer separate
-    /// anything).
+    /// anything). `boundary` (measured on `partition`; nullptr: none) adds the regions whose
+    /// boundary is mostly open to the unobserved outside (maxOpenBoundary) to the too-small
+    /// ones.
     Rooms minimumArea(const RegionPartition& partition, const std::vector<VirtualDoor>& doors,
-                      const std::vector<std::size_t>& candidates, double cellArea) const;
+                      const std::vector<std::size_t>& candidates, double cellArea,
+                      const RegionBoundary* boundary = nullptr) const;
 
     const Options& options() const { return options_; }
 

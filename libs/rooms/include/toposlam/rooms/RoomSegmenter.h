@@ -8,7 +8,8 @@
 //   3 MainDirectionVoter       the two main directions (eqs. 8-9)
 //   4 DoorSearchPaths,         door search from the trajectory cells (or the medial axis when
 //     VirtualDoorDetector      there is no trajectory) along the main directions (eq. 10)
-//   5 DoorFilters              distance, adjacency, minimum-area (+ TopoSLAM's two tests)
+//   5 DoorFilters              distance, adjacency, minimum-area (+ TopoSLAM's two tests;
+//     RegionBoundary           regions mostly open to the unobserved outside merge too)
 //     WideOpeningDetector      TopoSLAM: openings wider than a door framed by wall ends
 //   6 RegionPartition          connected components after cutting the doors -> rooms
 // The result is a TopologicalMap (rooms = nodes, doors = edges).
@@ -68,7 +69,8 @@ class RoomSegmenter {
         static Options paperExact();
         /// Switches off every deviation of paperExact() (speck removal, local directions,
         /// narrowest-of-group, smallest-first merging, wall-jamb, wall-end and constriction
-        /// tests, wide openings) and keeps every other value (door width, areas, Hough, ...):
+        /// tests, wide openings, unknown as no wall, the open-boundary merge, islands,
+        /// medial axis with trajectory) and keeps every other value (door width, areas, ...):
         /// `--paper` on top of an ini file. The one place that knows what "paper" means.
         void applyPaperPreset();
         /// The options of the apps' `-c file.ini [--paper]`: the built-in defaults, then the

@@ -110,7 +110,10 @@ void GraphSlamOptions::declareLoopClosure(config::OptionsSchema& s) {
            "verified candidates are at least this far apart (look-alikes get tried)")
         .atLeast(0);
     s.real("loop_chi2", loopChi2, "",
-           "chi-square bound (3 dof) on a loop's disagreement with the graph (16.27 = 99.9 %)")
+           "chi-square bound (3 dof) on a new loop's disagreement with the graph (16.27 = 99.9 %)")
+        .above(0);
+    s.real("loop_withdraw_chi2", loopWithdrawChi2, "",
+           "after optimisation, the worst loop whose chi-square is still above this is withdrawn")
         .above(0);
     s.integer("loop_confirm_window", loopConfirmWindow, "keyframes",
               "a guess-free or correcting loop needs an agreeing one within this many")

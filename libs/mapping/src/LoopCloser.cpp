@@ -243,7 +243,7 @@ LoopClosureOutcome LoopCloser::closeLoops(std::size_t current, std::size_t first
 }
 
 bool LoopCloser::withdrawWorstOutlier(PoseGraph& graph, SlamStatistics& stats) const {
-    double worst = options_.loopChi2;
+    double worst = options_.loopWithdrawChi2;
     std::optional<std::size_t> worstEdge;
     for (std::size_t e = 0; e < graph.edges().size(); ++e) {
         const PoseGraphEdge& edge = graph.edges()[e];

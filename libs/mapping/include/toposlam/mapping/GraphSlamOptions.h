@@ -78,9 +78,15 @@ struct GraphSlamOptions : public config::Options {
     /// Candidates chosen for verification are at least this far apart, so that look-alike
     /// places inside the gate are tried too and an ambiguity shows.
     double loopCandidateSpacing = 1.0;  ///< m
-    /// Chi-square (3 degrees of freedom) bound on a loop's disagreement with the graph, before
-    /// (gate) and after optimisation (outlier removal). 16.27 = 99.9 %.
+    /// Chi-square (3 degrees of freedom) bound on a new loop's disagreement with the graph (the
+    /// gate). 16.27 = 99.9 %.
     double loopChi2 = 16.27;
+    /// After optimisation the worst loop still above this chi-square is withdrawn. Far above
+    /// the gate: scan-registration edges are overconfident (their floor is 1 cm), so a right
+    /// loop that corrects a front-end error strains against them with a chi-square of 20-90
+    /// (seen on fr079), while a loop to the wrong place (0.5 m off at sigma 3 cm) shows
+    /// hundreds; withdrawing at the gate's bound removed right loops and left the error in.
+    double loopWithdrawChi2 = 200;
     /// Guess-free loops must be confirmed by another guess-free or gated loop within this
     /// many keyframes that agrees with them (pairwise consistency).
     std::size_t loopConfirmWindow = 20;

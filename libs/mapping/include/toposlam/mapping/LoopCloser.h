@@ -17,8 +17,8 @@
 //    would correct the graph needs support: a second match to another older keyframe in the
 //    same search, or a loop within loopConfirmWindow keyframes that agrees with it around
 //    their common cycle (pairwise consistency); guess-free matches always need support.
-//    After optimisation the builder withdraws loops whose residual still exceeds the bound
-//    (withdrawWorstOutlier).
+//    After optimisation the builder withdraws loops whose residual still exceeds a far looser
+//    bound, loopWithdrawChi2 (withdrawWorstOutlier).
 #include <toposlam/mapping/GraphSlamOptions.h>
 #include <toposlam/mapping/Keyframe.h>
 #include <toposlam/mapping/PathUncertainty.h>
@@ -50,8 +50,8 @@ class LoopCloser {
                                   const std::vector<Keyframe>& keyframes, PoseGraph& graph,
                                   SlamStatistics& stats);
 
-    /// After optimisation: withdraws the loop edge with the largest chi-square above the
-    /// bound; true when one was withdrawn (optimise again).
+    /// After optimisation: withdraws the loop edge with the largest chi-square above
+    /// loopWithdrawChi2; true when one was withdrawn (optimise again).
     bool withdrawWorstOutlier(PoseGraph& graph, SlamStatistics& stats) const;
 
   private:

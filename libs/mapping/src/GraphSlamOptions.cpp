@@ -45,6 +45,9 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "... and it corrects the prediction by at most this ...")
         .above(0);
     s.angle("max_correction_angle", maxCorrectionAngle, "... and this").above(0).atMost(180);
+    s.real("max_lateral_correction", maxLateralCorrection, "m",
+           "... and moves the robot sideways by at most this (0 = no limit)")
+        .atLeast(0);
     s.real("odometry_jump_distance", odometryJumpDistance, "m",
            "odometry steps longer than this between two scans are jumps, not motion ...")
         .above(0);

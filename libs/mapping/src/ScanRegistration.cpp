@@ -90,7 +90,9 @@ bool ScanRegistration::tryIcp(const matching::PolarScan& scan, const CPose2D& se
     const CPose2D correction = best.robot - prediction.inSubmap;
     const bool plausible =
         correction.norm() <= options_.maxCorrectionDistance &&
-        std::abs(mrpt::math::wrapToPi(correction.phi())) <= options_.maxCorrectionAngle;
+        std::abs(mrpt::math::wrapToPi(correction.phi())) <= options_.maxCorrectionAngle &&
+        (options_.maxLateralCorrection <= 0 ||
+         std::abs(correction.y()) <= options_.maxLateralCorrection);
     if (best.overlap < options_.minInlierRatio || !plausible)
         return false;
     out.method = RegistrationMethod::Icp;

@@ -34,6 +34,10 @@ struct GraphSlamOptions : public config::Options {
     /// ... and the correction of the prediction stays within these bounds.
     double maxCorrectionDistance = 0.5;  ///< m
     double maxCorrectionAngle = 0.35;    ///< rad (20 deg)
+    /// ... and moves the robot sideways (across its predicted heading) by at most this (m;
+    /// 0 = no limit, for robots that can move sideways). Wheels do not slide sideways: ICP
+    /// that says so has locked onto the wrong structure (seen in fast turns on mit-csail).
+    double maxLateralCorrection = 0.06;
     /// Odometry increments larger than this between two scans are jumps, not motion: the
     /// prediction is then the previous pose and the graph matcher registers the scan.
     double odometryJumpDistance = 0.5;  ///< m

@@ -23,11 +23,13 @@ using DisjointSets = boost::disjoint_sets_with_storage<>;
 double wallRun(const cv::Mat& free, const cv::Point& jamb, double ux, double uy, double cap) {
     const cv::Point side(cvRound(-uy), cvRound(ux));
     cv::Point hit;
-    auto open = [&](int x, int y) {
-        return detail::isSet(free, x, y) && detail::isSet(free, x + side.x, y + side.y) &&
-               detail::isSet(free, x - side.x, y - side.y);
-    };
-    if (!detail::walkRay(jamb, ux, uy, cap, open, hit))
+    const bool ended = detail::withMaskReader(free, jamb, cap + 2, [&](const auto& isFree) {
+        auto open = [&](int x, int y) {
+            return isFree(x, y) && isFree(x + side.x, y + side.y) && isFree(x - side.x, y - side.y);
+        };
+        return detail::walkRay(jamb, ux, uy, cap, open, hit);
+    });
+    if (!ended)
         return cap;
     return std::hypot(hit.x - jamb.x, hit.y - jamb.y);
 }
@@ -35,11 +37,13 @@ double wallRun(const cv::Mat& free, const cv::Point& jamb, double ux, double uy,
 // Free width (pixels) across direction (ux, uy) through the cell `at`, capped just above `cap`.
 double freeWidth(const cv::Mat& free, const cv::Point& at, double ux, double uy, double cap) {
     cv::Point a, b;
-    auto blocked = [&](int x, int y) { return !detail::isSet(free, x, y); };
-    if (!detail::walkRay(at, ux, uy, cap, blocked, a) ||
-        !detail::walkRay(at, -ux, -uy, cap, blocked, b)) {
+    const bool bounded = detail::withMaskReader(free, at, cap + 1, [&](const auto& isFree) {
+        auto blocked = [&](int x, int y) { return !isFree(x, y); };
+        return detail::walkRay(at, ux, uy, cap, blocked, a) &&
+               detail::walkRay(at, -ux, -uy, cap, blocked, b);
+    });
+    if (!bounded)
         return 2 * cap;
-    }
     return std::hypot(a.x - b.x, a.y - b.y);
 }
 
@@ -117,12 +121,13 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
     const double thickness = detail::toCells(options_.maxWallThickness, space.frame.resolution);
     const double length =
         std::max(extent, detail::toCells(options_.wallEndProbe, space.frame.resolution));
-    auto isFree = [&](int x, int y) { return detail::isSet(space.free, x, y); };
     auto toFree = [&](const cv::Point& from, double ux, double uy) {
         cv::Point hit;
-        return detail::walkRay(from, ux, uy, 2 * thickness, isFree, hit)
-                   ? std::hypot(hit.x - from.x, hit.y - from.y)
-                   : 1e9;
+        const bool found =
+            detail::withMaskReader(space.free, from, 2 * thickness + 1, [&](const auto& isFree) {
+                return detail::walkRay(from, ux, uy, 2 * thickness, isFree, hit);
+            });
+        return found ? std::hypot(hit.x - from.x, hit.y - from.y) : 1e9;
     };
     const WallThickness* measured = options_.wallThicknessFromMap ? wallThickness : nullptr;
     // At `at` cells from the jamb along (ux, uy), inside the obstacle, the obstacle is a wall

@@ -83,25 +83,10 @@ void FreeSpaceBinarizer::keepLargestComponent(const cv::Mat& all, const std::str
                              "the map has no free cell (empty, unknown-only or fully occupied): "
                              "there are no rooms to segment");
     }
-    out.free.create(all.size(), CV_8U);
-    out.otherFree.create(all.size(), CV_8U);
-    int minC = labels.cols, minR = labels.rows, maxC = -1, maxR = -1;
-    for (int r = 0; r < labels.rows; ++r) {
-        const int* row = labels.ptr<int>(r);
-        auto* keep = out.free.ptr<std::uint8_t>(r);
-        auto* other = out.otherFree.ptr<std::uint8_t>(r);
-        for (int c = 0; c < labels.cols; ++c) {
-            keep[c] = row[c] == best ? 255 : 0;
-            other[c] = row[c] != best && row[c] != 0 ? 255 : 0;
-            if (row[c] == best) {
-                minC = std::min(minC, c);
-                maxC = std::max(maxC, c);
-                minR = std::min(minR, r);
-                maxR = std::max(maxR, r);
-            }
-        }
-    }
-    out.bounds = cv::Rect(minC, minR, maxC - minC + 1, maxR - minR + 1);
+    cv::compare(labels, best, out.free, cv::CMP_EQ);
+    cv::compare(labels, 0, out.otherFree, cv::CMP_NE);
+    cv::bitwise_xor(out.otherFree, out.free, out.otherFree);  // free is inside: the rest
+    out.bounds = cv::boundingRect(out.free);
     out.freeCells = static_cast<std::size_t>(area[static_cast<std::size_t>(best)]);
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 namespace toposlam::rooms::detail {
 
@@ -73,5 +74,101 @@ bool walkRay(const cv::Point& from, double ux, double uy, double maxDistance, St
         }
     }
 }
+
+/// Whether every cell within `margin` cells of `p` (along x and along y) lies inside `image`.
+inline bool isInterior(const cv::Mat& image, const cv::Point& p, double margin) {
+    if (!(margin < static_cast<double>(std::min(image.cols, image.rows))))
+        return false;
+    const int m = static_cast<int>(std::ceil(margin));
+    return p.x >= m && p.y >= m && p.x + m < image.cols && p.y + m < image.rows;
+}
+
+/// Reads the cells of a CV_8U mask: true when non-zero. `Checked`: cells outside read as
+/// false; unchecked reads are for cells known to be inside (isInterior).
+template <bool Checked>
+class MaskReader {
+  public:
+    explicit MaskReader(const cv::Mat& mask) : data_(mask.data), step_(mask.step[0]) {
+        if constexpr (Checked) {
+            cols_ = mask.cols;
+            rows_ = mask.rows;
+        }
+    }
+    bool operator()(int x, int y) const {
+        if constexpr (Checked) {
+            if (x < 0 || y < 0 || x >= cols_ || y >= rows_)
+                return false;
+        }
+        return data_[static_cast<std::ptrdiff_t>(y) * static_cast<std::ptrdiff_t>(step_) + x] != 0;
+    }
+
+  private:
+    const std::uint8_t* data_;
+    std::size_t step_;
+    int cols_ = 0, rows_ = 0;
+};
+
+/// `walk(reader)` with a MaskReader of `mask`: unchecked when every cell within `reach` of
+/// `around` is inside the mask (a ray of length `reach - 1` from there, and its 8-neighbours,
+/// cannot leave it), checked otherwise. Both read the same values, so the result is the same.
+template <class Walk>
+bool withMaskReader(const cv::Mat& mask, const cv::Point& around, double reach, Walk&& walk) {
+    if (isInterior(mask, around, reach))
+        return walk(MaskReader<false>(mask));
+    return walk(MaskReader<true>(mask));
+}
+
+/// The cells walkRay() visits along one direction, as offsets from the start cell, in order:
+/// the ray's cells do not depend on where it starts (always at a cell centre), so a direction
+/// used from many cells is walked once. Bound to the row step of one mask.
+class RayPattern {
+  public:
+    RayPattern() = default;
+    /// The cells within `maxDistance` pixels along (ux, uy), offsets for rows of `mask`.
+    RayPattern(double ux, double uy, double maxDistance, const cv::Mat& mask) {
+        cv::Point unused;
+        walkRay(
+            {0, 0}, ux, uy, maxDistance,
+            [&](int x, int y) {
+                cells_.emplace_back(x, y);
+                return false;
+            },
+            unused);
+        offsets_.reserve(cells_.size());
+        for (const cv::Point& c : cells_) {
+            reach_ = std::max({reach_, std::abs(c.x), std::abs(c.y)});
+            offsets_.push_back(
+                static_cast<std::ptrdiff_t>(c.y) * static_cast<std::ptrdiff_t>(mask.step[0]) + c.x);
+        }
+    }
+
+    /// walkRay(from, ux, uy, maxDistance, stop = "not set in `mask`", hit), outside the mask
+    /// counting as not set: the first cell of the ray from `from` that is not set. `mask`:
+    /// CV_8U, the row step the pattern was made for.
+    bool firstUnset(const cv::Mat& mask, const cv::Point& from, cv::Point& hit) const {
+        if (isInterior(mask, from, reach_)) {
+            const std::uint8_t* start = mask.ptr<std::uint8_t>(from.y) + from.x;
+            for (std::size_t k = 0; k < offsets_.size(); ++k) {
+                if (start[offsets_[k]] == 0) {
+                    hit = from + cells_[k];
+                    return true;
+                }
+            }
+            return false;
+        }
+        for (const cv::Point& c : cells_) {
+            if (!isSet(mask, from.x + c.x, from.y + c.y)) {
+                hit = from + c;
+                return true;
+            }
+        }
+        return false;
+    }
+
+  private:
+    std::vector<cv::Point> cells_;
+    std::vector<std::ptrdiff_t> offsets_;
+    int reach_ = 0;
+};
 
 }  // namespace toposlam::rooms::detail

@@ -42,22 +42,26 @@ FreeSpace cropToBounds(const FreeSpace& space, cv::Rect& roi) {
     return out;
 }
 
-// Gives the free cells left unlabelled (the door cuts) the label of the nearest labelled cell:
-// 4-connected breadth-first growth from the labelled cells next to them, in raster order, never
-// leaving `free`.
-void fillCuts(const cv::Mat& free, cv::Mat& labels) {
+// Region labels become room ids in place (`roomOfRegion`; region 0, the cuts and the non-free
+// cells, stays 0), and the free cells left unlabelled (the door cuts) get the label of the
+// nearest labelled cell: 4-connected breadth-first growth from the labelled cells next to them,
+// in raster order, never leaving `free`.
+void labelRooms(const cv::Mat& free, const std::vector<int>& roomOfRegion, cv::Mat& labels) {
     const cv::Point around[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
     auto inside = [&](const cv::Point& q) {
         return q.x >= 0 && q.y >= 0 && q.x < labels.cols && q.y < labels.rows;
     };
     std::deque<cv::Point> queue;
     for (int r = 0; r < labels.rows; ++r) {
-        const int* row = labels.ptr<int>(r);
+        int* row = labels.ptr<int>(r);
         const auto* f = free.ptr<std::uint8_t>(r);
         for (int c = 0; c < labels.cols; ++c) {
-            if (row[c] != 0 || f[c] == 0)
+            const int region = row[c];
+            row[c] = roomOfRegion[static_cast<std::size_t>(region)];
+            if (region != 0 || f[c] == 0)
                 continue;
-            // An unlabelled free cell: its labelled neighbours seed the growth.
+            // An unlabelled free cell: its labelled neighbours seed the growth (a region is
+            // labelled when its room is, whether it was renamed yet or not).
             for (const cv::Point& o : around) {
                 const cv::Point q(c + o.x, r + o.y);
                 if (inside(q) && labels.at<int>(q) != 0)
@@ -404,12 +408,7 @@ RoomSegmenter::Result RoomSegmenter::segment(
 
     // Step 6: the rooms. Region labels become room ids in place; cut cells join a neighbour.
     cv::Mat& labels = ws.partition.mutableLabels();
-    for (int r = 0; r < labels.rows; ++r) {
-        int* row = labels.ptr<int>(r);
-        for (int c = 0; c < labels.cols; ++c)
-            row[c] = rooms.roomOfRegion[static_cast<std::size_t>(row[c])];
-    }
-    fillCuts(space.free, labels);
+    labelRooms(space.free, rooms.roomOfRegion, labels);
     if (options_.labelIslands && !space.obstacles.empty())
         labelIslands(space, labels);
     lap("labels");

@@ -8,9 +8,22 @@ namespace toposlam::rooms {
 
 bool VirtualDoorDetector::castRay(const cv::Mat& free, const cv::Point& from, double ux, double uy,
                                   double maxDistance, cv::Point& hit) {
-    return detail::walkRay(
-        from, ux, uy, maxDistance, [&](int x, int y) { return !detail::isSet(free, x, y); }, hit);
+    return detail::withMaskReader(free, from, maxDistance + 1, [&](const auto& isFree) {
+        return detail::walkRay(
+            from, ux, uy, maxDistance, [&](int x, int y) { return !isFree(x, y); }, hit);
+    });
 }
+
+namespace {
+
+// Eq. 10 on the two jamb cells found: the door, or nothing.
+bool isDoorWidth(const cv::Point& a, const cv::Point& b, double target, double tolerance,
+                 double& width) {
+    width = std::hypot(a.x - b.x, a.y - b.y);
+    return std::abs(width - target) < tolerance;
+}
+
+}  // namespace
 
 std::vector<VirtualDoor> VirtualDoorDetector::detect(
     const FreeSpace& space, const std::vector<cv::Point>& pathCells,
@@ -21,17 +34,34 @@ std::vector<VirtualDoor> VirtualDoorDetector::detect(
     // A jamb farther than the widest door cannot belong to a door through this cell.
     const double reach = target + tolerance + 1.0;
     const bool local = options_.localDirection && localDirections.size() == pathCells.size();
-    auto crossSection = [&](const cv::Point& p, double direction, int index, VirtualDoor& door) {
+    // The main directions are the same from every cell: their rays are walked once (both
+    // ways), then only looked up.
+    std::vector<detail::RayPattern> ahead, behind;
+    for (const double direction : directions) {
         const double ux = std::cos(direction), uy = std::sin(direction);
+        ahead.emplace_back(ux, uy, reach, space.free);
+        behind.emplace_back(-ux, -uy, reach, space.free);
+    }
+    auto mainSection = [&](const cv::Point& p, std::size_t k, VirtualDoor& door) {
         cv::Point a, b;
-        if (!castRay(space.free, p, ux, uy, reach, a) ||
-            !castRay(space.free, p, -ux, -uy, reach, b)) {
+        double width = 0;
+        if (!ahead[k].firstUnset(space.free, p, a) || !behind[k].firstUnset(space.free, p, b) ||
+            !isDoorWidth(a, b, target, tolerance, width)) {
             return false;
         }
-        const double width = std::hypot(a.x - b.x, a.y - b.y);
-        if (std::abs(width - target) >= tolerance)
-            return false;  // eq. 10
-        door = {a, b, width, index, p};
+        door = {a, b, width, static_cast<int>(k), p};
+        return true;
+    };
+    auto localSection = [&](const cv::Point& p, double direction, VirtualDoor& door) {
+        const double ux = std::cos(direction), uy = std::sin(direction);
+        cv::Point a, b;
+        double width = 0;
+        if (!castRay(space.free, p, ux, uy, reach, a) ||
+            !castRay(space.free, p, -ux, -uy, reach, b) ||
+            !isDoorWidth(a, b, target, tolerance, width)) {
+            return false;
+        }
+        door = {a, b, width, static_cast<int>(directions.size()), p};
         return true;
     };
     std::vector<VirtualDoor> doors;
@@ -40,7 +70,7 @@ std::vector<VirtualDoor> VirtualDoorDetector::detect(
         const cv::Point& p = pathCells[i];
         if (!local) {  // the paper: the first main direction that gives a door
             for (std::size_t k = 0; k < directions.size(); ++k) {
-                if (crossSection(p, directions[k], static_cast<int>(k), found)) {
+                if (mainSection(p, k, found)) {
                     doors.push_back(found);
                     break;
                 }
@@ -50,12 +80,11 @@ std::vector<VirtualDoor> VirtualDoorDetector::detect(
         // Every direction that passes eq. 10: a narrower cross-section through an obstacle that
         // is no jamb (a chair, a speck) must not hide the real one; the filters choose.
         for (std::size_t k = 0; k < directions.size(); ++k) {
-            if (crossSection(p, directions[k], static_cast<int>(k), found))
+            if (mainSection(p, k, found))
                 doors.push_back(found);
         }
-        if (crossSection(p, localDirections[i], static_cast<int>(directions.size()), found)) {
+        if (localSection(p, localDirections[i], found))
             doors.push_back(found);
-        }
     }
     return doors;
 }

@@ -34,17 +34,19 @@ double wallRun(const cv::Mat& free, const cv::Point& jamb, double ux, double uy,
     return std::hypot(hit.x - jamb.x, hit.y - jamb.y);
 }
 
-// Free width (pixels) across direction (ux, uy) through the cell `at`, capped just above `cap`.
-double freeWidth(const cv::Mat& free, const cv::Point& at, double ux, double uy, double cap) {
+// Whether the free space across direction (ux, uy) through the cell `at` is wider than `cap`
+// pixels (from the non-free cell on one side to the one on the other; none within cap on a
+// side: wider).
+bool wider(const cv::Mat& free, const cv::Point& at, double ux, double uy, double cap) {
     cv::Point a, b;
     const bool bounded = detail::withMaskReader(free, at, cap + 1, [&](const auto& isFree) {
         auto blocked = [&](int x, int y) { return !isFree(x, y); };
+        // Beyond farSideReach the other side is wider than cap anyway.
         return detail::walkRay(at, ux, uy, cap, blocked, a) &&
-               detail::walkRay(at, -ux, -uy, cap, blocked, b);
+               detail::walkRay(at, -ux, -uy,
+                               std::min(cap, detail::farSideReach(at, a, ux, uy, cap)), blocked, b);
     });
-    if (!bounded)
-        return 2 * cap;
-    return std::hypot(a.x - b.x, a.y - b.y);
+    return !bounded || std::hypot(a.x - b.x, a.y - b.y) > cap;
 }
 
 // Whether two cuts fan out from one jamb (their other ends apart): two cross-sections of one
@@ -204,7 +206,7 @@ std::vector<VirtualDoor> DoorFilters::constriction(const FreeSpace& space,
             const cv::Point q(cvRound(centre.x - side * k * uy), cvRound(centre.y + side * k * ux));
             if (!detail::isSet(space.free, q.x, q.y))
                 return false;  // a wall before it opened
-            if (freeWidth(space.free, q, ux, uy, opened) > opened)
+            if (wider(space.free, q, ux, uy, opened))
                 return true;
         }
         return false;

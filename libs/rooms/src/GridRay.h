@@ -25,13 +25,14 @@ inline bool isSet(const cv::Mat& mask, int x, int y) {
 }
 
 /// Walks from the centre of `from` along (ux, uy) (unit vector, pixels) over every cell the ray
-/// touches, in order, and returns the first cell for which `stop(x, y)` is true and that lies
-/// within `maxDistance` pixels of the start (ray parameter at cell entry). Where the ray passes
-/// exactly through a cell corner, both side cells are tested first, so a diagonal (8-connected)
-/// line of stop cells cannot be slipped through.
+/// touches, in order, and returns the first cell for which `stop(x, y, t)` is true and that lies
+/// within `maxDistance` pixels of the start (t: the ray parameter where it enters the cell;
+/// never above maxDistance). Where the ray passes exactly through a cell corner, both side
+/// cells are tested first, so a diagonal (8-connected) line of stop cells cannot be slipped
+/// through.
 template <class Stop>
-bool walkRay(const cv::Point& from, double ux, double uy, double maxDistance, Stop stop,
-             cv::Point& hit) {
+bool walkRayEntries(const cv::Point& from, double ux, double uy, double maxDistance, Stop stop,
+                    cv::Point& hit) {
     constexpr double inf = std::numeric_limits<double>::infinity();
     int x = from.x, y = from.y;
     const int stepX = ux > 0 ? 1 : (ux < 0 ? -1 : 0);
@@ -45,11 +46,11 @@ bool walkRay(const cv::Point& from, double ux, double uy, double maxDistance, St
             t = nextX;
             if (t > maxDistance)
                 return false;
-            if (stop(x + stepX, y)) {
+            if (stop(x + stepX, y, t)) {
                 hit = {x + stepX, y};
                 return true;
             }
-            if (stop(x, y + stepY)) {
+            if (stop(x, y + stepY, t)) {
                 hit = {x, y + stepY};
                 return true;
             }
@@ -68,11 +69,30 @@ bool walkRay(const cv::Point& from, double ux, double uy, double maxDistance, St
         }
         if (t > maxDistance)
             return false;
-        if (stop(x, y)) {
+        if (stop(x, y, t)) {
             hit = {x, y};
             return true;
         }
     }
+}
+
+/// walkRayEntries() with `stop(x, y)`.
+template <class Stop>
+bool walkRay(const cv::Point& from, double ux, double uy, double maxDistance, Stop stop,
+             cv::Point& hit) {
+    return walkRayEntries(
+        from, ux, uy, maxDistance, [&](int x, int y, double) { return stop(x, y); }, hit);
+}
+
+/// How far (ray parameter, pixels) the ray from `from` in direction -(ux, uy) needs to be
+/// walked to find the other end of a cut whose one end is `near` (found along (ux, uy)), when
+/// only cuts shorter than `maxLength` count: any cell the ray enters farther out lies more
+/// than maxLength from `near` (a cell's centre is within sqrt(1/2) of where the ray enters
+/// it, so |near - far| >= (near - from).u + t - sqrt(1/2); 0.01 px spare for rounding).
+inline double farSideReach(const cv::Point& from, const cv::Point& near, double ux, double uy,
+                           double maxLength) {
+    const double along = (near.x - from.x) * ux + (near.y - from.y) * uy;
+    return maxLength + std::sqrt(0.5) - along + 0.01;
 }
 
 /// Whether every cell within `margin` cells of `p` (along x and along y) lies inside `image`.
@@ -127,10 +147,13 @@ class RayPattern {
     /// The cells within `maxDistance` pixels along (ux, uy), offsets for rows of `mask`.
     RayPattern(double ux, double uy, double maxDistance, const cv::Mat& mask) {
         cv::Point unused;
-        walkRay(
+        // With each cell its ray parameter at entry: walked with a shorter maxDistance, the
+        // ray visits the cells up to the first that it enters beyond that.
+        walkRayEntries(
             {0, 0}, ux, uy, maxDistance,
-            [&](int x, int y) {
+            [&](int x, int y, double t) {
                 cells_.emplace_back(x, y);
+                entries_.push_back(t);
                 return false;
             },
             unused);
@@ -146,9 +169,22 @@ class RayPattern {
     /// counting as not set: the first cell of the ray from `from` that is not set. `mask`:
     /// CV_8U, the row step the pattern was made for.
     bool firstUnset(const cv::Mat& mask, const cv::Point& from, cv::Point& hit) const {
+        return firstUnset(mask, from, hit, cells_.size());
+    }
+    /// The same, walked only as far as `maxDistance` (at most the pattern's).
+    bool firstUnset(const cv::Mat& mask, const cv::Point& from, double maxDistance,
+                    cv::Point& hit) const {
+        const auto within = std::upper_bound(entries_.begin(), entries_.end(), maxDistance);
+        return firstUnset(mask, from, hit, static_cast<std::size_t>(within - entries_.begin()));
+    }
+
+  private:
+    // The first `count` cells of the pattern.
+    bool firstUnset(const cv::Mat& mask, const cv::Point& from, cv::Point& hit,
+                    std::size_t count) const {
         if (isInterior(mask, from, reach_)) {
             const std::uint8_t* start = mask.ptr<std::uint8_t>(from.y) + from.x;
-            for (std::size_t k = 0; k < offsets_.size(); ++k) {
+            for (std::size_t k = 0; k < count; ++k) {
                 if (start[offsets_[k]] == 0) {
                     hit = from + cells_[k];
                     return true;
@@ -156,17 +192,17 @@ class RayPattern {
             }
             return false;
         }
-        for (const cv::Point& c : cells_) {
-            if (!isSet(mask, from.x + c.x, from.y + c.y)) {
-                hit = from + c;
+        for (std::size_t k = 0; k < count; ++k) {
+            if (!isSet(mask, from.x + cells_[k].x, from.y + cells_[k].y)) {
+                hit = from + cells_[k];
                 return true;
             }
         }
         return false;
     }
 
-  private:
     std::vector<cv::Point> cells_;
+    std::vector<double> entries_;  // ray parameter where each cell is entered (non-decreasing)
     std::vector<std::ptrdiff_t> offsets_;
     int reach_ = 0;
 };

@@ -2,6 +2,7 @@
 
 #include "GridRay.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace toposlam::rooms {
@@ -37,15 +38,23 @@ std::vector<VirtualDoor> VirtualDoorDetector::detect(
     // The main directions are the same from every cell: their rays are walked once (both
     // ways), then only looked up.
     std::vector<detail::RayPattern> ahead, behind;
+    std::vector<double> cosines, sines;
     for (const double direction : directions) {
-        const double ux = std::cos(direction), uy = std::sin(direction);
-        ahead.emplace_back(ux, uy, reach, space.free);
-        behind.emplace_back(-ux, -uy, reach, space.free);
+        cosines.push_back(std::cos(direction));
+        sines.push_back(std::sin(direction));
+        ahead.emplace_back(cosines.back(), sines.back(), reach, space.free);
+        behind.emplace_back(-cosines.back(), -sines.back(), reach, space.free);
     }
+    // Behind, a jamb is looked for only as far as it could still give a door (eq. 10) with
+    // the one found ahead.
+    const double widest = target + tolerance;
     auto mainSection = [&](const cv::Point& p, std::size_t k, VirtualDoor& door) {
         cv::Point a, b;
         double width = 0;
-        if (!ahead[k].firstUnset(space.free, p, a) || !behind[k].firstUnset(space.free, p, b) ||
+        if (!ahead[k].firstUnset(space.free, p, a))
+            return false;
+        const double back = detail::farSideReach(p, a, cosines[k], sines[k], widest);
+        if (!behind[k].firstUnset(space.free, p, std::min(reach, back), b) ||
             !isDoorWidth(a, b, target, tolerance, width)) {
             return false;
         }
@@ -56,8 +65,10 @@ std::vector<VirtualDoor> VirtualDoorDetector::detect(
         const double ux = std::cos(direction), uy = std::sin(direction);
         cv::Point a, b;
         double width = 0;
-        if (!castRay(space.free, p, ux, uy, reach, a) ||
-            !castRay(space.free, p, -ux, -uy, reach, b) ||
+        if (!castRay(space.free, p, ux, uy, reach, a))
+            return false;
+        const double back = detail::farSideReach(p, a, ux, uy, widest);
+        if (!castRay(space.free, p, -ux, -uy, std::min(reach, back), b) ||
             !isDoorWidth(a, b, target, tolerance, width)) {
             return false;
         }

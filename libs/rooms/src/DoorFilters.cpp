@@ -31,7 +31,7 @@ double wallRun(const cv::Mat& free, const cv::Point& jamb, double ux, double uy,
     });
     if (!ended)
         return cap;
-    return std::hypot(hit.x - jamb.x, hit.y - jamb.y);
+    return detail::cellDistance(hit.x - jamb.x, hit.y - jamb.y);
 }
 
 // Whether the free space across direction (ux, uy) through the cell `at` is wider than `cap`
@@ -46,7 +46,7 @@ bool wider(const cv::Mat& free, const cv::Point& at, double ux, double uy, doubl
                detail::walkRay(at, -ux, -uy,
                                std::min(cap, detail::farSideReach(at, a, ux, uy, cap)), blocked, b);
     });
-    return !bounded || std::hypot(a.x - b.x, a.y - b.y) > cap;
+    return !bounded || detail::cellDistance(a.x - b.x, a.y - b.y) > cap;
 }
 
 // Whether two cuts fan out from one jamb (their other ends apart): two cross-sections of one
@@ -66,7 +66,7 @@ bool fanFromOneJamb(const VirtualDoor& a, const VirtualDoor& b) {
 
 double jambDistance(const VirtualDoor& a, const VirtualDoor& b) {
     auto d = [](const cv::Point& p, const cv::Point& q) {
-        return std::hypot(p.x - q.x, p.y - q.y);
+        return detail::cellDistance(p.x - q.x, p.y - q.y);
     };
     return std::min(std::max(d(a.jambA, b.jambA), d(a.jambB, b.jambB)),
                     std::max(d(a.jambA, b.jambB), d(a.jambB, b.jambA)));
@@ -129,7 +129,7 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
             detail::withMaskReader(space.free, from, 2 * thickness + 1, [&](const auto& isFree) {
                 return detail::walkRay(from, ux, uy, 2 * thickness, isFree, hit);
             });
-        return found ? std::hypot(hit.x - from.x, hit.y - from.y) : 1e9;
+        return found ? detail::cellDistance(hit.x - from.x, hit.y - from.y) : 1e9;
     };
     const WallThickness* measured = options_.wallThicknessFromMap ? wallThickness : nullptr;
     // At `at` cells from the jamb along (ux, uy), inside the obstacle, the obstacle is a wall

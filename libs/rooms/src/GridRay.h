@@ -19,6 +19,25 @@ inline double toCells(double metres, double resolution) {
     return std::abs(cells - whole) < 1e-6 * std::max(1.0, std::abs(cells)) ? whole : cells;
 }
 
+/// std::hypot(dx, dy) of a whole-cell offset (the same value: below 128 cells each way it is
+/// looked up in a table of std::hypot's results, farther it is computed).
+inline double cellDistance(int dx, int dy) {
+    constexpr int kSide = 128;
+    static const std::vector<double> table = [] {
+        std::vector<double> t(static_cast<std::size_t>(kSide) * kSide);
+        for (int y = 0; y < kSide; ++y) {
+            for (int x = 0; x < kSide; ++x)
+                t[static_cast<std::size_t>(y) * kSide + static_cast<std::size_t>(x)] =
+                    std::hypot(x, y);
+        }
+        return t;
+    }();
+    const int ax = std::abs(dx), ay = std::abs(dy);
+    if (ax < kSide && ay < kSide)
+        return table[static_cast<std::size_t>(ay) * kSide + static_cast<std::size_t>(ax)];
+    return std::hypot(dx, dy);
+}
+
 /// True when (x, y) is inside `mask` and non-zero.
 inline bool isSet(const cv::Mat& mask, int x, int y) {
     return x >= 0 && y >= 0 && x < mask.cols && y < mask.rows && mask.at<std::uint8_t>(y, x) != 0;

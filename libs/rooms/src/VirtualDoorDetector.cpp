@@ -20,7 +20,7 @@ namespace {
 // Eq. 10 on the two jamb cells found: the door, or nothing.
 bool isDoorWidth(const cv::Point& a, const cv::Point& b, double target, double tolerance,
                  double& width) {
-    width = std::hypot(a.x - b.x, a.y - b.y);
+    width = detail::cellDistance(a.x - b.x, a.y - b.y);
     return std::abs(width - target) < tolerance;
 }
 

@@ -35,7 +35,8 @@ void WallThickness::measure(const FreeSpace& space, const Clearance& clearance,
                 });
             if (!found)
                 continue;
-            const double run = std::hypot(hit.x - c, hit.y - r) - 1.0;  // obstacle cells crossed
+            const double run =
+                detail::cellDistance(hit.x - c, hit.y - r) - 1.0;  // obstacle cells crossed
             if (run >= 0.5)  // shorter: a diagonal gap, not an obstacle
                 counts_[static_cast<std::size_t>(std::lround(run))] += 1.0;
         }

@@ -355,12 +355,16 @@ DoorFilters::Rooms RoomSegmenter::findRooms(const FreeSpace& space,
     if (result.fromTrajectory)
         result.searchCells = DoorSearchPaths::fromTrajectory(space, trajectory);
     result.trajectoryCells = result.searchCells.size();
-    if (medialAxis) {
-        const std::vector<cv::Point> axis = DoorSearchPaths::fromMedialAxis(
-            space, ws.clearance, door.doorWidth - door.doorWidthTolerance,
-            door.doorWidth + door.doorWidthTolerance);
-        result.searchCells.insert(result.searchCells.end(), axis.begin(), axis.end());
-    }
+    // The medial axes of the doors and of the wide openings, in one pass.
+    std::vector<std::pair<double, double>> widths = {
+        {door.doorWidth - door.doorWidthTolerance, door.doorWidth + door.doorWidthTolerance}};
+    if (medialAxis && ws.wide.searches())
+        widths.push_back(ws.wide.widths());
+    const std::vector<std::vector<cv::Point>> axes =
+        medialAxis ? DoorSearchPaths::fromMedialAxis(space, ws.clearance, widths)
+                   : std::vector<std::vector<cv::Point>>{};
+    if (medialAxis)
+        result.searchCells.insert(result.searchCells.end(), axes[0].begin(), axes[0].end());
     const std::vector<double> localDirections =
         door.localDirection ? ws.clearance.acrossRidge(result.searchCells) : std::vector<double>{};
     lap("search paths");
@@ -375,7 +379,7 @@ DoorFilters::Rooms RoomSegmenter::findRooms(const FreeSpace& space,
     const std::vector<cv::Point> noPath;  // the wide pass searches its own medial axis
     result.wideOpenings =
         ws.wide.detect(space, ws.clearance, medialAxis ? noPath : result.searchCells, directions,
-                       result.lines, walls);
+                       result.lines, walls, axes.size() > 1 ? &axes[1] : nullptr);
     result.afterTests.insert(result.afterTests.end(), result.wideOpenings.begin(),
                              result.wideOpenings.end());
     lap("wide openings");

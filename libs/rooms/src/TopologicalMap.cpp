@@ -19,29 +19,37 @@ struct RoomCells {
     cv::Point anchor;  // the first cell (raster order) of the greatest depth
 };
 
-// Per room id 1..N (index id - 1): its cells, their sums, bounding box and deepest cell.
+// Per room id 1..N (index id - 1): its cells, their sums, bounding box and deepest cell. Each
+// row is taken run by run (cells of one room side by side): the sums of whole numbers are exact
+// in a double, so adding a run's sum at once gives the same value as adding its cells.
 std::vector<RoomCells> roomCells(const cv::Mat& labels, const cv::Mat& depth) {
     std::vector<RoomCells> acc;
     for (int r = 0; r < labels.rows; ++r) {
         const int* row = labels.ptr<int>(r);
         const float* d = depth.ptr<float>(r);
-        for (int c = 0; c < labels.cols; ++c) {
+        for (int c = 0; c < labels.cols;) {
             const int id = row[c];
+            const int start = c;
+            while (c < labels.cols && row[c] == id)
+                ++c;
             if (id <= 0)
                 continue;
             if (static_cast<std::size_t>(id) > acc.size())
                 acc.resize(static_cast<std::size_t>(id));
             RoomCells& a = acc[static_cast<std::size_t>(id - 1)];
-            ++a.cells;
-            a.sumCol += c;
-            a.sumRow += r;
-            a.minCol = std::min(a.minCol, c);
-            a.maxCol = std::max(a.maxCol, c);
+            const auto length = static_cast<long long>(c - start);
+            a.cells += static_cast<std::size_t>(length);
+            a.sumCol += static_cast<double>(length * (start + c - 1) / 2);
+            a.sumRow += static_cast<double>(length * r);
+            a.minCol = std::min(a.minCol, start);
+            a.maxCol = std::max(a.maxCol, c - 1);
             a.minRow = std::min(a.minRow, r);
             a.maxRow = std::max(a.maxRow, r);
-            if (d[c] > a.deepest) {
-                a.deepest = d[c];
-                a.anchor = {c, r};
+            for (int k = start; k < c; ++k) {
+                if (d[k] > a.deepest) {
+                    a.deepest = d[k];
+                    a.anchor = {k, r};
+                }
             }
         }
     }

@@ -63,11 +63,14 @@ void FreeSpaceBinarizer::removeSpecksAndLabelObstacles(cv::Mat& all, FreeSpace& 
 // out.otherFree.
 void FreeSpaceBinarizer::keepLargestComponent(const cv::Mat& all, const std::string& sourceName,
                                               FreeSpace& out) const {
+    // Only the bounding box of the free cells holds components; 4-connected components are
+    // numbered in raster order, which the box keeps (so ties in area go the same way).
+    const cv::Rect box = cv::boundingRect(all);
     cv::Mat& labels = labels_;
     // connectedComponents without stats: much faster on large maps; one pass gets the areas.
-    const int n = cv::connectedComponents(all, labels, 4, CV_32S);
+    const int n = box.empty() ? 1 : cv::connectedComponents(all(box), labels, 4, CV_32S);
     std::vector<int> area(static_cast<std::size_t>(n), 0);
-    for (int r = 0; r < labels.rows; ++r) {
+    for (int r = 0; r < labels.rows && !box.empty(); ++r) {
         const int* row = labels.ptr<int>(r);
         for (int c = 0; c < labels.cols; ++c)
             ++area[static_cast<std::size_t>(row[c])];
@@ -83,10 +86,17 @@ void FreeSpaceBinarizer::keepLargestComponent(const cv::Mat& all, const std::str
                              "the map has no free cell (empty, unknown-only or fully occupied): "
                              "there are no rooms to segment");
     }
-    cv::compare(labels, best, out.free, cv::CMP_EQ);
-    cv::compare(labels, 0, out.otherFree, cv::CMP_NE);
-    cv::bitwise_xor(out.otherFree, out.free, out.otherFree);  // free is inside: the rest
-    out.bounds = cv::boundingRect(out.free);
+    out.free.create(all.size(), CV_8U);
+    out.free.setTo(0);
+    out.otherFree.create(all.size(), CV_8U);
+    out.otherFree.setTo(0);
+    cv::Mat free = out.free(box), other = out.otherFree(box);
+    cv::compare(labels, best, free, cv::CMP_EQ);  // same size and type: into out.free
+    cv::compare(labels, 0, other, cv::CMP_NE);
+    CV_Assert(free.data == out.free.ptr(box.y) + box.x &&
+              other.data == out.otherFree.ptr(box.y) + box.x);
+    cv::bitwise_xor(other, free, other);  // free is inside: the rest
+    out.bounds = cv::boundingRect(free) + box.tl();
     out.freeCells = static_cast<std::size_t>(area[static_cast<std::size_t>(best)]);
 }
 

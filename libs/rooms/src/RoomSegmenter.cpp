@@ -136,10 +136,15 @@ void labelIslands(const FreeSpace& space, cv::Mat& labels) {
         }
     }
     std::vector<int> roomOf(votes.size(), 0);
+    bool any = false;
     for (std::size_t i = 0; i < votes.size(); ++i) {
-        if (votes[i].size() == 1)
+        if (votes[i].size() == 1) {
             roomOf[i] = votes[i].front().first;
+            any = true;
+        }
     }
+    if (!any)
+        return;  // no island inside one room: nothing to relabel
     for (int r = 0; r < obstacles.rows; ++r) {
         const int* row = obstacles.ptr<int>(r);
         int* out = labels.ptr<int>(r);

@@ -82,6 +82,61 @@ TEST(VirtualDoorDetector, RayStopsAtADiagonalWall) {
     EXPECT_LE(std::abs(hit.x + hit.y - 39), 1);  // on the wall, not beyond it
 }
 
+// detect() walks each main direction's ray once and looks it up from every cell, and walks the
+// ray behind a cell only as far as a door could still reach: it must find exactly the doors
+// that casting both rays in full from every cell finds (eq. 10), near the image border too.
+TEST(VirtualDoorDetector, SameDoorsAsFullRaysFromEveryCell) {
+    cv::Mat noise(70, 90, CV_8U);
+    cv::RNG rng(7);
+    rng.fill(noise, cv::RNG::UNIFORM, 0, 100);
+    FreeSpace space;
+    space.frame.resolution = kRes;
+    space.free = noise >= 6;        // 6 % single obstacle cells
+    for (int k = 0; k < 12; ++k) {  // and walls of any length and angle
+        const cv::Point a(rng.uniform(0, 90), rng.uniform(0, 70));
+        const cv::Point b(rng.uniform(0, 90), rng.uniform(0, 70));
+        cv::line(space.free, a, b, cv::Scalar(0), 1, cv::LINE_8);
+    }
+    space.frame.cols = space.free.cols;
+    space.frame.rows = space.free.rows;
+    std::vector<cv::Point> cells;
+    std::vector<double> local;
+    cv::findNonZero(space.free, cells);
+    for (std::size_t i = 0; i < cells.size(); ++i)
+        local.push_back(0.013 * static_cast<double>(i));
+    const std::vector<double> axes{0.3, 0.3 + M_PI / 2};
+    for (const double width : {1.1, 2.3}) {  // doors; the wide openings' range
+        VirtualDoorDetector::Options o;
+        o.doorWidth = width;
+        o.doorWidthTolerance = 0.5;
+        const auto found = VirtualDoorDetector(o).detect(space, cells, axes, local);
+        const double target = width / kRes, tolerance = 0.5 / kRes, reach = target + tolerance + 1;
+        std::vector<VirtualDoor> expected;
+        for (std::size_t i = 0; i < cells.size(); ++i) {
+            for (int k = 0; k < 3; ++k) {
+                const double direction = k < 2 ? axes[static_cast<std::size_t>(k)] : local[i];
+                const double ux = std::cos(direction), uy = std::sin(direction);
+                cv::Point a, b;
+                if (!VirtualDoorDetector::castRay(space.free, cells[i], ux, uy, reach, a) ||
+                    !VirtualDoorDetector::castRay(space.free, cells[i], -ux, -uy, reach, b))
+                    continue;
+                const double w = std::hypot(a.x - b.x, a.y - b.y);
+                if (std::abs(w - target) < tolerance)
+                    expected.push_back({a, b, w, k, cells[i]});
+            }
+        }
+        ASSERT_EQ(found.size(), expected.size()) << width;
+        ASSERT_GT(found.size(), 100u) << "the test must find doors";
+        for (std::size_t i = 0; i < found.size(); ++i) {
+            EXPECT_EQ(found[i].jambA, expected[i].jambA) << i;
+            EXPECT_EQ(found[i].jambB, expected[i].jambB) << i;
+            EXPECT_EQ(found[i].width, expected[i].width) << i;
+            EXPECT_EQ(found[i].direction, expected[i].direction) << i;
+            EXPECT_EQ(found[i].pathCell, expected[i].pathCell) << i;
+        }
+    }
+}
+
 TEST(VirtualDoorDetector, FindsDoorWideGapsOnly) {
     const std::vector<double> axes{0.0, M_PI / 2};
     for (const double gap : {0.7, 0.9, 1.2, 1.5}) {

@@ -23,24 +23,30 @@ using DisjointSets = boost::disjoint_sets_with_storage<>;
 double wallRun(const cv::Mat& free, const cv::Point& jamb, double ux, double uy, double cap) {
     const cv::Point side(cvRound(-uy), cvRound(ux));
     cv::Point hit;
-    auto open = [&](int x, int y) {
-        return detail::isSet(free, x, y) && detail::isSet(free, x + side.x, y + side.y) &&
-               detail::isSet(free, x - side.x, y - side.y);
-    };
-    if (!detail::walkRay(jamb, ux, uy, cap, open, hit))
+    const bool ended = detail::withMaskReader(free, jamb, cap + 2, [&](const auto& isFree) {
+        auto open = [&](int x, int y) {
+            return isFree(x, y) && isFree(x + side.x, y + side.y) && isFree(x - side.x, y - side.y);
+        };
+        return detail::walkRay(jamb, ux, uy, cap, open, hit);
+    });
+    if (!ended)
         return cap;
-    return std::hypot(hit.x - jamb.x, hit.y - jamb.y);
+    return detail::cellDistance(hit.x - jamb.x, hit.y - jamb.y);
 }
 
-// Free width (pixels) across direction (ux, uy) through the cell `at`, capped just above `cap`.
-double freeWidth(const cv::Mat& free, const cv::Point& at, double ux, double uy, double cap) {
+// Whether the free space across direction (ux, uy) through the cell `at` is wider than `cap`
+// pixels (from the non-free cell on one side to the one on the other; none within cap on a
+// side: wider).
+bool wider(const cv::Mat& free, const cv::Point& at, double ux, double uy, double cap) {
     cv::Point a, b;
-    auto blocked = [&](int x, int y) { return !detail::isSet(free, x, y); };
-    if (!detail::walkRay(at, ux, uy, cap, blocked, a) ||
-        !detail::walkRay(at, -ux, -uy, cap, blocked, b)) {
-        return 2 * cap;
-    }
-    return std::hypot(a.x - b.x, a.y - b.y);
+    const bool bounded = detail::withMaskReader(free, at, cap + 1, [&](const auto& isFree) {
+        auto blocked = [&](int x, int y) { return !isFree(x, y); };
+        // Beyond farSideReach the other side is wider than cap anyway.
+        return detail::walkRay(at, ux, uy, cap, blocked, a) &&
+               detail::walkRay(at, -ux, -uy,
+                               std::min(cap, detail::farSideReach(at, a, ux, uy, cap)), blocked, b);
+    });
+    return !bounded || detail::cellDistance(a.x - b.x, a.y - b.y) > cap;
 }
 
 // Whether two cuts fan out from one jamb (their other ends apart): two cross-sections of one
@@ -60,7 +66,7 @@ bool fanFromOneJamb(const VirtualDoor& a, const VirtualDoor& b) {
 
 double jambDistance(const VirtualDoor& a, const VirtualDoor& b) {
     auto d = [](const cv::Point& p, const cv::Point& q) {
-        return std::hypot(p.x - q.x, p.y - q.y);
+        return detail::cellDistance(p.x - q.x, p.y - q.y);
     };
     return std::min(std::max(d(a.jambA, b.jambA), d(a.jambB, b.jambB)),
                     std::max(d(a.jambA, b.jambB), d(a.jambB, b.jambA)));
@@ -117,12 +123,13 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
     const double thickness = detail::toCells(options_.maxWallThickness, space.frame.resolution);
     const double length =
         std::max(extent, detail::toCells(options_.wallEndProbe, space.frame.resolution));
-    auto isFree = [&](int x, int y) { return detail::isSet(space.free, x, y); };
     auto toFree = [&](const cv::Point& from, double ux, double uy) {
         cv::Point hit;
-        return detail::walkRay(from, ux, uy, 2 * thickness, isFree, hit)
-                   ? std::hypot(hit.x - from.x, hit.y - from.y)
-                   : 1e9;
+        const bool found =
+            detail::withMaskReader(space.free, from, 2 * thickness + 1, [&](const auto& isFree) {
+                return detail::walkRay(from, ux, uy, 2 * thickness, isFree, hit);
+            });
+        return found ? detail::cellDistance(hit.x - from.x, hit.y - from.y) : 1e9;
     };
     const WallThickness* measured = options_.wallThicknessFromMap ? wallThickness : nullptr;
     // At `at` cells from the jamb along (ux, uy), inside the obstacle, the obstacle is a wall
@@ -199,7 +206,7 @@ std::vector<VirtualDoor> DoorFilters::constriction(const FreeSpace& space,
             const cv::Point q(cvRound(centre.x - side * k * uy), cvRound(centre.y + side * k * ux));
             if (!detail::isSet(space.free, q.x, q.y))
                 return false;  // a wall before it opened
-            if (freeWidth(space.free, q, ux, uy, opened) > opened)
+            if (wider(space.free, q, ux, uy, opened))
                 return true;
         }
         return false;

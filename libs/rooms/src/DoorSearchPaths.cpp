@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace toposlam::rooms {
 
@@ -75,24 +76,42 @@ std::vector<double> Clearance::acrossRidge(const std::vector<cv::Point>& cells) 
 std::vector<cv::Point> DoorSearchPaths::fromMedialAxis(const FreeSpace& space,
                                                        const Clearance& clearance,
                                                        double minDoorWidth, double maxDoorWidth) {
+    return std::move(fromMedialAxis(space, clearance, {{minDoorWidth, maxDoorWidth}}).front());
+}
+
+std::vector<std::vector<cv::Point>> DoorSearchPaths::fromMedialAxis(
+    const FreeSpace& space, const Clearance& clearance,
+    const std::vector<std::pair<double, double>>& widths) {
     const double res = space.frame.resolution;
-    const float lo = static_cast<float>(0.5 * detail::toCells(minDoorWidth, res) - 1.0);
-    const float hi = static_cast<float>(0.5 * detail::toCells(maxDoorWidth, res) + 1.0);
+    // Per range, the clearance of the middle of such an opening, a cell either way.
+    std::vector<std::pair<float, float>> ranges;
+    float lowest = std::numeric_limits<float>::infinity(), highest = -lowest;
+    for (const auto& [minWidth, maxWidth] : widths) {
+        const float lo = static_cast<float>(0.5 * detail::toCells(minWidth, res) - 1.0);
+        const float hi = static_cast<float>(0.5 * detail::toCells(maxWidth, res) + 1.0);
+        ranges.emplace_back(lo, hi);
+        lowest = std::min(lowest, lo);
+        highest = std::max(highest, hi);
+    }
     const cv::Mat& dist = clearance.distances();
-    std::vector<cv::Point> cells;
+    std::vector<std::vector<cv::Point>> cells(ranges.size());
     for (int r = 1; r + 1 < dist.rows; ++r) {
         const float* up = dist.ptr<float>(r - 1);
         const float* row = dist.ptr<float>(r);
         const float* down = dist.ptr<float>(r + 1);
         for (int c = 1; c + 1 < dist.cols; ++c) {
             const float d = row[c];
-            if (d < lo || d > hi)
+            if (d < lowest || d > highest)
                 continue;
             // Local maximum across an axis: not below either neighbour, above at least one.
             auto ridge = [d](float a, float b) { return d >= a && d >= b && (d > a || d > b); };
-            if (ridge(row[c - 1], row[c + 1]) || ridge(up[c], down[c]) ||
-                ridge(up[c - 1], down[c + 1]) || ridge(up[c + 1], down[c - 1])) {
-                cells.emplace_back(c, r);
+            if (!ridge(row[c - 1], row[c + 1]) && !ridge(up[c], down[c]) &&
+                !ridge(up[c - 1], down[c + 1]) && !ridge(up[c + 1], down[c - 1])) {
+                continue;
+            }
+            for (std::size_t k = 0; k < ranges.size(); ++k) {
+                if (d >= ranges[k].first && d <= ranges[k].second)
+                    cells[k].emplace_back(c, r);
             }
         }
     }

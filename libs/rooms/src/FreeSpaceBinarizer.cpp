@@ -63,11 +63,14 @@ void FreeSpaceBinarizer::removeSpecksAndLabelObstacles(cv::Mat& all, FreeSpace& 
 // out.otherFree.
 void FreeSpaceBinarizer::keepLargestComponent(const cv::Mat& all, const std::string& sourceName,
                                               FreeSpace& out) const {
+    // Only the bounding box of the free cells holds components; 4-connected components are
+    // numbered in raster order, which the box keeps (so ties in area go the same way).
+    const cv::Rect box = cv::boundingRect(all);
     cv::Mat& labels = labels_;
     // connectedComponents without stats: much faster on large maps; one pass gets the areas.
-    const int n = cv::connectedComponents(all, labels, 4, CV_32S);
+    const int n = box.empty() ? 1 : cv::connectedComponents(all(box), labels, 4, CV_32S);
     std::vector<int> area(static_cast<std::size_t>(n), 0);
-    for (int r = 0; r < labels.rows; ++r) {
+    for (int r = 0; r < labels.rows && !box.empty(); ++r) {
         const int* row = labels.ptr<int>(r);
         for (int c = 0; c < labels.cols; ++c)
             ++area[static_cast<std::size_t>(row[c])];
@@ -84,24 +87,16 @@ void FreeSpaceBinarizer::keepLargestComponent(const cv::Mat& all, const std::str
                              "there are no rooms to segment");
     }
     out.free.create(all.size(), CV_8U);
+    out.free.setTo(0);
     out.otherFree.create(all.size(), CV_8U);
-    int minC = labels.cols, minR = labels.rows, maxC = -1, maxR = -1;
-    for (int r = 0; r < labels.rows; ++r) {
-        const int* row = labels.ptr<int>(r);
-        auto* keep = out.free.ptr<std::uint8_t>(r);
-        auto* other = out.otherFree.ptr<std::uint8_t>(r);
-        for (int c = 0; c < labels.cols; ++c) {
-            keep[c] = row[c] == best ? 255 : 0;
-            other[c] = row[c] != best && row[c] != 0 ? 255 : 0;
-            if (row[c] == best) {
-                minC = std::min(minC, c);
-                maxC = std::max(maxC, c);
-                minR = std::min(minR, r);
-                maxR = std::max(maxR, r);
-            }
-        }
-    }
-    out.bounds = cv::Rect(minC, minR, maxC - minC + 1, maxR - minR + 1);
+    out.otherFree.setTo(0);
+    cv::Mat free = out.free(box), other = out.otherFree(box);
+    cv::compare(labels, best, free, cv::CMP_EQ);  // same size and type: into out.free
+    cv::compare(labels, 0, other, cv::CMP_NE);
+    CV_Assert(free.data == out.free.ptr(box.y) + box.x &&
+              other.data == out.otherFree.ptr(box.y) + box.x);
+    cv::bitwise_xor(other, free, other);  // free is inside: the rest
+    out.bounds = cv::boundingRect(free) + box.tl();
     out.freeCells = static_cast<std::size_t>(area[static_cast<std::size_t>(best)]);
 }
 

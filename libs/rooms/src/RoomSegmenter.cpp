@@ -42,22 +42,26 @@ FreeSpace cropToBounds(const FreeSpace& space, cv::Rect& roi) {
     return out;
 }
 
-// Gives the free cells left unlabelled (the door cuts) the label of the nearest labelled cell:
-// 4-connected breadth-first growth from the labelled cells next to them, in raster order, never
-// leaving `free`.
-void fillCuts(const cv::Mat& free, cv::Mat& labels) {
+// Region labels become room ids in place (`roomOfRegion`; region 0, the cuts and the non-free
+// cells, stays 0), and the free cells left unlabelled (the door cuts) get the label of the
+// nearest labelled cell: 4-connected breadth-first growth from the labelled cells next to them,
+// in raster order, never leaving `free`.
+void labelRooms(const cv::Mat& free, const std::vector<int>& roomOfRegion, cv::Mat& labels) {
     const cv::Point around[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
     auto inside = [&](const cv::Point& q) {
         return q.x >= 0 && q.y >= 0 && q.x < labels.cols && q.y < labels.rows;
     };
     std::deque<cv::Point> queue;
     for (int r = 0; r < labels.rows; ++r) {
-        const int* row = labels.ptr<int>(r);
+        int* row = labels.ptr<int>(r);
         const auto* f = free.ptr<std::uint8_t>(r);
         for (int c = 0; c < labels.cols; ++c) {
-            if (row[c] != 0 || f[c] == 0)
+            const int region = row[c];
+            row[c] = roomOfRegion[static_cast<std::size_t>(region)];
+            if (region != 0 || f[c] == 0)
                 continue;
-            // An unlabelled free cell: its labelled neighbours seed the growth.
+            // An unlabelled free cell: its labelled neighbours seed the growth (a region is
+            // labelled when its room is, whether it was renamed yet or not).
             for (const cv::Point& o : around) {
                 const cv::Point q(c + o.x, r + o.y);
                 if (inside(q) && labels.at<int>(q) != 0)
@@ -132,10 +136,15 @@ void labelIslands(const FreeSpace& space, cv::Mat& labels) {
         }
     }
     std::vector<int> roomOf(votes.size(), 0);
+    bool any = false;
     for (std::size_t i = 0; i < votes.size(); ++i) {
-        if (votes[i].size() == 1)
+        if (votes[i].size() == 1) {
             roomOf[i] = votes[i].front().first;
+            any = true;
+        }
     }
+    if (!any)
+        return;  // no island inside one room: nothing to relabel
     for (int r = 0; r < obstacles.rows; ++r) {
         const int* row = obstacles.ptr<int>(r);
         int* out = labels.ptr<int>(r);
@@ -358,12 +367,16 @@ DoorFilters::Rooms RoomSegmenter::findRooms(const FreeSpace& space,
     if (result.fromTrajectory)
         result.searchCells = DoorSearchPaths::fromTrajectory(space, trajectory);
     result.trajectoryCells = result.searchCells.size();
-    if (medialAxis) {
-        const std::vector<cv::Point> axis = DoorSearchPaths::fromMedialAxis(
-            space, ws.clearance, door.doorWidth - door.doorWidthTolerance,
-            door.doorWidth + door.doorWidthTolerance);
-        result.searchCells.insert(result.searchCells.end(), axis.begin(), axis.end());
-    }
+    // The medial axes of the doors and of the wide openings, in one pass.
+    std::vector<std::pair<double, double>> widths = {
+        {door.doorWidth - door.doorWidthTolerance, door.doorWidth + door.doorWidthTolerance}};
+    if (medialAxis && ws.wide.searches())
+        widths.push_back(ws.wide.widths());
+    const std::vector<std::vector<cv::Point>> axes =
+        medialAxis ? DoorSearchPaths::fromMedialAxis(space, ws.clearance, widths)
+                   : std::vector<std::vector<cv::Point>>{};
+    if (medialAxis)
+        result.searchCells.insert(result.searchCells.end(), axes[0].begin(), axes[0].end());
     const std::vector<double> localDirections =
         door.localDirection ? ws.clearance.acrossRidge(result.searchCells) : std::vector<double>{};
     lap("search paths");
@@ -378,7 +391,7 @@ DoorFilters::Rooms RoomSegmenter::findRooms(const FreeSpace& space,
     const std::vector<cv::Point> noPath;  // the wide pass searches its own medial axis
     result.wideOpenings =
         ws.wide.detect(space, ws.clearance, medialAxis ? noPath : result.searchCells, directions,
-                       result.lines, walls);
+                       result.lines, walls, axes.size() > 1 ? &axes[1] : nullptr);
     result.afterTests.insert(result.afterTests.end(), result.wideOpenings.begin(),
                              result.wideOpenings.end());
     lap("wide openings");
@@ -415,12 +428,7 @@ RoomSegmenter::Result RoomSegmenter::segment(
 
     // Step 6: the rooms. Region labels become room ids in place; cut cells join a neighbour.
     cv::Mat& labels = ws.partition.mutableLabels();
-    for (int r = 0; r < labels.rows; ++r) {
-        int* row = labels.ptr<int>(r);
-        for (int c = 0; c < labels.cols; ++c)
-            row[c] = rooms.roomOfRegion[static_cast<std::size_t>(row[c])];
-    }
-    fillCuts(space.free, labels);
+    labelRooms(space.free, rooms.roomOfRegion, labels);
     if (options_.labelIslands && !space.obstacles.empty())
         labelIslands(space, labels);
     lap("labels");

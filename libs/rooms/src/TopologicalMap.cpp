@@ -8,6 +8,70 @@
 
 namespace toposlam::rooms {
 
+namespace {
+
+// What one raster pass over a room's cells gives.
+struct RoomCells {
+    std::size_t cells = 0;
+    double sumCol = 0, sumRow = 0;
+    int minCol = 1 << 30, minRow = 1 << 30, maxCol = -1, maxRow = -1;
+    float deepest = -1;
+    cv::Point anchor;  // the first cell (raster order) of the greatest depth
+};
+
+// Per room id 1..N (index id - 1): its cells, their sums, bounding box and deepest cell. Each
+// row is taken run by run (cells of one room side by side): the sums of whole numbers are exact
+// in a double, so adding a run's sum at once gives the same value as adding its cells.
+std::vector<RoomCells> roomCells(const cv::Mat& labels, const cv::Mat& depth) {
+    std::vector<RoomCells> acc;
+    for (int r = 0; r < labels.rows; ++r) {
+        const int* row = labels.ptr<int>(r);
+        const float* d = depth.ptr<float>(r);
+        for (int c = 0; c < labels.cols;) {
+            const int id = row[c];
+            const int start = c;
+            while (c < labels.cols && row[c] == id)
+                ++c;
+            if (id <= 0)
+                continue;
+            if (static_cast<std::size_t>(id) > acc.size())
+                acc.resize(static_cast<std::size_t>(id));
+            RoomCells& a = acc[static_cast<std::size_t>(id - 1)];
+            const auto length = static_cast<long long>(c - start);
+            a.cells += static_cast<std::size_t>(length);
+            a.sumCol += static_cast<double>(length * (start + c - 1) / 2);
+            a.sumRow += static_cast<double>(length * r);
+            a.minCol = std::min(a.minCol, start);
+            a.maxCol = std::max(a.maxCol, c - 1);
+            a.minRow = std::min(a.minRow, r);
+            a.maxRow = std::max(a.maxRow, r);
+            for (int k = start; k < c; ++k) {
+                if (d[k] > a.deepest) {
+                    a.deepest = d[k];
+                    a.anchor = {k, r};
+                }
+            }
+        }
+    }
+    return acc;
+}
+
+// The cells of room `id` in `box` of `labels` as 255 with a ring of zeros around them, written
+// into the top-left corner of `buffer` (reused from room to room).
+cv::Mat roomMask(const cv::Mat& labels, int id, const cv::Rect& box, cv::Mat& buffer) {
+    cv::Mat mask = buffer(cv::Rect(0, 0, box.width + 2, box.height + 2));
+    mask.row(0).setTo(0);
+    mask.row(mask.rows - 1).setTo(0);
+    mask.col(0).setTo(0);
+    mask.col(mask.cols - 1).setTo(0);
+    cv::Mat inside = mask(cv::Rect(1, 1, box.width, box.height));
+    cv::compare(labels(box), id, inside, cv::CMP_EQ);  // same size and type: into the mask
+    CV_Assert(inside.data == mask.ptr<std::uint8_t>(1) + 1);
+    return mask;
+}
+
+}  // namespace
+
 TopologicalMap TopologicalMap::fromLabels(const GridImageFrame& frame, const cv::Mat& labels,
                                           const cv::Mat& clearance) {
     CV_Assert(labels.type() == CV_32S && labels.rows == frame.rows && labels.cols == frame.cols);
@@ -16,50 +80,14 @@ TopologicalMap TopologicalMap::fromLabels(const GridImageFrame& frame, const cv:
     TopologicalMap map;
     map.frame = frame;
     map.labels = labels;
-    struct Accumulator {
-        std::size_t cells = 0;
-        double sumCol = 0, sumRow = 0;
-        int minCol = 1 << 30, minRow = 1 << 30, maxCol = -1, maxRow = -1;
-        float deepest = -1;
-        cv::Point anchor;
-    };
-    std::vector<Accumulator> acc;
-    for (int r = 0; r < labels.rows; ++r) {
-        const int* row = labels.ptr<int>(r);
-        for (int c = 0; c < labels.cols; ++c) {
-            const int id = row[c];
-            if (id <= 0)
-                continue;
-            if (static_cast<std::size_t>(id) > acc.size())
-                acc.resize(static_cast<std::size_t>(id));
-            Accumulator& a = acc[static_cast<std::size_t>(id - 1)];
-            ++a.cells;
-            a.sumCol += c;
-            a.sumRow += r;
-            a.minCol = std::min(a.minCol, c);
-            a.maxCol = std::max(a.maxCol, c);
-            a.minRow = std::min(a.minRow, r);
-            a.maxRow = std::max(a.maxRow, r);
-        }
-    }
     cv::Mat depth = clearance;
     if (depth.empty())
         cv::distanceTransform(labels > 0, depth, cv::DIST_L2, cv::DIST_MASK_5);
-    for (int r = 0; r < labels.rows; ++r) {
-        const int* row = labels.ptr<int>(r);
-        const float* d = depth.ptr<float>(r);
-        for (int c = 0; c < labels.cols; ++c) {
-            if (row[c] <= 0)
-                continue;
-            Accumulator& a = acc[static_cast<std::size_t>(row[c] - 1)];
-            if (d[c] > a.deepest) {
-                a.deepest = d[c];
-                a.anchor = {c, r};
-            }
-        }
-    }
+    const std::vector<RoomCells> acc = roomCells(labels, depth);
+    cv::Mat buffer(labels.rows + 2, labels.cols + 2, CV_8U);
+    std::vector<std::vector<cv::Point>> contours;
     for (std::size_t i = 0; i < acc.size(); ++i) {
-        const Accumulator& a = acc[i];
+        const RoomCells& a = acc[i];
         if (a.cells == 0) {
             throw std::invalid_argument(
                 "TopologicalMap::fromLabels: room ids must be 1..N without gaps");
@@ -72,10 +100,8 @@ TopologicalMap TopologicalMap::fromLabels(const GridImageFrame& frame, const cv:
         room.anchor = frame.toWorld(a.anchor.x, a.anchor.y);
         // The room's cells in its bounding box plus a ring of zeros.
         const cv::Rect box(a.minCol, a.minRow, a.maxCol - a.minCol + 1, a.maxRow - a.minRow + 1);
-        cv::Mat mask = cv::Mat::zeros(box.height + 2, box.width + 2, CV_8U);
-        mask(cv::Rect(1, 1, box.width, box.height)).setTo(255, labels(box) == room.id);
-        std::vector<std::vector<cv::Point>> contours;
-        cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
+        cv::findContours(roomMask(labels, room.id, box, buffer), contours, cv::RETR_EXTERNAL,
+                         cv::CHAIN_APPROX_SIMPLE);
         std::size_t largest = 0;
         double largestArea = -1;
         for (std::size_t k = 0; k < contours.size(); ++k) {

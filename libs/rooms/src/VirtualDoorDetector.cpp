@@ -2,15 +2,29 @@
 
 #include "GridRay.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace toposlam::rooms {
 
 bool VirtualDoorDetector::castRay(const cv::Mat& free, const cv::Point& from, double ux, double uy,
                                   double maxDistance, cv::Point& hit) {
-    return detail::walkRay(
-        from, ux, uy, maxDistance, [&](int x, int y) { return !detail::isSet(free, x, y); }, hit);
+    return detail::withMaskReader(free, from, maxDistance + 1, [&](const auto& isFree) {
+        return detail::walkRay(
+            from, ux, uy, maxDistance, [&](int x, int y) { return !isFree(x, y); }, hit);
+    });
 }
+
+namespace {
+
+// Eq. 10 on the two jamb cells found: the door, or nothing.
+bool isDoorWidth(const cv::Point& a, const cv::Point& b, double target, double tolerance,
+                 double& width) {
+    width = detail::cellDistance(a.x - b.x, a.y - b.y);
+    return std::abs(width - target) < tolerance;
+}
+
+}  // namespace
 
 std::vector<VirtualDoor> VirtualDoorDetector::detect(
     const FreeSpace& space, const std::vector<cv::Point>& pathCells,
@@ -21,17 +35,44 @@ std::vector<VirtualDoor> VirtualDoorDetector::detect(
     // A jamb farther than the widest door cannot belong to a door through this cell.
     const double reach = target + tolerance + 1.0;
     const bool local = options_.localDirection && localDirections.size() == pathCells.size();
-    auto crossSection = [&](const cv::Point& p, double direction, int index, VirtualDoor& door) {
-        const double ux = std::cos(direction), uy = std::sin(direction);
+    // The main directions are the same from every cell: their rays are walked once (both
+    // ways), then only looked up.
+    std::vector<detail::RayPattern> ahead, behind;
+    std::vector<double> cosines, sines;
+    for (const double direction : directions) {
+        cosines.push_back(std::cos(direction));
+        sines.push_back(std::sin(direction));
+        ahead.emplace_back(cosines.back(), sines.back(), reach, space.free);
+        behind.emplace_back(-cosines.back(), -sines.back(), reach, space.free);
+    }
+    // Behind, a jamb is looked for only as far as it could still give a door (eq. 10) with
+    // the one found ahead.
+    const double widest = target + tolerance;
+    auto mainSection = [&](const cv::Point& p, std::size_t k, VirtualDoor& door) {
         cv::Point a, b;
-        if (!castRay(space.free, p, ux, uy, reach, a) ||
-            !castRay(space.free, p, -ux, -uy, reach, b)) {
+        double width = 0;
+        if (!ahead[k].firstUnset(space.free, p, a))
+            return false;
+        const double back = detail::farSideReach(p, a, cosines[k], sines[k], widest);
+        if (!behind[k].firstUnset(space.free, p, std::min(reach, back), b) ||
+            !isDoorWidth(a, b, target, tolerance, width)) {
             return false;
         }
-        const double width = std::hypot(a.x - b.x, a.y - b.y);
-        if (std::abs(width - target) >= tolerance)
-            return false;  // eq. 10
-        door = {a, b, width, index, p};
+        door = {a, b, width, static_cast<int>(k), p};
+        return true;
+    };
+    auto localSection = [&](const cv::Point& p, double direction, VirtualDoor& door) {
+        const double ux = std::cos(direction), uy = std::sin(direction);
+        cv::Point a, b;
+        double width = 0;
+        if (!castRay(space.free, p, ux, uy, reach, a))
+            return false;
+        const double back = detail::farSideReach(p, a, ux, uy, widest);
+        if (!castRay(space.free, p, -ux, -uy, std::min(reach, back), b) ||
+            !isDoorWidth(a, b, target, tolerance, width)) {
+            return false;
+        }
+        door = {a, b, width, static_cast<int>(directions.size()), p};
         return true;
     };
     std::vector<VirtualDoor> doors;
@@ -40,7 +81,7 @@ std::vector<VirtualDoor> VirtualDoorDetector::detect(
         const cv::Point& p = pathCells[i];
         if (!local) {  // the paper: the first main direction that gives a door
             for (std::size_t k = 0; k < directions.size(); ++k) {
-                if (crossSection(p, directions[k], static_cast<int>(k), found)) {
+                if (mainSection(p, k, found)) {
                     doors.push_back(found);
                     break;
                 }
@@ -50,12 +91,11 @@ std::vector<VirtualDoor> VirtualDoorDetector::detect(
         // Every direction that passes eq. 10: a narrower cross-section through an obstacle that
         // is no jamb (a chair, a speck) must not hide the real one; the filters choose.
         for (std::size_t k = 0; k < directions.size(); ++k) {
-            if (crossSection(p, directions[k], static_cast<int>(k), found))
+            if (mainSection(p, k, found))
                 doors.push_back(found);
         }
-        if (crossSection(p, localDirections[i], static_cast<int>(directions.size()), found)) {
+        if (localSection(p, localDirections[i], found))
             doors.push_back(found);
-        }
     }
     return doors;
 }

@@ -15,7 +15,6 @@ void WallThickness::measure(const FreeSpace& space, const Clearance& clearance,
     const int cap =
         static_cast<int>(std::ceil(detail::toCells(maxThickness, space.frame.resolution))) + 2;
     counts_.assign(static_cast<std::size_t>(cap) + 2, 0.0);
-    auto isFree = [&](int x, int y) { return detail::isSet(free, x, y); };
     for (int r = 1; r + 1 < free.rows; ++r) {
         const auto* row = free.ptr<std::uint8_t>(r);
         const float* dist = d.ptr<float>(r);
@@ -30,9 +29,14 @@ void WallThickness::measure(const FreeSpace& space, const Clearance& clearance,
             if (norm < 1e-6)
                 continue;
             cv::Point hit;
-            if (!detail::walkRay({c, r}, -gx / norm, -gy / norm, cap, isFree, hit))
+            const bool found =
+                detail::withMaskReader(free, {c, r}, cap + 1, [&](const auto& isFree) {
+                    return detail::walkRay({c, r}, -gx / norm, -gy / norm, cap, isFree, hit);
+                });
+            if (!found)
                 continue;
-            const double run = std::hypot(hit.x - c, hit.y - r) - 1.0;  // obstacle cells crossed
+            const double run =
+                detail::cellDistance(hit.x - c, hit.y - r) - 1.0;  // obstacle cells crossed
             if (run >= 0.5)  // shorter: a diagonal gap, not an obstacle
                 counts_[static_cast<std::size_t>(std::lround(run))] += 1.0;
         }

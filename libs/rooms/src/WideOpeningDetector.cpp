@@ -34,19 +34,17 @@ WideOpeningDetector::WideOpeningDetector(const Options& options,
       detector_(wideRange(options, door)),
       filters_(wideTests(options, filters)) {}
 
-std::vector<VirtualDoor> WideOpeningDetector::detect(const FreeSpace& space,
-                                                     const Clearance& clearance,
-                                                     const std::vector<cv::Point>& pathCells,
-                                                     const std::vector<double>& directions,
-                                                     const std::vector<LineSegment>& walls,
-                                                     const WallThickness* thickness) const {
-    if (!options_.enabled || options_.maxWidth <= minWidth_)
+std::vector<VirtualDoor> WideOpeningDetector::detect(
+    const FreeSpace& space, const Clearance& clearance, const std::vector<cv::Point>& pathCells,
+    const std::vector<double>& directions, const std::vector<LineSegment>& walls,
+    const WallThickness* thickness, const std::vector<cv::Point>* medialAxis) const {
+    if (!searches())
         return {};
-    std::vector<cv::Point> medialAxis;
-    if (pathCells.empty())
-        medialAxis =
-            DoorSearchPaths::fromMedialAxis(space, clearance, minWidth_, options_.maxWidth);
-    const std::vector<cv::Point>& cells = pathCells.empty() ? medialAxis : pathCells;
+    std::vector<cv::Point> ownAxis;
+    if (pathCells.empty() && medialAxis == nullptr)
+        ownAxis = DoorSearchPaths::fromMedialAxis(space, clearance, minWidth_, options_.maxWidth);
+    const std::vector<cv::Point>& cells =
+        !pathCells.empty() ? pathCells : (medialAxis != nullptr ? *medialAxis : ownAxis);
     const std::vector<double> local =
         detector_.options().localDirection ? clearance.acrossRidge(cells) : std::vector<double>{};
     std::vector<VirtualDoor> openings = detector_.detect(space, cells, directions, local);

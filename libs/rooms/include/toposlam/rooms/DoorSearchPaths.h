@@ -18,6 +18,7 @@
 
 #include <opencv2/core/mat.hpp>
 
+#include <utility>
 #include <vector>
 
 namespace toposlam::rooms {
@@ -58,6 +59,11 @@ class DoorSearchPaths {
     /// [minDoorWidth, maxDoorWidth] (m). Cells in raster order.
     static std::vector<cv::Point> fromMedialAxis(const FreeSpace& space, const Clearance& clearance,
                                                  double minDoorWidth, double maxDoorWidth);
+    /// The same for several ranges of widths {min, max} (m) in one pass over the image: one
+    /// list per range, each what fromMedialAxis() gives for it.
+    static std::vector<std::vector<cv::Point>> fromMedialAxis(
+        const FreeSpace& space, const Clearance& clearance,
+        const std::vector<std::pair<double, double>>& widths);
 };
 
 }  // namespace toposlam::rooms

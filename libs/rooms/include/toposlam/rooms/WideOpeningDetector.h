@@ -25,6 +25,7 @@
 
 #include <opencv2/core/mat.hpp>
 
+#include <utility>
 #include <vector>
 
 namespace toposlam::rooms {
@@ -45,12 +46,20 @@ class WideOpeningDetector {
 
     /// The wide openings of `space` (pixels). `pathCells`: the trajectory cells, or empty to
     /// search the medial axis at the clearance of a wide opening's middle; `directions`: the
-    /// main directions; `walls`: step 2's segments. Empty when disabled.
+    /// main directions; `walls`: step 2's segments. Empty when disabled. `medialAxis`: that
+    /// medial axis when the caller has it (DoorSearchPaths::fromMedialAxis over widths());
+    /// nullptr: found here.
     std::vector<VirtualDoor> detect(const FreeSpace& space, const Clearance& clearance,
                                     const std::vector<cv::Point>& pathCells,
                                     const std::vector<double>& directions,
                                     const std::vector<LineSegment>& walls,
-                                    const WallThickness* thickness = nullptr) const;
+                                    const WallThickness* thickness = nullptr,
+                                    const std::vector<cv::Point>* medialAxis = nullptr) const;
+
+    /// Whether detect() searches at all (enabled, and wider openings than doors allowed).
+    bool searches() const { return options_.enabled && options_.maxWidth > minWidth_; }
+    /// The widths {min, max} (m) of the openings it searches.
+    std::pair<double, double> widths() const { return {minWidth_, options_.maxWidth}; }
 
     const Options& options() const { return options_; }
 

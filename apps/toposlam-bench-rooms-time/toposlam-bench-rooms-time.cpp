@@ -1,0 +1,123 @@
+// toposlam-bench-rooms-time: how long the room segmentation takes per Bormann map (B4's time
+// target), as a Google Benchmark: RoomSegmenter::segment (the defaults, `vdoor`; and the paper's
+// method, `vdoor-paper`) on each of the 20 maps of Bormann et al., unfurnished and furnished,
+// single-threaded, the map already loaded; and once per iteration over all 40 maps, whose
+// counter cpu_ms_per_map is B4's "time per Bormann map" (CPU time of the calling thread).
+// Data: --data <dir> (default ../shared/data/rooms); without it, nothing is timed.
+#include <benchmark/benchmark.h>
+#include <toposlam/io/CpuTime.h>
+#include <toposlam/io/InputError.h>
+#include <toposlam/rooms/RoomBenchmark.h>
+#include <toposlam/rooms/RoomSegmenter.h>
+
+#include <opencv2/core/utility.hpp>
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace toposlam;
+
+const char* const kHelp =
+    "toposlam-bench-rooms-time: CPU time of the room segmentation (RoomSegmenter::segment) per "
+    "Bormann map, single-threaded, map loaded beforehand (Google Benchmark).\n"
+    "  vdoor/<map>, vdoor-paper/<map>  one map (20 maps, unfurnished and furnished)\n"
+    "  vdoor/all-maps, vdoor-paper/all-maps  all 40 per iteration; counter cpu_ms_per_map = "
+    "mean CPU time per map (B4's time target)\n"
+    "Options: --data <dir>  Bormann's maps (default " TOPOSLAM_SHARED_DATA_DIR
+    "/rooms)\n"
+    "Google Benchmark flags are passed on, e.g. --benchmark_filter=all-maps "
+    "--benchmark_repetitions=5 --benchmark_out=b4-time.json\n";
+
+struct Map {
+    std::string name;
+    mrpt::maps::COccupancyGridMap2D grid;
+};
+
+void segmentOne(benchmark::State& state, const rooms::RoomSegmenter* segmenter, const Map* map) {
+    for (auto _ : state) {
+        auto result = segmenter->segment(map->grid, {}, map->name);
+        benchmark::DoNotOptimize(result.map.labels.data);
+    }
+}
+
+void segmentAll(benchmark::State& state, const rooms::RoomSegmenter* segmenter,
+                const std::vector<Map>* maps) {
+    double cpu = 0;
+    for (auto _ : state) {
+        const double start = io::threadCpuSeconds();
+        for (const Map& map : *maps) {
+            auto result = segmenter->segment(map.grid, {}, map.name);
+            benchmark::DoNotOptimize(result.map.labels.data);
+        }
+        cpu += io::threadCpuSeconds() - start;
+    }
+    state.counters["maps"] = static_cast<double>(maps->size());
+    state.counters["cpu_ms_per_map"] =
+        1e3 * cpu / static_cast<double>(state.iterations() * maps->size());
+}
+
+// Removes "--data <dir>" from argv; the folder, or the default.
+std::string takeDataOption(int& argc, char** argv) {
+    std::string data = std::string(TOPOSLAM_SHARED_DATA_DIR) + "/rooms";
+    for (int i = 1; i + 1 < argc; ++i) {
+        if (std::strcmp(argv[i], "--data") == 0) {
+            data = argv[i + 1];
+            std::copy(argv + i + 2, argv + argc, argv + i);
+            argc -= 2;
+            break;
+        }
+    }
+    return data;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (std::any_of(argv + 1, argv + argc, [](const char* a) {
+            return std::strcmp(a, "--help") == 0 || std::strcmp(a, "-h") == 0;
+        })) {
+        std::cout << kHelp;
+        return 0;
+    }
+    const std::string data = takeDataOption(argc, argv);
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv))
+        return 2;  // bad usage, as every TopoSLAM app
+    if (!std::filesystem::is_directory(data)) {
+        std::cerr << "error: " << data << ": no such folder; Bormann's maps are needed\n";
+        return 1;
+    }
+    std::vector<Map> maps;
+    try {
+        for (const std::string& base : rooms::RoomBenchmark::benchmarkMaps()) {
+            for (rooms::RoomBenchmarkCase& c : rooms::bormannCases(data, base, {0}))
+                maps.push_back({c.name(), std::move(c.grid)});
+        }
+    } catch (const io::InputError& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 1;
+    }
+    cv::setNumThreads(1);  // B4 times every method single-threaded
+    const rooms::RoomSegmenter improved(rooms::RoomSegmenter::Options::improved());
+    const rooms::RoomSegmenter paper(rooms::RoomSegmenter::Options::paperExact());
+    for (const auto& [method, segmenter] :
+         {std::pair{"vdoor", &improved}, std::pair{"vdoor-paper", &paper}}) {
+        benchmark::RegisterBenchmark((std::string(method) + "/all-maps").c_str(), segmentAll,
+                                     segmenter, &maps)
+            ->Unit(benchmark::kMillisecond);
+        for (const Map& map : maps) {
+            benchmark::RegisterBenchmark((std::string(method) + "/" + map.name).c_str(), segmentOne,
+                                         segmenter, &map)
+                ->Unit(benchmark::kMillisecond);
+        }
+    }
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}

@@ -169,6 +169,8 @@ mrpt::graphs::CNetworkOfPoses2DInf PoseGraph::network() const {
 std::size_t PoseGraph::solve(ceres::Problem& problem, int maxIterations) {
     ceres::Solver::Options options;
     options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+    // Eigen's own factorisation: CHOLMOD's threaded BLAS spent more time waking its threads
+    // than factorising a 2D pose graph of a few thousand nodes (perf on intel).
     options.sparse_linear_algebra_library_type = ceres::EIGEN_SPARSE;
     options.max_num_iterations = maxIterations;
     options.num_threads = 1;

@@ -1,6 +1,6 @@
 #pragma once
 // The residual of one pose-graph edge for Ceres: the measured pose z of node b in node a's
-// frame against the estimate's, a^-1 (+) b, as (x, y, phi) with phi wrapped to [-pi, pi),
+// frame against the estimate's, a^-1 (+) b, as (x, y, phi) with phi wrapped to (-pi, pi],
 // whitened by the square root of the measurement's information matrix (upper Cholesky factor,
 // so its squared norm is the edge's chi-square). Parameter blocks: a and b as (x, y, phi) in
 // the world frame (m, rad). Analytic Jacobians: evaluating edges is most of what optimising a

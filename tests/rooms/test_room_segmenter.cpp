@@ -65,6 +65,20 @@ void expectMatchesDrawing(const TopologicalMap& map, const DrawnMap& drawn, doub
 // the middle of the cut is within half the thickness plus a cell of the drawn middle.
 constexpr double kDoorTolerance = 0.1 + 0.05 + 0.05;
 
+/// With the default options, along the drawing's tour and from the medial axis: the rooms and
+/// doors of the drawing, and the pocket at `pocket` in the same room as `room`.
+static void expectPocketInItsRoom(const mrpt::maps::COccupancyGridMap2D& grid,
+                                  const DrawnMap& drawn, mrpt::math::TPoint2D pocket,
+                                  mrpt::math::TPoint2D room) {
+    for (const bool withTour : {false, true}) {
+        SCOPED_TRACE(withTour ? "with trajectory" : "medial axis");
+        const auto result = RoomSegmenter().segment(
+            grid, withTour ? posesOf(drawn.tour) : std::vector<mrpt::math::TPose2D>{});
+        expectMatchesDrawing(result.map, drawn, kDoorTolerance);
+        EXPECT_EQ(result.map.roomAt(pocket.x, pocket.y), result.map.roomAt(room.x, room.y));
+    }
+}
+
 TEST(RoomSegmenter, OfficeWithoutTrajectoryHasExactRoomsAndDoors) {
     const DrawnMap drawn = toposlam::rooms::test::office();
     const auto result = RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image));
@@ -159,13 +173,7 @@ TEST(RoomSegmenter, OpenPlanHallIsOneRoom) {
 TEST(RoomSegmenter, ShadowBehindATableIsNoWall) {
     const DrawnMap drawn = toposlam::rooms::test::tableShadow();
     const auto grid = toposlam::rooms::test::gridOf(drawn.image);
-    for (const bool withTour : {false, true}) {
-        SCOPED_TRACE(withTour ? "with trajectory" : "medial axis");
-        const auto result = RoomSegmenter().segment(
-            grid, withTour ? posesOf(drawn.tour) : std::vector<mrpt::math::TPose2D>{});
-        expectMatchesDrawing(result.map, drawn, kDoorTolerance);
-        EXPECT_EQ(result.map.roomAt(2.2, 2.0), result.map.roomAt(6, 5));  // the pocket
-    }
+    expectPocketInItsRoom(grid, drawn, {2.2, 2.0}, {6, 5});
     // Every non-free cell a wall (as before occupied_threshold): the shadow frames a door.
     RoomSegmenter::Options wallsEverywhere;
     wallsEverywhere.freeSpace.occupiedThreshold = 1;
@@ -177,13 +185,7 @@ TEST(RoomSegmenter, ShadowBehindATableIsNoWall) {
 TEST(RoomSegmenter, PocketOpenToTheUnobservedOutsideIsNoRoom) {
     const DrawnMap drawn = toposlam::rooms::test::cabinetPocket();
     const auto grid = toposlam::rooms::test::gridOf(drawn.image);
-    for (const bool withTour : {false, true}) {
-        SCOPED_TRACE(withTour ? "with trajectory" : "medial axis");
-        const auto result = RoomSegmenter().segment(
-            grid, withTour ? posesOf(drawn.tour) : std::vector<mrpt::math::TPose2D>{});
-        expectMatchesDrawing(result.map, drawn, kDoorTolerance);
-        EXPECT_EQ(result.map.roomAt(4.8, 6.5), result.map.roomAt(3, 3));  // the pocket
-    }
+    expectPocketInItsRoom(grid, drawn, {4.8, 6.5}, {3, 3});
     // Without the rule the cabinet fronts frame a door and the pocket is a room of its own.
     RoomSegmenter::Options anyBoundary;
     anyBoundary.filters.maxOpenBoundary = 1;

@@ -27,10 +27,13 @@ struct SlamRun {
     std::vector<CPose2D> poses;
 };
 
-SlamRun runSlam(const test::SimulatedDrive& drive) {
+/// `loopThreads`: 0 keeps the file's setting.
+SlamRun runSlam(const test::SimulatedDrive& drive, std::size_t loopThreads = 0) {
     const mrpt::config::CConfigFile ini(kConfig);
     mapping::GraphSlamOptions options;
     options.loadFromConfigFile(ini, "GraphSlam");
+    if (loopThreads > 0)
+        options.loopThreads = loopThreads;
     matching::GraphMatcherOptions matcher;
     matcher.loadFromConfigFile(ini, "GraphScanMatcher");
     SlamRun run;
@@ -116,6 +119,28 @@ TEST(GraphSlam, ClosesALongLoopAfterOdometryDrift) {
     // noise sigmas; without loop closure the ring does not close to that.
     const double ate = test::absoluteTrajectoryError(truth, run.poses);
     EXPECT_LT(ate, 0.05) << "odometry ATE " << odometryAte;
+}
+
+TEST(GraphSlam, SameTrajectoryWhateverTheLoopThreads) {
+    // Loop candidates are verified in parallel; the matcher is a pure function of its inputs,
+    // so the loops, the graph and every pose must be bit for bit those of one thread.
+    const auto truth = test::drivePath(
+        {{1.5, 1.5}, {18.5, 1.5}, {18.5, 10.5}, {1.5, 10.5}, {1.5, 1.5}, {10, 1.5}});
+    test::OdometryErrors errors;
+    errors.distanceScale = 1.03;
+    errors.headingDriftPerMetre = 0.006;
+    const auto drive = test::simulateDrive(ringCorridor(), truth, errors, 5);
+    const SlamRun one = runSlam(drive, 1), three = runSlam(drive, 3);
+    ASSERT_GE(one.slam->statistics().loopCandidates, 10u) << "the parallel path must be used";
+    EXPECT_EQ(one.slam->statistics().loopsAccepted, three.slam->statistics().loopsAccepted);
+    EXPECT_EQ(one.slam->statistics().loopsUnmatched, three.slam->statistics().loopsUnmatched);
+    EXPECT_GT(three.slam->statistics().offloadedSeconds, 0.0);
+    ASSERT_EQ(one.poses.size(), three.poses.size());
+    for (std::size_t i = 0; i < one.poses.size(); ++i) {
+        ASSERT_EQ(one.poses[i].x(), three.poses[i].x()) << "scan " << i;
+        ASSERT_EQ(one.poses[i].y(), three.poses[i].y()) << "scan " << i;
+        ASSERT_EQ(one.poses[i].phi(), three.poses[i].phi()) << "scan " << i;
+    }
 }
 
 TEST(GraphSlam, NoWrongLoopBetweenIdenticalRooms) {

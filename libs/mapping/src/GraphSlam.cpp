@@ -92,10 +92,13 @@ void GraphSlam::processScan(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
                             const features::CObservationLaserFeatures::Ptr& storedFeatures) {
     ++stats_.scans;
     const double start = io::threadCpuSeconds();
-    const double backEndBefore = stats_.loopSeconds + stats_.optimizationSeconds;
+    // This thread's back-end time (the workers' is counted by the loop closer).
+    const auto backEnd = [this] {
+        return stats_.loopSeconds + stats_.optimizationSeconds - stats_.offloadedSeconds;
+    };
+    const double backEndBefore = backEnd();
     processScanTimed(scan, odometryIncrement, storedFeatures);
-    stats_.frontEndSeconds += io::threadCpuSeconds() - start -
-                              (stats_.loopSeconds + stats_.optimizationSeconds - backEndBefore);
+    stats_.frontEndSeconds += io::threadCpuSeconds() - start - (backEnd() - backEndBefore);
 }
 
 void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,

@@ -91,6 +91,9 @@ void GraphSlamOptions::declareLoopClosure(config::OptionsSchema& s) {
     s.integer("loop_search_every", loopSearchEvery, "keyframes",
               "the gated loop search runs on every this-many-th keyframe")
         .within(1, 1000);
+    s.integer("loop_threads", loopThreads, "",
+              "threads verifying loop candidates, the mapping thread included (same loops for any)")
+        .within(1, 64);
     s.real("drift_sigma_xy", driftSigmaXY, "m/sqrt(m)",
            "drift model: position random walk per metre of path ...")
         .above(0);

@@ -41,8 +41,9 @@ LoopCloser::LoopCloser(const GraphSlamOptions& options,
                        const matching::GraphMatcherOptions& matcherOptions)
     : options_(options),
       uncertainty_(options.driftSigmaXY, options.driftSigmaPhi, options.driftSigmaPhiPerTurn),
-      guided_(withoutRetry(matcherOptions)),
-      free_(matcherOptions) {}
+      pool_(options.loopThreads),
+      guided_(pool_.size(), matching::GraphScanMatcher(withoutRetry(matcherOptions))),
+      free_(pool_.size(), matching::GraphScanMatcher(matcherOptions)) {}
 
 std::vector<std::size_t> LoopCloser::gatedCandidates(std::size_t current, std::size_t firstActive,
                                                      const std::vector<Keyframe>& keyframes,
@@ -97,15 +98,16 @@ std::vector<std::size_t> LoopCloser::globalCandidates(
     return out;
 }
 
-std::optional<LoopCloser::Measurement> LoopCloser::verify(const Keyframe& older,
+std::optional<LoopCloser::Measurement> LoopCloser::verify(matching::GraphScanMatcher& matcher,
+                                                          const Keyframe& older,
                                                           const Keyframe& current,
-                                                          const PoseGraph& graph, bool guided) {
+                                                          const PoseGraph& graph,
+                                                          bool guided) const {
     std::optional<CPose2D> guess;
     if (guided) {  // current sensor in the older sensor's frame, as the graph has it
         guess = (graph.pose(current.id) + current.sensorOnRobot) -
                 (graph.pose(older.id) + older.sensorOnRobot);
     }
-    matching::GraphScanMatcher& matcher = guided ? guided_ : free_;
     const matching::MatchResult& m = matcher.match(
         older.polar, older.features->features, current.polar, current.features->features, guess);
     if (!m.reliable())
@@ -118,6 +120,18 @@ std::optional<LoopCloser::Measurement> LoopCloser::verify(const Keyframe& older,
     const double sxy = options_.loopMinSigmaXY * options_.loopMinSigmaXY;
     const double sphi = options_.loopMinSigmaPhi * options_.loopMinSigmaPhi;
     out.covariance(0, 0) += sxy, out.covariance(1, 1) += sxy, out.covariance(2, 2) += sphi;
+    return out;
+}
+
+std::vector<std::optional<LoopCloser::Measurement>> LoopCloser::verifyAll(
+    const std::vector<std::size_t>& candidates, std::size_t current,
+    const std::vector<Keyframe>& keyframes, const PoseGraph& graph, bool guided) {
+    std::vector<std::optional<Measurement>> out(candidates.size());
+    std::vector<matching::GraphScanMatcher>& matchers = guided ? guided_ : free_;
+    pool_.run(candidates.size(), [&](std::size_t k, std::size_t thread) {
+        out[k] =
+            verify(matchers[thread], keyframes[candidates[k]], keyframes[current], graph, guided);
+    });
     return out;
 }
 
@@ -194,6 +208,7 @@ LoopClosureOutcome LoopCloser::closeLoops(std::size_t current, std::size_t first
                                           const std::vector<Keyframe>& keyframes, PoseGraph& graph,
                                           SlamStatistics& stats) {
     const double start = io::threadCpuSeconds();
+    const double workersBefore = pool_.workerCpuSeconds();
     LoopClosureOutcome outcome;
     while (!recent_.empty() && recent_.front().current + options_.loopConfirmWindow < current)
         recent_.pop_front();
@@ -204,9 +219,9 @@ LoopClosureOutcome LoopCloser::closeLoops(std::size_t current, std::size_t first
     std::vector<Measurement> accepted;
     const std::vector<std::size_t> gated = gatedCandidates(current, firstActive, keyframes, graph);
     std::vector<Measurement> matches;
-    for (std::size_t j : gated) {
+    for (const auto& m : verifyAll(gated, current, keyframes, graph, true)) {
         ++stats.loopCandidates;
-        if (auto m = verify(keyframes[j], keyframes[current], graph, true))
+        if (m)
             matches.push_back(*m);
         else
             ++stats.loopsUnmatched;
@@ -224,9 +239,11 @@ LoopClosureOutcome LoopCloser::closeLoops(std::size_t current, std::size_t first
     }
     if (options_.globalSearchEvery > 0 && current % options_.globalSearchEvery == 0) {
         ++stats.globalSearches;
-        for (std::size_t j : globalCandidates(current, firstActive, keyframes, gated)) {
+        const std::vector<std::size_t> global =
+            globalCandidates(current, firstActive, keyframes, gated);
+        for (const auto& m : verifyAll(global, current, keyframes, graph, false)) {
             ++stats.loopCandidates;
-            if (auto m = verify(keyframes[j], keyframes[current], graph, false)) {
+            if (m) {
                 ++stats.globalHypotheses;
                 const std::size_t before = accepted.size();
                 acceptWithSupport(*m, graph, accepted);
@@ -238,7 +255,9 @@ LoopClosureOutcome LoopCloser::closeLoops(std::size_t current, std::size_t first
     }
     for (const Measurement& m : accepted)
         accept(m, graph, outcome, stats);
-    stats.loopSeconds += io::threadCpuSeconds() - start;
+    const double offloaded = pool_.workerCpuSeconds() - workersBefore;
+    stats.loopSeconds += io::threadCpuSeconds() - start + offloaded;
+    stats.offloadedSeconds += offloaded;
     return outcome;
 }
 

@@ -120,22 +120,25 @@ void LineMap::cover(double x, double y) {
 
 void LineMap::stamp(std::uint32_t i) {
     const LineMapPoint& p = points_[i];
-    const double res = options_.resolution;
+    const float res = float(options_.resolution);
     const long px = long(std::floor((p.x - x0_) * inverseResolution_));
     const long py = long(std::floor((p.y - y0_) * inverseResolution_));
     const float r2 = float(options_.radius * options_.radius);
+    const long xBegin = std::max(0L, px - stampRadius_);
+    const long xEnd = std::min(width_ - 1, px + stampRadius_) + 1;
+    // Offsets of the first column's centre, stepped by one cell along the row (no per-cell
+    // conversions: this runs for every cell around every new map point).
+    const float dxBegin = float(x0_ + (double(xBegin) + 0.5) * options_.resolution) - p.x;
     for (long cy = std::max(0L, py - stampRadius_); cy <= std::min(height_ - 1, py + stampRadius_);
          ++cy) {
-        const float dy = float(y0_ + (cy + 0.5) * res) - p.y;
+        const float dy = float(y0_ + (double(cy) + 0.5) * options_.resolution) - p.y;
+        const float dy2 = dy * dy;
         Cell* row = &cells_[std::size_t(cy * width_)];
-        for (long cx = std::max(0L, px - stampRadius_);
-             cx <= std::min(width_ - 1, px + stampRadius_); ++cx) {
-            const float dx = float(x0_ + (cx + 0.5) * res) - p.x;
-            const float d2 = dx * dx + dy * dy;
-            if (d2 > r2)
-                continue;
+        float dx = dxBegin;
+        for (long cx = xBegin; cx < xEnd; ++cx, dx += res) {
+            const float d2 = dx * dx + dy2;
             Cell& cell = row[cx];
-            if (cell.point == kNone || d2 < cell.distance2)
+            if (d2 <= r2 && (cell.point == kNone || d2 < cell.distance2))
                 cell = {i, d2};
         }
     }

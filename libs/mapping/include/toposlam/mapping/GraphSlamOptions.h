@@ -65,6 +65,9 @@ struct GraphSlamOptions : public config::Options {
     /// Loop search runs on every this-many-th keyframe (consecutive keyframes see the same
     /// place; one loop every few is as good as one on each, at a fraction of the cost).
     std::size_t loopSearchEvery = 2;
+    /// Threads that verify loop candidates (the caller included). The loops found are the
+    /// same for any number; 2 uses the second core of a small robot computer.
+    std::size_t loopThreads = 2;
     /// Drift model of the uncertainty propagated through the graph (PathUncertainty.h): an
     /// edge of length l turning by t adds the variances a^2 l to position and b^2 l + c^2 t
     /// to heading (a random walk), and at least its own covariance.

@@ -19,11 +19,14 @@
 //    their common cycle (pairwise consistency); guess-free matches always need support.
 //    After optimisation the builder withdraws loops whose residual still exceeds a far looser
 //    bound, loopWithdrawChi2 (withdrawWorstOutlier).
+//  Candidates are verified on loopThreads threads, one graph matcher each; the matcher is a
+//  pure function of its inputs, so the loops found do not depend on the number of threads.
 #include <toposlam/mapping/GraphSlamOptions.h>
 #include <toposlam/mapping/Keyframe.h>
 #include <toposlam/mapping/PathUncertainty.h>
 #include <toposlam/mapping/PoseGraph.h>
 #include <toposlam/mapping/SlamStatistics.h>
+#include <toposlam/mapping/WorkerPool.h>
 #include <toposlam/matching/GraphScanMatcher.h>
 
 #include <cstddef>
@@ -66,8 +69,15 @@ class LoopCloser {
     std::vector<std::size_t> globalCandidates(std::size_t current, std::size_t firstActive,
                                               const std::vector<Keyframe>& keyframes,
                                               const std::vector<std::size_t>& exclude) const;
-    std::optional<Measurement> verify(const Keyframe& older, const Keyframe& current,
-                                      const PoseGraph& graph, bool guided);
+    std::optional<Measurement> verify(matching::GraphScanMatcher& matcher, const Keyframe& older,
+                                      const Keyframe& current, const PoseGraph& graph,
+                                      bool guided) const;
+    /// verify() of every candidate against `current`, spread over the pool's threads;
+    /// out[k] is candidate k's match.
+    std::vector<std::optional<Measurement>> verifyAll(const std::vector<std::size_t>& candidates,
+                                                      std::size_t current,
+                                                      const std::vector<Keyframe>& keyframes,
+                                                      const PoseGraph& graph, bool guided);
     /// Gated matches that agree with the graph (none when they contradict each other).
     std::vector<Measurement> consistentGated(const std::vector<Measurement>& matches,
                                              const PoseGraph& graph, SlamStatistics& stats) const;
@@ -84,8 +94,9 @@ class LoopCloser {
 
     const GraphSlamOptions& options_;
     PathUncertainty uncertainty_;
-    matching::GraphScanMatcher guided_, free_;
-    const std::vector<PathVariance>* variances_ = nullptr;  // of the current query
+    WorkerPool pool_;
+    std::vector<matching::GraphScanMatcher> guided_, free_;  // one of each per pool thread
+    const std::vector<PathVariance>* variances_ = nullptr;   // of the current query
     std::deque<Measurement> pending_;  // guess-free matches awaiting confirmation
     std::deque<Measurement> recent_;   // accepted loops, for confirming guess-free ones
 };

@@ -27,7 +27,7 @@ std::string formatSummary(const MappingResult& result);
 /// wall_alignment_deg; graph engine also keyframes, submaps, registration {icp,
 /// graph_matcher, failed, odometry_jumps, registered_share}, loops {candidates, accepted,
 /// guess_free_accepted, unmatched, rejected, withdrawn}, cpu_by_stage_s {front_end,
-/// loop_search, optimization}, optimizations, mostly_unregistered.
+/// loop_search, loop_search_on_workers, optimization}, optimizations, mostly_unregistered.
 nlohmann::json summaryJson(const MappingResult& result);
 
 /// True when fewer than half of the scans were registered (graph engine).

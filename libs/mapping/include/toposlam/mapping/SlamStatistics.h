@@ -26,10 +26,11 @@ struct SlamStatistics {
     std::size_t globalConfirmed = 0;    ///< of those, confirmed and accepted
     // Back end
     std::size_t optimizations = 0;
-    // CPU time (s) of the calling thread, by stage
+    // CPU time (s) by stage, all threads
     double frontEndSeconds = 0;      ///< registration, keyframes, submaps
     double loopSeconds = 0;          ///< loop-closure search and verification
     double optimizationSeconds = 0;  ///< the optimiser
+    double offloadedSeconds = 0;     ///< of the above, spent on worker threads (loop verification)
 
     std::size_t registered() const { return registeredByIcp + registeredByGraphMatcher; }
     /// Share of the scans after the first that were registered (ICP or graph matcher).

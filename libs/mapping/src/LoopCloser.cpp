@@ -103,11 +103,12 @@ std::optional<LoopCloser::Measurement> LoopCloser::verify(matching::GraphScanMat
                                                           const Keyframe& current,
                                                           const PoseGraph& graph,
                                                           bool guided) const {
+    // This runs on several threads at once: CPose2D caches its cosine and sine in mutable
+    // members, so compose only this thread's copies, never the keyframes' shared poses.
+    const CPose2D olderMount = older.sensorOnRobot, currentMount = current.sensorOnRobot;
     std::optional<CPose2D> guess;
-    if (guided) {  // current sensor in the older sensor's frame, as the graph has it
-        guess = (graph.pose(current.id) + current.sensorOnRobot) -
-                (graph.pose(older.id) + older.sensorOnRobot);
-    }
+    if (guided)  // current sensor in the older sensor's frame, as the graph has it
+        guess = (graph.pose(current.id) + currentMount) - (graph.pose(older.id) + olderMount);
     const matching::MatchResult& m = matcher.match(
         older.polar, older.features->features, current.polar, current.features->features, guess);
     if (!m.reliable())
@@ -115,7 +116,7 @@ std::optional<LoopCloser::Measurement> LoopCloser::verify(matching::GraphScanMat
     Measurement out;
     out.older = older.id;
     out.current = current.id;
-    out.pose = older.sensorOnRobot + m.pose + (-current.sensorOnRobot);
+    out.pose = olderMount + m.pose + (-currentMount);
     out.covariance = m.covariance;
     const double sxy = options_.loopMinSigmaXY * options_.loopMinSigmaXY;
     const double sphi = options_.loopMinSigmaPhi * options_.loopMinSigmaPhi;

@@ -3,9 +3,8 @@
 // and rad), one edge per measured relative pose between two keyframes. Optimised with Ceres
 // (sparse Cholesky, Levenberg-Marquardt) on one persistent problem that grows with the graph,
 // so an optimisation costs the solve and nothing else; loop edges carry a Cauchy loss, so a
-// wrong loop that slipped through pulls with bounded force until it is withdrawn. Measured
-// against MRPT's optimize_graph_spa_levmarq on intel's final graph (2922 nodes, 6084 edges):
-// 0.08 s against 0.6 s CPU to convergence (share/doc/benchmarks.md, B3). It saves as MRPT's
+// wrong loop that slipped through pulls with bounded force until it is withdrawn (MRPT's
+// optimize_graph_spa_levmarq has no robust loss, which is why Ceres). It saves as MRPT's
 // .graph text format (CNetworkOfPoses2DInf), which MRPT's graph-slam app reads. Node 0 is
 // fixed. Edges remember their kind and can be withdrawn again (a loop that the optimised graph
 // shows to be wrong).

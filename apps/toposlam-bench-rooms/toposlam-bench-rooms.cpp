@@ -180,8 +180,9 @@ struct Arguments {
     TCLAP::ValueArg<std::string> simConfig{
         "",
         "sim-config",
-        "end to end: toposlam-sim's ini for the tour, laser and odometry (default: the "
-        "built-in values of config_ini/sim-office.ini)",
+        "end to end: toposlam-sim's ini for the tour, laser and odometry (default: "
+        "toposlam-sim's built-in defaults, except that the tour also looks into every area "
+        "it would leave unseen: [Tour] look_into_unseen = true, see config_ini/sim-office.ini)",
         false,
         "",
         "file.ini",

@@ -279,6 +279,18 @@ int simulate(Arguments& a, const SimulatorConfig& config, bool verbose) {
         std::printf("tour: %zu room-sized areas (%zu unreachable), %.1f m, %.0f s, %zu scans\n",
                     t.areas.size(), t.unreachable.size(), t.length,
                     t.poses.back().stamp - t.poses.front().stamp, t.poses.size());
+        if (!t.unseen.empty()) {
+            double area = 0;
+            std::size_t stops = 0;
+            for (const UnseenArea& u : t.unseen) {
+                area += u.areaM2;
+                stops += u.hasViewpoint ? 1 : 0;
+            }
+            std::printf(
+                "      %zu areas (%.1f m^2) the room-sized tour left unseen; %zu stops "
+                "added to look into them ([Tour] look_into_unseen)\n",
+                t.unseen.size(), area, stops);
+        }
     }
     if (plan.posesNotFree > 0) {
         std::fprintf(stderr, "warning: %zu of %zu poses are not in free cells of the map\n",

@@ -19,10 +19,22 @@ const FloorPlan& office() {
     static const FloorPlan plan = makeOfficeFloorPlan();
     return plan;
 }
-const Tour& officeTour() {
+const ClearanceMap& officeMap() {
     static const auto grid = office().rasterise(0.05, 0.5);
     static const ClearanceMap map(grid);
-    static const Tour tour = planTour(map, TourOptions());
+    return map;
+}
+const Tour& officeTour() {
+    static const Tour tour = planTour(officeMap(), TourOptions());
+    return tour;
+}
+/// The same, with stops to look into what the room-sized tour leaves unseen.
+const Tour& officeTourLookingIntoUnseen() {
+    static const Tour tour = [] {
+        TourOptions o;
+        o.coverage.lookIntoUnseen = true;
+        return planTour(officeMap(), o);
+    }();
     return tour;
 }
 }  // namespace
@@ -43,40 +55,68 @@ TEST(TourPlanner, VisitsEveryRoomOfTheOffice) {
 }
 
 TEST(TourPlanner, KeepsClearOfWallsAndFurniture) {
-    const Tour& tour = officeTour();
-    const double robotRadius = TourOptions().robotRadius;
-    for (const auto& p : tour.poses) {
-        ASSERT_GE(test::distanceToSolid(office(), {p.pose.x, p.pose.y}), robotRadius)
-            << "pose at t=" << p.stamp;
-    }
-    // Between scans too: the smoothed legs, every 5 cm.
-    for (const auto& leg : tour.legs) {
-        for (const TPoint2D& q : leg)
-            ASSERT_GE(test::distanceToSolid(office(), q), robotRadius);
+    for (const Tour* tour : {&officeTour(), &officeTourLookingIntoUnseen()}) {
+        const double robotRadius = TourOptions().robotRadius;
+        for (const auto& p : tour->poses) {
+            ASSERT_GE(test::distanceToSolid(office(), {p.pose.x, p.pose.y}), robotRadius)
+                << "pose at t=" << p.stamp;
+        }
+        // Between scans too: the smoothed legs, every 5 cm.
+        for (const auto& leg : tour->legs) {
+            for (const TPoint2D& q : leg)
+                ASSERT_GE(test::distanceToSolid(office(), q), robotRadius);
+        }
     }
 }
 
+TEST(TourPlanner, LookingIntoUnseenAreasLeavesLessUnseen) {
+    // The office's tour leaves corners behind cabinets and tables unseen; the stops added for
+    // them leave fewer unseen areas, none larger than before.
+    const Tour& looking = officeTourLookingIntoUnseen();
+    ASSERT_FALSE(looking.unseen.empty());
+    const auto unseenAfter = [](const Tour& tour) {
+        std::vector<TPoint2D> from;
+        for (const auto& p : tour.poses)
+            from.emplace_back(p.pose.x, p.pose.y);
+        return findUnseenAreas(officeMap(), cellsInView(officeMap(), from, 5.0),
+                               std::vector<std::uint8_t>(officeMap().geometry().cellCount(), 0),
+                               TourCoverageOptions());
+    };
+    const auto before = unseenAfter(officeTour()), after = unseenAfter(looking);
+    ASSERT_FALSE(before.empty());
+    EXPECT_LT(after.size(), before.size());
+    if (!after.empty()) {
+        EXPECT_LE(after.front().areaM2, before.front().areaM2);
+    }
+    EXPECT_EQ(looking.visitOrder.size(), looking.areas.size()) << "every room is still visited";
+    EXPECT_GT(looking.length, officeTour().length);
+}
+
 TEST(TourPlanner, DrivesWithinTheMotionLimitsAndRecordsByDistanceAndAngle) {
-    const Tour& tour = officeTour();
-    const MotionOptions m;
-    ASSERT_GT(tour.poses.size(), 100u);
-    EXPECT_DOUBLE_EQ(tour.poses.front().stamp, m.startTime);
-    // The tour closes its loop: it ends where it started.
-    EXPECT_NEAR(tour.poses.back().pose.x, tour.poses.front().pose.x, 1e-9);
-    EXPECT_NEAR(tour.poses.back().pose.y, tour.poses.front().pose.y, 1e-9);
-    for (std::size_t i = 1; i < tour.poses.size(); ++i) {
-        const auto &a = tour.poses[i - 1], &b = tour.poses[i];
-        const double dt = b.stamp - a.stamp;
-        const double ds = std::hypot(b.pose.x - a.pose.x, b.pose.y - a.pose.y);
-        const double dyaw = std::abs(mrpt::math::wrapToPi(b.pose.phi - a.pose.phi));
-        ASSERT_GT(dt, 0);
-        // Stamps near 1.7e9 s are doubles exact to 2.4e-7 s: allow 1e-6 s.
-        EXPECT_LE(ds, m.maxSpeed * (dt + 1e-6));
-        EXPECT_LE(dyaw, m.maxTurnRate * (dt + 1e-6));
-        // Recorded once the robot drove scanDistance or turned scanAngle (plus at most one
-        // 5 cm path step or 1 deg turn step).
-        EXPECT_LE(ds, m.scanDistance + 0.05 + 1e-9);
-        EXPECT_LE(dyaw, m.scanAngle + 0.1);
+    for (const Tour* t : {&officeTour(), &officeTourLookingIntoUnseen()}) {
+        const Tour& tour = *t;
+        SCOPED_TRACE(tour.unseen.empty() ? "room-sized areas" : "looking into unseen areas");
+        const MotionOptions m;
+        ASSERT_GT(tour.poses.size(), 100u);
+        EXPECT_DOUBLE_EQ(tour.poses.front().stamp, m.startTime);
+        // The tour closes its loop: it ends where it started.
+        EXPECT_NEAR(tour.poses.back().pose.x, tour.poses.front().pose.x, 1e-9);
+        EXPECT_NEAR(tour.poses.back().pose.y, tour.poses.front().pose.y, 1e-9);
+        for (std::size_t i = 1; i < tour.poses.size(); ++i) {
+            const auto &a = tour.poses[i - 1], &b = tour.poses[i];
+            const double dt = b.stamp - a.stamp;
+            const double ds = std::hypot(b.pose.x - a.pose.x, b.pose.y - a.pose.y);
+            const double dyaw = std::abs(mrpt::math::wrapToPi(b.pose.phi - a.pose.phi));
+            ASSERT_GT(dt, 0);
+            // Stamps near 1.7e9 s are doubles exact to 2.4e-7 s: allow 1e-6 s.
+            EXPECT_LE(ds, m.maxSpeed * (dt + 1e-6));
+            EXPECT_LE(dyaw, m.maxTurnRate * (dt + 1e-6));
+            // Recorded once the robot drove scanDistance or turned scanAngle (plus at most one
+            // path step or 1 deg turn step; path steps are 5 cm, up to 7.5 cm where a leg ends:
+            // resamplePolyline moves a sample within half a step of the end onto it).
+            EXPECT_LE(ds, m.scanDistance + 0.075 + 1e-9);
+            EXPECT_LE(dyaw, m.scanAngle + 0.1);
+        }
     }
 }
 
@@ -113,4 +153,74 @@ TEST(TourOrder, TwoOptFindsTheOptimalTourOfPointsOnACircle) {
     ASSERT_EQ(order.size(), static_cast<std::size_t>(n));
     EXPECT_EQ(order.front(), 0u);
     EXPECT_NEAR(tourCost(cost, order, true), n * 2 * std::sin(M_PI / n), 1e-9);
+}
+
+namespace {
+/// A 6 x 4 m room with a 1 x 2.6 m closet beside it, behind a 0.8 m door: too narrow to be a
+/// room-sized area (eroded by half a door width nothing is left), mostly out of sight from the
+/// room.
+FloorPlan roomWithCloset() {
+    FloorPlan plan = test::boxRoom(6.0, 4.0);
+    plan.addWall({6.05, 2.65}, {7.2, 2.65}, 0.1);
+    plan.addWall({7.15, -0.1}, {7.15, 2.7}, 0.1);
+    plan.addWall({6.0, -0.05}, {7.2, -0.05}, 0.1);
+    const int closet = plan.addRoom("closet", "closet", {6.1, 0.0, 7.1, 2.6});
+    plan.addDoor({6.05, 1.7}, {6.05, 2.5}, 1, closet);
+    return plan;
+}
+
+/// Share of the closet's free cells the laser sees from the tour's scan poses.
+double closetSeen(const FloorPlan& plan, const ClearanceMap& map, const Tour& tour) {
+    std::vector<TPoint2D> from;
+    for (const auto& p : tour.poses)
+        from.emplace_back(p.pose.x, p.pose.y);
+    const std::vector<std::uint8_t> seen = cellsInView(map, from, TourOptions().coverage.viewRange);
+    const GridGeometry& g = map.geometry();
+    std::size_t cells = 0, seenCells = 0;
+    for (int cy = 0; cy < g.sizeY; ++cy) {
+        for (int cx = 0; cx < g.sizeX; ++cx) {
+            if (map.isFree(cx, cy) && plan.roomAt(g.centre(cx, cy)) == 2) {
+                ++cells;
+                seenCells += seen[g.index(cx, cy)];
+            }
+        }
+    }
+    return static_cast<double>(seenCells) / static_cast<double>(cells);
+}
+}  // namespace
+
+TEST(TourCoverage, SightLinesStopAtTheFirstWall) {
+    const FloorPlan plan = test::boxRoom(4.0, 2.0);
+    const auto grid = plan.rasterise(0.05, 1.0);
+    const ClearanceMap map(grid);
+    const std::vector<std::uint8_t> seen = cellsInView(map, {{2.0, 1.0}}, 10.0);
+    const GridGeometry& g = map.geometry();
+    EXPECT_TRUE(seen[g.index(g.cellX(0.1), g.cellY(0.1))]) << "a corner of the room";
+    EXPECT_TRUE(seen[g.index(g.cellX(-0.03), g.cellY(1.0))]) << "the wall's first cell";
+    EXPECT_FALSE(seen[g.index(g.cellX(-0.5), g.cellY(1.0))]) << "behind the wall";
+    EXPECT_FALSE(seen[g.index(g.cellX(2.0), g.cellY(2.6))]) << "behind the wall";
+    // Out of range.
+    EXPECT_FALSE(cellsInView(map, {{2.0, 1.0}}, 1.0)[g.index(g.cellX(0.1), g.cellY(0.1))]);
+}
+
+TEST(TourPlanner, LooksIntoAClosetTooSmallToBeARoomSizedArea) {
+    const FloorPlan plan = roomWithCloset();
+    const auto grid = plan.rasterise(0.05, 0.5);
+    const ClearanceMap map(grid);
+    TourOptions roomsOnly;
+    roomsOnly.coverage.lookIntoUnseen = false;
+    const Tour before = planTour(map, roomsOnly);
+    ASSERT_EQ(before.areas.size(), 1u) << "the closet is no room-sized area";
+    EXPECT_TRUE(before.unseen.empty());
+    EXPECT_LT(closetSeen(plan, map, before), 0.6);
+
+    TourOptions looking;
+    looking.coverage.lookIntoUnseen = true;
+    const Tour tour = planTour(map, looking);
+    ASSERT_EQ(tour.unseen.size(), 1u);
+    EXPECT_TRUE(tour.unseen[0].hasViewpoint);
+    EXPECT_EQ(plan.roomAt(tour.unseen[0].centroid), 2) << "the unseen area is in the closet";
+    EXPECT_GT(closetSeen(plan, map, tour), 0.95);
+    for (const auto& p : tour.poses)
+        ASSERT_GE(test::distanceToSolid(plan, {p.pose.x, p.pose.y}), roomsOnly.robotRadius);
 }

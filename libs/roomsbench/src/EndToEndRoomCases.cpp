@@ -135,6 +135,12 @@ std::vector<PlanToTour> plansToTour(const std::vector<unsigned>& seeds,
     return plans;
 }
 
+simulation::SimulatorConfig endToEndSimulatorDefaults() {
+    simulation::SimulatorConfig config;
+    config.tour.coverage.lookIntoUnseen = true;
+    return config;
+}
+
 rooms::RoomBenchmarkCase drawnPlanCase(const PlanToTour& plan) {
     return rooms::drawnCase("drawn", plan.name, true, 0, plan.map == 255, plan.unfurnishedFree,
                             plan.roomLabels, plan.resolution);

@@ -1,7 +1,9 @@
 #include <toposlam/simulation/PathSmoother.h>
+#include <toposlam/simulation/TourCoverage.h>
 #include <toposlam/simulation/TourOrder.h>
 #include <toposlam/simulation/TourPlanner.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -30,11 +32,22 @@ void TourOptions::declare(config::OptionsSchema& s) {
            "Gaussian path smoothing along the path, 1 sigma")
         .atLeast(0);
     s.flag("return_to_start", returnToStart, "close the loop (SLAM needs loops to be tested)");
+    s.flag("look_into_unseen", coverage.lookIntoUnseen,
+           "also stop where the robot sees the free areas the room-sized tour leaves unseen "
+           "(closets, rooms behind a vestibule, space behind furniture)");
+    s.real("view_range", coverage.viewRange, "m",
+           "a free cell counts as seen from a path point this close in line of sight")
+        .above(0);
+    s.real("min_unseen_area_m2", coverage.minUnseenAreaM2, "m^2",
+           "unseen areas smaller than this are left unseen")
+        .atLeast(0);
     s.group("", motion);
 }
 
 namespace {
 constexpr double kPathSpacing = 0.05;  // m between the points of a smoothed leg
+constexpr std::size_t kViewEvery = 5;  // path points between two sight checks (0.25 m)
+constexpr double kSameStop = 0.3;      // m: viewpoints this close to a stop are that stop
 
 std::string metres(double v) {
     std::ostringstream o;
@@ -61,7 +74,7 @@ std::vector<std::size_t> orderPlaces(GridPathPlanner& planner, const ClearanceMa
     for (std::size_t j = 0; j < places.size(); ++j) {
         if (std::isfinite(cost[0][j])) {
             reachable.push_back(j);
-        } else {
+        } else if (areaOfPlace[j] >= 0) {
             tour.unreachable.push_back(static_cast<std::size_t>(areaOfPlace[j]));
         }
     }
@@ -91,6 +104,35 @@ std::vector<std::size_t> orderPlaces(GridPathPlanner& planner, const ClearanceMa
     }
 
     return order;
+}
+
+/// Plans, smooths and measures the legs between consecutive places of `order` into `tour`.
+void planLegs(GridPathPlanner& planner, const std::vector<TPoint2D>& places,
+              const std::vector<std::size_t>& order, double smoothingSigma, Tour& tour) {
+    tour.legs.clear();
+    tour.length = 0;
+    for (std::size_t k = 1; k < order.size(); ++k) {
+        const auto path = planner.plan(places[order[k - 1]], places[order[k]]);
+        tour.legs.push_back(smoothPath(path, planner, smoothingSigma, kPathSpacing));
+        for (std::size_t i = 1; i < tour.legs.back().size(); ++i) {
+            const TPoint2D &a = tour.legs.back()[i - 1], &b = tour.legs.back()[i];
+            tour.length += std::hypot(b.x - a.x, b.y - a.y);
+        }
+    }
+    if (tour.legs.empty())
+        tour.legs.push_back({places[order.front()]});
+}
+
+/// Every kViewEvery-th point of the legs, and each leg's last: where the laser looks from.
+std::vector<TPoint2D> pointsAlong(const std::vector<std::vector<TPoint2D>>& legs) {
+    std::vector<TPoint2D> points;
+    for (const auto& leg : legs) {
+        for (std::size_t i = 0; i < leg.size(); i += kViewEvery)
+            points.push_back(leg[i]);
+        if (!leg.empty())
+            points.push_back(leg.back());
+    }
+    return points;
 }
 }  // namespace
 
@@ -135,18 +177,36 @@ Tour planTour(const ClearanceMap& map, const TourOptions& options) {
         areaOfPlace.push_back(static_cast<long>(a));
     }
 
-    const std::vector<std::size_t> order =
+    std::vector<std::size_t> order =
         orderPlaces(planner, map, places, areaOfPlace, options.returnToStart, tour);
-    for (std::size_t k = 1; k < order.size(); ++k) {
-        const auto path = planner.plan(places[order[k - 1]], places[order[k]]);
-        tour.legs.push_back(smoothPath(path, planner, options.smoothingSigma, kPathSpacing));
-        for (std::size_t i = 1; i < tour.legs.back().size(); ++i) {
-            const TPoint2D &a = tour.legs.back()[i - 1], &b = tour.legs.back()[i];
-            tour.length += std::hypot(b.x - a.x, b.y - a.y);
+    planLegs(planner, places, order, options.smoothingSigma, tour);
+    if (options.coverage.lookIntoUnseen) {
+        // Where the robot can get to from the start, and what the tour so far has in view.
+        const std::vector<float>& costs = planner.costsFrom(places[order.front()]);
+        std::vector<std::uint8_t> reachable(costs.size());
+        for (std::size_t i = 0; i < costs.size(); ++i)
+            reachable[i] = std::isfinite(costs[i]) ? 1 : 0;
+        tour.unseen = findUnseenAreas(
+            map, cellsInView(map, pointsAlong(tour.legs), options.coverage.viewRange), reachable,
+            options.coverage);
+        const std::size_t before = places.size();
+        for (const UnseenArea& u : tour.unseen) {
+            // A stop next to one the tour makes anyway adds nothing but a twitch.
+            const bool nearStop = std::any_of(places.begin(), places.end(), [&](const TPoint2D& p) {
+                return std::hypot(p.x - u.viewpoint.x, p.y - u.viewpoint.y) < kSameStop;
+            });
+            if (u.hasViewpoint && !nearStop) {
+                places.push_back(u.viewpoint);
+                areaOfPlace.push_back(-1);
+            }
+        }
+        if (places.size() > before) {  // the same tour, with the viewpoints among its stops
+            tour.visitOrder.clear();
+            tour.unreachable.clear();
+            order = orderPlaces(planner, map, places, areaOfPlace, options.returnToStart, tour);
+            planLegs(planner, places, order, options.smoothingSigma, tour);
         }
     }
-    if (tour.legs.empty())
-        tour.legs.push_back({places[order.front()]});
 
     double initialYaw = 0;
     if (options.start) {

@@ -32,8 +32,14 @@ std::vector<PlanToTour> plansToTour(const std::vector<unsigned>& seeds,
                                     const std::vector<std::string>& bormannMaps,
                                     const std::string& bormannDir);
 
+/// toposlam-sim's defaults (config_ini/sim-office.ini), except that the tour also looks into
+/// every area the room-sized tour leaves unseen ([Tour] look_into_unseen): as a person driving
+/// the robot would, and a room no laser saw cannot be segmented by any method.
+simulation::SimulatorConfig endToEndSimulatorDefaults();
+
 struct EndToEndOptions {
-    simulation::SimulatorConfig simulator;  ///< tour, laser, odometry (sim-office.ini's defaults)
+    /// Tour, laser, odometry.
+    simulation::SimulatorConfig simulator = endToEndSimulatorDefaults();
     /// toposlam-slam's settings (config_ini/toposlam-slam.ini).
     const mrpt::config::CConfigFileBase* slamConfig = nullptr;
     std::string workDir;  ///< where the simulated logs are written (created; files are kept)

@@ -2,7 +2,9 @@
 // An automatic robot tour over a map that visits every room-sized free area: find the areas
 // (RoomSizedAreas), order them (TourOrder) by path cost, plan a clearance-keeping path between
 // consecutive ones (GridPathPlanner), smooth it (PathSmoother) and drive it (MotionProfile),
-// which gives the timed poses at which the laser records.
+// which gives the timed poses at which the laser records. Then look at what that tour leaves
+// unseen (TourCoverage: closets, side rooms, space behind furniture), add a stop in view of each
+// unseen area, and plan the tour again over all stops.
 #include <mrpt/math/TPose2D.h>
 #include <toposlam/config/Options.h>
 #include <toposlam/io/Trajectory.h>
@@ -10,6 +12,7 @@
 #include <toposlam/simulation/GridPathPlanner.h>
 #include <toposlam/simulation/MotionProfile.h>
 #include <toposlam/simulation/RoomSizedAreas.h>
+#include <toposlam/simulation/TourCoverage.h>
 
 #include <optional>
 #include <vector>
@@ -25,6 +28,7 @@ struct TourOptions : public config::Options {
     RoomSizedAreaOptions areas;
     double smoothingSigma = 0.3;  ///< m; see smoothPath
     bool returnToStart = true;    ///< close the loop (SLAM needs loops to be tested)
+    TourCoverageOptions coverage;
     /// Start pose (world frame); default: the centre of the largest area, heading along the
     /// first leg.
     std::optional<mrpt::math::TPose2D> start;
@@ -40,6 +44,9 @@ struct Tour {
     std::vector<RoomSizedArea> areas;      ///< every area found, largest first
     std::vector<std::size_t> visitOrder;   ///< indices into `areas`, in visiting order
     std::vector<std::size_t> unreachable;  ///< areas the robot cannot reach from the start
+    /// Unseen by the room-sized tour (coverage.lookIntoUnseen), largest first; the final tour
+    /// also stops at the viewpoint of each that has one.
+    std::vector<UnseenArea> unseen;
     std::vector<std::vector<mrpt::math::TPoint2D>> legs;  ///< the smoothed path of each leg
     io::Trajectory2D poses;                               ///< scan poses (world frame), stamps in s
     double length = 0;                                    ///< m driven

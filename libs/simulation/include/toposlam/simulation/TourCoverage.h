@@ -1,0 +1,52 @@
+#pragma once
+// What a tour leaves unseen, and where the robot must stop to see it. A tour that visits the
+// room-sized areas (RoomSizedAreas) skips rooms too small to survive the erosion by half a door
+// width (closets, a vestibule's side rooms) and the part of a room hidden behind furniture: a
+// person driving the robot would look into them. So: mark the free cells in line of sight of
+// the tour's path (within a view range, in every direction: the simulated laser sees 270°),
+// take every connected area of free cells left unseen that is large enough to matter, and for
+// each find the reachable place nearest to it along free space (in its doorway or just in front
+// of it), from where it is in view.
+#include <mrpt/math/TPoint2D.h>
+#include <toposlam/simulation/ClearanceMap.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace toposlam::simulation {
+
+struct TourCoverageOptions {
+    /// Look into every unseen area (off: the tour visits the room-sized areas only). Off by
+    /// default: the bundled office data set (share/office) was made without it.
+    bool lookIntoUnseen = false;
+    /// m; a free cell counts as seen from a path point within this straight-line distance
+    /// (less than the laser's range: far cells are seen at grazing angles, if at all).
+    double viewRange = 5.0;
+    /// m^2; unseen areas smaller than this (pockets behind a chair) are left unseen.
+    double minUnseenAreaM2 = 1.0;
+};
+
+/// 1 for every cell in line of sight (through free cells, at most `range` m) of one of the
+/// `viewpoints` (world frame, m), the first non-free cell of each sight line included; indexed
+/// by GridGeometry::index. Viewpoints outside the map or not in a free cell see nothing.
+std::vector<std::uint8_t> cellsInView(const ClearanceMap& map,
+                                      const std::vector<mrpt::math::TPoint2D>& viewpoints,
+                                      double range);
+
+struct UnseenArea {
+    double areaM2 = 0;               ///< free cells in it
+    mrpt::math::TPoint2D centroid;   ///< world frame, m
+    bool hasViewpoint = false;       ///< false: no reachable place within the view range
+    mrpt::math::TPoint2D viewpoint;  ///< world frame, m (when hasViewpoint)
+};
+
+/// The 8-connected areas of free cells not in `seen` of at least options.minUnseenAreaM2, each
+/// with the place nearest to it (walking distance through free cells, at most
+/// options.viewRange) that is `reachable` (indexed like `seen`: the robot can get there from the
+/// tour). Largest first.
+std::vector<UnseenArea> findUnseenAreas(const ClearanceMap& map,
+                                        const std::vector<std::uint8_t>& seen,
+                                        const std::vector<std::uint8_t>& reachable,
+                                        const TourCoverageOptions& options);
+
+}  // namespace toposlam::simulation

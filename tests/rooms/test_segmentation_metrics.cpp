@@ -40,6 +40,8 @@ TEST(BormannPrecisionRecall, CountsOverlapsPerRoomAndPerSegment) {
     PrecisionRecall pr = bormannPrecisionRecall(truth, seg);
     // Recall: room 1 fully in 7 (1.0), room 2 best half (0.5) -> 0.75.
     EXPECT_DOUBLE_EQ(pr.recall, 0.75);
+    EXPECT_EQ(pr.roomRecall, (std::vector<double>{1.0, 0.5}));
+    EXPECT_EQ(pr.roomPixels, (std::vector<std::size_t>{240, 240}));
     // Precision: segment 7 best 240/360, segment 9 120/120 -> (2/3 + 1) / 2.
     EXPECT_DOUBLE_EQ(pr.precision, (240.0 / 360 + 1.0) / 2);
     EXPECT_DOUBLE_EQ(pr.recallPixels, 360.0 / 480);

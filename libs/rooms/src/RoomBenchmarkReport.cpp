@@ -49,6 +49,8 @@ io::Json scoreJson(const RoomBenchmarkScore& s) {
             {"precision_px_weighted", s.pr.precisionPixels},
             {"segments", s.segments},
             {"ground_truth_rooms", s.groundTruthRooms},
+            {"room_recall", s.pr.roomRecall},
+            {"room_pixels", s.pr.roomPixels},
             {"doors_0.5m", doorJson(s.doors)},
             {"doors_1.0m", doorJson(s.doors1m)},
             {"seconds_median", s.seconds},

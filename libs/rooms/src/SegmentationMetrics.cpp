@@ -99,6 +99,8 @@ PrecisionRecall bormannPrecisionRecall(const GroundTruthRooms& truth, const cv::
                 best = std::max(best, overlap[s][static_cast<std::size_t>(g)]);
         }
         const double size = static_cast<double>(roomSize[static_cast<std::size_t>(g)]);
+        out.roomRecall.push_back(static_cast<double>(best) / size);
+        out.roomPixels.push_back(roomSize[static_cast<std::size_t>(g)]);
         recallSum += static_cast<double>(best) / size;
         recallCovered += static_cast<double>(best);
         recallTotal += size;

@@ -135,6 +135,36 @@ std::vector<PlanToTour> plansToTour(const std::vector<unsigned>& seeds,
     return plans;
 }
 
+// Ground-truth rooms of which less than kInViewShare of the pixels are in line of sight of the
+// tour's poses. `map`: the plan's grid (image row r is grid row rows - 1 - r).
+std::vector<int> roomsOutOfView(const rooms::GroundTruthRooms& truth,
+                                const simulation::ClearanceMap& map, const io::Trajectory2D& poses,
+                                double viewRange) {
+    constexpr double kInViewShare = 0.1;
+    std::vector<mrpt::math::TPoint2D> from;
+    for (const auto& p : poses)
+        from.emplace_back(p.pose.x, p.pose.y);
+    const std::vector<std::uint8_t> seen = simulation::cellsInView(map, from, viewRange);
+    const simulation::GridGeometry& g = map.geometry();
+    std::vector<std::size_t> pixels(static_cast<std::size_t>(truth.count) + 1, 0);
+    std::vector<std::size_t> inView(pixels.size(), 0);
+    for (int r = 0; r < truth.labels.rows; ++r) {
+        const int* row = truth.labels.ptr<int>(r);
+        for (int c = 0; c < truth.labels.cols; ++c) {
+            const auto label = static_cast<std::size_t>(row[c]);
+            ++pixels[label];
+            inView[label] += seen[g.index(c, truth.labels.rows - 1 - r)];
+        }
+    }
+    std::vector<int> out;
+    for (int label = 1; label <= truth.count; ++label) {
+        const auto l = static_cast<std::size_t>(label);
+        if (static_cast<double>(inView[l]) < kInViewShare * static_cast<double>(pixels[l]))
+            out.push_back(label);
+    }
+    return out;
+}
+
 simulation::SimulatorConfig endToEndSimulatorDefaults() {
     simulation::SimulatorConfig config;
     config.tour.coverage.lookIntoUnseen = true;
@@ -180,6 +210,8 @@ rooms::RoomBenchmarkCase endToEndCase(const PlanToTour& plan, const EndToEndOpti
     };
     c.truth = rooms::groundTruthFromLabels(plan.roomLabels);
     c.trueDoors = rooms::labelBoundaryDoors(c.truth.labels, plan.unfurnishedFree);
+    run.roomsOutOfView =
+        roomsOutOfView(c.truth, clearance, tour.poses, options.simulator.tour.coverage.viewRange);
     return c;
 }
 

@@ -3,7 +3,10 @@
 
 #include <toposlam/io/JsonFile.h>
 
+#include <algorithm>
+#include <array>
 #include <cstdio>
+#include <map>
 #include <stdexcept>
 
 namespace toposlam::roomsbench {
@@ -60,6 +63,61 @@ RoomBenchmarkSuiteResult runRoomBenchmarkSuite(const RoomBenchmarkSuiteOptions& 
     return result;
 }
 
+namespace {
+// Mean recall of `score` over the ground-truth rooms not in `outOfView` (labels from 1).
+double recallInView(const rooms::RoomBenchmarkScore& score, const std::vector<int>& outOfView) {
+    double sum = 0;
+    std::size_t rooms = 0;
+    for (std::size_t g = 0; g < score.pr.roomRecall.size(); ++g) {
+        if (std::find(outOfView.begin(), outOfView.end(), static_cast<int>(g + 1)) ==
+            outOfView.end()) {
+            sum += score.pr.roomRecall[g];
+            ++rooms;
+        }
+    }
+    return rooms > 0 ? sum / static_cast<double>(rooms) : 0;
+}
+
+// Recall of drawn plan and SLAM grid over the rooms the tour had in view, per plan and method:
+// what the segmentation loses on a SLAM grid, apart from rooms no robot on that tour saw.
+std::string inViewTable(const RoomBenchmarkSuiteResult& result) {
+    std::string text =
+        "\n| plan | method | GT rooms out of the tour's view | recall over the rooms in view: "
+        "drawn | SLAM |\n|---|---|---|---|---|\n";
+    std::map<std::string, std::array<double, 3>> pooled;  // method -> drawn, SLAM, plans
+    char buf[256];
+    for (const auto& e : result.endToEnd) {
+        for (const auto& slam : result.scores) {
+            if (slam.dataset != "slam" || slam.map != e.map)
+                continue;
+            const auto drawn = std::find_if(result.scores.begin(), result.scores.end(),
+                                            [&](const rooms::RoomBenchmarkScore& s) {
+                                                return s.dataset == "drawn" && s.map == e.map &&
+                                                       s.method == slam.method;
+                                            });
+            if (drawn == result.scores.end())
+                continue;
+            const double d = recallInView(*drawn, e.run.roomsOutOfView),
+                         s = recallInView(slam, e.run.roomsOutOfView);
+            auto& p = pooled[slam.method];
+            p[0] += d;
+            p[1] += s;
+            p[2] += 1;
+            std::snprintf(buf, sizeof buf, "| %s | %s | %zu of %d | %.1f %% | %.1f %% |\n",
+                          e.map.c_str(), slam.method.c_str(), e.run.roomsOutOfView.size(),
+                          slam.groundTruthRooms, 100 * d, 100 * s);
+            text += buf;
+        }
+    }
+    for (const auto& [method, p] : pooled) {
+        std::snprintf(buf, sizeof buf, "| mean | %s | | %.1f %% | %.1f %% |\n", method.c_str(),
+                      100 * p[0] / p[2], 100 * p[1] / p[2]);
+        text += buf;
+    }
+    return text;
+}
+}  // namespace
+
 std::string suiteTable(const RoomBenchmarkSuiteResult& result) {
     std::string text = rooms::RoomBenchmark::table(result.scores, result.summary);
     if (result.endToEnd.empty())
@@ -76,6 +134,7 @@ std::string suiteTable(const RoomBenchmarkSuiteResult& result) {
                       e.run.alignmentRmse);
         text += buf;
     }
+    text += inViewTable(result);
     return text;
 }
 
@@ -92,7 +151,8 @@ std::string suiteJson(const RoomBenchmarkSuiteResult& result,
              {"tour_length_m", e.run.tourLength},
              {"slam_seconds", e.run.slamSeconds},
              {"slam_to_plan", {e.run.slamToPlan.x, e.run.slamToPlan.y, e.run.slamToPlan.phi}},
-             {"alignment_rmse_m", e.run.alignmentRmse}});
+             {"alignment_rmse_m", e.run.alignmentRmse},
+             {"ground_truth_rooms_out_of_view", e.run.roomsOutOfView}});
     }
     return io::formatJson(j);
 }

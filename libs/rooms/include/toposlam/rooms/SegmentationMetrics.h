@@ -40,7 +40,11 @@ struct PrecisionRecall {
     double recallPixels = 0;     ///< pixel-weighted recall ("recall_macro")
     double precisionPixels = 0;  ///< pixel-weighted precision ("precision_macro")
     int rooms = 0;               ///< GT rooms scored
-    int segments = 0;            ///< segments scored (> 100 px, 65280 included)
+    /// Per GT room (room g at [g - 1]): best overlap / room area, and the room's area (pixels).
+    /// Says which rooms a mean lost (e.g. rooms a robot never saw).
+    std::vector<double> roomRecall;
+    std::vector<std::size_t> roomPixels;
+    int segments = 0;  ///< segments scored (> 100 px, 65280 included)
 };
 /// `segmentation`: CV_32S, 0 = obstacle, any other value a segment (65280 included).
 PrecisionRecall bormannPrecisionRecall(const GroundTruthRooms& truth, const cv::Mat& segmentation);

@@ -52,6 +52,10 @@ struct EndToEndRun {
     double slamSeconds = 0;          ///< wall time of mapLog
     mrpt::math::TPose2D slamToPlan;  ///< SLAM map frame -> plan frame
     double alignmentRmse = 0;        ///< m, SLAM positions vs ground truth after the transform
+    /// Ground-truth rooms (labels of the case's truth) of which less than a tenth is in line of
+    /// sight of the tour (within [Tour] view_range): no SLAM of this log can map them (in
+    /// Bormann's scanned maps, e.g., laser wedges drawn outside the building's walls).
+    std::vector<int> roomsOutOfView;
 };
 
 /// Tours `plan`, maps the log, and returns the SLAM grid as a case of dataset "slam" (with the

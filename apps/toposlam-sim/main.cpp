@@ -168,8 +168,13 @@ struct Arguments {
         "x,y[,yaw]",
         cmd};
     TCLAP::ValueArg<std::string> plotArg{
-        "",    "plot", "Also write a PNG of the map with the trajectory (and the tour's areas).",
-        false, "",     "file.png",
+        "",
+        "plot",
+        "Also write a PNG of the map with the trajectory (and the tour's stops: its areas and, "
+        "with [Tour] look_into_unseen, the places that look into what it would leave unseen).",
+        false,
+        "",
+        "file.png",
         cmd};
     cli::NumberArg<double> resolutionArg{
         "",

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include <cmath>
 #include <fstream>
@@ -161,6 +162,36 @@ TEST(RoomSegmenter, SingleRoomIsOneRoomWithoutDoors) {
     EXPECT_NEAR(result.map.rooms[0].area, 5.8 * 3.8, 0.05 * (5.8 + 3.8) * 2);
     EXPECT_NEAR(result.map.rooms[0].centroid.x, 4.1, 0.05);
     EXPECT_NEAR(result.map.rooms[0].centroid.y, 3.1, 0.05);
+}
+
+TEST(RoomSegmenter, FreePocketsCutOffDiagonallyJoinTheRoomTheyTouch) {
+    // A walled pocket inside the room whose one way in is a diagonal step at its corner (as the
+    // steps of a wall drawn at an angle leave them): no 4-connected way in.
+    const DrawnMap drawn = toposlam::rooms::test::singleRoom();
+    const cv::Rect room = cv::boundingRect(drawn.image == 255);
+    auto withPocket = [&](int side) {
+        cv::Mat image = drawn.image.clone();
+        const cv::Rect pocket(room.x + 20, room.y + 10, side, side);
+        image(cv::Rect(pocket.x - 1, pocket.y - 1, side + 2, side + 2)) = 0;  // its walls
+        image(pocket) = 255;
+        image.at<std::uint8_t>(pocket.y - 1, pocket.x - 1) = 255;  // the diagonal step
+        return std::make_pair(image, pocket);
+    };
+    const auto labelsOf = [](const cv::Mat& image, const RoomSegmenter::Options& o) {
+        return RoomSegmenter(o).segment(toposlam::rooms::test::gridOf(image)).map.labels;
+    };
+    const auto [small, smallPocket] = withPocket(4);  // 16 cells, 0.04 m^2
+    const cv::Mat labels = labelsOf(small, RoomSegmenter::Options());
+    const int id = labels.at<int>(room.y + room.height - 5, room.x + room.width - 5);
+    ASSERT_GT(id, 0);
+    EXPECT_EQ(cv::countNonZero(labels(smallPocket) == id), smallPocket.area());
+    // Off (the paper): the pocket stays unlabelled.
+    RoomSegmenter::Options off;
+    off.maxSliverArea = 0;
+    EXPECT_EQ(cv::countNonZero(labelsOf(small, off)(smallPocket)), 0);
+    // A pocket larger than max_sliver_area (25 x 25 cells: 1.56 m^2) is no sliver.
+    const auto [large, largePocket] = withPocket(25);
+    EXPECT_EQ(cv::countNonZero(labelsOf(large, RoomSegmenter::Options())(largePocket)), 0);
 }
 
 TEST(RoomSegmenter, OpenPlanHallIsOneRoom) {

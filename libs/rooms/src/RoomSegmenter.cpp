@@ -7,6 +7,7 @@
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <toposlam/config/IniFile.h>
+#include <opencv2/core.hpp>
 
 #include <toposlam/io/InputError.h>
 
@@ -155,6 +156,56 @@ void labelIslands(const FreeSpace& space, cv::Mat& labels) {
     }
 }
 
+// Gives each free pocket outside the segmented free space (`otherFree`: no 4-connected way in)
+// of at most `maxCells` cells the room it touches, when its 8-neighbours hold exactly one room.
+// Such pockets are mostly drawing artefacts: free cells caught between the steps of a wall
+// rasterised at an angle. Larger pockets, those between two rooms, and those reaching the edge
+// of the (cropped) image, which may go on beyond it, stay unlabelled. `cells` and `pocket` are
+// scratch.
+void labelSlivers(const cv::Mat& otherFree, std::size_t maxCells, cv::Mat& labels,
+                  std::vector<cv::Point>& cells, std::vector<cv::Point>& pocket) {
+    if (cv::countNonZero(otherFree) == 0)
+        return;
+    cv::findNonZero(otherFree, cells);
+    constexpr int kVisited = -1, kLeft = -2;  // in this pocket; in a pocket left unlabelled
+    const cv::Rect image(0, 0, labels.cols, labels.rows);
+    for (const cv::Point& seed : cells) {
+        if (labels.at<int>(seed) != 0)
+            continue;  // visited (or labelled: islands never are free)
+        pocket.assign(1, seed);
+        labels.at<int>(seed) = kVisited;
+        int room = 0;
+        bool oneRoom = true;
+        for (std::size_t k = 0; k < pocket.size(); ++k) {
+            const cv::Point p = pocket[k];
+            if (p.x == 0 || p.y == 0 || p.x == labels.cols - 1 || p.y == labels.rows - 1)
+                oneRoom = false;  // it may go on beyond the image
+            for (int dy = -1; dy <= 1; ++dy) {
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const cv::Point q(p.x + dx, p.y + dy);
+                    if (!image.contains(q))
+                        continue;
+                    const int l = labels.at<int>(q);
+                    if (l > 0) {
+                        oneRoom = oneRoom && (room == 0 || room == l);
+                        room = l;
+                    } else if (l == 0 && otherFree.at<std::uint8_t>(q) != 0) {
+                        labels.at<int>(q) = kVisited;
+                        pocket.push_back(q);
+                    }
+                }
+            }
+        }
+        const int label = pocket.size() <= maxCells && oneRoom && room > 0 ? room : kLeft;
+        for (const cv::Point& p : pocket)
+            labels.at<int>(p) = label;
+    }
+    for (const cv::Point& p : cells) {
+        if (labels.at<int>(p) == kLeft)
+            labels.at<int>(p) = 0;
+    }
+}
+
 }  // namespace
 
 RoomSegmenter::Options RoomSegmenter::Options::paperExact() {
@@ -176,6 +227,7 @@ void RoomSegmenter::Options::applyPaperPreset() {
     filters.maxOpenBoundary = 1;
     wide.enabled = false;
     labelIslands = false;
+    maxSliverArea = 0;
     medialAxisWithTrajectory = false;
 }
 
@@ -281,6 +333,10 @@ void RoomSegmenter::Options::declare(config::OptionsSchema& s) {
         .atLeast(0);
     s.flag("label_islands", labelIslands,
            "free-standing furniture inside a room takes its label (deviation)");
+    s.real("max_sliver_area", maxSliverArea, "m^2",
+           "free pockets up to this size cut off from the free space join the one room they "
+           "touch (deviation; 0 = off)")
+        .atLeast(0);
     s.flag("medial_axis_with_trajectory", medialAxisWithTrajectory,
            "with a trajectory, search the medial axis too (deviation)");
 }
@@ -306,6 +362,7 @@ struct RoomSegmenter::Workspace {
     WallThickness wallThickness;
     RegionPartition partition;
     RegionBoundary boundary;
+    std::vector<cv::Point> sliverCells, sliver;  // labelSlivers' scratch
 };
 
 RoomSegmenter::RoomSegmenter() : RoomSegmenter(Options{}) {}
@@ -431,6 +488,11 @@ RoomSegmenter::Result RoomSegmenter::segment(
     labelRooms(space.free, rooms.roomOfRegion, labels);
     if (options_.labelIslands && !space.obstacles.empty())
         labelIslands(space, labels);
+    if (options_.maxSliverArea > 0 && !space.otherFree.empty()) {
+        labelSlivers(space.otherFree,
+                     static_cast<std::size_t>(options_.maxSliverArea / space.frame.cellArea()),
+                     labels, ws.sliverCells, ws.sliver);
+    }
     lap("labels");
     // Room geometry on the cropped frame (world coordinates do not depend on the crop), then the
     // labels are put back on the full frame.

@@ -58,6 +58,11 @@ class RoomSegmenter {
         /// their cells take the room's id in the label image, and its area includes them
         /// (deviation: the paper labels free cells only).
         bool labelIslands = true;
+        /// m^2; free pockets up to this size cut off from the map's free space (no 4-connected
+        /// way in: free cells between the steps of a wall drawn at an angle, a gap behind a
+        /// desk) join the one room they touch (8-neighbours); 0 = off (deviation: the paper
+        /// labels the largest free region only).
+        double maxSliverArea = 0.25;
         /// With a trajectory, search from the medial axis too (deviation: the paper searches
         /// the trajectory only, assuming the robot went through every door; a tour that visits
         /// every room need not, e.g. through the second door of a room).
@@ -70,7 +75,8 @@ class RoomSegmenter {
         /// Switches off every deviation of paperExact() (speck removal, local directions,
         /// narrowest-of-group, smallest-first merging, wall-jamb, wall-end and constriction
         /// tests, wide openings, unknown as no wall, the open-boundary merge, islands,
-        /// medial axis with trajectory) and keeps every other value (door width, areas, ...):
+        /// slivers, medial axis with trajectory) and keeps every other value (door width, areas,
+        /// ...):
         /// `--paper` on top of an ini file. The one place that knows what "paper" means.
         void applyPaperPreset();
         /// The options of the apps' `-c file.ini [--paper]`: the built-in defaults, then the

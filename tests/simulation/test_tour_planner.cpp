@@ -75,10 +75,7 @@ TEST(TourPlanner, LookingIntoUnseenAreasLeavesLessUnseen) {
     const Tour& looking = officeTourLookingIntoUnseen();
     ASSERT_FALSE(looking.unseen.empty());
     const auto unseenAfter = [](const Tour& tour) {
-        std::vector<TPoint2D> from;
-        for (const auto& p : tour.poses)
-            from.emplace_back(p.pose.x, p.pose.y);
-        return findUnseenAreas(officeMap(), cellsInView(officeMap(), from, 5.0),
+        return findUnseenAreas(officeMap(), cellsInView(officeMap(), tour.poses, 5.0),
                                std::vector<std::uint8_t>(officeMap().geometry().cellCount(), 0),
                                TourCoverageOptions());
     };
@@ -171,10 +168,8 @@ FloorPlan roomWithCloset() {
 
 /// Share of the closet's free cells the laser sees from the tour's scan poses.
 double closetSeen(const FloorPlan& plan, const ClearanceMap& map, const Tour& tour) {
-    std::vector<TPoint2D> from;
-    for (const auto& p : tour.poses)
-        from.emplace_back(p.pose.x, p.pose.y);
-    const std::vector<std::uint8_t> seen = cellsInView(map, from, TourOptions().coverage.viewRange);
+    const std::vector<std::uint8_t> seen =
+        cellsInView(map, tour.poses, TourOptions().coverage.viewRange);
     const GridGeometry& g = map.geometry();
     std::size_t cells = 0, seenCells = 0;
     for (int cy = 0; cy < g.sizeY; ++cy) {

@@ -164,9 +164,7 @@ void labelIslands(const FreeSpace& space, cv::Mat& labels) {
 // scratch.
 void labelSlivers(const cv::Mat& otherFree, std::size_t maxCells, cv::Mat& labels,
                   std::vector<cv::Point>& cells, std::vector<cv::Point>& pocket) {
-    if (cv::countNonZero(otherFree) == 0)
-        return;
-    cv::findNonZero(otherFree, cells);
+    cv::findNonZero(otherFree, cells);        // empty when there is no pocket
     constexpr int kVisited = -1, kLeft = -2;  // in this pocket; in a pocket left unlabelled
     const cv::Rect image(0, 0, labels.cols, labels.rows);
     for (const cv::Point& seed : cells) {

@@ -141,10 +141,7 @@ std::vector<int> roomsOutOfView(const rooms::GroundTruthRooms& truth,
                                 const simulation::ClearanceMap& map, const io::Trajectory2D& poses,
                                 double viewRange) {
     constexpr double kInViewShare = 0.1;
-    std::vector<mrpt::math::TPoint2D> from;
-    for (const auto& p : poses)
-        from.emplace_back(p.pose.x, p.pose.y);
-    const std::vector<std::uint8_t> seen = simulation::cellsInView(map, from, viewRange);
+    const std::vector<std::uint8_t> seen = simulation::cellsInView(map, poses, viewRange);
     const simulation::GridGeometry& g = map.geometry();
     std::vector<std::size_t> pixels(static_cast<std::size_t>(truth.count) + 1, 0);
     std::vector<std::size_t> inView(pixels.size(), 0);

@@ -41,6 +41,15 @@ std::vector<std::uint8_t> cellsInView(const ClearanceMap& map,
     return seen;
 }
 
+std::vector<std::uint8_t> cellsInView(const ClearanceMap& map, const io::Trajectory2D& poses,
+                                      double range) {
+    std::vector<TPoint2D> positions;
+    positions.reserve(poses.size());
+    for (const auto& p : poses)
+        positions.emplace_back(p.pose.x, p.pose.y);
+    return cellsInView(map, positions, range);
+}
+
 namespace {
 /// The reachable cell nearest to the cells labelled `label` (walking 8-connected through free
 /// cells, at most maxSteps steps); -1 when there is none. `visited` is scratch, all 0 on entry

@@ -8,6 +8,7 @@
 // each find the reachable place nearest to it along free space (in its doorway or just in front
 // of it), from where it is in view.
 #include <mrpt/math/TPoint2D.h>
+#include <toposlam/io/Trajectory.h>
 #include <toposlam/simulation/ClearanceMap.h>
 
 #include <cstdint>
@@ -31,6 +32,9 @@ struct TourCoverageOptions {
 /// by GridGeometry::index. Viewpoints outside the map or not in a free cell see nothing.
 std::vector<std::uint8_t> cellsInView(const ClearanceMap& map,
                                       const std::vector<mrpt::math::TPoint2D>& viewpoints,
+                                      double range);
+/// The same from the positions of a driven trajectory (what its scans had in view).
+std::vector<std::uint8_t> cellsInView(const ClearanceMap& map, const io::Trajectory2D& poses,
                                       double range);
 
 struct UnseenArea {

@@ -13,9 +13,11 @@
 #include <opencv2/core/utility.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -28,7 +30,8 @@ const char* const kHelp =
     "Bormann map, single-threaded, map loaded beforehand (Google Benchmark).\n"
     "  vdoor/<map>, vdoor-paper/<map>  one map (20 maps, unfurnished and furnished)\n"
     "  vdoor/all-maps, vdoor-paper/all-maps  all 40 per iteration; counter cpu_ms_per_map = "
-    "mean CPU time per map (B4's time target)\n"
+    "mean CPU time per map (B4's time target), ms_<stage> = mean wall time of each stage of "
+    "RoomSegmenter::Result::stageMilliseconds per map\n"
     "Options: --data <dir>  Bormann's maps (default " TOPOSLAM_SHARED_DATA_DIR
     "/rooms)\n"
     "Google Benchmark flags are passed on, e.g. --benchmark_filter=all-maps "
@@ -46,20 +49,33 @@ void segmentOne(benchmark::State& state, const rooms::RoomSegmenter* segmenter, 
     }
 }
 
+// "lines+directions" -> "lines_directions": counter names without spaces or operators.
+std::string counterName(std::string stage) {
+    std::replace_if(
+        stage.begin(), stage.end(),
+        [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+    return stage;
+}
+
 void segmentAll(benchmark::State& state, const rooms::RoomSegmenter* segmenter,
                 const std::vector<Map>* maps) {
     double cpu = 0;
+    std::map<std::string, double> stageMs;  // wall time per stage, summed over maps and iterations
     for (auto _ : state) {
         const double start = io::threadCpuSeconds();
         for (const Map& map : *maps) {
             auto result = segmenter->segment(map.grid, {}, map.name);
             benchmark::DoNotOptimize(result.map.labels.data);
+            for (const auto& [stage, ms] : result.stageMilliseconds)
+                stageMs[stage] += ms;
         }
         cpu += io::threadCpuSeconds() - start;
     }
+    const double runs = static_cast<double>(state.iterations() * maps->size());
     state.counters["maps"] = static_cast<double>(maps->size());
-    state.counters["cpu_ms_per_map"] =
-        1e3 * cpu / static_cast<double>(state.iterations() * maps->size());
+    state.counters["cpu_ms_per_map"] = 1e3 * cpu / runs;
+    for (const auto& [stage, ms] : stageMs)
+        state.counters["ms_" + counterName(stage)] = ms / runs;
 }
 
 // Removes "--data <dir>" from argv; the folder, or the default.

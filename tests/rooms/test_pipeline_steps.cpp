@@ -15,6 +15,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <cmath>
+#include <set>
 
 using namespace toposlam::rooms;
 
@@ -327,4 +328,50 @@ TEST(FreeSpaceBinarizer, KeepsTheLargestFreeRegionAboveTheThreshold) {
     g.setCell(30, 0, 0.7f);
     EXPECT_EQ(cv::countNonZero(FreeSpaceBinarizer({0.6}).binarize(g).otherFree), 26);
     EXPECT_EQ(cv::countNonZero(FreeSpaceBinarizer({0.8}).binarize(g).otherFree), 25);
+}
+
+// The obstacles are labelled in the free cells' bounding box only; they must still be the
+// 8-connected non-free components of the whole map (the same partition, whatever the numbering),
+// with "on the border" meaning "reaches the map's edge", also when free space touches the edge.
+TEST(FreeSpaceBinarizer, ObstaclesAreTheNonFreeComponentsOfTheWholeMap) {
+    cv::RNG rng(7);
+    for (int trial = 0; trial < 40; ++trial) {
+        cv::Mat img(60, 70, CV_8U, cv::Scalar(0));
+        // Random free boxes (some reaching the edges) with random obstacles and specks in them.
+        for (int k = 0; k < 6; ++k) {
+            const int x = rng.uniform(0, 60), y = rng.uniform(0, 50);
+            img(cv::Rect(x, y, rng.uniform(3, 70 - x), rng.uniform(3, 60 - y))) = 255;
+        }
+        for (int k = 0; k < 25; ++k)
+            img.at<std::uint8_t>(rng.uniform(0, 60), rng.uniform(0, 70)) = 0;
+        const FreeSpace space = spaceOf(img);
+        cv::Mat notFree = space.obstacles != 0;  // after speck removal
+        cv::Mat reference;
+        const int n = cv::connectedComponents(notFree, reference, 8, CV_32S);
+        std::vector<int> mine(static_cast<std::size_t>(n), -1);  // reference label -> ours
+        std::vector<bool> touchesEdge(static_cast<std::size_t>(n), false);
+        for (int r = 0; r < img.rows; ++r) {
+            for (int c = 0; c < img.cols; ++c) {
+                const auto ref = static_cast<std::size_t>(reference.at<int>(r, c));
+                const int ours = space.obstacles.at<int>(r, c);
+                ASSERT_EQ(ref == 0, ours == 0) << "trial " << trial;
+                if (ref == 0)
+                    continue;
+                if (mine[ref] < 0)
+                    mine[ref] = ours;
+                ASSERT_EQ(mine[ref], ours) << "trial " << trial << " cell " << r << "," << c;
+                if (r == 0 || c == 0 || r == img.rows - 1 || c == img.cols - 1)
+                    touchesEdge[ref] = true;
+            }
+        }
+        std::set<int> distinct;
+        for (int i = 1; i < n; ++i) {
+            distinct.insert(mine[static_cast<std::size_t>(i)]);
+            EXPECT_EQ(space.obstacleOnBorder[static_cast<std::size_t>(
+                          mine[static_cast<std::size_t>(i)])] != 0,
+                      touchesEdge[static_cast<std::size_t>(i)])
+                << "trial " << trial;
+        }
+        EXPECT_EQ(distinct.size(), static_cast<std::size_t>(n - 1)) << "trial " << trial;
+    }
 }

@@ -16,22 +16,66 @@ namespace toposlam::rooms {
 
 using mrpt::maps::COccupancyGridMap2D;
 
+namespace {
+
+// area[label] = number of cells with that label (area sized beforehand). Counted per run of
+// equal labels: one increment per cell would chain every cell of a run on the same counter.
+void countAreas(const cv::Mat& labels, std::vector<int>& area) {
+    for (int r = 0; r < labels.rows; ++r) {
+        const int* row = labels.ptr<int>(r);
+        for (int c = 0; c < labels.cols;) {
+            const int label = row[c];
+            const int start = c;
+            while (c < labels.cols && row[c] == label)
+                ++c;
+            area[static_cast<std::size_t>(label)] += c - start;
+        }
+    }
+}
+
+}  // namespace
+
 void FreeSpaceBinarizer::removeSpecksAndLabelObstacles(cv::Mat& all, FreeSpace& out) const {
-    cv::bitwise_not(all, notFree_);
-    const int n = cv::connectedComponents(notFree_, out.obstacles, 8, CV_32S);
+    // Only the free cells' bounding box plus one ring around it is labelled: everything outside
+    // the box is non-free and reaches the map's edge by a straight line, so it is one obstacle
+    // per side, joined to the ring on that side, and on the border (the labels are the same
+    // partition as labelling the whole map, numbered differently).
+    const cv::Rect image(0, 0, all.cols, all.rows);
+    const cv::Rect freeBox = cv::boundingRect(all);
+    const cv::Rect box =
+        freeBox.empty() ? image : (freeBox + cv::Size(2, 2) - cv::Point(1, 1)) & image;
+    cv::Mat inBox = all(box);
+    cv::bitwise_not(inBox, notFree_);
+    out.obstacles.create(all.size(), CV_32S);
+    cv::Mat labels = out.obstacles(box);
+    const int n = cv::connectedComponents(notFree_, labels, 8, CV_32S);
+    CV_Assert(labels.data == out.obstacles.ptr(box.y) + box.x * sizeof(int));
+    // Outside the box: the label of the ring on that side (rows above and below take the top and
+    // bottom ring rows, which also hold the corners).
+    if (box.y > 0)
+        out.obstacles.rowRange(0, box.y).setTo(labels.at<int>(0, 0));
+    if (box.br().y < all.rows)
+        out.obstacles.rowRange(box.br().y, all.rows).setTo(labels.at<int>(box.height - 1, 0));
+    if (box.x > 0)
+        out.obstacles(cv::Rect(0, box.y, box.x, box.height)).setTo(labels.at<int>(0, 0));
+    if (box.br().x < all.cols) {
+        out.obstacles(cv::Rect(box.br().x, box.y, all.cols - box.br().x, box.height))
+            .setTo(labels.at<int>(0, box.width - 1));
+    }
     std::vector<int> area(static_cast<std::size_t>(n), 0);
+    countAreas(labels, area);
+    // On the border: touching the box's edge (the ring is outside the free box, so joined to
+    // the map's edge; where there is no ring the box edge is the map's edge).
     out.obstacleOnBorder.assign(static_cast<std::size_t>(n), 0);
-    const int rows = out.obstacles.rows, cols = out.obstacles.cols;
+    const int rows = labels.rows, cols = labels.cols;
     for (int r = 0; r < rows; ++r) {
-        const int* row = out.obstacles.ptr<int>(r);
-        for (int c = 0; c < cols; ++c)
-            ++area[static_cast<std::size_t>(row[c])];
+        const int* row = labels.ptr<int>(r);
         out.obstacleOnBorder[static_cast<std::size_t>(row[0])] = 1;
         out.obstacleOnBorder[static_cast<std::size_t>(row[cols - 1])] = 1;
     }
     for (int c = 0; c < cols; ++c) {
-        out.obstacleOnBorder[static_cast<std::size_t>(out.obstacles.at<int>(0, c))] = 1;
-        out.obstacleOnBorder[static_cast<std::size_t>(out.obstacles.at<int>(rows - 1, c))] = 1;
+        out.obstacleOnBorder[static_cast<std::size_t>(labels.at<int>(0, c))] = 1;
+        out.obstacleOnBorder[static_cast<std::size_t>(labels.at<int>(rows - 1, c))] = 1;
     }
     out.obstacleOnBorder[0] = 0;
     const int maxSpeck = static_cast<int>(std::floor(
@@ -48,8 +92,8 @@ void FreeSpaceBinarizer::removeSpecksAndLabelObstacles(cv::Mat& all, FreeSpace& 
     if (out.specksRemoved == 0)
         return;
     for (int r = 0; r < rows; ++r) {
-        int* row = out.obstacles.ptr<int>(r);
-        auto* a = all.ptr<std::uint8_t>(r);
+        int* row = labels.ptr<int>(r);
+        auto* a = inBox.ptr<std::uint8_t>(r);
         for (int c = 0; c < cols; ++c) {
             if (speck[static_cast<std::size_t>(row[c])]) {
                 row[c] = 0;
@@ -70,11 +114,8 @@ void FreeSpaceBinarizer::keepLargestComponent(const cv::Mat& all, const std::str
     // connectedComponents without stats: much faster on large maps; one pass gets the areas.
     const int n = box.empty() ? 1 : cv::connectedComponents(all(box), labels, 4, CV_32S);
     std::vector<int> area(static_cast<std::size_t>(n), 0);
-    for (int r = 0; r < labels.rows && !box.empty(); ++r) {
-        const int* row = labels.ptr<int>(r);
-        for (int c = 0; c < labels.cols; ++c)
-            ++area[static_cast<std::size_t>(row[c])];
-    }
+    if (!box.empty())
+        countAreas(labels, area);
     int best = 0;
     for (int i = 1; i < n; ++i) {
         if (area[static_cast<std::size_t>(i)] >

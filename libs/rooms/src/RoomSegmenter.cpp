@@ -411,13 +411,14 @@ DoorFilters::Rooms RoomSegmenter::findRooms(const FreeSpace& space,
     // Step 4: virtual doors along the main directions from the search paths.
     result.fromTrajectory = !trajectory.empty();
     ws.clearance.compute(space.free);
+    lap("clearance");
     const bool measureWalls = options_.filters.wallThicknessFromMap &&
                               options_.filters.requireWallJambs &&
                               (options_.filters.requireWallEnd || options_.wide.enabled);
     if (measureWalls)
         ws.wallThickness.measure(space, ws.clearance, options_.filters.maxWallThickness);
     const WallThickness* walls = measureWalls ? &ws.wallThickness : nullptr;
-    lap("clearance");
+    lap("wall thickness");
     const bool medialAxis = !result.fromTrajectory || options_.medialAxisWithTrajectory;
     if (result.fromTrajectory)
         result.searchCells = DoorSearchPaths::fromTrajectory(space, trajectory);

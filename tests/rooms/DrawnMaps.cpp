@@ -322,4 +322,19 @@ DrawnMap corridorWithOppositeDoors() {
     return m;
 }
 
+DrawnMap corridorOffAHall() {
+    DrawnMap m;
+    m.image = cv::Mat(210, 340, CV_8U, cv::Scalar(128));
+    cv::Mat& img = m.image;
+    fill(img, 1, 1, 16.2, 10.2, 0);
+    fill(img, 1.2, 1.2, 16, 10, 255);
+    fill(img, 6.0, 2.6, 6.2, 10, 0);     // the hall's wall, from the corridor up
+    fill(img, 6.0, 2.6, 16, 2.8, 0);     // the corridor's upper wall...
+    fill(img, 7.0, 2.6, 8.0, 2.8, 255);  // ... with the door 1 m from the hall's wall
+    m.doors.push_back({{7.5, 2.7}, 1.0});
+    m.rooms = {{3.5, 5}, {11, 6}};
+    m.tour = {{3.5, 5}, {7.5, 1.9}, {7.5, 4}, {11, 6}};
+    return m;
+}
+
 }  // namespace toposlam::rooms::test

@@ -53,6 +53,12 @@ DrawnMap cubicles();
 /// beside a partition, the doors above and below opposite each other: the corridor's
 /// cross-section there is 2.2 m, framed by wall corners, and no room border. 7 rooms, 6 doors.
 DrawnMap corridorWithOppositeDoors();
+/// A 1.4 m corridor leaving a hall between the outer wall and a wall stub: the stub (1 m) runs
+/// from the corner of the hall's wall to a 1 m door into the room above the corridor. The cut
+/// across the corridor's mouth has a wall end (the hall's wall) and opens on both sides (the
+/// hall; the side door), but both its jambs are on walls running along the corridor: no door.
+/// 2 rooms (hall with corridor, room), 1 door.
+DrawnMap corridorOffAHall();
 /// Two 4.4 x 4 m rooms either side of a 0.55 m thick wall (as thick as B4's Freiburg52 walls)
 /// with a 1 m door in it. 2 rooms, 1 door.
 DrawnMap thickWall();

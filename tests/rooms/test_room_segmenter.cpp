@@ -245,6 +245,21 @@ TEST(RoomSegmenter, CorridorBetweenOppositeDoorsIsNotCut) {
     expectMatchesDrawing(result.map, drawn, kDoorTolerance);
 }
 
+TEST(RoomSegmenter, CorridorMouthBesideASideDoorIsNotCut) {
+    // The door rule alone: the wide openings (up to 3 m) have their own framing test.
+    RoomSegmenter::Options on;
+    on.wide.enabled = false;
+    const DrawnMap drawn = toposlam::rooms::test::corridorOffAHall();
+    const auto grid = toposlam::rooms::test::gridOf(drawn.image);
+    expectMatchesDrawing(RoomSegmenter(on).segment(grid).map, drawn, kDoorTolerance);
+    // Without the rule the mouth is cut: the corridor becomes a room of its own.
+    RoomSegmenter::Options off = on;
+    off.filters.rejectCorridorCuts = false;
+    EXPECT_EQ(RoomSegmenter(off).segment(grid).map.rooms.size(), 3u);
+    // Known gap: at 30 degrees the cut ends on the face of the hall's wall, a few cells above
+    // the corner where the corridor's wall leaves it, and the rule does not see that wall.
+}
+
 TEST(RoomSegmenter, DoorInAThickWallIsCut) {
     const DrawnMap drawn = toposlam::rooms::test::thickWall();
     const auto grid = toposlam::rooms::test::gridOf(drawn.image);
@@ -301,6 +316,7 @@ TEST(RoomSegmenter, PaperPresetSwitchesOffEveryDeviationAndKeepsTheRest) {
     EXPECT_EQ(o.filters.requireWallJambs, paper.filters.requireWallJambs);
     EXPECT_EQ(o.filters.requireWallEnd, paper.filters.requireWallEnd);
     EXPECT_EQ(o.filters.requireConstriction, paper.filters.requireConstriction);
+    EXPECT_FALSE(o.filters.constrictionAtWaist || o.filters.rejectCorridorCuts);
     EXPECT_EQ(o.filters.wallThicknessFromMap, paper.filters.wallThicknessFromMap);
     EXPECT_EQ(o.filters.maxOpenBoundary, paper.filters.maxOpenBoundary);
     EXPECT_EQ(o.filters.maxOpenBoundary, 1.0);  // off

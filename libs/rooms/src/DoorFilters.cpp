@@ -72,6 +72,44 @@ double jambDistance(const VirtualDoor& a, const VirtualDoor& b) {
                     std::max(d(a.jambA, b.jambB), d(a.jambB, b.jambA)));
 }
 
+/// Doors bucketed by the midpoints of their jambs on a grid of `size` cells: doors whose jambs
+/// are within `size` of each other's have midpoints within `size`, so only the neighbouring
+/// buckets need comparing.
+class MidpointBuckets {
+  public:
+    explicit MidpointBuckets(double size) : size_(std::max(1.0, size)) {}
+    void add(const VirtualDoor& d, std::size_t index) {
+        const cv::Point b = bucketOf(d);
+        grid_[keyOf(b.x, b.y)].push_back(index);
+    }
+    /// Calls f(index) for every door added in the 3 x 3 buckets around d's.
+    template <class F>
+    void forNeighbours(const VirtualDoor& d, F&& f) const {
+        const cv::Point b = bucketOf(d);
+        for (int dy = -1; dy <= 1; ++dy) {
+            for (int dx = -1; dx <= 1; ++dx) {
+                auto it = grid_.find(keyOf(b.x + dx, b.y + dy));
+                if (it == grid_.end())
+                    continue;
+                for (std::size_t j : it->second)
+                    f(j);
+            }
+        }
+    }
+
+  private:
+    static long long keyOf(int bx, int by) {
+        return (static_cast<long long>(bx) << 32) ^ static_cast<unsigned>(by);
+    }
+    cv::Point bucketOf(const VirtualDoor& d) const {
+        const cv::Point2d m = 0.5 * (cv::Point2d(d.jambA) + cv::Point2d(d.jambB));
+        return cv::Point(static_cast<int>(std::floor(m.x / size_)),
+                         static_cast<int>(std::floor(m.y / size_)));
+    }
+    double size_;
+    std::unordered_map<long long, std::vector<std::size_t>> grid_;
+};
+
 /// Per obstacle label (FreeSpace::obstacles): whether it belongs to the building. Those that
 /// reach the border of the map (the outer walls and everything joined to them) and those that
 /// carry a wall segment do; the others are free-standing things: furniture, bins, plants.
@@ -158,16 +196,25 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
     };
     // The sides of the door line (bit 0: (-uy, ux), bit 1: the other) to which a wall goes on
     // from the jamb across the door line.
-    auto wallsAcross = [&](const cv::Point& jamb, double ux, double uy) {
-        return (wallRun(open, jamb, -uy, ux, length) >= length ? 1 : 0) |
-               (wallRun(open, jamb, uy, -ux, length) >= length ? 2 : 0);
+    auto wallsAcross = [&](const cv::Point& jamb, double ux, double uy, double reach) {
+        return (wallRun(open, jamb, -uy, ux, reach) >= reach ? 1 : 0) |
+               (wallRun(open, jamb, uy, -ux, reach) >= reach ? 2 : 0);
     };
     // Both jambs framed by wall ends: neither in the middle of a wall that runs across the door
     // line, and the two not on walls that go on to the same side (the two side walls of a
     // corridor, with the cut across it).
     auto framed = [&](const VirtualDoor& d, double ux, double uy) {
-        const int a = wallsAcross(d.jambA, ux, uy), b = wallsAcross(d.jambB, ux, uy);
+        const int a = wallsAcross(d.jambA, ux, uy, length),
+                  b = wallsAcross(d.jambB, ux, uy, length);
         return a != 3 && b != 3 && (a & b) == 0;
+    };
+    // Both jambs on walls that go on, beyond any wall's thickness, to one side of the door line:
+    // the cut runs across a corridor between its side walls (next to a side door, whose wall
+    // end makes the wall-end test pass), not through a wall.
+    const double corridorWall = thickness + 2;
+    auto acrossCorridor = [&](const VirtualDoor& d, double ux, double uy) {
+        return (wallsAcross(d.jambA, ux, uy, corridorWall) &
+                wallsAcross(d.jambB, ux, uy, corridorWall)) != 0;
     };
     doors.erase(std::remove_if(doors.begin(), doors.end(),
                                [&](const VirtualDoor& d) {
@@ -181,8 +228,10 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
                                        return false;
                                    const bool endA = wallEnd(d.jambA, -ux, -uy);
                                    const bool endB = wallEnd(d.jambB, ux, uy);
-                                   if (!options_.requireBothWallEnds)
-                                       return !(endA || endB);
+                                   if (!options_.requireBothWallEnds) {
+                                       return !(endA || endB) || (options_.rejectCorridorCuts &&
+                                                                  acrossCorridor(d, ux, uy));
+                                   }
                                    return !endA || !endB || !framed(d, ux, uy);
                                }),
                 doors.end());
@@ -211,65 +260,65 @@ std::vector<VirtualDoor> DoorFilters::constriction(const FreeSpace& space,
         }
         return false;
     };
-    doors.erase(std::remove_if(doors.begin(), doors.end(),
-                               [&](const VirtualDoor& d) {
-                                   return !opensOnSide(d, 1.0) || !opensOnSide(d, -1.0);
-                               }),
-                doors.end());
+    std::vector<std::uint8_t> opens(doors.size());
+    for (std::size_t i = 0; i < doors.size(); ++i)
+        opens[i] = opensOnSide(doors[i], 1.0) && opensOnSide(doors[i], -1.0);
+    if (options_.constrictionAtWaist) {
+        // A cut that opens is dropped when a narrower cut of the same opening (jambs within
+        // frameDistance) does not: the opening is judged at its waist. An oblique cut across a
+        // corridor is longer than the corridor is wide, and its probes, drifting along the
+        // corridor, can reach a side door and find it "wider"; the straight cut does not.
+        const double nd = detail::toCells(options_.frameDistance, space.frame.resolution);
+        MidpointBuckets closed(nd);
+        for (std::size_t j = 0; j < doors.size(); ++j) {
+            if (!opens[j])
+                closed.add(doors[j], j);
+        }
+        std::vector<std::uint8_t> keep(opens);
+        for (std::size_t i = 0; i < doors.size(); ++i) {
+            if (!opens[i])
+                continue;
+            closed.forNeighbours(doors[i], [&](std::size_t j) {
+                if (doors[j].width < doors[i].width - 1.0 && jambDistance(doors[i], doors[j]) <= nd)
+                    keep[i] = 0;
+            });
+        }
+        opens.swap(keep);
+    }
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < doors.size(); ++i) {
+        if (opens[i])
+            doors[kept++] = doors[i];
+    }
+    doors.resize(kept);
     return doors;
 }
 
 std::vector<VirtualDoor> DoorFilters::distance(std::vector<VirtualDoor> doors,
                                                double resolution) const {
     const double nd = detail::toCells(options_.frameDistance, resolution);
-    // Doors closer than N_d have midpoints closer than N_d: bucket midpoints on a grid of that
-    // size and compare neighbouring buckets only.
-    const double bucket = std::max(1.0, nd);
-    auto keyOf = [&](int bx, int by) {
-        return (static_cast<long long>(bx) << 32) ^ static_cast<unsigned>(by);
-    };
-    auto bucketOf = [&](const VirtualDoor& d) {
-        const cv::Point2d m = 0.5 * (cv::Point2d(d.jambA) + cv::Point2d(d.jambB));
-        return cv::Point(static_cast<int>(std::floor(m.x / bucket)),
-                         static_cast<int>(std::floor(m.y / bucket)));
-    };
-    std::unordered_map<long long, std::vector<std::size_t>> grid;
-    auto forNeighbours = [&](const VirtualDoor& d, auto&& f) {
-        const cv::Point b = bucketOf(d);
-        for (int dy = -1; dy <= 1; ++dy) {
-            for (int dx = -1; dx <= 1; ++dx) {
-                auto it = grid.find(keyOf(b.x + dx, b.y + dy));
-                if (it == grid.end())
-                    continue;
-                for (std::size_t j : it->second)
-                    f(j);
-            }
-        }
-    };
+    MidpointBuckets grid(nd);
 
     if (!options_.keepNarrowestOfGroup) {  // the paper: greedy, in search order
         std::vector<VirtualDoor> kept;
         for (const VirtualDoor& d : doors) {
             bool tooClose = false;
-            forNeighbours(
+            grid.forNeighbours(
                 d, [&](std::size_t j) { tooClose = tooClose || jambDistance(d, kept[j]) <= nd; });
             if (tooClose)
                 continue;
-            const cv::Point b = bucketOf(d);
-            grid[keyOf(b.x, b.y)].push_back(kept.size());
+            grid.add(d, kept.size());
             kept.push_back(d);
         }
         return kept;
     }
 
     // Groups: connected components of the "closer than N_d" relation.
-    for (std::size_t i = 0; i < doors.size(); ++i) {
-        const cv::Point b = bucketOf(doors[i]);
-        grid[keyOf(b.x, b.y)].push_back(i);
-    }
+    for (std::size_t i = 0; i < doors.size(); ++i)
+        grid.add(doors[i], i);
     DisjointSets groups(doors.size());
     for (std::size_t i = 0; i < doors.size(); ++i) {
-        forNeighbours(doors[i], [&](std::size_t j) {
+        grid.forNeighbours(doors[i], [&](std::size_t j) {
             if (j > i &&
                 (jambDistance(doors[i], doors[j]) <= nd || fanFromOneJamb(doors[i], doors[j]))) {
                 groups.union_set(i, j);

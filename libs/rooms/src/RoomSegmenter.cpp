@@ -221,6 +221,8 @@ void RoomSegmenter::Options::applyPaperPreset() {
     filters.requireWallJambs = false;
     filters.requireWallEnd = false;
     filters.requireConstriction = false;
+    filters.constrictionAtWaist = false;
+    filters.rejectCorridorCuts = false;
     filters.wallThicknessFromMap = false;
     filters.maxOpenBoundary = 1;
     wide.enabled = false;
@@ -314,11 +316,18 @@ void RoomSegmenter::Options::declare(config::OptionsSchema& s) {
            "one jamb must be the end of a wall (deviation)");
     s.real("max_wall_thickness", filters.maxWallThickness, "m", "thickest wall end").above(0);
     s.real("wall_end_probe", filters.wallEndProbe, "m", "probe length along the wall").above(0);
+    s.flag(
+        "reject_corridor_cuts", filters.rejectCorridorCuts,
+        "no door with both jambs on walls going on to one side of it: a corridor's cross-section "
+        "(deviation)");
     s.flag("wall_thickness_from_map", filters.wallThicknessFromMap,
            "wall ends as thick as the building's walls, measured on the map (deviation)");
     s.flag("require_constriction", filters.requireConstriction,
            "a door must be narrower than the space on both sides (deviation)");
     s.real("opening_margin", filters.openingMargin, "m", "by at least this").atLeast(0);
+    s.flag("constriction_at_waist", filters.constrictionAtWaist,
+           "a cut is dropped when a narrower cut of the same opening is no constriction "
+           "(deviation)");
     s.real("max_open_boundary", filters.maxOpenBoundary, "",
            "a region whose boundary is more than this fraction open to the unobserved outside is "
            "merged (deviation; 1 = off)")

@@ -29,7 +29,10 @@
 //   constriction: a door is a narrow place between two wider spaces: walking away from the door
 //                 line on each side, within one door width the free space along the door line
 //                 becomes wider than the door by openingMargin (rules out the cross-sections
-//                 of door-wide corridors and of gaps along furniture).
+//                 of door-wide corridors and of gaps along furniture). Judged at the waist
+//                 (constrictionAtWaist): a cut is dropped when a narrower cut of the same
+//                 opening does not open (an oblique cut across a corridor, whose probes reach a
+//                 side door, beside the straight cut that finds the corridor no wider).
 // And one more reason for the minimum-area filter to merge a region (SLAM grids): its boundary
 // is mostly open to unobserved space that reaches the edge of the map (maxOpenBoundary,
 // RegionBoundary.h), so it is not known to be enclosed: the pocket between two cabinets whose
@@ -72,6 +75,10 @@ class DoorFilters {
         /// in the middle of a wall running across the door line, and the two do not lie on
         /// walls that go on to the same side of it (a corridor's two side walls).
         bool requireBothWallEnds = false;
+        /// Part of the wall-end test: no door has both jambs on walls that go on, farther than
+        /// twice maxWallThickness, to the same side of the door line: that cut runs across a
+        /// corridor between its side walls (beside a side door, whose wall end passes the test).
+        bool rejectCorridorCuts = true;
         /// m: the thickest inner wall (B4's drawn walls: 0.55 m in Freiburg52, 0.65 m in office_i).
         double maxWallThickness = 0.65;
         /// m: how far from a wall-end jamb, along the door line, the wall must go on and is
@@ -83,6 +90,10 @@ class DoorFilters {
         bool wallThicknessFromMap = true;
         bool requireConstriction = true;  ///< the constriction test (deviation, see above)
         double openingMargin = 0.3;       ///< m
+        /// Part of the constriction test: a door that opens on both sides is still dropped when
+        /// a narrower cut through the same opening (jambs within frameDistance) does not open:
+        /// the opening is judged at its waist, whatever the angle of the cut to the grid.
+        bool constrictionAtWaist = true;
         /// Minimum-area filter (deviation, SLAM grids): a region whose boundary (door cuts
         /// excepted) is more than this fraction open to the unobserved outside
         /// (RegionBoundary.h) is not known to be a room and is merged like a too-small one;

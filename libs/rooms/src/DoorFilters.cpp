@@ -72,6 +72,20 @@ double jambDistance(const VirtualDoor& a, const VirtualDoor& b) {
                     std::max(d(a.jambA, b.jambB), d(a.jambB, b.jambA)));
 }
 
+// Distance from the origin to the segment from a to b.
+double pointSegmentDistance(const cv::Point2d& a, const cv::Point2d& b) {
+    const cv::Point2d ab = b - a;
+    const double t = std::clamp(-a.dot(ab) / std::max(1e-12, ab.dot(ab)), 0.0, 1.0);
+    const cv::Point2d closest = a + t * ab;
+    return std::hypot(closest.x, closest.y);
+}
+
+// A wall segment runs across a door line when it is within 20 degrees of the line's normal,
+// and passes through a jamb when within a quarter metre of it: the staircase of a wall at an
+// angle, and the corner where the cut lands a few cells along the other wall.
+const double kAcross = std::cos(20 * M_PI / 180);
+constexpr double kOnWallMetres = 0.25;
+
 /// Doors bucketed by the midpoints of their jambs on a grid of `size` cells: doors whose jambs
 /// are within `size` of each other's have midpoints within `size`, so only the neighbouring
 /// buckets need comparing.
@@ -200,12 +214,34 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
         return (wallRun(open, jamb, -uy, ux, reach) >= reach ? 1 : 0) |
                (wallRun(open, jamb, uy, -ux, reach) >= reach ? 2 : 0);
     };
+    // The same from the wall segments of step 2 that pass through the jamb: at an angle to
+    // the grid a cut ends anywhere on a wall's staircase, where walking the wall cell by cell
+    // is cut short.
+    const double throughJamb = detail::toCells(kOnWallMetres, space.frame.resolution);
+    auto segmentsAcross = [&](const cv::Point& jamb, double ux, double uy, double reach) {
+        const cv::Point2d n(-uy, ux);  // bit 0 side
+        int sides = 0;
+        for (const LineSegment& w : walls) {
+            const cv::Point2d a(w.start.x - jamb.x, w.start.y - jamb.y);
+            const cv::Point2d b(w.end.x - jamb.x, w.end.y - jamb.y);
+            const double span = w.length();
+            if (span < 1 || std::abs((b - a).dot(n)) < kAcross * span ||
+                pointSegmentDistance(a, b) > throughJamb) {
+                continue;
+            }
+            sides |= (std::max(a.dot(n), b.dot(n)) >= reach ? 1 : 0) |
+                     (std::min(a.dot(n), b.dot(n)) <= -reach ? 2 : 0);
+        }
+        return sides;
+    };
+    auto sidesOf = [&](const cv::Point& jamb, double ux, double uy, double reach) {
+        return wallsAcross(jamb, ux, uy, reach) | segmentsAcross(jamb, ux, uy, reach);
+    };
     // Both jambs framed by wall ends: neither in the middle of a wall that runs across the door
     // line, and the two not on walls that go on to the same side (the two side walls of a
     // corridor, with the cut across it).
     auto framed = [&](const VirtualDoor& d, double ux, double uy) {
-        const int a = wallsAcross(d.jambA, ux, uy, length),
-                  b = wallsAcross(d.jambB, ux, uy, length);
+        const int a = sidesOf(d.jambA, ux, uy, length), b = sidesOf(d.jambB, ux, uy, length);
         return a != 3 && b != 3 && (a & b) == 0;
     };
     // Both jambs on walls that go on, beyond any wall's thickness, to one side of the door line:
@@ -213,8 +249,8 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
     // end makes the wall-end test pass), not through a wall.
     const double corridorWall = thickness + 2;
     auto acrossCorridor = [&](const VirtualDoor& d, double ux, double uy) {
-        return (wallsAcross(d.jambA, ux, uy, corridorWall) &
-                wallsAcross(d.jambB, ux, uy, corridorWall)) != 0;
+        return (sidesOf(d.jambA, ux, uy, corridorWall) & sidesOf(d.jambB, ux, uy, corridorWall)) !=
+               0;
     };
     doors.erase(std::remove_if(doors.begin(), doors.end(),
                                [&](const VirtualDoor& d) {

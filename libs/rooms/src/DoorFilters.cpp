@@ -86,6 +86,51 @@ double pointSegmentDistance(const cv::Point2d& a, const cv::Point2d& b) {
 const double kAcross = std::cos(20 * M_PI / 180);
 constexpr double kOnWallMetres = 0.25;
 
+/// The wall segments near a point: each segment is listed in the buckets (of `bucket` cells)
+/// within `radius` of it, so the segments within `radius` of a point are among those listed
+/// in its bucket.
+class SegmentsNear {
+  public:
+    SegmentsNear(const std::vector<LineSegment>& walls, cv::Size image, double radius)
+        : size_(std::max(8, static_cast<int>(std::ceil(2 * radius)))),
+          cols_(image.width / size_ + 1),
+          rows_(image.height / size_ + 1),
+          buckets_(static_cast<std::size_t>(cols_ * rows_)) {
+        // Sampled every half bucket; each sample marks the buckets within radius plus half a
+        // bucket of it, which covers the segment between samples.
+        const double reach = radius + 0.5 * size_;
+        for (std::size_t i = 0; i < walls.size(); ++i) {
+            const LineSegment& w = walls[i];
+            const int samples = 1 + static_cast<int>(std::ceil(w.length() / (0.5 * size_)));
+            for (int k = 0; k <= samples; ++k) {
+                const cv::Point2f p =
+                    w.start + (w.end - w.start) * (static_cast<float>(k) / samples);
+                for (int by = bucketOf(p.y - reach, rows_); by <= bucketOf(p.y + reach, rows_);
+                     ++by) {
+                    for (int bx = bucketOf(p.x - reach, cols_); bx <= bucketOf(p.x + reach, cols_);
+                         ++bx) {
+                        auto& bucket = buckets_[static_cast<std::size_t>(by * cols_ + bx)];
+                        if (bucket.empty() || bucket.back() != i)
+                            bucket.push_back(i);
+                    }
+                }
+            }
+        }
+    }
+    /// Indices of the segments that may pass within the radius of p.
+    const std::vector<std::size_t>& at(const cv::Point& p) const {
+        return buckets_[static_cast<std::size_t>(bucketOf(p.y, rows_) * cols_ +
+                                                 bucketOf(p.x, cols_))];
+    }
+
+  private:
+    int bucketOf(double v, int count) const {
+        return std::clamp(static_cast<int>(std::floor(v / size_)), 0, count - 1);
+    }
+    int size_, cols_, rows_;
+    std::vector<std::vector<std::size_t>> buckets_;
+};
+
 /// Doors bucketed by the midpoints of their jambs on a grid of `size` cells: doors whose jambs
 /// are within `size` of each other's have midpoints within `size`, so only the neighbouring
 /// buckets need comparing.
@@ -218,10 +263,12 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
     // the grid a cut ends anywhere on a wall's staircase, where walking the wall cell by cell
     // is cut short.
     const double throughJamb = detail::toCells(kOnWallMetres, space.frame.resolution);
+    const SegmentsNear nearJamb(walls, space.free.size(), throughJamb);
     auto segmentsAcross = [&](const cv::Point& jamb, double ux, double uy, double reach) {
         const cv::Point2d n(-uy, ux);  // bit 0 side
         int sides = 0;
-        for (const LineSegment& w : walls) {
+        for (const std::size_t i : nearJamb.at(jamb)) {
+            const LineSegment& w = walls[i];
             const cv::Point2d a(w.start.x - jamb.x, w.start.y - jamb.y);
             const cv::Point2d b(w.end.x - jamb.x, w.end.y - jamb.y);
             const double span = w.length();

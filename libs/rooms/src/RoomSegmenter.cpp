@@ -336,6 +336,8 @@ void RoomSegmenter::Options::declare(config::OptionsSchema& s) {
     // Wide openings (deviation).
     s.flag("wide_openings", wide.enabled, "openings wider than a door may be room borders");
     s.real("max_opening_width", wide.maxWidth, "m", "widest such opening").above(0);
+    s.flag("wide_local_direction", wide.localDirection,
+           "search wide openings across the clearance ridge too (off: the main directions only)");
     s.real("wide_opening_margin", wide.openingMargin, "m", "the space behind must be wider by this")
         .atLeast(0);
     s.flag("label_islands", labelIslands,

@@ -10,6 +10,7 @@ VirtualDoorDetector::Options wideRange(const WideOpeningDetector::Options& o,
     const double lo = door.doorWidth + door.doorWidthTolerance;
     door.doorWidth = 0.5 * (lo + o.maxWidth);
     door.doorWidthTolerance = 0.5 * (o.maxWidth - lo);
+    door.localDirection = door.localDirection && o.localDirection;
     return door;
 }
 

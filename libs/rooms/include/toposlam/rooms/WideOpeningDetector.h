@@ -5,9 +5,9 @@
 // borders by people, but eq. 10 with a door-width range cannot find them, and a wider range for
 // every door would cut corridors everywhere.
 //
-// A wide opening is searched like a door (step 4, from the search paths across the main
-// directions and the clearance ridge) and must pass stricter versions of step 5's tests,
-// because the wider the opening the more places look like one:
+// A wide opening is searched like a door (step 4, from the search paths; across the main
+// directions only, unless Options::localDirection) and must pass stricter versions of step 5's
+// tests, because the wider the opening the more places look like one:
 //   - both jambs end the wall the opening is in (a door needs one), neither lies in the middle
 //     of a wall that runs across the door line, and the two are not on walls that go on to the
 //     same side of it: the opening is framed by wall ends, never a cross-section of a corridor
@@ -38,6 +38,11 @@ class WideOpeningDetector {
         double maxWidth = 3.0;
         /// m: how much wider than the opening the free space must become on both sides.
         double openingMargin = 0.5;
+        /// Also search across the clearance ridge (as doors are, VirtualDoorDetector's
+        /// localDirection). Off: along the main directions only. Where two corridors meet the
+        /// ridge runs diagonally, and a cut along it spans the junction from corner to corner
+        /// at 20-30 degrees to both walls, where no framing test can tell it from an opening.
+        bool localDirection = false;
     };
 
     WideOpeningDetector() = default;

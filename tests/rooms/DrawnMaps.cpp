@@ -322,6 +322,24 @@ DrawnMap corridorWithOppositeDoors() {
     return m;
 }
 
+DrawnMap corridorBend() {
+    DrawnMap m;
+    m.image = cv::Mat(280, 320, CV_8U, cv::Scalar(128));
+    cv::Mat& img = m.image;
+    fill(img, 1, 1, 15, 13, 0);
+    fill(img, 1.2, 10.6, 14.8, 12.8, 255);  // the top arm
+    fill(img, 1.2, 1.2, 3.0, 10.6, 255);    // the left arm
+    fill(img, 3.2, 1.2, 8.9, 10.4, 255);    // room A
+    fill(img, 9.1, 1.2, 14.8, 10.4, 255);   // room B
+    for (const double x : {5.0, 11.0}) {
+        fill(img, x, 10.4, x + 1.0, 10.6, 255);
+        m.doors.push_back({{x + 0.5, 10.5}, 1.0});
+    }
+    m.rooms = {{2.1, 11.5}, {6, 6}, {12, 6}};
+    m.tour = {{2.1, 5}, {2.1, 11.5}, {5.5, 11.5}, {5.5, 8}, {5.5, 11.5}, {11.5, 11.5}, {11.5, 8}};
+    return m;
+}
+
 DrawnMap corridorOffAHall() {
     DrawnMap m;
     m.image = cv::Mat(210, 340, CV_8U, cv::Scalar(128));

@@ -53,6 +53,10 @@ DrawnMap cubicles();
 /// beside a partition, the doors above and below opposite each other: the corridor's
 /// cross-section there is 2.2 m, framed by wall corners, and no room border. 7 rooms, 6 doors.
 DrawnMap corridorWithOppositeDoors();
+/// An L-shaped 1.8 m corridor along the top and the left of two rooms, each entered by a 1 m
+/// door from the top arm. At the bend the clearance ridge runs diagonally; a cut along it, from
+/// the outer corner to the rooms' corner, is 2.7 m long: no room border. 3 rooms, 2 doors.
+DrawnMap corridorBend();
 /// A 1.4 m corridor leaving a hall between the outer wall and a wall stub: the stub (1 m) runs
 /// from the corner of the hall's wall to a 1 m door into the room above the corridor. The cut
 /// across the corridor's mouth has a wall end (the hall's wall) and opens on both sides (the

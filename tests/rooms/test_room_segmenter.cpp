@@ -265,6 +265,17 @@ TEST(RoomSegmenter, CorridorMouthBesideASideDoorIsNotCut) {
         3u);
 }
 
+TEST(RoomSegmenter, CorridorBendIsNotCutAtAnyAngle) {
+    const DrawnMap drawn = toposlam::rooms::test::corridorBend();
+    for (const double degrees : {0.0, 10.0, 17.0, 30.0, 45.0}) {
+        SCOPED_TRACE(degrees);
+        const DrawnMap turned = toposlam::rooms::test::rotated(drawn, degrees);
+        expectMatchesDrawing(
+            RoomSegmenter().segment(toposlam::rooms::test::gridOf(turned.image)).map, turned,
+            kDoorTolerance);
+    }
+}
+
 TEST(RoomSegmenter, DoorInAThickWallIsCut) {
     const DrawnMap drawn = toposlam::rooms::test::thickWall();
     const auto grid = toposlam::rooms::test::gridOf(drawn.image);

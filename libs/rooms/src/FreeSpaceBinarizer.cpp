@@ -2,6 +2,7 @@
 #include <toposlam/rooms/FreeSpaceBinarizer.h>
 
 #include "GridRay.h"
+#include "LabelAreas.h"
 
 #include <opencv2/imgproc.hpp>
 
@@ -15,25 +16,6 @@
 namespace toposlam::rooms {
 
 using mrpt::maps::COccupancyGridMap2D;
-
-namespace {
-
-// area[label] = number of cells with that label (area sized beforehand). Counted per run of
-// equal labels: one increment per cell would chain every cell of a run on the same counter.
-void countAreas(const cv::Mat& labels, std::vector<int>& area) {
-    for (int r = 0; r < labels.rows; ++r) {
-        const int* row = labels.ptr<int>(r);
-        for (int c = 0; c < labels.cols;) {
-            const int label = row[c];
-            const int start = c;
-            while (c < labels.cols && row[c] == label)
-                ++c;
-            area[static_cast<std::size_t>(label)] += c - start;
-        }
-    }
-}
-
-}  // namespace
 
 void FreeSpaceBinarizer::removeSpecksAndLabelObstacles(cv::Mat& all, FreeSpace& out) const {
     // Only the free cells' bounding box plus one ring around it is labelled: everything outside
@@ -63,7 +45,7 @@ void FreeSpaceBinarizer::removeSpecksAndLabelObstacles(cv::Mat& all, FreeSpace& 
             .setTo(labels.at<int>(0, box.width - 1));
     }
     std::vector<int> area(static_cast<std::size_t>(n), 0);
-    countAreas(labels, area);
+    detail::countLabelAreas(labels, area);
     // On the border: touching the box's edge (the ring is outside the free box, so joined to
     // the map's edge; where there is no ring the box edge is the map's edge).
     out.obstacleOnBorder.assign(static_cast<std::size_t>(n), 0);
@@ -115,7 +97,7 @@ void FreeSpaceBinarizer::keepLargestComponent(const cv::Mat& all, const std::str
     const int n = box.empty() ? 1 : cv::connectedComponents(all(box), labels, 4, CV_32S);
     std::vector<int> area(static_cast<std::size_t>(n), 0);
     if (!box.empty())
-        countAreas(labels, area);
+        detail::countLabelAreas(labels, area);
     int best = 0;
     for (int i = 1; i < n; ++i) {
         if (area[static_cast<std::size_t>(i)] >

@@ -1,5 +1,7 @@
 #include <toposlam/rooms/RegionPartition.h>
 
+#include "LabelAreas.h"
+
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -13,11 +15,7 @@ void RegionPartition::compute(const cv::Mat& free, const std::vector<VirtualDoor
         cv::line(open_, d.jambA, d.jambB, cv::Scalar(0), 1, cv::LINE_8);
     regionCount_ = cv::connectedComponents(open_, labels_, 4, CV_32S) - 1;
     areas_.assign(static_cast<std::size_t>(regionCount_) + 1, 0);
-    for (int r = 0; r < labels_.rows; ++r) {
-        const int* row = labels_.ptr<int>(r);
-        for (int c = 0; c < labels_.cols; ++c)
-            ++areas_[static_cast<std::size_t>(row[c])];
-    }
+    detail::countLabelAreas(labels_, areas_);
     areas_[0] = 0;
 
     touching_.assign(doors.size(), {});

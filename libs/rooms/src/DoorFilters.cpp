@@ -86,9 +86,9 @@ double pointSegmentDistance(const cv::Point2d& a, const cv::Point2d& b) {
 const double kAcross = std::cos(20 * M_PI / 180);
 constexpr double kOnWallMetres = 0.25;
 
-/// The wall segments near a point: each segment is listed in the buckets (of `bucket` cells)
-/// within `radius` of it, so the segments within `radius` of a point are among those listed
-/// in its bucket.
+/// The wall segments near a point: each segment is listed in every bucket (square, at least
+/// twice `radius` cells wide) within `radius` of it, so the segments within `radius` of a point
+/// are among those listed in the point's bucket.
 class SegmentsNear {
   public:
     SegmentsNear(const std::vector<LineSegment>& walls, cv::Size image, double radius)

@@ -76,8 +76,11 @@ class DoorFilters {
         /// walls that go on to the same side of it (a corridor's two side walls).
         bool requireBothWallEnds = false;
         /// Part of the wall-end test: no door has both jambs on walls that go on, farther than
-        /// twice maxWallThickness, to the same side of the door line: that cut runs across a
-        /// corridor between its side walls (beside a side door, whose wall end passes the test).
+        /// maxWallThickness plus two cells, to the same side of the door line: that cut runs
+        /// across a corridor between its side walls (beside a side door, whose wall end passes
+        /// the test). Walls across the door line are found by walking the obstacle from the jamb
+        /// and from the wall segments passing within 0.25 m of it (a cut at an angle to the grid
+        /// ends anywhere on a wall's staircase).
         bool rejectCorridorCuts = true;
         /// m: the thickest inner wall (B4's drawn walls: 0.55 m in Freiburg52, 0.65 m in office_i).
         double maxWallThickness = 0.65;

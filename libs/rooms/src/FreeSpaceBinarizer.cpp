@@ -17,13 +17,13 @@ namespace toposlam::rooms {
 
 using mrpt::maps::COccupancyGridMap2D;
 
-void FreeSpaceBinarizer::removeSpecksAndLabelObstacles(cv::Mat& all, FreeSpace& out) const {
+void FreeSpaceBinarizer::removeSpecksAndLabelObstacles(cv::Mat& all, const cv::Rect& freeBox,
+                                                       FreeSpace& out) const {
     // Only the free cells' bounding box plus one ring around it is labelled: everything outside
     // the box is non-free and reaches the map's edge by a straight line, so it is one obstacle
     // per side, joined to the ring on that side, and on the border (the labels are the same
     // partition as labelling the whole map, numbered differently).
     const cv::Rect image(0, 0, all.cols, all.rows);
-    const cv::Rect freeBox = cv::boundingRect(all);
     const cv::Rect box =
         freeBox.empty() ? image : (freeBox + cv::Size(2, 2) - cv::Point(1, 1)) & image;
     cv::Mat inBox = all(box);
@@ -85,13 +85,21 @@ void FreeSpaceBinarizer::removeSpecksAndLabelObstacles(cv::Mat& all, FreeSpace& 
     }
 }
 
+// Specks, obstacles and the largest free region of `all` (255 = free), all within the free
+// cells' bounding box: freeing specks inside it does not move it.
+void FreeSpaceBinarizer::labelFreeSpace(cv::Mat& all, const std::string& sourceName,
+                                        FreeSpace& out) const {
+    const cv::Rect freeBox = cv::boundingRect(all);
+    removeSpecksAndLabelObstacles(all, freeBox, out);
+    keepLargestComponent(all, freeBox, sourceName, out);
+}
+
 // Keeps the largest 4-connected component of `all` (255 = free) in out.free and the rest in
 // out.otherFree.
-void FreeSpaceBinarizer::keepLargestComponent(const cv::Mat& all, const std::string& sourceName,
-                                              FreeSpace& out) const {
+void FreeSpaceBinarizer::keepLargestComponent(const cv::Mat& all, const cv::Rect& box,
+                                              const std::string& sourceName, FreeSpace& out) const {
     // Only the bounding box of the free cells holds components; 4-connected components are
     // numbered in raster order, which the box keeps (so ties in area go the same way).
-    const cv::Rect box = cv::boundingRect(all);
     cv::Mat& labels = labels_;
     // connectedComponents without stats: much faster on large maps; one pass gets the areas.
     const int n = box.empty() ? 1 : cv::connectedComponents(all(box), labels, 4, CV_32S);
@@ -184,8 +192,7 @@ void FreeSpaceBinarizer::binarize(const COccupancyGridMap2D& grid, FreeSpace& ou
             unknown[c] = isUnknown[static_cast<std::uint8_t>(src[c])];
         }
     }
-    removeSpecksAndLabelObstacles(all, out);
-    keepLargestComponent(all, sourceName, out);
+    labelFreeSpace(all, sourceName, out);
     markNoWall(all, out);
 }
 
@@ -200,8 +207,7 @@ FreeSpace FreeSpaceBinarizer::binarize(const cv::Mat& freeImage, GridImageFrame 
     frame.rows = freeImage.rows;
     out.frame = frame;
     cv::compare(freeImage, 0, all_, cv::CMP_NE);
-    removeSpecksAndLabelObstacles(all_, out);
-    keepLargestComponent(all_, sourceName, out);
+    labelFreeSpace(all_, sourceName, out);
     out.noWall.release();  // free or not: every non-free cell is a wall
     return out;
 }

@@ -98,9 +98,10 @@ class FreeSpaceBinarizer {
     const Options& options() const { return options_; }
 
   private:
-    void removeSpecksAndLabelObstacles(cv::Mat& all, FreeSpace& out) const;
-    void keepLargestComponent(const cv::Mat& all, const std::string& sourceName,
-                              FreeSpace& out) const;
+    void labelFreeSpace(cv::Mat& all, const std::string& sourceName, FreeSpace& out) const;
+    void removeSpecksAndLabelObstacles(cv::Mat& all, const cv::Rect& freeBox, FreeSpace& out) const;
+    void keepLargestComponent(const cv::Mat& all, const cv::Rect& box,
+                              const std::string& sourceName, FreeSpace& out) const;
     void markNoWall(const cv::Mat& all, FreeSpace& out) const;
 
     Options options_;

@@ -122,3 +122,24 @@ TEST(PoseGraph, LoopEdgeRemovesTheDriftOfASquare) {
         EXPECT_LT((graph.pose(i) - truth[i]).norm(), 4 * 4 * bias) << "node " << i;
     EXPECT_LT(graph.totalChi2(), driftBefore * driftBefore / (0.001 * 0.001));
 }
+
+TEST(PoseGraph, LoopsWithoutTheRobustLossPullFromManySigmaOff) {
+    // Nine 1 m steps with stiff edges (1 cm) and four loop edges (3 cm) that all put the last
+    // node 0.5 m farther: 17 sigma each. Under the Cauchy loss they pull it by 7 cm only (their
+    // weight falls with the residual); without it the last node goes to the least-squares optimum,
+    // 0.5 * (4 / 0.03^2) / (4 / 0.03^2 + 1 / (9 * 0.01^2)) = 0.4 m farther.
+    const auto lastNodeAfterOptimising = [](bool robust) {
+        PoseGraph graph(3.0);
+        graph.addNode(CPose2D());
+        for (std::size_t i = 1; i <= 9; ++i) {
+            graph.addNode(CPose2D(double(i), 0, 0));
+            graph.addEdge(i - 1, i, CPose2D(1, 0, 0), diagonal(0.01, 0.001), EdgeKind::Odometry);
+        }
+        for (int k = 0; k < 4; ++k)
+            graph.addEdge(0, 9, CPose2D(9.5, 0, 0), diagonal(0.03, 0.01), EdgeKind::Loop, robust);
+        graph.optimize(50);
+        return graph.pose(9).x();
+    };
+    EXPECT_LT(lastNodeAfterOptimising(true) - 9.0, 0.1);
+    EXPECT_NEAR(lastNodeAfterOptimising(false), 9.4, 0.001);
+}

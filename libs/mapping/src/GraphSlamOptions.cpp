@@ -128,6 +128,10 @@ void GraphSlamOptions::declareLoopClosure(config::OptionsSchema& s) {
            "two loops agree when their cycle closes within this ...")
         .above(0);
     s.angle("loop_pair_angle_tolerance", loopPairAngleTolerance, "... and this").above(0);
+    s.integer("loop_contested_support", loopContestedSupport, "",
+              "gate-rejected matches accepted together when this many agree, from several "
+              "searches, against two visits of the place (0 = never)")
+        .within(0, 1000);
 }
 
 void GraphSlamOptions::declareBackEnd(config::OptionsSchema& s) {

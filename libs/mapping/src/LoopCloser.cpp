@@ -137,7 +137,7 @@ std::vector<std::optional<LoopCloser::Measurement>> LoopCloser::verifyAll(
 }
 
 std::vector<LoopCloser::Measurement> LoopCloser::consistentGated(
-    const std::vector<Measurement>& matches, const PoseGraph& graph, SlamStatistics& stats) const {
+    const std::vector<Measurement>& matches, const PoseGraph& graph, SlamStatistics& stats) {
     // Where each match puts the current robot in the world: two clearly different places mean
     // the scans fit look-alike places, and nothing here says which is right.
     for (std::size_t a = 0; a < matches.size(); ++a)
@@ -153,12 +153,75 @@ std::vector<LoopCloser::Measurement> LoopCloser::consistentGated(
         CMatrixDouble33 combined = m.covariance;
         const double d = m.pose.norm();
         combined(0, 0) += v.at(d), combined(1, 1) += v.at(d), combined(2, 2) += v.heading;
-        if (graph.chi2(m.older, m.current, m.pose, combined) <= options_.loopChi2)
+        if (graph.chi2(m.older, m.current, m.pose, combined) <= options_.loopChi2) {
             out.push_back(m);
-        else
+        } else {
             ++stats.loopsGateRejected;
+            if (options_.loopContestedSupport > 0)
+                contested_.push_back(m);
+        }
     }
     return out;
+}
+
+void LoopCloser::acceptContested(const std::vector<Keyframe>& keyframes, const PoseGraph& graph,
+                                 std::vector<Measurement>& accepted, SlamStatistics& stats) {
+    const std::size_t need = options_.loopContestedSupport;
+    if (need == 0 || contested_.size() < need)
+        return;
+    std::vector<std::size_t> best;
+    for (std::size_t a = 0; a < contested_.size(); ++a) {
+        std::vector<std::size_t> group{a};
+        for (std::size_t b = 0; b < contested_.size(); ++b)
+            if (b != a && std::all_of(group.begin(), group.end(), [&](std::size_t g) {
+                    return pairConsistent(contested_[g], contested_[b], graph);
+                }))
+                group.push_back(b);
+        if (group.size() > best.size())
+            best = std::move(group);
+    }
+    if (best.size() < need)
+        return;
+    // Several searches, and older keyframes from two or more visits of the place (runs of the
+    // path more than loopMinTravel apart): one pass through a look-alike place (a parallel
+    // corridor) gives as many agreeing matches as the robot takes keyframes there.
+    std::vector<double> olderTravel, currentTravel;
+    for (std::size_t i : best) {
+        olderTravel.push_back(keyframes[contested_[i].older].travelled);
+        currentTravel.push_back(keyframes[contested_[i].current].travelled);
+    }
+    std::sort(olderTravel.begin(), olderTravel.end());
+    std::size_t visits = 1;
+    for (std::size_t k = 1; k < olderTravel.size(); ++k)
+        visits += olderTravel[k] - olderTravel[k - 1] > options_.loopMinTravel;
+    const auto [first, last] = std::minmax_element(currentTravel.begin(), currentTravel.end());
+    if (*last <= *first || visits < 2)
+        return;
+    // A loop the gate let through meanwhile, into the same stretch of the old path, that
+    // disagrees with the group: the graph was right there, and the group fits a look-alike
+    // place (offices along a corridor); it is dropped.
+    const auto contradicts = [&](const Measurement& loop) {
+        return std::any_of(best.begin(), best.end(), [&](std::size_t i) {
+            const Measurement& m = contested_[i];
+            return std::abs(keyframes[loop.older].travelled - keyframes[m.older].travelled) <=
+                       options_.loopMinTravel &&
+                   !pairConsistent(loop, m, graph);
+        });
+    };
+    if (std::any_of(recent_.begin(), recent_.end(), contradicts) ||
+        std::any_of(accepted.begin(), accepted.end(), contradicts)) {
+        std::sort(best.rbegin(), best.rend());
+        for (std::size_t i : best)
+            contested_.erase(contested_.begin() + long(i));
+        return;
+    }
+    for (std::size_t i : best) {
+        accepted.push_back(contested_[i]);
+        accepted.back().contested = true;
+    }
+    stats.loopsContested += best.size();
+    stats.loopsGateRejected -= best.size();  // counted when the gate rejected them
+    contested_.clear();
 }
 
 bool LoopCloser::agreesWithGraph(const Measurement& m, const PoseGraph& graph) const {
@@ -199,7 +262,7 @@ void LoopCloser::accept(const Measurement& m, PoseGraph& graph, LoopClosureOutco
     const auto [d, phi] = disagreement(m.pose, graph.pose(m.current) - graph.pose(m.older));
     outcome.maxDistanceError = std::max(outcome.maxDistanceError, d);
     outcome.maxAngleError = std::max(outcome.maxAngleError, phi);
-    graph.addEdge(m.older, m.current, m.pose, m.covariance, EdgeKind::Loop);
+    graph.addEdge(m.older, m.current, m.pose, m.covariance, EdgeKind::Loop, !m.contested);
     ++outcome.accepted;
     ++stats.loopsAccepted;
     recent_.push_back(m);
@@ -217,6 +280,8 @@ LoopClosureOutcome LoopCloser::closeLoops(std::size_t current, std::size_t first
         ++stats.loopsUnconfirmed;
         pending_.pop_front();
     }
+    while (!contested_.empty() && contested_.front().current + options_.loopConfirmWindow < current)
+        contested_.pop_front();
     std::vector<Measurement> accepted;
     const std::vector<std::size_t> gated = gatedCandidates(current, firstActive, keyframes, graph);
     std::vector<Measurement> matches;
@@ -238,6 +303,7 @@ LoopClosureOutcome LoopCloser::closeLoops(std::size_t current, std::size_t first
         else
             acceptWithSupport(m, graph, accepted);
     }
+    acceptContested(keyframes, graph, accepted, stats);
     if (options_.globalSearchEvery > 0 && current % options_.globalSearchEvery == 0) {
         ++stats.globalSearches;
         const std::vector<std::size_t> global =

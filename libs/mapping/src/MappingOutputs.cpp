@@ -54,11 +54,11 @@ std::string formatSummary(const MappingResult& r) {
             percent(st->registeredByGraphMatcher, n), st->registrationFailed,
             percent(st->registrationFailed, n), st->odometryJumps);
         s += line(
-            "loop closures: %zu candidates verified, %zu accepted (%zu of them guess-free), "
-            "%zu not matched, %zu rejected by the consistency checks, %zu withdrawn after "
-            "optimisation",
-            st->loopCandidates, st->loopsAccepted, st->globalConfirmed, st->loopsUnmatched,
-            st->loopsGateRejected, st->loopsWithdrawn);
+            "loop closures: %zu candidates verified, %zu accepted (%zu of them guess-free, %zu "
+            "beyond the gate on agreeing evidence), %zu not matched, %zu rejected by the "
+            "consistency checks, %zu withdrawn after optimisation",
+            st->loopCandidates, st->loopsAccepted, st->globalConfirmed, st->loopsContested,
+            st->loopsUnmatched, st->loopsGateRejected, st->loopsWithdrawn);
         s += line(
             "CPU time: front end %.2f s, loop search %.2f s (%.2f s of it on worker threads), "
             "optimisation %.2f s (%zu runs)",
@@ -98,10 +98,13 @@ nlohmann::json summaryJson(const MappingResult& r) {
                              {"failed", st->registrationFailed},
                              {"odometry_jumps", st->odometryJumps},
                              {"registered_share", st->registeredShare()}};
-        j["loops"] = {
-            {"candidates", st->loopCandidates},           {"accepted", st->loopsAccepted},
-            {"guess_free_accepted", st->globalConfirmed}, {"unmatched", st->loopsUnmatched},
-            {"rejected", st->loopsGateRejected},          {"withdrawn", st->loopsWithdrawn}};
+        j["loops"] = {{"candidates", st->loopCandidates},
+                      {"accepted", st->loopsAccepted},
+                      {"guess_free_accepted", st->globalConfirmed},
+                      {"contested_accepted", st->loopsContested},
+                      {"unmatched", st->loopsUnmatched},
+                      {"rejected", st->loopsGateRejected},
+                      {"withdrawn", st->loopsWithdrawn}};
         j["cpu_by_stage_s"] = {{"front_end", st->frontEndSeconds},
                                {"loop_search", st->loopSeconds},
                                {"loop_search_on_workers", st->offloadedSeconds},

@@ -89,16 +89,17 @@ void PoseGraph::addResidual(std::size_t index) {
     const Eigen::Matrix3d information = e.covariance.asEigen().inverse();
     const Eigen::Matrix3d sqrtInformation = information.llt().matrixU();
     costs_[index] = makeRelativePoseError(e.measurement, sqrtInformation);
-    losses_[index] = e.kind == EdgeKind::Loop && loopLossScale_ > 0
-                         ? new ceres::CauchyLoss(loopLossScale_)
-                         : nullptr;
+    losses_[index] =
+        e.robust && loopLossScale_ > 0 ? new ceres::CauchyLoss(loopLossScale_) : nullptr;
     residuals_[index] = problem_->AddResidualBlock(costs_[index], losses_[index],
                                                    poses_[e.from].data(), poses_[e.to].data());
 }
 
 std::size_t PoseGraph::addEdge(std::size_t from, std::size_t to, const CPose2D& measurement,
-                               const mrpt::math::CMatrixDouble33& covariance, EdgeKind kind) {
-    edges_.push_back({from, to, measurement, covariance, kind, true});
+                               const mrpt::math::CMatrixDouble33& covariance, EdgeKind kind,
+                               bool robust) {
+    edges_.push_back(
+        {from, to, measurement, covariance, kind, true, robust && kind == EdgeKind::Loop});
     residuals_.push_back(nullptr);
     costs_.push_back(nullptr);
     losses_.push_back(nullptr);

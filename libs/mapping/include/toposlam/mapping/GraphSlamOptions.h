@@ -99,6 +99,13 @@ struct GraphSlamOptions : public config::Options {
     std::size_t loopConfirmWindow = 20;
     double loopPairTolerance = 0.3;          ///< m, disagreement of two loops around their cycle
     double loopPairAngleTolerance = 0.0873;  ///< rad (5 deg)
+    /// Gated matches the gate rejected are kept for loopConfirmWindow keyframes; when this
+    /// many of them agree pairwise, from at least two searches and against older keyframes of
+    /// at least two visits of the place (runs of the path more than loopMinTravel apart),
+    /// they are accepted together: the front
+    /// end went wrong by more than the drift model allows (ICP sliding along a corridor, a
+    /// laser dropout while the wheels slip), and only loops can repair it. 0 = never.
+    std::size_t loopContestedSupport = 4;
 
     // --- Back end ---
     /// Loop edges carry a Cauchy loss of this scale (in standard deviations), so one wrong

@@ -19,6 +19,16 @@
 //    their common cycle (pairwise consistency); guess-free matches always need support.
 //    After optimisation the builder withdraws loops whose residual still exceeds a far looser
 //    bound, loopWithdrawChi2 (withdrawWorstOutlier).
+//  - Contested matches: a front-end failure (ICP sliding along a corridor) can put the robot
+//    farther off than the drift model's gate allows, and then every right loop is rejected.
+//    Gate-rejected matches are kept for loopConfirmWindow keyframes; loopContestedSupport of
+//    them that agree pairwise, from two or more searches and against older keyframes of two
+//    or more visits of the place, are accepted together, without the robust loss (through
+//    it, a few loops many sigma off would hardly pull). Matches into a look-alike place (a
+//    parallel corridor, the office next door) agree with each other too: one pass through it
+//    gives as many as the robot takes keyframes there, hence the two visits; and they are
+//    dropped when a loop that passed the gate meanwhile, into the same stretch of the old
+//    path, disagrees with them (the graph was right there).
 //  Candidates are verified on loopThreads threads, one graph matcher each; the matcher is a
 //  pure function of its inputs, so the loops found do not depend on the number of threads.
 #include <toposlam/mapping/GraphSlamOptions.h>
@@ -62,6 +72,8 @@ class LoopCloser {
         std::size_t older = 0, current = 0;
         mrpt::poses::CPose2D pose;  ///< current robot in the older robot frame
         mrpt::math::CMatrixDouble33 covariance;
+        /// Accepted beyond the gate on agreeing evidence: added without the robust loss.
+        bool contested = false;
     };
     std::vector<std::size_t> gatedCandidates(std::size_t current, std::size_t firstActive,
                                              const std::vector<Keyframe>& keyframes,
@@ -78,9 +90,15 @@ class LoopCloser {
                                                       std::size_t current,
                                                       const std::vector<Keyframe>& keyframes,
                                                       const PoseGraph& graph, bool guided);
-    /// Gated matches that agree with the graph (none when they contradict each other).
+    /// Gated matches that agree with the graph (none when they contradict each other); the
+    /// ones the gate rejects go to contested_.
     std::vector<Measurement> consistentGated(const std::vector<Measurement>& matches,
-                                             const PoseGraph& graph, SlamStatistics& stats) const;
+                                             const PoseGraph& graph, SlamStatistics& stats);
+    /// Accepts (into `accepted`) the largest set of contested matches that agree pairwise
+    /// when it has loopContestedSupport members, from several searches, against older
+    /// keyframes of two or more visits, and no gated loop contradicts it.
+    void acceptContested(const std::vector<Keyframe>& keyframes, const PoseGraph& graph,
+                         std::vector<Measurement>& accepted, SlamStatistics& stats);
     /// True when the graph already agrees with the loop within the loop's own covariance.
     bool agreesWithGraph(const Measurement& m, const PoseGraph& graph) const;
     /// Accepts `m` (into `accepted`) when another loop from another keyframe supports it
@@ -97,8 +115,9 @@ class LoopCloser {
     WorkerPool pool_;
     std::vector<matching::GraphScanMatcher> guided_, free_;  // one of each per pool thread
     const std::vector<PathVariance>* variances_ = nullptr;   // of the current query
-    std::deque<Measurement> pending_;  // guess-free matches awaiting confirmation
-    std::deque<Measurement> recent_;   // accepted loops, for confirming guess-free ones
+    std::deque<Measurement> pending_;    // guess-free matches awaiting confirmation
+    std::deque<Measurement> recent_;     // accepted loops, for confirming guess-free ones
+    std::deque<Measurement> contested_;  // gated matches the gate rejected, recent ones
 };
 
 }  // namespace toposlam::mapping

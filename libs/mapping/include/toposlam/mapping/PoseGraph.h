@@ -4,7 +4,9 @@
 // (sparse Cholesky, Levenberg-Marquardt) on one persistent problem that grows with the graph,
 // so an optimisation costs the solve and nothing else; loop edges carry a Cauchy loss, so a
 // wrong loop that slipped through pulls with bounded force until it is withdrawn (MRPT's
-// optimize_graph_spa_levmarq has no robust loss, which is why Ceres). It saves as MRPT's
+// optimize_graph_spa_levmarq has no robust loss, which is why Ceres). Loops accepted on the
+// agreement of many matches are added without it (a few of them, many sigma off, would hardly
+// pull through the loss). It saves as MRPT's
 // .graph text format (CNetworkOfPoses2DInf), which MRPT's graph-slam app reads. Node 0 is
 // fixed. Edges remember their kind and can be withdrawn again (a loop that the optimised graph
 // shows to be wrong).
@@ -40,7 +42,8 @@ struct PoseGraphEdge {
     mrpt::poses::CPose2D measurement;        ///< pose of `to` in the frame of `from`
     mrpt::math::CMatrixDouble33 covariance;  ///< of (x, y, phi), m^2 and rad^2
     EdgeKind kind = EdgeKind::Registration;
-    bool active = true;  ///< false once withdrawn
+    bool active = true;   ///< false once withdrawn
+    bool robust = false;  ///< under the Cauchy loss (loops, unless added otherwise)
 };
 
 struct OptimizationResult {
@@ -66,9 +69,11 @@ class PoseGraph {
         return {p[0], p[1], p[2]};
     }
 
-    /// Adds an edge; returns its index in edges().
+    /// Adds an edge; returns its index in edges(). Loop edges get the Cauchy loss unless
+    /// `robust` is false (a loop beyond doubt: the agreement of many matches).
     std::size_t addEdge(std::size_t from, std::size_t to, const mrpt::poses::CPose2D& measurement,
-                        const mrpt::math::CMatrixDouble33& covariance, EdgeKind kind);
+                        const mrpt::math::CMatrixDouble33& covariance, EdgeKind kind,
+                        bool robust = true);
     /// Withdraws edge `index` (it stays listed, inactive).
     void withdrawEdge(std::size_t index);
     const std::vector<PoseGraphEdge>& edges() const { return edges_; }

@@ -17,8 +17,9 @@ struct SlamStatistics {
     // Loop closure
     std::size_t loopCandidates = 0;     ///< candidate pairs verified by the graph matcher
     std::size_t loopsUnmatched = 0;     ///< the matcher found no reliable match
-    std::size_t loopsGateRejected = 0;  ///< reliable match, but disagrees with the graph
+    std::size_t loopsGateRejected = 0;  ///< reliable match, but disagrees with the graph (for good)
     std::size_t loopsUnconfirmed = 0;   ///< would correct the graph, but no support came
+    std::size_t loopsContested = 0;     ///< of the gate-rejected, accepted together later
     std::size_t loopsAccepted = 0;      ///< added to the graph
     std::size_t loopsWithdrawn = 0;     ///< accepted, then removed as outliers after optimising
     std::size_t globalSearches = 0;     ///< guess-free searches run

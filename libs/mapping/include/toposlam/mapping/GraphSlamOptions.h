@@ -102,9 +102,9 @@ struct GraphSlamOptions : public config::Options {
     /// Gated matches the gate rejected are kept for loopConfirmWindow keyframes; when this
     /// many of them agree pairwise, from at least two searches and against older keyframes of
     /// at least two visits of the place (runs of the path more than loopMinTravel apart),
-    /// they are accepted together: the front
-    /// end went wrong by more than the drift model allows (ICP sliding along a corridor, a
-    /// laser dropout while the wheels slip), and only loops can repair it. 0 = never.
+    /// they are accepted together: the front end went wrong by more than the drift model
+    /// allows (ICP sliding along a corridor, a laser dropout while the wheels slip), and only
+    /// loops can repair it. 0 = never. See LoopCloser.h for the guard against look-alikes.
     std::size_t loopContestedSupport = 4;
 
     // --- Back end ---

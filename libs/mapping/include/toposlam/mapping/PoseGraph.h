@@ -6,10 +6,9 @@
 // wrong loop that slipped through pulls with bounded force until it is withdrawn (MRPT's
 // optimize_graph_spa_levmarq has no robust loss, which is why Ceres). Loops accepted on the
 // agreement of many matches are added without it (a few of them, many sigma off, would hardly
-// pull through the loss). It saves as MRPT's
-// .graph text format (CNetworkOfPoses2DInf), which MRPT's graph-slam app reads. Node 0 is
-// fixed. Edges remember their kind and can be withdrawn again (a loop that the optimised graph
-// shows to be wrong).
+// pull through the loss). It saves as MRPT's .graph text format (CNetworkOfPoses2DInf), which
+// MRPT's graph-slam app reads. Node 0 is fixed. Edges remember their kind and can be withdrawn
+// again (a loop that the optimised graph shows to be wrong).
 #include <mrpt/graphs/CNetworkOfPoses.h>
 #include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/poses/CPose2D.h>

@@ -121,6 +121,12 @@ int run(int argc, char** argv) {
         "trajectory pose (nearest one wins). Default 1e-5 s",
         evaluation::StampedPoseLookup::kDefaultTolerance,
         cli::NumberRange<double>::nonNegative(3600), "seconds", cmd);
+    cli::NumberArg<double> frameOffset(
+        "", "frame-offset",
+        "Score the frame this many metres ahead of each estimated pose (along its heading; "
+        "negative: behind), for relations made in another frame on the robot than the "
+        "trajectories give, e.g. a laser mounted ahead of the robot's centre. Default 0",
+        0.0, cli::NumberRange<double>::closed(-10, 10), "metres", cmd);
     TCLAP::ValueArg<std::string> writeRelations(
         "", "write-relations",
         "Also write the relations used (with --ground-truth: the derived ones) in .relations "
@@ -156,6 +162,7 @@ int run(int argc, char** argv) {
     request.groundTruthFile = groundTruthFile.getValue();
     request.groundTruthSeparation = separation.getValue();
     request.stampTolerance = tolerance.getValue();
+    request.frameOffset = frameOffset.getValue();
     request.rawlog = rawlog.getValue();
     request.scanStamps = scanStamps.getValue();
     request.keepEstimates = plot.isSet();

@@ -49,9 +49,10 @@ struct Fixture {
 TEST(EvalSlamApp, HelpExplainsEveryOption) {
     const auto r = runApp("toposlam-eval-slam", "--help");
     EXPECT_EQ(r.exitCode, 0) << r.output;
-    for (const char* option : {"--relations", "--ground-truth", "--trajectory", "--icp-slam-path",
-                               "--rawlog", "--scan-stamps", "--json", "--name", "--gt-separation",
-                               "--stamp-tolerance", "--write-relations", "--plot", "Kuemmerle"}) {
+    for (const char* option :
+         {"--relations", "--ground-truth", "--trajectory", "--icp-slam-path", "--rawlog",
+          "--scan-stamps", "--json", "--name", "--gt-separation", "--stamp-tolerance",
+          "--write-relations", "--plot", "--frame-offset", "Kuemmerle"}) {
         EXPECT_TRUE(contains(r.output, option)) << option;
     }
 }
@@ -86,6 +87,24 @@ TEST(EvalSlamApp, SeveralMethodsSideBySide) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_TRUE(contains(r.output, "| odometry | 3 / 4 | 2.0000 ± 1.0000 |")) << r.output;
     EXPECT_TRUE(contains(r.output, "| perfect | 3 / 4 | 0.0000 ± 0.0000 |")) << r.output;
+}
+
+TEST(EvalSlamApp, FrameOffsetScoresTheFrameAheadOfThePoses) {
+    // The robot turns on the spot by 90 deg. Relations made for a frame 0.1 m ahead of the
+    // poses (a laser mounted ahead of the centre) see that frame swing by 0.1 * sqrt(2) m.
+    TempDir dir;
+    const std::string turn = write(dir, "turn.txt", "1 0 0 0\n2 0 0 1.5707963267948966\n");
+    const std::string relations =
+        write(dir, "ahead.relations", "1 2 -0.1 0.1 0 0 0 1.5707963267948966\n");
+    const auto plain = runApp("toposlam-eval-slam", turn + " --name turn --relations " + relations);
+    ASSERT_EQ(plain.exitCode, 0) << plain.output;
+    EXPECT_TRUE(contains(plain.output, "| turn | 1 / 1 | 0.1414 ± 0.0000 |")) << plain.output;
+    const auto ahead = runApp("toposlam-eval-slam", turn +
+                                                        " --name turn --frame-offset 0.1 "
+                                                        "--relations " +
+                                                        relations);
+    ASSERT_EQ(ahead.exitCode, 0) << ahead.output;
+    EXPECT_TRUE(contains(ahead.output, "| turn | 1 / 1 | 0.0000 ± 0.0000 |")) << ahead.output;
 }
 
 TEST(EvalSlamApp, GroundTruthModeAddsAteAndWritesTheRelations) {

@@ -40,6 +40,8 @@ void SlamEvaluationRequest::validate() const {
         throw std::invalid_argument("--stamp-tolerance must be >= 0");
     if (!(groundTruthSeparation >= 0) || !std::isfinite(groundTruthSeparation))
         throw std::invalid_argument("--gt-separation must be >= 0");
+    if (!std::isfinite(frameOffset))
+        throw std::invalid_argument("--frame-offset must be finite");
 }
 
 namespace {
@@ -135,6 +137,10 @@ SlamEvaluationRun runSlamEvaluation(const SlamEvaluationRequest& request,
             readTrajectory(t, request, stamps ? &*stamps : nullptr, logsProgress, source);
         if (estimate.empty())
             throw io::InputError(t.file, "no pose in the trajectory");
+        for (io::TimedPose2D& p : estimate) {  // the frame the relations were made in
+            p.pose.x += request.frameOffset * std::cos(p.pose.phi);
+            p.pose.y += request.frameOffset * std::sin(p.pose.phi);
+        }
         try {
             ev.methods.push_back(evaluateMethod(t.name, source, estimate, run.relations,
                                                 groundTruth, ev.stampTolerance,

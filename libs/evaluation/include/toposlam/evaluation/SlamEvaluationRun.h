@@ -42,6 +42,10 @@ struct SlamEvaluationRequest {
     std::string rawlog;          ///< the rawlog icp-slam ran on (needed by IcpSlamPath)
     std::string scanStamps;      ///< optional: the log whose scan stamps replace the rawlog's
     bool keepEstimates = false;  ///< keep every trajectory in the run (for a plot)
+    /// Scores the frame this far ahead of each estimated pose, along its heading (m; 0 = the
+    /// poses as they are): for relations made in another frame on the robot than the one the
+    /// trajectories give (a laser mounted off the robot's centre).
+    double frameOffset = 0;
 
     /// Throws std::invalid_argument naming the option (e.g. "--icp-slam-path needs --rawlog")
     /// when the request cannot be run as given.

@@ -46,6 +46,7 @@ const NumericOption kNumericOptions[] = {
     {"toposlam-convert", "--carmen-max-range", 0, 1000, true, false},
     {"toposlam-convert", "--max-scans", 0, 1e9, false, true},
     {"toposlam-convert", "--resolution", 0, 100, true, false},
+    {"toposlam-eval-slam", "--frame-offset", -10, 10, false, false},
     {"toposlam-eval-slam", "--gt-separation", 0, kBig, false, false},
     {"toposlam-eval-slam", "--stamp-tolerance", 0, 3600, false, false},
     {"toposlam-plan", "--robot-radius", 0, 10, true, false},

@@ -99,12 +99,13 @@ TEST(EvalSlamApp, FrameOffsetScoresTheFrameAheadOfThePoses) {
     const auto plain = runApp("toposlam-eval-slam", turn + " --name turn --relations " + relations);
     ASSERT_EQ(plain.exitCode, 0) << plain.output;
     EXPECT_TRUE(contains(plain.output, "| turn | 1 / 1 | 0.1414 ± 0.0000 |")) << plain.output;
-    const auto ahead = runApp("toposlam-eval-slam", turn +
-                                                        " --name turn --frame-offset 0.1 "
-                                                        "--relations " +
-                                                        relations);
+    const std::string json = dir.file("ahead.json");
+    const auto ahead =
+        runApp("toposlam-eval-slam", turn + " --name turn --frame-offset 0.1 --json " + json +
+                                         " --relations " + relations);
     ASSERT_EQ(ahead.exitCode, 0) << ahead.output;
     EXPECT_TRUE(contains(ahead.output, "| turn | 1 / 1 | 0.0000 ± 0.0000 |")) << ahead.output;
+    EXPECT_EQ(toposlam::io::loadJsonFile(json).at("frame_offset_m"), 0.1);
 }
 
 TEST(EvalSlamApp, GroundTruthModeAddsAteAndWritesTheRelations) {

@@ -204,6 +204,7 @@ std::string formatEvaluationJson(const SlamEvaluation& ev) {
           "inv(x_t1) (+) x_t2; std is the sample std (n-1)"},
          {"reference", referenceJson(ev)},
          {"stamp_tolerance_s", jsonNumber(ev.stampTolerance)},
+         {"frame_offset_m", jsonNumber(ev.frameOffset)},
          {"methods", methods}});
 }
 

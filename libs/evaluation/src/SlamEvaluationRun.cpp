@@ -74,6 +74,7 @@ class LogsProgress {
 void readReference(const SlamEvaluationRequest& request, SlamEvaluationRun& run) {
     SlamEvaluation& ev = run.evaluation;
     ev.stampTolerance = request.stampTolerance;
+    ev.frameOffset = request.frameOffset;
     if (!request.relationsFile.empty()) {
         ev.referenceFile = request.relationsFile;
         run.relations = loadRelations(ev.referenceFile);

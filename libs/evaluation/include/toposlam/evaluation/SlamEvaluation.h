@@ -45,6 +45,7 @@ struct SlamEvaluation {
     /// Ground-truth reference: the separation of each relation (relationsFromGroundTruth).
     std::vector<double> relationSeparations;
     double stampTolerance = StampedPoseLookup::kDefaultTolerance;
+    double frameOffset = 0;  ///< m ahead of each estimated pose: the frame scored
     std::vector<MethodEvaluation> methods;
 };
 

@@ -101,6 +101,37 @@ std::vector<CPose2D> scanTruthOfKeyframes(const mapping::GraphSlam& slam,
     return out;
 }
 
+/// Offices 3 m wide along a corridor, all alike, so close that the office next door lies
+/// inside the loop search's reach (loop_overlap_distance).
+simulation::PolygonWorld narrowIdenticalRooms(int rooms) {
+    simulation::PolygonWorld w;
+    const double width = 3.0, length = rooms * width;
+    w.addSegment({0, 0}, {length, 0});
+    w.addSegment({0, 0}, {0, 2});
+    w.addSegment({length, 0}, {length, 2});
+    for (int r = 0; r < rooms; ++r) {
+        const double x0 = r * width;
+        w.addSegment({x0, 2}, {x0 + 1.0, 2});  // wall with a door 1.0 .. 2.0
+        w.addSegment({x0 + 2.0, 2}, {x0 + width, 2});
+        w.addSegment({x0, 2}, {x0, 6});
+        w.addSegment({x0 + width, 2}, {x0 + width, 6});
+        w.addSegment({x0, 6}, {x0 + width, 6});
+        w.addPolygon({{x0 + 2.0, 4.5}, {x0 + 2.8, 4.5}, {x0 + 2.8, 5.6}, {x0 + 2.0, 5.6}});  // desk
+    }
+    return w;
+}
+
+/// Loop edges of `slam` whose measurement is more than 0.3 m from the truth.
+std::size_t wrongLoops(const mapping::GraphSlam& slam, const std::vector<CPose2D>& truth) {
+    const auto kfTruth = scanTruthOfKeyframes(slam, truth);
+    std::size_t wrong = 0;
+    for (const auto& e : slam.graph().edges()) {
+        if (e.active && e.kind == mapping::EdgeKind::Loop)
+            wrong += (e.measurement - (kfTruth[e.to] - kfTruth[e.from])).norm() > 0.3;
+    }
+    return wrong;
+}
+
 }  // namespace
 
 TEST(GraphSlam, ClosesALongLoopAfterOdometryDrift) {
@@ -294,4 +325,45 @@ TEST(GraphSlam, BadLogsGiveClearErrors) {
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find("blind.rawlog"), std::string::npos) << r.output;
     EXPECT_FALSE(std::ifstream(dir.file("out/trajectory.txt")).good());
+}
+
+TEST(GraphSlam, NoLoopIntoTheOfficeNextToOneVisitedThreeTimes) {
+    // The first office is entered three times, then the robot goes on into the next ones,
+    // each 3 m along and alike. In the second, a match into the first from each of its visits
+    // agrees with the others beyond the gate: from several visits, as after a front-end failure
+    // (GraphSlam.AcceptsAgreeingLoopsBeyondTheGate). What tells them apart is the loop that
+    // put the robot right in the corridor outside the first office a few metres earlier: the
+    // group contradicts it by 3 m, more than that path can drift. Once (before that check)
+    // such a group went in: 8 wrong loops, ATE 0.91 m.
+    for (const bool wander : {false, true}) {
+        SCOPED_TRACE(wander ? "down the corridor and back first" : "straight on");
+        std::vector<mrpt::math::TPoint2D> path{{0.8, 1.0}};
+        const auto roundRoom = [&](double x0) {
+            for (const mrpt::math::TPoint2D& p : std::vector<mrpt::math::TPoint2D>{
+                     {1.5, 1.0}, {1.5, 3.5}, {0.7, 3.5}, {0.7, 5.0}, {1.5, 5.0}, {1.5, 1.0}})
+                path.push_back({x0 + p.x, p.y});
+        };
+        const int rooms = 4;
+        for (int visit = 0; visit < 3; ++visit) {
+            if (visit > 0)
+                path.push_back({0.8, 1.0});
+            roundRoom(0);
+        }
+        if (wander)
+            path.push_back({rooms * 3.0 - 0.8, 1.0});
+        for (int r = 1; r < rooms; ++r)
+            roundRoom(r * 3.0);
+        path.push_back({rooms * 3.0 - 0.8, 1.0});
+        path.push_back({0.8, 1.0});
+        test::OdometryErrors errors;
+        errors.distanceScale = 1.04;
+        errors.turnScale = 1.03;
+        errors.headingDriftPerMetre = 0.003;
+        const auto truth = test::drivePath(path);
+        const auto drive = test::simulateDrive(narrowIdenticalRooms(rooms), truth, errors, 5);
+        const SlamRun run = runSlam(drive);
+        EXPECT_EQ(wrongLoops(*run.slam, truth), 0u);
+        EXPECT_EQ(run.slam->statistics().loopsContested, 0u);
+        EXPECT_LT(test::absoluteTrajectoryError(truth, run.poses), 0.1);
+    }
 }

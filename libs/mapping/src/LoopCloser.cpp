@@ -208,8 +208,48 @@ void LoopCloser::acceptContested(const std::vector<Keyframe>& keyframes, const P
                    !pairConsistent(loop, m, graph);
         });
     };
+    // So does an earlier loop through the gate into the same place that the group
+    // contradicts by more than the path since could have drifted: next to a room visited
+    // twice, a look-alike room gives agreeing matches from two visits, and the last loop that
+    // placed the robot right may be several metres back. The same place: the same stretch of
+    // the old path, or stretches that an accepted loop joins (not two passes of the old path
+    // that only the graph's estimate puts together: after a front-end failure those are the
+    // ones that disagree).
+    const double stretch = options_.loopMinTravel;
+    std::vector<std::vector<double>> joined(best.size());  // per member: travel joined to it
+    for (const PoseGraphEdge& e : graph.edges()) {
+        if (!e.active || e.kind != EdgeKind::Loop)
+            continue;
+        const double from = keyframes[e.from].travelled, to = keyframes[e.to].travelled;
+        for (std::size_t g = 0; g < best.size(); ++g) {
+            const double t = keyframes[contested_[best[g]].older].travelled;
+            if (std::abs(from - t) <= stretch)
+                joined[g].push_back(to);
+            if (std::abs(to - t) <= stretch)
+                joined[g].push_back(from);
+        }
+    }
+    const auto contradictsEarlier = [&](const Measurement& loop) {
+        const double t = keyframes[loop.older].travelled;
+        for (std::size_t g = 0; g < best.size(); ++g) {
+            const Measurement& m = contested_[best[g]];
+            const bool samePlace = std::abs(t - keyframes[m.older].travelled) <= stretch ||
+                                   std::any_of(joined[g].begin(), joined[g].end(), [&](double u) {
+                                       return std::abs(t - u) <= stretch;
+                                   });
+            if (!samePlace)
+                continue;
+            const auto [d, phi] = cycleDisagreement(loop, m, graph);
+            const auto [dTolerance, phiTolerance] =
+                driftTolerance(keyframes[loop.current], keyframes[m.current]);
+            if (d > dTolerance || phi > phiTolerance)
+                return true;
+        }
+        return false;
+    };
     if (std::any_of(recent_.begin(), recent_.end(), contradicts) ||
-        std::any_of(accepted.begin(), accepted.end(), contradicts)) {
+        std::any_of(accepted.begin(), accepted.end(), contradicts) ||
+        std::any_of(throughGate_.begin(), throughGate_.end(), contradictsEarlier)) {
         std::sort(best.rbegin(), best.rend());
         for (std::size_t i : best)
             contested_.erase(contested_.begin() + long(i));
@@ -246,15 +286,32 @@ void LoopCloser::acceptWithSupport(const Measurement& m, const PoseGraph& graph,
     }
 }
 
-bool LoopCloser::pairConsistent(const Measurement& a, const Measurement& b,
-                                const PoseGraph& graph) const {
+std::pair<double, double> LoopCloser::cycleDisagreement(const Measurement& a, const Measurement& b,
+                                                        const PoseGraph& graph) const {
     // b's current keyframe in a's older frame, two ways round the cycle:
     // a's loop then the graph from a.current to b.current, or the graph from a.older to
     // b.older then b's loop.
     const CPose2D viaA = a.pose + (graph.pose(b.current) - graph.pose(a.current));
     const CPose2D viaB = (graph.pose(b.older) - graph.pose(a.older)) + b.pose;
-    const auto [d, phi] = disagreement(viaA, viaB);
+    return disagreement(viaA, viaB);
+}
+
+bool LoopCloser::pairConsistent(const Measurement& a, const Measurement& b,
+                                const PoseGraph& graph) const {
+    const auto [d, phi] = cycleDisagreement(a, b, graph);
     return d <= options_.loopPairTolerance && phi <= options_.loopPairAngleTolerance;
+}
+
+std::pair<double, double> LoopCloser::driftTolerance(const Keyframe& a, const Keyframe& b) const {
+    // The pair tolerances plus loopGateSigmas of the drift model over the path between them.
+    const double length = std::abs(b.travelled - a.travelled);
+    const double turn = std::abs(b.turned - a.turned);
+    const double k = options_.loopGateSigmas;
+    return {
+        options_.loopPairTolerance + k * options_.driftSigmaXY * std::sqrt(length),
+        options_.loopPairAngleTolerance +
+            k * std::sqrt(options_.driftSigmaPhi * options_.driftSigmaPhi * length +
+                          options_.driftSigmaPhiPerTurn * options_.driftSigmaPhiPerTurn * turn)};
 }
 
 void LoopCloser::accept(const Measurement& m, PoseGraph& graph, LoopClosureOutcome& outcome,
@@ -266,6 +323,8 @@ void LoopCloser::accept(const Measurement& m, PoseGraph& graph, LoopClosureOutco
     ++outcome.accepted;
     ++stats.loopsAccepted;
     recent_.push_back(m);
+    if (!m.contested)
+        throughGate_.push_back(m);
 }
 
 LoopClosureOutcome LoopCloser::closeLoops(std::size_t current, std::size_t firstActive,
@@ -282,6 +341,14 @@ LoopClosureOutcome LoopCloser::closeLoops(std::size_t current, std::size_t first
     }
     while (!contested_.empty() && contested_.front().current + options_.loopConfirmWindow < current)
         contested_.pop_front();
+    // Evidence for contested groups (acceptContested): the loop that last placed the robot
+    // right lies where it left the mapped place, and a look-alike is met within about two
+    // loopMinTravel of that; much farther back, a front-end failure in between (what the
+    // contested rule recovers from) becomes the likelier story.
+    while (!throughGate_.empty() &&
+           keyframes[throughGate_.front().current].travelled + 2 * options_.loopMinTravel <
+               keyframes[current].travelled)
+        throughGate_.pop_front();
     std::vector<Measurement> accepted;
     const std::vector<std::size_t> gated = gatedCandidates(current, firstActive, keyframes, graph);
     std::vector<Measurement> matches;

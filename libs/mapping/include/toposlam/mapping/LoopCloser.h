@@ -28,7 +28,11 @@
 //    parallel corridor, the office next door) agree with each other too: one pass through it
 //    gives as many as the robot takes keyframes there, hence the two visits; and they are
 //    dropped when a loop that passed the gate meanwhile, into the same stretch of the old
-//    path, disagrees with them (the graph was right there).
+//    path, disagrees with them (the graph was right there), or when one that passed it
+//    within the last 2 loopMinTravel of the path, into the same place (the same stretch, or
+//    one an accepted loop joins to it), disagrees by more than the drift model allows over
+//    the path since: the office next to one visited twice, met a few metres after the loop
+//    in the corridor that placed the robot right.
 //  Candidates are verified on loopThreads threads, one graph matcher each; the matcher is a
 //  pure function of its inputs, so the loops found do not depend on the number of threads.
 #include <toposlam/mapping/GraphSlamOptions.h>
@@ -42,6 +46,7 @@
 #include <cstddef>
 #include <deque>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace toposlam::mapping {
@@ -105,8 +110,15 @@ class LoopCloser {
     /// (pending or recently accepted), else keeps it pending.
     void acceptWithSupport(const Measurement& m, const PoseGraph& graph,
                            std::vector<Measurement>& accepted);
-    /// True when the two loops agree around the cycle they close with the graph.
+    /// How far apart (m, rad) the two loops put b's current keyframe, around the cycle they
+    /// close with the graph.
+    std::pair<double, double> cycleDisagreement(const Measurement& a, const Measurement& b,
+                                                const PoseGraph& graph) const;
+    /// True when the two loops agree around that cycle (loopPairTolerance, ...AngleTolerance).
     bool pairConsistent(const Measurement& a, const Measurement& b, const PoseGraph& graph) const;
+    /// The pair tolerances (m, rad) widened by loopGateSigmas of the drift model over the
+    /// path between keyframes a and b.
+    std::pair<double, double> driftTolerance(const Keyframe& a, const Keyframe& b) const;
     void accept(const Measurement& m, PoseGraph& graph, LoopClosureOutcome& outcome,
                 SlamStatistics& stats);
 
@@ -118,6 +130,8 @@ class LoopCloser {
     std::deque<Measurement> pending_;    // guess-free matches awaiting confirmation
     std::deque<Measurement> recent_;     // accepted loops, for confirming guess-free ones
     std::deque<Measurement> contested_;  // gated matches the gate rejected, recent ones
+    // Loops accepted through the gate over the last 2 loopMinTravel of the path.
+    std::deque<Measurement> throughGate_;
 };
 
 }  // namespace toposlam::mapping

@@ -1,12 +1,31 @@
 // The graph SLAM on simulated tours of generated buildings (libs/roomsbench, the end-to-end
 // rooms benchmark's chain), against the simulator's exact trajectory.
 #include <gtest/gtest.h>
-#include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileMemory.h>
 #include <toposlam/roomsbench/EndToEndRoomCases.h>
 
 #include "TestSupport.h"
 
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
 using namespace toposlam;
+
+namespace {
+
+// config_ini/toposlam-slam.ini with the contested-loop rule on (loop_contested_support = 4),
+// whose guards against look-alike places these tours exercise.
+std::string slamIniWithContestedLoops() {
+    std::ifstream file(std::string(TOPOSLAM_TEST_SOURCE_DIR) + "/config_ini/toposlam-slam.ini");
+    std::stringstream text;
+    text << file.rdbuf();
+    return std::regex_replace(text.str(), std::regex("\nloop_contested_support = [0-9]+"),
+                              "\nloop_contested_support = 4");
+}
+
+}  // namespace
 
 TEST(EndToEndTours, NoLoopIntoAParallelLookAlikeCorridor) {
     // Generated building 13 (B4-gen seed 13) has a corridor that looks like one 2 m beside it.
@@ -14,8 +33,8 @@ TEST(EndToEndTours, NoLoopIntoAParallelLookAlikeCorridor) {
     // gate, all from one pass: accepted together they bent the map (trajectory error 0.32 m,
     // a relation 1.66 m off). Agreeing matches beyond the gate must come from two visits of
     // the old place; with that the tour is mapped to 33 mm.
-    const mrpt::config::CConfigFile ini(std::string(TOPOSLAM_TEST_SOURCE_DIR) +
-                                        "/config_ini/toposlam-slam.ini");
+    const mrpt::config::CConfigFileMemory ini(slamIniWithContestedLoops());
+    ASSERT_EQ(ini.read_int("GraphSlam", "loop_contested_support", 0), 4);
     const test::TempDir dir;
     roomsbench::EndToEndOptions options;
     options.slamConfig = &ini;
@@ -35,8 +54,8 @@ TEST(EndToEndTours, NoLoopGroupFromOnePassAlongLookAlikeOffices) {
     // into one stretch of the earlier path (68-74 m travelled): one pass, so none is accepted,
     // and the tour maps to 15 mm. Accepted (no two-visits rule), they bend the map to 37 mm.
     TOPOSLAM_SHARED_DATA_OR_SKIP(plan, "rooms/Freiburg79_scan_furnitures.png");
-    const mrpt::config::CConfigFile ini(std::string(TOPOSLAM_TEST_SOURCE_DIR) +
-                                        "/config_ini/toposlam-slam.ini");
+    const mrpt::config::CConfigFileMemory ini(slamIniWithContestedLoops());
+    ASSERT_EQ(ini.read_int("GraphSlam", "loop_contested_support", 0), 4);
     const test::TempDir dir;
     roomsbench::EndToEndOptions options;
     options.slamConfig = &ini;

@@ -104,8 +104,11 @@ struct GraphSlamOptions : public config::Options {
     /// at least two visits of the place (runs of the path more than loopMinTravel apart),
     /// they are accepted together: the front end went wrong by more than the drift model
     /// allows (ICP sliding along a corridor, a laser dropout while the wheels slip), and only
-    /// loops can repair it. 0 = never. See LoopCloser.h for the guard against look-alikes.
-    std::size_t loopContestedSupport = 4;
+    /// loops can repair it. 0 = never, the default: a look-alike room reached through
+    /// unmapped space gives such groups too
+    /// (GraphSlam.NoLoopIntoALookAlikeOfficeThroughItsBackDoor, LoopCloser.h); 4 when a log's front
+    /// end is known to fail.
+    std::size_t loopContestedSupport = 0;
 
     // --- Back end ---
     /// Loop edges carry a Cauchy loss of this scale (in standard deviations), so one wrong

@@ -121,6 +121,29 @@ simulation::PolygonWorld narrowIdenticalRooms(int rooms) {
     return w;
 }
 
+/// narrowIdenticalRooms with a second corridor behind the offices (y 6 .. 8), each office
+/// with a back door into it, the two corridors joined at the right end.
+simulation::PolygonWorld officesBetweenTwoCorridors(int rooms) {
+    const double width = 3.0, length = rooms * width;
+    simulation::PolygonWorld w;
+    w.addSegment({0, 0}, {length + 2, 0});
+    w.addSegment({0, 0}, {0, 2});
+    w.addSegment({length + 2, 0}, {length + 2, 8});
+    w.addSegment({0, 8}, {length + 2, 8});
+    w.addSegment({0, 6}, {0, 8});
+    w.addSegment({length, 2}, {length, 6});
+    for (int r = 0; r < rooms; ++r) {
+        const double x0 = r * width;
+        w.addSegment({x0, 2}, {x0 + 1.0, 2});  // front door 1.0 .. 2.0
+        w.addSegment({x0 + 2.0, 2}, {x0 + width, 2});
+        w.addSegment({x0, 6}, {x0 + 1.0, 6});  // back door 1.0 .. 2.0
+        w.addSegment({x0 + 2.0, 6}, {x0 + width, 6});
+        w.addSegment({x0, 2}, {x0, 6});
+        w.addPolygon({{x0 + 2.0, 4.5}, {x0 + 2.8, 4.5}, {x0 + 2.8, 5.6}, {x0 + 2.0, 5.6}});  // desk
+    }
+    return w;
+}
+
 /// Loop edges of `slam` whose measurement is more than 0.3 m from the truth.
 std::size_t wrongLoops(const mapping::GraphSlam& slam, const std::vector<CPose2D>& truth) {
     const auto kfTruth = scanTruthOfKeyframes(slam, truth);
@@ -379,26 +402,9 @@ TEST(GraphSlam, NoLoopIntoALookAlikeOfficeThroughItsBackDoor) {
     // from two or more visits and several searches: to the contested-loop rule they look just
     // like a front end that failed on the way (21 wrong loops, ATE 1.0 m with
     // loop_contested_support = 4), which is why the shipped settings keep it off.
-    const double W = 3.0;
+    const double width = 3.0;
     const int rooms = 4;
-    const double length = rooms * W;
-    simulation::PolygonWorld w;
-    // Corridor A (y 0..2) and B (y 6..8), joined at the right end (x length..length+2).
-    w.addSegment({0, 0}, {length + 2, 0});
-    w.addSegment({0, 0}, {0, 2});
-    w.addSegment({length + 2, 0}, {length + 2, 8});
-    w.addSegment({0, 8}, {length + 2, 8});
-    w.addSegment({0, 6}, {0, 8});
-    w.addSegment({length, 2}, {length, 6});
-    for (int r = 0; r < rooms; ++r) {
-        const double x0 = r * W;
-        w.addSegment({x0, 2}, {x0 + 1.0, 2});
-        w.addSegment({x0 + 2.0, 2}, {x0 + W, 2});
-        w.addSegment({x0, 6}, {x0 + 1.0, 6});  // back wall with a back door 1.0 .. 2.0
-        w.addSegment({x0 + 2.0, 6}, {x0 + W, 6});
-        w.addSegment({x0, 2}, {x0, 6});
-        w.addPolygon({{x0 + 2.0, 4.5}, {x0 + 2.8, 4.5}, {x0 + 2.8, 5.6}, {x0 + 2.0, 5.6}});
-    }
+    const double length = rooms * width;
     std::vector<mrpt::math::TPoint2D> path{{0.8, 1.0}};
     const auto roundRoom = [&](double x0) {
         for (const mrpt::math::TPoint2D& p : std::vector<mrpt::math::TPoint2D>{
@@ -412,19 +418,19 @@ TEST(GraphSlam, NoLoopIntoALookAlikeOfficeThroughItsBackDoor) {
     }
     path.push_back({length + 1.0, 1.0});
     path.push_back({length + 1.0, 7.0});
-    path.push_back({W + 1.5, 7.0});
-    path.push_back({W + 1.5, 3.0});
-    path.push_back({W + 0.7, 3.0});
-    path.push_back({W + 0.7, 5.0});
-    path.push_back({W + 1.5, 5.0});
-    path.push_back({W + 1.5, 1.0});
+    path.push_back({width + 1.5, 7.0});
+    path.push_back({width + 1.5, 3.0});
+    path.push_back({width + 0.7, 3.0});
+    path.push_back({width + 0.7, 5.0});
+    path.push_back({width + 1.5, 5.0});
+    path.push_back({width + 1.5, 1.0});
     path.push_back({0.8, 1.0});
     test::OdometryErrors errors;
     errors.distanceScale = 1.04;
     errors.turnScale = 1.03;
     errors.headingDriftPerMetre = 0.003;
     const auto truth = test::drivePath(path);
-    const auto drive = test::simulateDrive(w, truth, errors, 5);
+    const auto drive = test::simulateDrive(officesBetweenTwoCorridors(rooms), truth, errors, 5);
     const SlamRun run = runSlam(drive);
     EXPECT_EQ(wrongLoops(*run.slam, truth), 0u);
     EXPECT_LT(test::absoluteTrajectoryError(truth, run.poses), 0.1);

@@ -323,8 +323,8 @@ void LoopCloser::accept(const Measurement& m, PoseGraph& graph, LoopClosureOutco
     ++outcome.accepted;
     ++stats.loopsAccepted;
     recent_.push_back(m);
-    if (!m.contested)
-        throughGate_.push_back(m);
+    if (!m.contested && options_.loopContestedSupport > 0)
+        throughGate_.push_back(m);  // evidence against contested groups
 }
 
 LoopClosureOutcome LoopCloser::closeLoops(std::size_t current, std::size_t firstActive,

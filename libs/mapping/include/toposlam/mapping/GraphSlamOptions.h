@@ -105,9 +105,9 @@ struct GraphSlamOptions : public config::Options {
     /// they are accepted together: the front end went wrong by more than the drift model
     /// allows (ICP sliding along a corridor, a laser dropout while the wheels slip), and only
     /// loops can repair it. 0 = never, the default: a look-alike room reached through
-    /// unmapped space gives such groups too
-    /// (GraphSlam.NoLoopIntoALookAlikeOfficeThroughItsBackDoor, LoopCloser.h); 4 when a log's front
-    /// end is known to fail.
+    /// unmapped space gives such groups too (LoopCloser.h, and the test
+    /// GraphSlam.NoLoopIntoALookAlikeOfficeThroughItsBackDoor); 4 for a log whose front end
+    /// is known to fail.
     std::size_t loopContestedSupport = 0;
 
     // --- Back end ---

@@ -101,47 +101,76 @@ std::vector<CPose2D> scanTruthOfKeyframes(const mapping::GraphSlam& slam,
     return out;
 }
 
-/// Offices 3 m wide along a corridor, all alike, so close that the office next door lies
-/// inside the loop search's reach (loop_overlap_distance).
+/// An office 3 m wide and 4 m deep at x0 (the front wall at y = 2, with a door 1.0 .. 2.0 m
+/// along it), its desk in the back corner; `backDoor`: the back wall (y = 6) has one too.
+void addNarrowOffice(simulation::PolygonWorld& w, double x0, bool backDoor) {
+    const double width = 3.0;
+    w.addSegment({x0, 2}, {x0 + 1.0, 2});
+    w.addSegment({x0 + 2.0, 2}, {x0 + width, 2});
+    if (backDoor) {
+        w.addSegment({x0, 6}, {x0 + 1.0, 6});
+        w.addSegment({x0 + 2.0, 6}, {x0 + width, 6});
+    } else {
+        w.addSegment({x0, 6}, {x0 + width, 6});
+    }
+    w.addSegment({x0, 2}, {x0, 6});
+    w.addSegment({x0 + width, 2}, {x0 + width, 6});
+    w.addPolygon({{x0 + 2.0, 4.5}, {x0 + 2.8, 4.5}, {x0 + 2.8, 5.6}, {x0 + 2.0, 5.6}});
+}
+
+/// `rooms` such offices side by side along a corridor (y 0 .. 2), all alike, so close that
+/// the office next door lies inside the loop search's reach (loop_overlap_distance).
 simulation::PolygonWorld narrowIdenticalRooms(int rooms) {
     simulation::PolygonWorld w;
-    const double width = 3.0, length = rooms * width;
+    const double length = rooms * 3.0;
     w.addSegment({0, 0}, {length, 0});
     w.addSegment({0, 0}, {0, 2});
     w.addSegment({length, 0}, {length, 2});
-    for (int r = 0; r < rooms; ++r) {
-        const double x0 = r * width;
-        w.addSegment({x0, 2}, {x0 + 1.0, 2});  // wall with a door 1.0 .. 2.0
-        w.addSegment({x0 + 2.0, 2}, {x0 + width, 2});
-        w.addSegment({x0, 2}, {x0, 6});
-        w.addSegment({x0 + width, 2}, {x0 + width, 6});
-        w.addSegment({x0, 6}, {x0 + width, 6});
-        w.addPolygon({{x0 + 2.0, 4.5}, {x0 + 2.8, 4.5}, {x0 + 2.8, 5.6}, {x0 + 2.0, 5.6}});  // desk
-    }
+    for (int r = 0; r < rooms; ++r)
+        addNarrowOffice(w, r * 3.0, false);
     return w;
 }
 
-/// narrowIdenticalRooms with a second corridor behind the offices (y 6 .. 8), each office
-/// with a back door into it, the two corridors joined at the right end.
+/// The same offices between two corridors (y 0 .. 2 in front, 6 .. 8 behind), each with a
+/// back door, the corridors joined beyond the last office (x length .. length + 2).
 simulation::PolygonWorld officesBetweenTwoCorridors(int rooms) {
-    const double width = 3.0, length = rooms * width;
     simulation::PolygonWorld w;
+    const double length = rooms * 3.0;
     w.addSegment({0, 0}, {length + 2, 0});
     w.addSegment({0, 0}, {0, 2});
     w.addSegment({length + 2, 0}, {length + 2, 8});
     w.addSegment({0, 8}, {length + 2, 8});
     w.addSegment({0, 6}, {0, 8});
-    w.addSegment({length, 2}, {length, 6});
-    for (int r = 0; r < rooms; ++r) {
-        const double x0 = r * width;
-        w.addSegment({x0, 2}, {x0 + 1.0, 2});  // front door 1.0 .. 2.0
-        w.addSegment({x0 + 2.0, 2}, {x0 + width, 2});
-        w.addSegment({x0, 6}, {x0 + 1.0, 6});  // back door 1.0 .. 2.0
-        w.addSegment({x0 + 2.0, 6}, {x0 + width, 6});
-        w.addSegment({x0, 2}, {x0, 6});
-        w.addPolygon({{x0 + 2.0, 4.5}, {x0 + 2.8, 4.5}, {x0 + 2.8, 5.6}, {x0 + 2.0, 5.6}});  // desk
-    }
+    for (int r = 0; r < rooms; ++r)
+        addNarrowOffice(w, r * 3.0, true);
     return w;
+}
+
+/// Into the office at x0 from the corridor, round its middle and back out.
+void roundNarrowOffice(std::vector<mrpt::math::TPoint2D>& path, double x0) {
+    for (const mrpt::math::TPoint2D& p : std::vector<mrpt::math::TPoint2D>{
+             {1.5, 1.0}, {1.5, 3.5}, {0.7, 3.5}, {0.7, 5.0}, {1.5, 5.0}, {1.5, 1.0}})
+        path.push_back({x0 + p.x, p.y});
+}
+
+/// From the start of the corridor, into the first office and round it three times.
+std::vector<mrpt::math::TPoint2D> threeVisitsOfTheFirstOffice() {
+    std::vector<mrpt::math::TPoint2D> path{{0.8, 1.0}};
+    for (int visit = 0; visit < 3; ++visit) {
+        if (visit > 0)
+            path.push_back({0.8, 1.0});
+        roundNarrowOffice(path, 0);
+    }
+    return path;
+}
+
+/// The odometry errors of the identical-room tests.
+test::OdometryErrors officeOdometryErrors() {
+    test::OdometryErrors errors;
+    errors.distanceScale = 1.04;
+    errors.turnScale = 1.03;
+    errors.headingDriftPerMetre = 0.003;
+    return errors;
 }
 
 /// Loop edges of `slam` whose measurement is more than 0.3 m from the truth.
@@ -359,32 +388,20 @@ TEST(GraphSlam, NoLoopIntoTheOfficeNextToOneVisitedThreeTimes) {
     // group contradicts it by 3 m, more than that path can drift. Once (before that check)
     // such a group went in: 8 wrong loops, ATE 0.91 m. (The rule is off by default, see
     // NoLoopIntoALookAlikeOfficeThroughItsBackDoor; here it is on.)
+    const int rooms = 4;
+    const double length = rooms * 3.0;
     for (const bool wander : {false, true}) {
         SCOPED_TRACE(wander ? "down the corridor and back first" : "straight on");
-        std::vector<mrpt::math::TPoint2D> path{{0.8, 1.0}};
-        const auto roundRoom = [&](double x0) {
-            for (const mrpt::math::TPoint2D& p : std::vector<mrpt::math::TPoint2D>{
-                     {1.5, 1.0}, {1.5, 3.5}, {0.7, 3.5}, {0.7, 5.0}, {1.5, 5.0}, {1.5, 1.0}})
-                path.push_back({x0 + p.x, p.y});
-        };
-        const int rooms = 4;
-        for (int visit = 0; visit < 3; ++visit) {
-            if (visit > 0)
-                path.push_back({0.8, 1.0});
-            roundRoom(0);
-        }
+        std::vector<mrpt::math::TPoint2D> path = threeVisitsOfTheFirstOffice();
         if (wander)
-            path.push_back({rooms * 3.0 - 0.8, 1.0});
+            path.push_back({length - 0.8, 1.0});
         for (int r = 1; r < rooms; ++r)
-            roundRoom(r * 3.0);
-        path.push_back({rooms * 3.0 - 0.8, 1.0});
+            roundNarrowOffice(path, r * 3.0);
+        path.push_back({length - 0.8, 1.0});
         path.push_back({0.8, 1.0});
-        test::OdometryErrors errors;
-        errors.distanceScale = 1.04;
-        errors.turnScale = 1.03;
-        errors.headingDriftPerMetre = 0.003;
         const auto truth = test::drivePath(path);
-        const auto drive = test::simulateDrive(narrowIdenticalRooms(rooms), truth, errors, 5);
+        const auto drive =
+            test::simulateDrive(narrowIdenticalRooms(rooms), truth, officeOdometryErrors(), 5);
         const SlamRun run =
             runSlam(drive, 0, [](mapping::GraphSlamOptions& o) { o.loopContestedSupport = 4; });
         EXPECT_EQ(wrongLoops(*run.slam, truth), 0u);
@@ -394,43 +411,29 @@ TEST(GraphSlam, NoLoopIntoTheOfficeNextToOneVisitedThreeTimes) {
 }
 
 TEST(GraphSlam, NoLoopIntoALookAlikeOfficeThroughItsBackDoor) {
-    // Offices 3 m wide between two corridors, all alike. The first is entered three times
-    // from the front corridor; then the robot walks on to the end, round into the back
-    // corridor and into the second office by its back door, 30 m through corridors it has
-    // not been in. In
-    // there, matches into every visit of the first agree with each other beyond the gate,
-    // from two or more visits and several searches: to the contested-loop rule they look just
-    // like a front end that failed on the way (21 wrong loops, ATE 1.0 m with
+    // The same offices between two corridors. The first is entered three times from the front
+    // corridor; then the robot walks on to the end, round into the back corridor and into the
+    // second office by its back door, 30 m through corridors it has not been in. In there,
+    // matches into every visit of the first agree with each other beyond the gate, from two or
+    // more visits and several searches: to the contested-loop rule they look just like a
+    // front end that failed on the way (21 wrong loops, ATE 1.0 m with
     // loop_contested_support = 4), which is why the shipped settings keep it off.
-    const double width = 3.0;
     const int rooms = 4;
-    const double length = rooms * width;
-    std::vector<mrpt::math::TPoint2D> path{{0.8, 1.0}};
-    const auto roundRoom = [&](double x0) {
-        for (const mrpt::math::TPoint2D& p : std::vector<mrpt::math::TPoint2D>{
-                 {1.5, 1.0}, {1.5, 3.5}, {0.7, 3.5}, {0.7, 5.0}, {1.5, 5.0}, {1.5, 1.0}})
-            path.push_back({x0 + p.x, p.y});
-    };
-    for (int visit = 0; visit < 3; ++visit) {
-        if (visit > 0)
-            path.push_back({0.8, 1.0});
-        roundRoom(0);
-    }
-    path.push_back({length + 1.0, 1.0});
-    path.push_back({length + 1.0, 7.0});
-    path.push_back({width + 1.5, 7.0});
-    path.push_back({width + 1.5, 3.0});
-    path.push_back({width + 0.7, 3.0});
-    path.push_back({width + 0.7, 5.0});
-    path.push_back({width + 1.5, 5.0});
-    path.push_back({width + 1.5, 1.0});
-    path.push_back({0.8, 1.0});
-    test::OdometryErrors errors;
-    errors.distanceScale = 1.04;
-    errors.turnScale = 1.03;
-    errors.headingDriftPerMetre = 0.003;
+    const double length = rooms * 3.0;
+    std::vector<mrpt::math::TPoint2D> path = threeVisitsOfTheFirstOffice();
+    for (const mrpt::math::TPoint2D& p : std::vector<mrpt::math::TPoint2D>{{length + 1.0, 1.0},
+                                                                           {length + 1.0, 7.0},
+                                                                           {4.5, 7.0},
+                                                                           {4.5, 3.0},
+                                                                           {3.7, 3.0},
+                                                                           {3.7, 5.0},
+                                                                           {4.5, 5.0},
+                                                                           {4.5, 1.0},
+                                                                           {0.8, 1.0}})
+        path.push_back(p);
     const auto truth = test::drivePath(path);
-    const auto drive = test::simulateDrive(officesBetweenTwoCorridors(rooms), truth, errors, 5);
+    const auto drive =
+        test::simulateDrive(officesBetweenTwoCorridors(rooms), truth, officeOdometryErrors(), 5);
     const SlamRun run = runSlam(drive);
     EXPECT_EQ(wrongLoops(*run.slam, truth), 0u);
     EXPECT_LT(test::absoluteTrajectoryError(truth, run.poses), 0.1);

@@ -25,6 +25,17 @@ std::string slamIniWithContestedLoops() {
                               "\nloop_contested_support = 4");
 }
 
+// Tours `plan` and maps the log with that configuration.
+void tourWithContestedLoops(const roomsbench::PlanToTour& plan, roomsbench::EndToEndRun& run) {
+    const mrpt::config::CConfigFileMemory ini(slamIniWithContestedLoops());
+    ASSERT_EQ(ini.read_int("GraphSlam", "loop_contested_support", 0), 4);
+    const test::TempDir dir;
+    roomsbench::EndToEndOptions options;
+    options.slamConfig = &ini;
+    options.workDir = dir.path();
+    roomsbench::endToEndCase(plan, options, run);
+}
+
 }  // namespace
 
 TEST(EndToEndTours, NoLoopIntoAParallelLookAlikeCorridor) {
@@ -33,16 +44,10 @@ TEST(EndToEndTours, NoLoopIntoAParallelLookAlikeCorridor) {
     // gate, all from one pass: accepted together they bent the map (trajectory error 0.32 m,
     // a relation 1.66 m off). Agreeing matches beyond the gate must come from two visits of
     // the old place; with that the tour is mapped to 33 mm.
-    const mrpt::config::CConfigFileMemory ini(slamIniWithContestedLoops());
-    ASSERT_EQ(ini.read_int("GraphSlam", "loop_contested_support", 0), 4);
-    const test::TempDir dir;
-    roomsbench::EndToEndOptions options;
-    options.slamConfig = &ini;
-    options.workDir = dir.path();
     const auto plans = roomsbench::plansToTour({13}, {}, "");
     ASSERT_EQ(plans.size(), 1u);
     roomsbench::EndToEndRun run;
-    roomsbench::endToEndCase(plans.front(), options, run);
+    ASSERT_NO_FATAL_FAILURE(tourWithContestedLoops(plans.front(), run));
     ASSERT_GT(run.scans, 1000u);
     // 1 cm range noise and simulated odometry errors; a closed map stays within a few cm.
     EXPECT_LT(run.alignmentRmse, 0.1);
@@ -54,17 +59,11 @@ TEST(EndToEndTours, NoLoopGroupFromOnePassAlongLookAlikeOffices) {
     // into one stretch of the earlier path (68-74 m travelled): one pass, so none is accepted,
     // and the tour maps to 15 mm. Accepted (no two-visits rule), they bend the map to 37 mm.
     TOPOSLAM_SHARED_DATA_OR_SKIP(plan, "rooms/Freiburg79_scan_furnitures.png");
-    const mrpt::config::CConfigFileMemory ini(slamIniWithContestedLoops());
-    ASSERT_EQ(ini.read_int("GraphSlam", "loop_contested_support", 0), 4);
-    const test::TempDir dir;
-    roomsbench::EndToEndOptions options;
-    options.slamConfig = &ini;
-    options.workDir = dir.path();
     const auto plans =
         roomsbench::plansToTour({}, {"Freiburg79_scan"}, test::sharedDataDir() + "/rooms");
     ASSERT_EQ(plans.size(), 1u);
     roomsbench::EndToEndRun run;
-    roomsbench::endToEndCase(plans.front(), options, run);
+    ASSERT_NO_FATAL_FAILURE(tourWithContestedLoops(plans.front(), run));
     ASSERT_GT(run.scans, 500u);
     // Twice the error of the closed map (15 mm), below the bent one (37 mm).
     EXPECT_LT(run.alignmentRmse, 0.03);

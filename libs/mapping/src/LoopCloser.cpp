@@ -197,11 +197,29 @@ void LoopCloser::acceptContested(const std::vector<Keyframe>& keyframes, const P
     const auto [first, last] = std::minmax_element(currentTravel.begin(), currentTravel.end());
     if (*last <= *first || visits < 2)
         return;
+    if (contradicted(best, keyframes, graph, accepted)) {
+        std::sort(best.rbegin(), best.rend());
+        for (std::size_t i : best)
+            contested_.erase(contested_.begin() + long(i));
+        return;
+    }
+    for (std::size_t i : best) {
+        accepted.push_back(contested_[i]);
+        accepted.back().contested = true;
+    }
+    stats.loopsContested += best.size();
+    stats.loopsGateRejected -= best.size();  // counted when the gate rejected them
+    contested_.clear();
+}
+
+bool LoopCloser::contradicted(const std::vector<std::size_t>& group,
+                              const std::vector<Keyframe>& keyframes, const PoseGraph& graph,
+                              const std::vector<Measurement>& accepted) const {
     // A loop the gate let through meanwhile, into the same stretch of the old path, that
     // disagrees with the group: the graph was right there, and the group fits a look-alike
     // place (offices along a corridor); it is dropped.
     const auto contradicts = [&](const Measurement& loop) {
-        return std::any_of(best.begin(), best.end(), [&](std::size_t i) {
+        return std::any_of(group.begin(), group.end(), [&](std::size_t i) {
             const Measurement& m = contested_[i];
             return std::abs(keyframes[loop.older].travelled - keyframes[m.older].travelled) <=
                        options_.loopMinTravel &&
@@ -216,13 +234,13 @@ void LoopCloser::acceptContested(const std::vector<Keyframe>& keyframes, const P
     // that only the graph's estimate puts together: after a front-end failure those are the
     // ones that disagree).
     const double stretch = options_.loopMinTravel;
-    std::vector<std::vector<double>> joined(best.size());  // per member: travel joined to it
+    std::vector<std::vector<double>> joined(group.size());  // per member: travel joined to it
     for (const PoseGraphEdge& e : graph.edges()) {
         if (!e.active || e.kind != EdgeKind::Loop)
             continue;
         const double from = keyframes[e.from].travelled, to = keyframes[e.to].travelled;
-        for (std::size_t g = 0; g < best.size(); ++g) {
-            const double t = keyframes[contested_[best[g]].older].travelled;
+        for (std::size_t g = 0; g < group.size(); ++g) {
+            const double t = keyframes[contested_[group[g]].older].travelled;
             if (std::abs(from - t) <= stretch)
                 joined[g].push_back(to);
             if (std::abs(to - t) <= stretch)
@@ -231,8 +249,8 @@ void LoopCloser::acceptContested(const std::vector<Keyframe>& keyframes, const P
     }
     const auto contradictsEarlier = [&](const Measurement& loop) {
         const double t = keyframes[loop.older].travelled;
-        for (std::size_t g = 0; g < best.size(); ++g) {
-            const Measurement& m = contested_[best[g]];
+        for (std::size_t g = 0; g < group.size(); ++g) {
+            const Measurement& m = contested_[group[g]];
             const bool samePlace = std::abs(t - keyframes[m.older].travelled) <= stretch ||
                                    std::any_of(joined[g].begin(), joined[g].end(), [&](double u) {
                                        return std::abs(t - u) <= stretch;
@@ -247,21 +265,9 @@ void LoopCloser::acceptContested(const std::vector<Keyframe>& keyframes, const P
         }
         return false;
     };
-    if (std::any_of(recent_.begin(), recent_.end(), contradicts) ||
-        std::any_of(accepted.begin(), accepted.end(), contradicts) ||
-        std::any_of(throughGate_.begin(), throughGate_.end(), contradictsEarlier)) {
-        std::sort(best.rbegin(), best.rend());
-        for (std::size_t i : best)
-            contested_.erase(contested_.begin() + long(i));
-        return;
-    }
-    for (std::size_t i : best) {
-        accepted.push_back(contested_[i]);
-        accepted.back().contested = true;
-    }
-    stats.loopsContested += best.size();
-    stats.loopsGateRejected -= best.size();  // counted when the gate rejected them
-    contested_.clear();
+    return std::any_of(recent_.begin(), recent_.end(), contradicts) ||
+           std::any_of(accepted.begin(), accepted.end(), contradicts) ||
+           std::any_of(throughGate_.begin(), throughGate_.end(), contradictsEarlier);
 }
 
 bool LoopCloser::agreesWithGraph(const Measurement& m, const PoseGraph& graph) const {

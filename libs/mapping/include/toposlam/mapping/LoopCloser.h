@@ -104,6 +104,10 @@ class LoopCloser {
     /// keyframes of two or more visits, and no gated loop contradicts it.
     void acceptContested(const std::vector<Keyframe>& keyframes, const PoseGraph& graph,
                          std::vector<Measurement>& accepted, SlamStatistics& stats);
+    /// True when a loop through the gate disagrees with the contested matches `group`
+    /// (indices into contested_): the guard against look-alike places (above).
+    bool contradicted(const std::vector<std::size_t>& group, const std::vector<Keyframe>& keyframes,
+                      const PoseGraph& graph, const std::vector<Measurement>& accepted) const;
     /// True when the graph already agrees with the loop within the loop's own covariance.
     bool agreesWithGraph(const Measurement& m, const PoseGraph& graph) const;
     /// Accepts `m` (into `accepted`) when another loop from another keyframe supports it

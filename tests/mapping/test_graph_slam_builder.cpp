@@ -15,6 +15,10 @@
 #include <toposlam/mapping/CGraphSlamBuilder.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <utility>
 
 #include "SimulatedDrive.h"
 #include "TestSupport.h"
@@ -116,4 +120,47 @@ TEST(CGraphSlamBuilder, AppOutputsAreReadByMrpt) {
     ASSERT_EQ(simplemap.size(), keyframes);
     EXPECT_TRUE(
         simplemap.getAsPair(0).sf->getObservationByClass<features::CObservationLaserFeatures>());
+}
+
+namespace {
+std::string textOf(const std::string& path) {
+    std::ifstream in(path);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+}  // namespace
+
+// The summary names the loop rules that are off instead of counting what they could not do.
+TEST(CGraphSlamBuilder, SummarySaysWhichLoopRulesRan) {
+    const test::TempDir dir;
+    test::writeRawlog(roomTour(), dir.file("tour.rawlog"));
+    std::string ini = textOf(kConfig);
+    for (const auto& [from, to] :
+         {std::pair<std::string, std::string>{"\nglobal_search_every = 0",
+                                              "\nglobal_search_every = 10"},
+          {"\nloop_contested_support = 0", "\nloop_contested_support = 4"}}) {
+        const auto at = ini.find(from);
+        ASSERT_NE(at, std::string::npos) << from;
+        ini.replace(at, from.size(), to);
+    }
+    std::ofstream(dir.file("rules-on.ini")) << ini;
+    for (const bool on : {false, true}) {
+        const std::string out = dir.file(on ? "on" : "off");
+        const auto run =
+            test::runApp("toposlam-slam", "'" + (on ? dir.file("rules-on.ini") : kConfig) + "' '" +
+                                              dir.file("tour.rawlog") + "' -o '" + out + "'");
+        ASSERT_EQ(run.exitCode, 0) << run.output;
+        const std::string text = textOf(out + "/summary.txt");
+        const auto loops = io::loadJsonFile(out + "/summary.json").at("loops");
+        EXPECT_EQ(loops.at("guess_free_search").get<bool>(), on);
+        EXPECT_EQ(loops.at("contested_rule").get<bool>(), on);
+        if (on) {
+            EXPECT_NE(text.find(" of them guess-free, "), std::string::npos) << text;
+            EXPECT_NE(text.find(" beyond the gate on agreeing evidence)"), std::string::npos)
+                << text;
+        } else {
+            EXPECT_NE(text.find("(guess-free search off, acceptance beyond the gate off)"),
+                      std::string::npos)
+                << text;
+        }
+    }
 }

@@ -65,6 +65,8 @@ void runGraphEngine(const std::string& logPath, const mrpt::config::CConfigFileB
         trajectory[i].pose = scans[i].robotPose.asTPose();
     }
     result.statistics = slam.statistics();
+    result.guessFreeSearch = slam.options().globalSearchEvery > 0;
+    result.contestedLoops = slam.options().loopContestedSupport > 0;
     result.graph = slam.graph();
     builder.getCurrentlyBuiltMap(result.keyframes);
 }

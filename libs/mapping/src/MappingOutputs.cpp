@@ -53,11 +53,17 @@ std::string formatSummary(const MappingResult& r) {
             st->registeredByIcp, percent(st->registeredByIcp, n), st->registeredByGraphMatcher,
             percent(st->registeredByGraphMatcher, n), st->registrationFailed,
             percent(st->registrationFailed, n), st->odometryJumps);
+        // A rule that is off says so, instead of a count that could not be anything but 0.
+        const std::string guessFree =
+            r.guessFreeSearch ? std::to_string(st->globalConfirmed) + " of them guess-free"
+                              : "guess-free search off";
+        const std::string contested = r.contestedLoops ? std::to_string(st->loopsContested) +
+                                                             " beyond the gate on agreeing evidence"
+                                                       : "acceptance beyond the gate off";
         s += line(
-            "loop closures: %zu candidates verified, %zu accepted (%zu of them guess-free, %zu "
-            "beyond the gate on agreeing evidence), %zu not matched, %zu rejected by the "
-            "consistency checks, %zu withdrawn after optimisation",
-            st->loopCandidates, st->loopsAccepted, st->globalConfirmed, st->loopsContested,
+            "loop closures: %zu candidates verified, %zu accepted (%s, %s), %zu not matched, %zu "
+            "rejected by the consistency checks, %zu withdrawn after optimisation",
+            st->loopCandidates, st->loopsAccepted, guessFree.c_str(), contested.c_str(),
             st->loopsUnmatched, st->loopsGateRejected, st->loopsWithdrawn);
         s += line(
             "CPU time: front end %.2f s, loop search %.2f s (%.2f s of it on worker threads), "
@@ -102,6 +108,8 @@ nlohmann::json summaryJson(const MappingResult& r) {
                       {"accepted", st->loopsAccepted},
                       {"guess_free_accepted", st->globalConfirmed},
                       {"contested_accepted", st->loopsContested},
+                      {"guess_free_search", r.guessFreeSearch},
+                      {"contested_rule", r.contestedLoops},
                       {"unmatched", st->loopsUnmatched},
                       {"rejected", st->loopsGateRejected},
                       {"withdrawn", st->loopsWithdrawn}};

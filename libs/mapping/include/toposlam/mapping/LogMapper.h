@@ -46,6 +46,9 @@ struct MappingResult {
     double cpuSeconds = 0;   ///< CPU time of the process spent on it (s)
     // Graph engine only (map frame, like the trajectory):
     std::optional<SlamStatistics> statistics;
+    /// Which loop rules ran: guess-free search (global_search_every > 0) and accepting agreeing
+    /// matches beyond the gate (loop_contested_support > 0); both off by default.
+    bool guessFreeSearch = false, contestedLoops = false;
     std::optional<PoseGraph> graph;    ///< keyframe pose graph, optimised
     mrpt::maps::CSimpleMap keyframes;  ///< each keyframe's scan and features at its pose
 };

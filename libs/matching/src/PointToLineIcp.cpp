@@ -27,6 +27,7 @@ struct PointToLineIcp::Accumulator {
     Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
     Eigen::Vector3d g = Eigen::Vector3d::Zero();
     double weightedSq = 0, weightSum = 0;
+    double leverSq = 0;  ///< weighted sum of the points' squared distances from the sensor
     std::size_t used = 0;
 
     /// Residual r = n . q - offset of the rotated point (rx, ry) + t = q.
@@ -37,12 +38,21 @@ struct PointToLineIcp::Accumulator {
         g.noalias() += w * r * J;
         weightedSq += w * r * r;
         weightSum += w;
+        leverSq += w * (rx * rx + ry * ry);
         ++used;
     }
     /// Applies the step to the pose; true when it was below the tolerances.
     bool step(double& x, double& y, double& phi, const IcpOptions& o) const {
-        // Solve only along well-determined eigen-directions of H.
-        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(H);
+        // Solve only along well-determined eigen-directions of H, with the turn measured by
+        // how far it moves the points (lever = their RMS distance from the sensor). In radians
+        // the turn's eigenvalue grows with the square of the range, and with far readings it
+        // would make a translation the data do determine look undetermined next to it: that
+        // translation would then never move from the start.
+        const double lever = std::sqrt(leverSq / std::max(weightSum, 1e-12));
+        const Eigen::Vector3d unit(1.0, 1.0, lever > 1e-6 ? 1.0 / lever : 1.0);
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(unit.asDiagonal() * H *
+                                                                 unit.asDiagonal());
+        const Eigen::Vector3d scaledG = unit.cwiseProduct(g);
         const double largest = eig.eigenvalues().maxCoeff();
         Eigen::Vector3d d = Eigen::Vector3d::Zero();
         for (int k = 0; k < 3; ++k) {
@@ -50,8 +60,9 @@ struct PointToLineIcp::Accumulator {
             if (!(lambda > o.minEigenRatio * largest) || !(lambda > 0))
                 continue;
             const Eigen::Vector3d v = eig.eigenvectors().col(k);
-            d -= (v.dot(g) / lambda) * v;
+            d -= (v.dot(scaledG) / lambda) * v;
         }
+        d = unit.cwiseProduct(d);  // back to (m, m, rad)
         x += d[0], y += d[1], phi += d[2];
         return std::hypot(d[0], d[1]) < o.translationTolerance &&
                std::abs(d[2]) < o.rotationTolerance;

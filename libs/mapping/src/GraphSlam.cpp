@@ -1,6 +1,7 @@
 #include <mrpt/math/wrap2pi.h>
 #include <toposlam/io/CpuTime.h>
 #include <toposlam/mapping/GraphSlam.h>
+#include <toposlam/mapping/MapRange.h>
 
 #include <cmath>
 #include <cstdio>
@@ -159,7 +160,9 @@ void GraphSlam::addKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
     kf.scanIndex = scans_.size();
     kf.scan = scan;
     kf.polar = polar_;
-    matching::surfacePoints(polar_, lineMapOptions(options_), kf.surface);
+    matching::LineMapOptions surface = lineMapOptions(options_);
+    surface.maxRange = mapRange(polar_, options_);
+    matching::surfacePoints(polar_, surface, kf.surface);
     kf.sensorOnRobot = CPose2D(scan->sensorPose);
     kf.travelled = travelled_;
     kf.turned = turned_;

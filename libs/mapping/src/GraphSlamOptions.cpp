@@ -29,7 +29,12 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
     s.real("map_fuse_distance", mapFuseDistance, "m",
            "observations this close to a map point are fused into it")
         .above(0);
-    s.real("map_max_range", mapMaxRange, "m", "farther readings are not put into submaps").above(0);
+    s.real("map_max_range", mapMaxRange, "m", "farther readings are not put into submaps...")
+        .above(0);
+    s.real("map_far_share", mapFarShare, "",
+           "... unless more than this share of a scan's valid readings lie farther: then all "
+           "of them (1 = never)")
+        .within(0, 1);
     // Front end: registration.
     s.integer("icp_max_iterations", icpMaxIterations, "", "point-to-line ICP iterations at most")
         .within(1, 1000);

@@ -1,4 +1,5 @@
 #include <mrpt/math/wrap2pi.h>
+#include <toposlam/mapping/MapRange.h>
 #include <toposlam/mapping/ScanRegistration.h>
 
 #include <Eigen/Dense>
@@ -75,8 +76,9 @@ ScanRegistration::IcpAttempt ScanRegistration::icpFrom(const matching::PolarScan
     a.robot = a.icp.pose + (-sensorOnRobot);  // sensor pose (+) mounting^-1
     // Share of the readings the map could hold (within its range) that landed on it.
     std::size_t mappable = 0;
+    const double range = mapRange(scan, options_);
     for (std::size_t b = 0; b < scan.size(); ++b)
-        mappable += scan.valid(b) && scan.range(b) <= options_.mapMaxRange;
+        mappable += scan.valid(b) && scan.range(b) <= range;
     a.overlap = double(a.icp.pointsUsed) / double(std::max<std::size_t>(1, mappable));
     return a;
 }

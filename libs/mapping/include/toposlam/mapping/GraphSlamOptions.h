@@ -21,7 +21,10 @@ struct GraphSlamOptions : public config::Options {
     std::size_t submapKeyframes = 20;
     double mapResolution = 0.05;    ///< m, lookup cells of the submaps' line maps
     double mapFuseDistance = 0.05;  ///< m, observations this close to a map point are fused
-    double mapMaxRange = 20;        ///< m, farther readings are not put into submaps
+    double mapMaxRange = 20;        ///< m, farther readings are not put into submaps...
+    /// ... unless more than this share of a scan's valid readings lie farther: then all of
+    /// them (an open hall, a long-range laser; MapRange.h).
+    double mapFarShare = 0.1;
 
     // --- Front end: registration ---
     int icpMaxIterations = 30;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace toposlam::matching {
 
@@ -45,6 +46,19 @@ void LineMap::insertScan(const PolarScan& scan, const mrpt::poses::CPose2D& sens
 void LineMap::insertSurface(const std::vector<SurfacePoint>& points,
                             const mrpt::poses::CPose2D& sensorPose) {
     const double c = std::cos(sensorPose.phi()), s = std::sin(sensorPose.phi());
+    // Grow the grid once for the whole scan: point by point, far readings regrow (and copy)
+    // it again and again.
+    if (!points.empty()) {
+        double minX = std::numeric_limits<double>::infinity(), minY = minX;
+        double maxX = -minX, maxY = -minX;
+        for (const SurfacePoint& p : points) {
+            const double x = sensorPose.x() + c * p.x - s * p.y;
+            const double y = sensorPose.y() + s * p.x + c * p.y;
+            minX = std::min(minX, x), maxX = std::max(maxX, x);
+            minY = std::min(minY, y), maxY = std::max(maxY, y);
+        }
+        cover(minX, minY, maxX, maxY);
+    }
     for (const SurfacePoint& p : points) {
         LineMapPoint m;
         m.x = float(sensorPose.x() + c * p.x - s * p.y);
@@ -57,7 +71,7 @@ void LineMap::insertSurface(const std::vector<SurfacePoint>& points,
 }
 
 void LineMap::insert(const LineMapPoint& p) {
-    cover(p.x, p.y);
+    cover(p.x, p.y, p.x, p.y);
     if (const LineMapPoint* near = nearest(p.x, p.y)) {
         const float dx = near->x - p.x, dy = near->y - p.y;
         const float fuse = float(options_.fuseDistance);
@@ -81,33 +95,36 @@ void LineMap::insert(const LineMapPoint& p) {
     stamp(std::uint32_t(points_.size() - 1));
 }
 
-void LineMap::cover(double x, double y) {
+void LineMap::cover(double boxMinX, double boxMinY, double boxMaxX, double boxMaxY) {
     const double margin = options_.radius + options_.resolution;
     const double res = options_.resolution;
-    if (width_ > 0 && x - margin >= x0_ && y - margin >= y0_ && x + margin < x0_ + width_ * res &&
-        y + margin < y0_ + height_ * res)
+    if (width_ > 0 && boxMinX - margin >= x0_ && boxMinY - margin >= y0_ &&
+        boxMaxX + margin < x0_ + width_ * res && boxMaxY + margin < y0_ + height_ * res)
         return;
-    // New extent: the old one plus the point, grown generously on the sides that grow.
+    // New extent: the old one plus the box, grown generously on the sides that grow.
     const double growth = kGrowCells * res;
     double minX = x0_, minY = y0_, maxX = x0_ + width_ * res, maxY = y0_ + height_ * res;
     if (width_ == 0) {
-        minX = x - margin - growth / 2, maxX = x + margin + growth / 2;
-        minY = y - margin - growth / 2, maxY = y + margin + growth / 2;
+        minX = boxMinX - margin - growth / 2, maxX = boxMaxX + margin + growth / 2;
+        minY = boxMinY - margin - growth / 2, maxY = boxMaxY + margin + growth / 2;
     } else {
-        if (x - margin < minX)
-            minX = x - margin - growth;
-        if (x + margin >= maxX)
-            maxX = x + margin + growth;
-        if (y - margin < minY)
-            minY = y - margin - growth;
-        if (y + margin >= maxY)
-            maxY = y + margin + growth;
+        if (boxMinX - margin < minX)
+            minX = boxMinX - margin - growth;
+        if (boxMaxX + margin >= maxX)
+            maxX = boxMaxX + margin + growth;
+        if (boxMinY - margin < minY)
+            minY = boxMinY - margin - growth;
+        if (boxMaxY + margin >= maxY)
+            maxY = boxMaxY + margin + growth;
     }
     // Keep the cell lattice: new corner on a whole number of cells from the old one.
+    if (width_ == 0)
+        latticeX_ = minX, latticeY_ = minY, firstCellX_ = firstCellY_ = 0;
     const long shiftX = width_ > 0 ? long(std::ceil((x0_ - minX) / res)) : 0;
     const long shiftY = width_ > 0 ? long(std::ceil((y0_ - minY) / res)) : 0;
-    const double newX0 = width_ > 0 ? x0_ - shiftX * res : minX;
-    const double newY0 = width_ > 0 ? y0_ - shiftY * res : minY;
+    firstCellX_ -= shiftX, firstCellY_ -= shiftY;
+    const double newX0 = latticeX_ + double(firstCellX_) * res;
+    const double newY0 = latticeY_ + double(firstCellY_) * res;
     const long newWidth = long(std::ceil((maxX - newX0) / res)) + 1;
     const long newHeight = long(std::ceil((maxY - newY0) / res)) + 1;
     std::vector<Cell> cells(std::size_t(newWidth * newHeight));
@@ -128,10 +145,12 @@ void LineMap::stamp(std::uint32_t i) {
     const long xEnd = std::min(width_ - 1, px + stampRadius_) + 1;
     // Offsets of the first column's centre, stepped by one cell along the row (no per-cell
     // conversions: this runs for every cell around every new map point).
-    const float dxBegin = float(x0_ + (double(xBegin) + 0.5) * options_.resolution) - p.x;
+    const float dxBegin =
+        float(latticeX_ + (double(firstCellX_ + xBegin) + 0.5) * options_.resolution) - p.x;
     for (long cy = std::max(0L, py - stampRadius_); cy <= std::min(height_ - 1, py + stampRadius_);
          ++cy) {
-        const float dy = float(y0_ + (double(cy) + 0.5) * options_.resolution) - p.y;
+        const float dy =
+            float(latticeY_ + (double(firstCellY_ + cy) + 0.5) * options_.resolution) - p.y;
         const float dy2 = dy * dy;
         Cell* row = &cells_[std::size_t(cy * width_)];
         float dx = dxBegin;

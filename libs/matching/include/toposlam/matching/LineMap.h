@@ -77,8 +77,9 @@ class LineMap {
         std::uint32_t point = kNone;
         float distance2 = 0;  ///< squared distance of that point to the cell centre
     };
-    /// Makes the grid cover (x, y) +- radius, keeping what is stamped.
-    void cover(double x, double y);
+    /// Makes the grid cover the box [minX, maxX] x [minY, maxY] +- radius, keeping what is
+    /// stamped (one copy of the grid however many points the box holds).
+    void cover(double minX, double minY, double maxX, double maxY);
     /// Writes point i into every cell within radius whose current point is farther.
     void stamp(std::uint32_t i);
 
@@ -88,6 +89,10 @@ class LineMap {
     std::vector<Cell> cells_;
     long width_ = 0, height_ = 0;
     double x0_ = 0, y0_ = 0;  ///< corner of cell (0, 0), m
+    /// x0_ = latticeX_ + firstCellX_ * resolution (y alike), from whole numbers of cells off
+    /// the first corner: the same cells however the grid grew.
+    double latticeX_ = 0, latticeY_ = 0;
+    long firstCellX_ = 0, firstCellY_ = 0;
     double inverseResolution_ = 20;
     long stampRadius_ = 8;  ///< radius in cells
 };

@@ -57,6 +57,15 @@ void LineMap::insertSurface(const std::vector<SurfacePoint>& points,
             minX = std::min(minX, x), maxX = std::max(maxX, x);
             minY = std::min(minY, y), maxY = std::max(maxY, y);
         }
+        if (width_ == 0) {
+            // The lattice's corner where the first point alone puts it, as point-by-point
+            // growth did: the cells (and so every lookup) depend on where the lattice lies,
+            // not on how far the grid reaches.
+            const SurfacePoint& p = points.front();
+            const float x = float(sensorPose.x() + c * p.x - s * p.y);
+            const float y = float(sensorPose.y() + s * p.x + c * p.y);
+            cover(x, y, x, y);
+        }
         cover(minX, minY, maxX, maxY);
     }
     for (const SurfacePoint& p : points) {

@@ -21,10 +21,7 @@ bool contains(const std::string& text, const std::string& what) {
     return text.find(what) != std::string::npos;
 }
 
-std::string readFile(const std::string& path) {
-    std::ifstream in(path);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
+using toposlam::test::readFile;
 
 std::string write(const TempDir& dir, const std::string& name, const std::string& text) {
     std::ofstream(dir.file(name)) << text;

@@ -29,10 +29,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string readFile(const std::string& path) {
-    std::ifstream in(path);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
+using toposlam::test::readFile;
 
 void touch(const std::string& path, const std::string& text = "x\n") {
     std::ofstream(path) << text;

@@ -24,10 +24,7 @@ void writeText(const std::string& path, const std::string& text) {
     std::ofstream(path) << text;
 }
 
-std::string readText(const std::string& path) {
-    std::ifstream in(path);
-    return std::string((std::istreambuf_iterator<char>(in)), {});
-}
+using toposlam::test::readFile;
 
 // A CARMEN log of `n` FLASER lines (181 readings) with a robot moving along x, one scan every
 // 0.07 s from 9.9 s; scan 2 (10.04 s) is printed as old loggers did, with unpadded
@@ -100,7 +97,7 @@ TEST(ToposlamConvert, OdometryTrajectoryUsesPrintedStamps) {
     ASSERT_EQ(t.size(), 4u);
     EXPECT_EQ(t[2].stamp, 10.4) << "the stamp as printed, not the repaired time";
     EXPECT_EQ(t[3].pose.x, 0.3);
-    const std::string text = readText(dir.file("odo.txt"));
+    const std::string text = readFile(dir.file("odo.txt"));
     EXPECT_NE(text.find("\n10.4 0.2 0 0\n"), std::string::npos) << text;
 }
 
@@ -135,7 +132,7 @@ TEST(ToposlamConvert, BadLogsFailCleanly) {
     ASSERT_EQ(
         runApp("toposlam-convert", dir.file("ok.clf") + " -q -o " + dir.file("ok.rawlog")).exitCode,
         0);
-    std::string bytes = readText(dir.file("ok.rawlog"));
+    std::string bytes = readFile(dir.file("ok.rawlog"));
     fs::remove(dir.file("ok.rawlog"));
     // All records have the same size: cut inside one (a cut exactly between two objects
     // cannot be told from the end of a plain rawlog).
@@ -260,7 +257,7 @@ TEST(ToposlamConvert, MitCsailWithMrptTools) {
 
     r = runApp("toposlam-convert", clf + " -q --max-scans 500 -o " + dir.file("mit500.rawlog"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    std::string ini = readText(std::string(TOPOSLAM_CONFIG_DIR) + "/icp-slam-carmen.ini");
+    std::string ini = readFile(std::string(TOPOSLAM_CONFIG_DIR) + "/icp-slam-carmen.ini");
     const std::string key = "logOutput_dir = icp-slam-out";
     ASSERT_NE(ini.find(key), std::string::npos);
     ini.replace(ini.find(key), key.size(), "logOutput_dir = " + dir.file("icp"));

@@ -6,9 +6,7 @@
 
 #include "TestSupport.h"
 
-#include <fstream>
 #include <regex>
-#include <sstream>
 #include <string>
 
 using namespace toposlam;
@@ -18,10 +16,9 @@ namespace {
 // config_ini/toposlam-slam.ini with the contested-loop rule on (loop_contested_support = 4),
 // whose guards against look-alike places these tours exercise.
 std::string slamIniWithContestedLoops() {
-    std::ifstream file(std::string(TOPOSLAM_TEST_SOURCE_DIR) + "/config_ini/toposlam-slam.ini");
-    std::stringstream text;
-    text << file.rdbuf();
-    return std::regex_replace(text.str(), std::regex("\nloop_contested_support = [0-9]+"),
+    const std::string text =
+        test::readFile(std::string(TOPOSLAM_TEST_SOURCE_DIR) + "/config_ini/toposlam-slam.ini");
+    return std::regex_replace(text, std::regex("\nloop_contested_support = [0-9]+"),
                               "\nloop_contested_support = 4");
 }
 

@@ -16,7 +16,6 @@
 
 #include <cmath>
 #include <fstream>
-#include <iterator>
 #include <string>
 #include <utility>
 
@@ -122,18 +121,11 @@ TEST(CGraphSlamBuilder, AppOutputsAreReadByMrpt) {
         simplemap.getAsPair(0).sf->getObservationByClass<features::CObservationLaserFeatures>());
 }
 
-namespace {
-std::string textOf(const std::string& path) {
-    std::ifstream in(path);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-}  // namespace
-
 // The summary names the loop rules that are off instead of counting what they could not do.
 TEST(CGraphSlamBuilder, SummarySaysWhichLoopRulesRan) {
     const test::TempDir dir;
     test::writeRawlog(roomTour(), dir.file("tour.rawlog"));
-    std::string ini = textOf(kConfig);
+    std::string ini = test::readFile(kConfig);
     for (const auto& [from, to] :
          {std::pair<std::string, std::string>{"\nglobal_search_every = 0",
                                               "\nglobal_search_every = 10"},
@@ -149,7 +141,7 @@ TEST(CGraphSlamBuilder, SummarySaysWhichLoopRulesRan) {
             test::runApp("toposlam-slam", "'" + (on ? dir.file("rules-on.ini") : kConfig) + "' '" +
                                               dir.file("tour.rawlog") + "' -o '" + out + "'");
         ASSERT_EQ(run.exitCode, 0) << run.output;
-        const std::string text = textOf(out + "/summary.txt");
+        const std::string text = test::readFile(out + "/summary.txt");
         const auto loops = io::loadJsonFile(out + "/summary.json").at("loops");
         EXPECT_EQ(loops.at("guess_free_search").get<bool>(), on);
         EXPECT_EQ(loops.at("contested_rule").get<bool>(), on);

@@ -20,10 +20,7 @@ std::string quoted(const std::string& s) {
     return "'" + s + "'";
 }
 
-std::string readFile(const std::string& path) {
-    std::ifstream in(path);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
+using toposlam::test::readFile;
 
 // rooms.json and rooms.graphml of the office, segmented once for all tests.
 const std::string& roomsDir() {

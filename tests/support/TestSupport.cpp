@@ -6,6 +6,8 @@
 #include <atomic>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 namespace toposlam::test {
 
@@ -69,6 +71,11 @@ CommandResult runCommand(const std::string& command) {
 
 CommandResult runApp(const std::string& app, const std::string& args) {
     return runCommand("'" + binDir() + "/" + app + "' " + args);
+}
+
+std::string readFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 }  // namespace toposlam::test

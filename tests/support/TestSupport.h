@@ -39,6 +39,9 @@ CommandResult runCommand(const std::string& command);
 /// Runs bin/<app> with `args`.
 CommandResult runApp(const std::string& app, const std::string& args);
 
+/// The whole content of the file at `path` ("" when it cannot be read).
+std::string readFile(const std::string& path);
+
 }  // namespace toposlam::test
 
 /// Skips the current test, with a message, when ../shared/data/<relative> is absent;

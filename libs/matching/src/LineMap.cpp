@@ -45,29 +45,12 @@ void LineMap::insertScan(const PolarScan& scan, const mrpt::poses::CPose2D& sens
 
 void LineMap::insertSurface(const std::vector<SurfacePoint>& points,
                             const mrpt::poses::CPose2D& sensorPose) {
+    if (points.empty())
+        return;
     const double c = std::cos(sensorPose.phi()), s = std::sin(sensorPose.phi());
-    // Grow the grid once for the whole scan: point by point, far readings regrow (and copy)
-    // it again and again.
-    if (!points.empty()) {
-        double minX = std::numeric_limits<double>::infinity(), minY = minX;
-        double maxX = -minX, maxY = -minX;
-        for (const SurfacePoint& p : points) {
-            const double x = sensorPose.x() + c * p.x - s * p.y;
-            const double y = sensorPose.y() + s * p.x + c * p.y;
-            minX = std::min(minX, x), maxX = std::max(maxX, x);
-            minY = std::min(minY, y), maxY = std::max(maxY, y);
-        }
-        if (width_ == 0) {
-            // The lattice's corner where the first point alone puts it, as point-by-point
-            // growth did: the cells (and so every lookup) depend on where the lattice lies,
-            // not on how far the grid reaches.
-            const SurfacePoint& p = points.front();
-            const float x = float(sensorPose.x() + c * p.x - s * p.y);
-            const float y = float(sensorPose.y() + s * p.x + c * p.y);
-            cover(x, y, x, y);
-        }
-        cover(minX, minY, maxX, maxY);
-    }
+    inMapFrame_.clear();
+    float minX = std::numeric_limits<float>::infinity(), minY = minX;
+    float maxX = -minX, maxY = -minX;
     for (const SurfacePoint& p : points) {
         LineMapPoint m;
         m.x = float(sensorPose.x() + c * p.x - s * p.y);
@@ -75,8 +58,22 @@ void LineMap::insertSurface(const std::vector<SurfacePoint>& points,
         m.nx = float(c * p.nx - s * p.ny);
         m.ny = float(s * p.nx + c * p.ny);
         m.weight = 1;
-        insert(m);
+        inMapFrame_.push_back(m);
+        minX = std::min(minX, m.x), maxX = std::max(maxX, m.x);
+        minY = std::min(minY, m.y), maxY = std::max(maxY, m.y);
     }
+    // Grow the grid once for the whole scan: point by point, far readings regrow (and copy)
+    // it again and again.
+    if (width_ == 0) {
+        // The lattice's corner where the first point alone puts it, as point-by-point growth
+        // did: the cells (and so every lookup) depend on where the lattice lies, not on how
+        // far the grid reaches.
+        cover(inMapFrame_.front().x, inMapFrame_.front().y, inMapFrame_.front().x,
+              inMapFrame_.front().y);
+    }
+    cover(minX, minY, maxX, maxY);
+    for (const LineMapPoint& m : inMapFrame_)
+        insert(m);
 }
 
 void LineMap::insert(const LineMapPoint& p) {

@@ -85,7 +85,8 @@ class LineMap {
 
     LineMapOptions options_;
     std::vector<LineMapPoint> points_;
-    std::vector<SurfacePoint> surface_;  // insertScan's scratch
+    std::vector<SurfacePoint> surface_;     // insertScan's scratch
+    std::vector<LineMapPoint> inMapFrame_;  // insertSurface's scratch
     std::vector<Cell> cells_;
     long width_ = 0, height_ = 0;
     double x0_ = 0, y0_ = 0;  ///< corner of cell (0, 0), m

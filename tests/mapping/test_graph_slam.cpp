@@ -164,7 +164,7 @@ std::vector<mrpt::math::TPoint2D> threeVisitsOfTheFirstOffice() {
     return path;
 }
 
-/// The odometry errors of the identical-room tests.
+/// The odometry errors of the identical-room tests (4 % long, 3 % over-turned, 0.003 rad/m).
 test::OdometryErrors officeOdometryErrors() {
     test::OdometryErrors errors;
     errors.distanceScale = 1.04;
@@ -302,12 +302,8 @@ TEST(GraphSlam, NoWrongLoopBetweenIdenticalRooms) {
     }
     path.push_back({24.2, 1.0});
     path.push_back({0.8, 1.0});
-    test::OdometryErrors errors;
-    errors.distanceScale = 1.04;
-    errors.turnScale = 1.03;
-    errors.headingDriftPerMetre = 0.003;
     const auto truth = test::drivePath(path);
-    const auto drive = test::simulateDrive(identicalRooms(rooms), truth, errors, 5);
+    const auto drive = test::simulateDrive(identicalRooms(rooms), truth, officeOdometryErrors(), 5);
     const SlamRun run = runSlam(drive);
 
     const auto kfTruth = scanTruthOfKeyframes(*run.slam, truth);

@@ -10,8 +10,15 @@ namespace toposlam::matching {
 namespace {
 /// Normals closer than this (cosine) belong to the same surface when fusing: 25 deg.
 constexpr float kSameSurfaceCos = 0.9f;
-/// The grid grows by at least this many cells on the side it grows (fewer re-copies).
-constexpr long kGrowCells = 200;
+/// The directory grows by this many tiles on the side it grows (fewer re-copies).
+constexpr long kGrowTiles = 4;
+/// The lattice's anchor lies this many cells below and left of the first point's box.
+constexpr long kAnchorCells = 100;
+
+/// a / b rounded towards minus infinity (b > 0).
+long floorDiv(long a, long b) {
+    return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
 }  // namespace
 
 LineMap::LineMap(const LineMapOptions& options)
@@ -21,7 +28,8 @@ LineMap::LineMap(const LineMapOptions& options)
 
 void LineMap::clear() {
     points_.clear();
-    std::fill(cells_.begin(), cells_.end(), Cell());
+    tilesUsed_ = 0;
+    std::fill(tileOf_.begin(), tileOf_.end(), kNone);
 }
 
 void surfacePoints(const PolarScan& scan, const LineMapOptions& options,
@@ -64,7 +72,7 @@ void LineMap::insertSurface(const std::vector<SurfacePoint>& points,
     }
     // Grow the grid once for the whole scan: point by point, far readings regrow (and copy)
     // it again and again.
-    if (width_ == 0) {
+    if (tilesX_ == 0) {
         // The lattice's corner where the first point alone puts it, as point-by-point growth
         // did: the cells (and so every lookup) depend on where the lattice lies, not on how
         // far the grid reaches.
@@ -103,68 +111,80 @@ void LineMap::insert(const LineMapPoint& p) {
 
 void LineMap::cover(double boxMinX, double boxMinY, double boxMaxX, double boxMaxY) {
     const double margin = options_.radius + options_.resolution;
-    const double res = options_.resolution;
-    if (width_ > 0 && boxMinX - margin >= x0_ && boxMinY - margin >= y0_ &&
-        boxMaxX + margin < x0_ + width_ * res && boxMaxY + margin < y0_ + height_ * res)
-        return;
-    // New extent: the old one plus the box, grown generously on the sides that grow.
-    const double growth = kGrowCells * res;
-    double minX = x0_, minY = y0_, maxX = x0_ + width_ * res, maxY = y0_ + height_ * res;
-    if (width_ == 0) {
-        minX = boxMinX - margin - growth / 2, maxX = boxMaxX + margin + growth / 2;
-        minY = boxMinY - margin - growth / 2, maxY = boxMaxY + margin + growth / 2;
-    } else {
-        if (boxMinX - margin < minX)
-            minX = boxMinX - margin - growth;
-        if (boxMaxX + margin >= maxX)
-            maxX = boxMaxX + margin + growth;
-        if (boxMinY - margin < minY)
-            minY = boxMinY - margin - growth;
-        if (boxMaxY + margin >= maxY)
-            maxY = boxMaxY + margin + growth;
+    if (tilesX_ == 0) {
+        latticeX_ = boxMinX - margin - double(kAnchorCells) * options_.resolution;
+        latticeY_ = boxMinY - margin - double(kAnchorCells) * options_.resolution;
     }
-    // Keep the cell lattice: new corner on a whole number of cells from the old one.
-    if (width_ == 0)
-        latticeX_ = minX, latticeY_ = minY, firstCellX_ = firstCellY_ = 0;
-    const long shiftX = width_ > 0 ? long(std::ceil((x0_ - minX) / res)) : 0;
-    const long shiftY = width_ > 0 ? long(std::ceil((y0_ - minY) / res)) : 0;
-    firstCellX_ -= shiftX, firstCellY_ -= shiftY;
-    const double newX0 = latticeX_ + double(firstCellX_) * res;
-    const double newY0 = latticeY_ + double(firstCellY_) * res;
-    const long newWidth = long(std::ceil((maxX - newX0) / res)) + 1;
-    const long newHeight = long(std::ceil((maxY - newY0) / res)) + 1;
-    std::vector<Cell> cells(std::size_t(newWidth * newHeight));
-    for (long cy = 0; cy < height_; ++cy)
-        std::copy_n(cells_.begin() + cy * width_, width_,
-                    cells.begin() + (cy + shiftY) * newWidth + shiftX);
-    cells_.swap(cells);
-    x0_ = newX0, y0_ = newY0, width_ = newWidth, height_ = newHeight;
+    // Tiles (counted from the lattice's anchor) that the box plus margin touches.
+    const auto tileIndex = [&](double v, double lattice) {
+        return floorDiv(long(std::floor((v - lattice) * inverseResolution_)), kTile);
+    };
+    const long needMinX = tileIndex(boxMinX - margin, latticeX_);
+    const long needMinY = tileIndex(boxMinY - margin, latticeY_);
+    const long needMaxX = tileIndex(boxMaxX + margin, latticeX_);
+    const long needMaxY = tileIndex(boxMaxY + margin, latticeY_);
+    const long firstX = firstCellX_ / kTile, firstY = firstCellY_ / kTile;
+    if (tilesX_ > 0 && needMinX >= firstX && needMinY >= firstY && needMaxX < firstX + tilesX_ &&
+        needMaxY < firstY + tilesY_)
+        return;
+    // New extent: the old one plus the box, grown on the sides that grow.
+    long minX = needMinX, minY = needMinY, maxX = needMaxX, maxY = needMaxY;
+    if (tilesX_ > 0) {
+        minX = needMinX < firstX ? needMinX - kGrowTiles : firstX;
+        minY = needMinY < firstY ? needMinY - kGrowTiles : firstY;
+        maxX = needMaxX >= firstX + tilesX_ ? needMaxX + kGrowTiles : firstX + tilesX_ - 1;
+        maxY = needMaxY >= firstY + tilesY_ ? needMaxY + kGrowTiles : firstY + tilesY_ - 1;
+    }
+    const long newTilesX = maxX - minX + 1, newTilesY = maxY - minY + 1;
+    std::vector<std::uint32_t> tileOf(std::size_t(newTilesX * newTilesY), kNone);
+    for (long ty = 0; ty < tilesY_; ++ty)
+        std::copy_n(tileOf_.begin() + ty * tilesX_, tilesX_,
+                    tileOf.begin() + (ty + firstY - minY) * newTilesX + (firstX - minX));
+    tileOf_.swap(tileOf);
+    tilesX_ = newTilesX, tilesY_ = newTilesY;
+    firstCellX_ = minX * kTile, firstCellY_ = minY * kTile;
+}
+
+LineMap::Cell* LineMap::tileAt(long tx, long ty) {
+    std::uint32_t& tile = tileOf_[std::size_t(ty * tilesX_ + tx)];
+    if (tile == kNone) {
+        if ((tilesUsed_ + 1) * kTileCells > cells_.size())
+            cells_.resize((tilesUsed_ + 1) * kTileCells);
+        std::fill_n(cells_.begin() + std::ptrdiff_t(tilesUsed_ * kTileCells), kTileCells, Cell());
+        tile = std::uint32_t(tilesUsed_++);
+    }
+    return &cells_[std::size_t(tile) * kTileCells];
 }
 
 void LineMap::stamp(std::uint32_t i) {
     const LineMapPoint& p = points_[i];
     const float res = float(options_.resolution);
-    const long px = long(std::floor((p.x - x0_) * inverseResolution_));
-    const long py = long(std::floor((p.y - y0_) * inverseResolution_));
+    // Cells counted from the directory's first one; cover() put the whole stamp inside it.
+    const long px = long(std::floor((p.x - latticeX_) * inverseResolution_)) - firstCellX_;
+    const long py = long(std::floor((p.y - latticeY_) * inverseResolution_)) - firstCellY_;
     const float r2 = float(options_.radius * options_.radius);
-    const long xBegin = std::max(0L, px - stampRadius_);
-    const long xEnd = std::min(width_ - 1, px + stampRadius_) + 1;
+    const long xBegin = px - stampRadius_, xEnd = px + stampRadius_ + 1;
     // Offsets of the first column's centre, stepped by one cell along the row (no per-cell
     // conversions: this runs for every cell around every new map point).
     const float dxBegin =
         float(latticeX_ + (double(firstCellX_ + xBegin) + 0.5) * options_.resolution) - p.x;
-    for (long cy = std::max(0L, py - stampRadius_); cy <= std::min(height_ - 1, py + stampRadius_);
-         ++cy) {
+    for (long cy = py - stampRadius_; cy <= py + stampRadius_; ++cy) {
         const float dy =
             float(latticeY_ + (double(firstCellY_ + cy) + 0.5) * options_.resolution) - p.y;
         const float dy2 = dy * dy;
-        Cell* row = &cells_[std::size_t(cy * width_)];
+        if (dy2 > r2)
+            continue;  // no cell of this row is within radius: make no tile for it
         float dx = dxBegin;
-        for (long cx = xBegin; cx < xEnd; ++cx, dx += res) {
-            const float d2 = dx * dx + dy2;
-            Cell& cell = row[cx];
-            if (d2 <= r2 && (cell.point == kNone || d2 < cell.distance2))
-                cell = {i, d2};
+        for (long cx = xBegin; cx < xEnd;) {
+            // The run of this row inside one tile.
+            const long tx = cx / kTile, runEnd = std::min(xEnd, (tx + 1) * kTile);
+            Cell* row = tileAt(tx, cy / kTile) + (cy % kTile) * kTile;
+            for (; cx < runEnd; ++cx, dx += res) {
+                const float d2 = dx * dx + dy2;
+                Cell& cell = row[cx - tx * kTile];
+                if (d2 <= r2 && (cell.point == kNone || d2 < cell.distance2))
+                    cell = {i, d2};
+            }
         }
     }
 }

@@ -4,9 +4,11 @@
 // normal of the surface it lies on (fitLocalLine of its scan). Repeated observations of the
 // same surface are fused into the point already there (running mean of position and normal),
 // so walls seen from twenty poses stay one thin line of points rather than a noisy band.
-// A dense lookup grid stores, for every cell within `radius` of a map point, the map point
-// nearest to that cell's centre: association is one array read per point and ICP iteration,
-// with no search tree and no allocation. The grid grows as points arrive.
+// A lookup grid stores, for every cell within `radius` of a map point, the map point nearest to
+// that cell's centre: association is two array reads per point and ICP iteration, with no
+// search tree and no allocation. The grid is tiled: only tiles near map points exist, so a
+// laser reaching 80 m does not make the grid 160 m square (a small directory of tiles grows as
+// points arrive; the tiles are allocated once and reused after clear()).
 // All coordinates are in the map's own frame (m).
 #include <mrpt/poses/CPose2D.h>
 #include <toposlam/matching/PolarScan.h>
@@ -60,26 +62,38 @@ class LineMap {
 
     /// The map point nearest to (x, y)'s lookup cell, or nullptr when none is within radius.
     const LineMapPoint* nearest(double x, double y) const {
-        const long cx = long(std::floor((x - x0_) * inverseResolution_));
-        const long cy = long(std::floor((y - y0_) * inverseResolution_));
-        if (cx < 0 || cy < 0 || cx >= width_ || cy >= height_)
+        // Cell indices on the lattice, counted from the directory's first tile.
+        const long cx = long(std::floor((x - latticeX_) * inverseResolution_)) - firstCellX_;
+        const long cy = long(std::floor((y - latticeY_) * inverseResolution_)) - firstCellY_;
+        if (cx < 0 || cy < 0 || cx >= tilesX_ * kTile || cy >= tilesY_ * kTile)
             return nullptr;
-        const std::uint32_t i = cells_[std::size_t(cy * width_ + cx)].point;
+        const std::uint32_t tile = tileOf_[std::size_t((cy / kTile) * tilesX_ + cx / kTile)];
+        if (tile == kNone)
+            return nullptr;
+        const std::uint32_t i =
+            cells_[std::size_t(tile) * kTileCells + std::size_t((cy % kTile) * kTile + cx % kTile)]
+                .point;
         return i == kNone ? nullptr : &points_[i];
     }
 
     std::size_t size() const { return points_.size(); }
+    /// Lookup cells in use (whole tiles near map points): the grid's memory is this times 8 B.
+    std::size_t lookupCells() const { return tilesUsed_ * kTileCells; }
     const std::vector<LineMapPoint>& points() const { return points_; }
 
   private:
     static constexpr std::uint32_t kNone = 0xffffffffu;
+    static constexpr long kTile = 32;  ///< cells along a tile's side (1.6 m at 5 cm)
+    static constexpr std::size_t kTileCells = std::size_t(kTile * kTile);
     struct Cell {
         std::uint32_t point = kNone;
         float distance2 = 0;  ///< squared distance of that point to the cell centre
     };
-    /// Makes the grid cover the box [minX, maxX] x [minY, maxY] +- radius, keeping what is
-    /// stamped (one copy of the grid however many points the box holds).
+    /// Makes the tile directory cover the box [minX, maxX] x [minY, maxY] +- radius (tiles
+    /// themselves are made when a point is stamped into them).
     void cover(double minX, double minY, double maxX, double maxY);
+    /// The tile at directory position (tx, ty), made (empty) if it does not exist yet.
+    Cell* tileAt(long tx, long ty);
     /// Writes point i into every cell within radius whose current point is farther.
     void stamp(std::uint32_t i);
 
@@ -87,11 +101,16 @@ class LineMap {
     std::vector<LineMapPoint> points_;
     std::vector<SurfacePoint> surface_;     // insertScan's scratch
     std::vector<LineMapPoint> inMapFrame_;  // insertSurface's scratch
+    /// Tile k holds cells_[k * kTileCells, (k + 1) * kTileCells), row by row.
     std::vector<Cell> cells_;
-    long width_ = 0, height_ = 0;
-    double x0_ = 0, y0_ = 0;  ///< corner of cell (0, 0), m
-    /// x0_ = latticeX_ + firstCellX_ * resolution (y alike), from whole numbers of cells off
-    /// the first corner: the same cells however the grid grew.
+    std::size_t tilesUsed_ = 0;
+    /// tilesX_ x tilesY_ directory, row by row: the tile index, or kNone where none is made.
+    std::vector<std::uint32_t> tileOf_;
+    long tilesX_ = 0, tilesY_ = 0;
+    /// Cell (i, j) of the lattice has its corner at (latticeX_ + i * resolution, latticeY_ +
+    /// j * resolution): the lattice is anchored at the first point inserted, so the cells (and
+    /// every lookup) are the same however the directory grew. The directory starts at lattice
+    /// cell (firstCellX_, firstCellY_), a whole number of tiles from the anchor.
     double latticeX_ = 0, latticeY_ = 0;
     long firstCellX_ = 0, firstCellY_ = 0;
     double inverseResolution_ = 20;

@@ -1,0 +1,115 @@
+// LineMap's lookup: the point it returns against a brute-force search, fusing, and a grid that
+// stays small when readings lie far apart.
+#include <gtest/gtest.h>
+#include <toposlam/matching/LineMap.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace toposlam {
+namespace {
+
+using matching::LineMap;
+using matching::LineMapPoint;
+
+LineMapPoint pointAt(float x, float y, float nx = 1, float ny = 0) {
+    LineMapPoint p;
+    p.x = x, p.y = y, p.nx = nx, p.ny = ny, p.weight = 1;
+    return p;
+}
+
+double distance(const LineMapPoint& p, double x, double y) {
+    return std::hypot(p.x - x, p.y - y);
+}
+
+// The lookup answers with the point nearest to the query's cell centre, which is at most half a
+// cell diagonal from the query: so the answer is within one diagonal of the true nearest, and
+// there is an answer whenever a point lies within radius minus half a diagonal.
+void expectLookupMatchesBruteForce(const LineMap& map, double x, double y) {
+    const double halfDiagonal = map.options().resolution * std::sqrt(0.5);
+    double best = INFINITY;
+    for (const LineMapPoint& p : map.points())
+        best = std::min(best, distance(p, x, y));
+    const LineMapPoint* found = map.nearest(x, y);
+    if (found == nullptr) {
+        EXPECT_GT(best, map.options().radius - halfDiagonal) << "at " << x << ", " << y;
+        return;
+    }
+    EXPECT_LE(distance(*found, x, y), map.options().radius + halfDiagonal);
+    EXPECT_LE(distance(*found, x, y), best + 2 * halfDiagonal) << "at " << x << ", " << y;
+}
+
+// Points scattered over two areas 150 m apart (as an 80 m laser sees a hall), inserted one by one
+// so that the grid grows in every direction: every lookup agrees with a brute-force search.
+TEST(LineMap, FindsTheNearestPointWhereverTheGridGrew) {
+    LineMap map;
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> near(-4, 4), offset(-0.5f, 0.5f);
+    for (int i = 0; i < 400; ++i) {
+        const float far = (i % 2 == 0) ? 0.0f : 150.0f;
+        // Normals differ point to point, so nothing is fused and every point stays.
+        const float a = float(i);
+        map.insert(pointAt(far + near(rng), -far + near(rng), std::cos(a), std::sin(a)));
+    }
+    ASSERT_GT(map.size(), 300u);
+    for (int q = 0; q < 4000; ++q) {
+        const float far = (q % 2 == 0) ? 0.0f : 150.0f;
+        expectLookupMatchesBruteForce(map, far + near(rng) + offset(rng),
+                                      -far + near(rng) + offset(rng));
+    }
+    // Between the two areas, far from every point: nothing.
+    EXPECT_EQ(map.nearest(75, -75), nullptr);
+    EXPECT_EQ(map.nearest(-1000, 1000), nullptr);
+}
+
+// Two readings 150 m apart need lookup cells around each, not a grid spanning both: a dense
+// 5 cm grid over that square would be 9 million cells.
+TEST(LineMap, KeepsLookupCellsOnlyNearItsPoints) {
+    LineMap map;
+    map.insert(pointAt(0, 0));
+    map.insert(pointAt(150, 150));
+    ASSERT_EQ(map.size(), 2u);
+    // Each point's 0.4 m disc spans at most 2 x 2 tiles of 32 x 32 cells.
+    EXPECT_LE(map.lookupCells(), 8u * 32u * 32u);
+    EXPECT_NE(map.nearest(150.1, 149.9), nullptr);
+    EXPECT_EQ(map.nearest(75, 75), nullptr);
+}
+
+// A second observation of the same surface close by is averaged into the point already there.
+TEST(LineMap, FusesRepeatedObservationsOfOneSurface) {
+    LineMap map;
+    map.insert(pointAt(1.0f, 2.0f));
+    map.insert(pointAt(1.02f, 2.0f));
+    ASSERT_EQ(map.size(), 1u);
+    EXPECT_NEAR(map.points()[0].x, 1.01, 1e-6);
+    EXPECT_FLOAT_EQ(map.points()[0].weight, 2);
+    // The opposite side of a thin wall (normal reversed) stays a point of its own.
+    map.insert(pointAt(1.02f, 2.0f, -1, 0));
+    EXPECT_EQ(map.size(), 2u);
+}
+
+// clear() empties the map but keeps its memory; the refilled map answers as a new one does.
+TEST(LineMap, AnswersAfterClearAsANewMapDoes) {
+    LineMap reused, fresh;
+    for (int i = 0; i < 50; ++i)
+        reused.insert(pointAt(float(i), 0));
+    reused.clear();
+    EXPECT_EQ(reused.size(), 0u);
+    EXPECT_EQ(reused.nearest(10, 0), nullptr);
+    for (int i = 0; i < 20; ++i) {
+        reused.insert(pointAt(0.3f * float(i), 5, 0, 1));
+        fresh.insert(pointAt(0.3f * float(i), 5, 0, 1));
+    }
+    for (double x = -1; x < 7; x += 0.037) {
+        const LineMapPoint* a = reused.nearest(x, 5.1);
+        const LineMapPoint* b = fresh.nearest(x, 5.1);
+        ASSERT_EQ(a == nullptr, b == nullptr) << x;
+        if (a != nullptr) {
+            EXPECT_EQ(a - reused.points().data(), b - fresh.points().data()) << x;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace toposlam

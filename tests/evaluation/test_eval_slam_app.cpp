@@ -136,6 +136,11 @@ TEST(EvalSlamApp, GroundTruthModeAddsAteAndWritesTheRelations) {
     ASSERT_EQ(scales.size(), 5u);
     EXPECT_EQ(scales.back().at("separation_m"), 8.0);
     EXPECT_EQ(scales.back().at("relations_total"), 1);
+    // Straight motion only: every relation is in the first turn bin.
+    const auto& turns = json.at("methods").at(0).at("by_turn");
+    ASSERT_EQ(turns.size(), 4u);
+    EXPECT_EQ(turns.at(0).at("relations_total"), 53);
+    EXPECT_EQ(turns.at(3).at("max_turn_deg"), 180.0);
     EXPECT_EQ(json.at("reference").at("kind"), "ground_truth");
     EXPECT_EQ(json.at("methods").at(0).at("ate").at("matched_poses"), 21);
     std::ifstream relationsOut(rel);

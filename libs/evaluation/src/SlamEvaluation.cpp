@@ -3,9 +3,12 @@
 #include <toposlam/io/JsonFile.h>
 #include <toposlam/io/TextFile.h>
 
+#include <mrpt/math/wrap2pi.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 
@@ -22,6 +25,28 @@ MethodEvaluation evaluateMethod(const std::string& name, const std::string& sour
     m.relative = evaluateRelativePoseError(estimate, relations, {stampTolerance});
     if (groundTruth) {
         m.absolute = evaluateAbsoluteTrajectoryError(estimate, *groundTruth, stampTolerance);
+    }
+    for (std::size_t b = 0; b + 1 < std::size(kTurnBinEdgesDeg); ++b) {
+        TurnErrors bin;
+        bin.minTurnDeg = kTurnBinEdgesDeg[b];
+        bin.maxTurnDeg = kTurnBinEdgesDeg[b + 1];
+        const bool last = b + 2 == std::size(kTurnBinEdgesDeg);
+        const auto inBin = [&](const PoseRelation& r) {
+            const double turn = std::abs(mrpt::math::wrapToPi(r.motion.phi)) * 180.0 / M_PI;
+            return turn >= bin.minTurnDeg && (turn < bin.maxTurnDeg || last);
+        };
+        bin.totalRelations =
+            static_cast<std::size_t>(std::count_if(relations.begin(), relations.end(), inBin));
+        std::vector<double> translation, rotation;
+        for (const RelationError& e : m.relative.errors) {
+            if (!inBin(relations[e.relation]))
+                continue;
+            translation.push_back(e.translation);
+            rotation.push_back(e.rotationDeg);
+        }
+        bin.translation = summarizeErrors(translation);
+        bin.rotation = summarizeErrors(rotation);
+        m.byTurn.push_back(bin);
     }
     if (separations) {
         if (separations->size() != relations.size()) {
@@ -97,6 +122,30 @@ std::string formatEvaluationTable(const SlamEvaluation& ev) {
             }
         }
         out << "\n";
+    }
+
+    const auto& turns = ev.methods.empty() ? std::vector<TurnErrors>() : ev.methods.front().byTurn;
+    if (!turns.empty()) {
+        out << "\nTranslational error (m) by the reference motion's turn |Δyaw|, mean ± std "
+               "(relations); scoring a frame d m off the reference's adds up to "
+               "2·d·sin(|Δyaw|/2) (compare with --frame-offset):\n\n| method |";
+        for (const TurnErrors& t : turns) {
+            out << " " << formatFixed(t.minTurnDeg, 0) << "–" << formatFixed(t.maxTurnDeg, 0)
+                << "° (" << t.totalRelations << ") |";
+        }
+        out << "\n|---|";
+        for (std::size_t i = 0; i < turns.size(); ++i)
+            out << "---|";
+        out << "\n";
+        for (const MethodEvaluation& m : ev.methods) {
+            out << "| " << m.name << " |";
+            for (const TurnErrors& t : m.byTurn) {
+                out << " "
+                    << (t.translation.count ? formatMeanStd(t.translation, 4) : std::string("–"))
+                    << " |";
+            }
+            out << "\n";
+        }
     }
 
     const auto& scales =
@@ -178,6 +227,15 @@ io::Json methodJson(const MethodEvaluation& m) {
                       {"position_m", jsonStats(a.position)},
                       {"heading_deg", jsonStats(a.heading)}};
     }
+    io::Json turns = io::Json::array();
+    for (const TurnErrors& t : m.byTurn) {
+        turns.push_back({{"min_turn_deg", jsonNumber(t.minTurnDeg)},
+                         {"max_turn_deg", jsonNumber(t.maxTurnDeg)},
+                         {"relations_total", t.totalRelations},
+                         {"translation_m", jsonStats(t.translation)},
+                         {"rotation_deg", jsonStats(t.rotation)}});
+    }
+    out["by_turn"] = turns;
     if (!m.bySeparation.empty()) {
         io::Json scales = io::Json::array();
         for (const SeparationErrors& s : m.bySeparation) {

@@ -23,6 +23,20 @@ struct SeparationErrors {
     ErrorStatistics rotation;        ///< degrees
 };
 
+/// The errors of the relations whose reference motion turns by [minTurnDeg, maxTurnDeg)
+/// (|yaw| of δ_gt; the last bin includes 180°). A trajectory given in another frame on the
+/// robot than the reference's shows here: a frame d m off adds 2·d·sin(θ/2) to a relation
+/// that turns by θ, so its error grows with the turn while a well-framed one stays flat.
+struct TurnErrors {
+    double minTurnDeg = 0, maxTurnDeg = 0;  ///< degrees
+    std::size_t totalRelations = 0;         ///< relations of this bin
+    ErrorStatistics translation;            ///< m, over the matched ones
+    ErrorStatistics rotation;               ///< degrees
+};
+
+/// Bin edges of MethodEvaluation::byTurn, degrees.
+inline constexpr double kTurnBinEdgesDeg[] = {0, 45, 90, 135, 180};
+
 struct MethodEvaluation {
     std::string name;    ///< label in the table, e.g. "odometry", "icp-slam"
     std::string source;  ///< where the trajectory came from (file names)
@@ -32,6 +46,8 @@ struct MethodEvaluation {
     std::optional<AbsoluteTrajectoryErrorResult> absolute;
     /// Only when the relations come with their separations (ground-truth reference).
     std::vector<SeparationErrors> bySeparation;
+    /// Always: one entry per bin of kTurnBinEdgesDeg.
+    std::vector<TurnErrors> byTurn;
 };
 
 struct SlamEvaluation {
@@ -50,15 +66,16 @@ struct SlamEvaluation {
 };
 
 /// Scores one trajectory: the relation metric, and the ATE when `groundTruth` is given;
-/// broken down by scale when `separations` (one per relation) is given.
+/// broken down by the reference motion's turn, and by scale when `separations` (one per
+/// relation) is given.
 MethodEvaluation evaluateMethod(const std::string& name, const std::string& source,
                                 const io::Trajectory2D& estimate, const PoseRelations& relations,
                                 const io::Trajectory2D* groundTruth, double stampTolerance,
                                 const std::vector<double>* separations = nullptr);
 
 /// A Markdown table (readable in a terminal, pasteable into a README), one row per method,
-/// preceded by a line that names the reference; with a ground-truth reference, a second table
-/// of the translational error by relation separation.
+/// preceded by a line that names the reference; then the translational error by the
+/// relations' turn and, with a ground-truth reference, by relation separation.
 std::string formatEvaluationTable(const SlamEvaluation& evaluation);
 
 /// The whole evaluation as a JSON document (keys: share/doc/apps.md).

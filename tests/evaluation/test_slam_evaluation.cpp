@@ -1,0 +1,57 @@
+// evaluateMethod's breakdown by the reference motion's turn: a trajectory given 0.1 m ahead of
+// the reference's frame is exact on straight relations and off by 2·d·sin(θ/2) on turns.
+#include <gtest/gtest.h>
+#include <toposlam/evaluation/SlamEvaluation.h>
+
+#include <mrpt/poses/CPose2D.h>
+
+#include <cmath>
+
+namespace toposlam::evaluation {
+namespace {
+
+TEST(SlamEvaluation, ErrorsByTurnShowAFrameOffset) {
+    // Reference: 1 m ahead, then two quarter turns on the spot.
+    const io::Trajectory2D truth = {
+        {1, {0, 0, 0}}, {2, {1, 0, 0}}, {3, {1, 0, M_PI / 2}}, {4, {1, 0, M_PI}}};
+    io::Trajectory2D ahead;
+    for (const io::TimedPose2D& p : truth) {
+        const mrpt::poses::CPose2D moved =
+            mrpt::poses::CPose2D(p.pose) + mrpt::poses::CPose2D(0.1, 0, 0);
+        ahead.push_back({p.stamp, moved.asTPose()});
+    }
+    PoseRelations relations;
+    for (const auto& [a, b] : {std::pair{0, 1}, {1, 2}, {2, 3}, {1, 3}}) {
+        const mrpt::poses::CPose2D motion =
+            mrpt::poses::CPose2D(truth[b].pose) - mrpt::poses::CPose2D(truth[a].pose);
+        relations.push_back({truth[a].stamp, truth[b].stamp, motion.asTPose()});
+    }
+    const MethodEvaluation m = evaluateMethod("ahead", "", ahead, relations, nullptr, 1e-5);
+    ASSERT_EQ(m.byTurn.size(), 4u);
+    EXPECT_EQ(m.byTurn[0].minTurnDeg, 0);
+    EXPECT_EQ(m.byTurn[3].maxTurnDeg, 180);
+    // 0 deg: exact; 90 deg (two relations): 2 * 0.1 * sin(45 deg); 180 deg (last bin, closed):
+    // 0.2 m. No relation turns by 45-90 deg.
+    EXPECT_EQ(m.byTurn[0].totalRelations, 1u);
+    EXPECT_NEAR(m.byTurn[0].translation.mean, 0, 1e-12);
+    EXPECT_EQ(m.byTurn[1].totalRelations, 0u);
+    EXPECT_EQ(m.byTurn[1].translation.count, 0u);
+    EXPECT_EQ(m.byTurn[2].totalRelations, 2u);
+    EXPECT_NEAR(m.byTurn[2].translation.mean, 0.2 * std::sin(M_PI / 4), 1e-12);
+    EXPECT_EQ(m.byTurn[3].totalRelations, 1u);
+    EXPECT_NEAR(m.byTurn[3].translation.mean, 0.2, 1e-12);
+
+    // The table: one column per bin, "–" where no relation falls.
+    SlamEvaluation ev;
+    ev.methods.push_back(m);
+    const std::string table = formatEvaluationTable(ev);
+    EXPECT_NE(table.find("| method | 0–45° (1) | 45–90° (0) | 90–135° (2) | 135–180° (1) |"),
+              std::string::npos)
+        << table;
+    EXPECT_NE(table.find("| ahead | 0.0000 ± 0.0000 | – | 0.1414 ± 0.0000 | 0.2000 ± 0.0000 |"),
+              std::string::npos)
+        << table;
+}
+
+}  // namespace
+}  // namespace toposlam::evaluation

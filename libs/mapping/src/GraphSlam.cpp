@@ -2,6 +2,7 @@
 #include <toposlam/io/CpuTime.h>
 #include <toposlam/mapping/GraphSlam.h>
 #include <toposlam/mapping/MapRange.h>
+#include <toposlam/mapping/TrajectorySmoother.h>
 
 #include <cmath>
 #include <cstdio>
@@ -50,6 +51,29 @@ GraphSlam::GraphSlam(const GraphSlamOptions& options,
 
 CPose2D GraphSlam::scanPose(std::size_t i) const {
     return graph_.pose(scans_[i].keyframe) + scans_[i].fromKeyframe;
+}
+
+std::vector<CPose2D> GraphSlam::scanPoses() const {
+    std::vector<SmoothingInput> in(scans_.size());
+    for (std::size_t i = 0; i < scans_.size(); ++i) {
+        const ScanRecord& s = scans_[i];
+        in[i].pose = scanPose(i);
+        in[i].fixed = keyframes_[s.keyframe].scanIndex == i;  // the keyframe's own scan
+        in[i].poseVariance = s.registrationVariance;
+        in[i].odometry = s.odometry;
+        if (s.odometry) {
+            const double sigma =
+                options_.odometrySigmaXY + options_.odometrySigmaXYPerMetre * s.odometry->norm();
+            in[i].odometryVariance = sigma * sigma;
+        }
+    }
+    if (!options_.smoothScans) {
+        std::vector<CPose2D> out;
+        for (const SmoothingInput& s : in)
+            out.push_back(s.pose);
+        return out;
+    }
+    return smoothScanPositions(in);
 }
 
 Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
@@ -148,8 +172,14 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
         addKeyframe(scan, r, pose, storedFeatures);
     } else {
         const std::size_t kf = keyframes_.back().id;
-        scans_.push_back({kf, pose - graph_.pose(kf)});
+        scans_.push_back({kf, pose - graph_.pose(kf), std::nullopt, 0});
     }
+    // What places this scan apart from the graph: its registration, and the odometry since
+    // the previous scan (not when it jumped: then the prediction was not the odometry's).
+    ScanRecord& record = scans_.back();
+    record.registrationVariance = 0.5 * (r.covariance(0, 0) + r.covariance(1, 1));
+    if (odometryIncrement && !prediction.odometryJumped)
+        record.odometry = odometryIncrement;
 }
 
 void GraphSlam::addKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
@@ -180,7 +210,7 @@ void GraphSlam::addKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
     keyframes_.push_back(std::move(kf));
     if (keyframes_.size() > 1)
         addKeyframeEdges(r, keyframes_.back());
-    scans_.push_back({keyframes_.back().id, CPose2D()});
+    scans_.push_back({keyframes_.back().id, CPose2D(), std::nullopt, 0});
     odometrySinceKeyframe_ = turnSinceKeyframe_ = 0;
     ++stats_.keyframes;
     updateSubmaps(keyframes_.back());

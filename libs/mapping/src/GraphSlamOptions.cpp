@@ -73,6 +73,8 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "registration edges: smallest position sigma (ICP's own is too confident)")
         .above(0);
     s.angle("edge_min_sigma_phi", edgeMinSigmaPhi, "... and heading sigma").above(0);
+    s.flag("smooth_scans", smoothScans,
+           "output: positions between keyframes from registration and odometry together");
     std::vector<std::pair<std::string, std::string>> extractors;
     for (const std::string& name : features::featureExtractorNames())
         extractors.emplace_back(name, name);

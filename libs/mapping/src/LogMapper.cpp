@@ -60,8 +60,9 @@ void runGraphEngine(const std::string& logPath, const mrpt::config::CConfigFileB
     });
     builder.finish();
     const GraphSlam& slam = builder.slam();
+    const std::vector<mrpt::poses::CPose2D> poses = slam.scanPoses();
     for (std::size_t i = 0; i < scans.size(); ++i) {
-        scans[i].robotPose = slam.scanPose(i);
+        scans[i].robotPose = poses[i];
         trajectory[i].pose = scans[i].robotPose.asTPose();
     }
     result.statistics = slam.statistics();

@@ -50,6 +50,9 @@ class GraphSlam {
     std::size_t scanCount() const { return scans_.size(); }
     /// Pose of scan i (0-based, in processing order) at the current graph estimate.
     mrpt::poses::CPose2D scanPose(std::size_t i) const;
+    /// Every scan's pose: scanPose(), with the positions between keyframes re-estimated from
+    /// registration and odometry together when `smooth_scans` is on (TrajectorySmoother.h).
+    std::vector<mrpt::poses::CPose2D> scanPoses() const;
     /// Pose of the last scan.
     mrpt::poses::CPose2D currentPose() const { return current_; }
     /// Covariance of the last scan's pose relative to its keyframe (m^2, rad^2).
@@ -64,6 +67,9 @@ class GraphSlam {
     struct ScanRecord {
         std::size_t keyframe;               ///< the keyframe it hangs off
         mrpt::poses::CPose2D fromKeyframe;  ///< its robot pose in that keyframe's frame
+        /// Odometry since the previous scan (none: first scan, missing, or a jump).
+        std::optional<mrpt::poses::CPose2D> odometry;
+        double registrationVariance = 0;  ///< m², per coordinate of its position
     };
     void processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
                           const std::optional<mrpt::poses::CPose2D>& odometryIncrement,

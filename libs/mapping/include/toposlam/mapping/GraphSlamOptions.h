@@ -55,6 +55,10 @@ struct GraphSlamOptions : public config::Options {
     /// confident (it ignores the map's errors).
     double edgeMinSigmaXY = 0.01;     ///< m
     double edgeMinSigmaPhi = 0.0035;  ///< rad (0.2 deg)
+    /// Output: re-estimate the positions of the scans between keyframes from their
+    /// registration and the odometry together, each by its noise model above
+    /// (TrajectorySmoother.h); keyframes and headings stay as the graph has them.
+    bool smoothScans = true;
 
     // --- Loop closure ---
     bool loopClosure = true;

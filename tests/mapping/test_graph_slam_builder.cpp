@@ -145,6 +145,10 @@ TEST(CGraphSlamBuilder, SummarySaysWhichLoopRulesRan) {
         const auto loops = io::loadJsonFile(out + "/summary.json").at("loops");
         EXPECT_EQ(loops.at("guess_free_search").get<bool>(), on);
         EXPECT_EQ(loops.at("contested_rule").get<bool>(), on);
+        // The shipped ini places the scans between keyframes with odometry too.
+        EXPECT_TRUE(io::loadJsonFile(out + "/summary.json").at("smoothed_scans").get<bool>());
+        EXPECT_NE(text.find("placed by registration and odometry together"), std::string::npos)
+            << text;
         if (on) {
             EXPECT_NE(text.find(" of them guess-free, "), std::string::npos) << text;
             EXPECT_NE(text.find(" beyond the gate on agreeing evidence)"), std::string::npos)

@@ -46,7 +46,10 @@ std::string formatSummary(const MappingResult& r) {
         r.wallSeconds > 0 ? r.logDuration / r.wallSeconds : 0.0);
     if (const auto& st = r.statistics) {
         const std::size_t n = st->scans > 1 ? st->scans - 1 : 0;
-        s += line("keyframes: %zu in %zu submaps", st->keyframes, st->submaps);
+        s += line("keyframes: %zu in %zu submaps; the scans between them placed by %s",
+                  st->keyframes, st->submaps,
+                  r.smoothedScans ? "registration and odometry together"
+                                  : "registration alone (smooth_scans off)");
         s += line(
             "registration: %zu by ICP (%.1f %%), %zu by the graph matcher (%.1f %%), %zu "
             "failed (%.1f %%, odometry kept); %zu odometry jumps",
@@ -99,6 +102,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
     if (const auto& st = r.statistics) {
         j["keyframes"] = st->keyframes;
         j["submaps"] = st->submaps;
+        j["smoothed_scans"] = r.smoothedScans;
         j["registration"] = {{"icp", st->registeredByIcp},
                              {"graph_matcher", st->registeredByGraphMatcher},
                              {"failed", st->registrationFailed},

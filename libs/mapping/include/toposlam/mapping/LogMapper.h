@@ -49,6 +49,9 @@ struct MappingResult {
     /// Which loop rules ran: guess-free search (global_search_every > 0) and accepting agreeing
     /// matches beyond the gate (loop_contested_support > 0); both off by default.
     bool guessFreeSearch = false, contestedLoops = false;
+    /// Whether the scans between keyframes were placed by registration and odometry together
+    /// (smooth_scans) or by registration alone.
+    bool smoothedScans = false;
     std::optional<PoseGraph> graph;    ///< keyframe pose graph, optimised
     mrpt::maps::CSimpleMap keyframes;  ///< each keyframe's scan and features at its pose
 };

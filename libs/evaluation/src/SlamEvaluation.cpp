@@ -14,6 +14,29 @@
 
 namespace toposlam::evaluation {
 
+namespace {
+
+/// Fills one bin of a breakdown (TurnErrors, SeparationErrors): how many of the relations it
+/// holds (`inBin(relation index)`) and the statistics of the matched ones among them.
+template <class Bin, class InBin>
+void summarizeBin(Bin& bin, std::size_t relationCount, const std::vector<RelationError>& errors,
+                  const InBin& inBin) {
+    bin.totalRelations = 0;
+    for (std::size_t r = 0; r < relationCount; ++r)
+        bin.totalRelations += inBin(r) ? 1 : 0;
+    std::vector<double> translation, rotation;
+    for (const RelationError& e : errors) {
+        if (!inBin(e.relation))
+            continue;
+        translation.push_back(e.translation);
+        rotation.push_back(e.rotationDeg);
+    }
+    bin.translation = summarizeErrors(translation);
+    bin.rotation = summarizeErrors(rotation);
+}
+
+}  // namespace
+
 MethodEvaluation evaluateMethod(const std::string& name, const std::string& source,
                                 const io::Trajectory2D& estimate, const PoseRelations& relations,
                                 const io::Trajectory2D* groundTruth, double stampTolerance,
@@ -31,21 +54,11 @@ MethodEvaluation evaluateMethod(const std::string& name, const std::string& sour
         bin.minTurnDeg = kTurnBinEdgesDeg[b];
         bin.maxTurnDeg = kTurnBinEdgesDeg[b + 1];
         const bool last = b + 2 == std::size(kTurnBinEdgesDeg);
-        const auto inBin = [&](const PoseRelation& r) {
-            const double turn = std::abs(mrpt::math::wrapToPi(r.motion.phi)) * 180.0 / M_PI;
+        summarizeBin(bin, relations.size(), m.relative.errors, [&](std::size_t r) {
+            const double turn =
+                std::abs(mrpt::math::wrapToPi(relations[r].motion.phi)) * 180.0 / M_PI;
             return turn >= bin.minTurnDeg && (turn < bin.maxTurnDeg || last);
-        };
-        bin.totalRelations =
-            static_cast<std::size_t>(std::count_if(relations.begin(), relations.end(), inBin));
-        std::vector<double> translation, rotation;
-        for (const RelationError& e : m.relative.errors) {
-            if (!inBin(relations[e.relation]))
-                continue;
-            translation.push_back(e.translation);
-            rotation.push_back(e.rotationDeg);
-        }
-        bin.translation = summarizeErrors(translation);
-        bin.rotation = summarizeErrors(rotation);
+        });
         m.byTurn.push_back(bin);
     }
     if (separations) {
@@ -58,17 +71,8 @@ MethodEvaluation evaluateMethod(const std::string& name, const std::string& sour
         for (const double scale : scales) {
             SeparationErrors s;
             s.separation = scale;
-            s.totalRelations = static_cast<std::size_t>(
-                std::count(separations->begin(), separations->end(), scale));
-            std::vector<double> translation, rotation;
-            for (const RelationError& e : m.relative.errors) {
-                if ((*separations)[e.relation] != scale)
-                    continue;
-                translation.push_back(e.translation);
-                rotation.push_back(e.rotationDeg);
-            }
-            s.translation = summarizeErrors(translation);
-            s.rotation = summarizeErrors(rotation);
+            summarizeBin(s, relations.size(), m.relative.errors,
+                         [&](std::size_t r) { return (*separations)[r] == scale; });
             m.bySeparation.push_back(s);
         }
     }
@@ -76,6 +80,38 @@ MethodEvaluation evaluateMethod(const std::string& name, const std::string& sour
 }
 
 // ---- table --------------------------------------------------------------------------------
+
+namespace {
+
+/// A table of the translational error per bin of a breakdown (one column per bin of the first
+/// method, headed `label(bin)` and its relation count; one row per method), after `title`;
+/// nothing when there are no bins.
+template <class Bin, class Label>
+void appendBreakdownTable(std::ostringstream& out, const std::string& title,
+                          const std::vector<MethodEvaluation>& methods,
+                          std::vector<Bin> MethodEvaluation::*bins, const Label& label) {
+    if (methods.empty() || (methods.front().*bins).empty())
+        return;
+    const std::vector<Bin>& columns = methods.front().*bins;
+    out << "\n" << title << "\n\n| method |";
+    for (const Bin& bin : columns)
+        out << " " << label(bin) << " (" << bin.totalRelations << ") |";
+    out << "\n|---|";
+    for (std::size_t i = 0; i < columns.size(); ++i)
+        out << "---|";
+    out << "\n";
+    for (const MethodEvaluation& m : methods) {
+        out << "| " << m.name << " |";
+        for (const Bin& bin : m.*bins) {
+            out << " "
+                << (bin.translation.count ? formatMeanStd(bin.translation, 4) : std::string("–"))
+                << " |";
+        }
+        out << "\n";
+    }
+}
+
+}  // namespace
 
 std::string formatEvaluationTable(const SlamEvaluation& ev) {
     std::ostringstream out;
@@ -124,55 +160,22 @@ std::string formatEvaluationTable(const SlamEvaluation& ev) {
         out << "\n";
     }
 
-    const auto& turns = ev.methods.empty() ? std::vector<TurnErrors>() : ev.methods.front().byTurn;
-    if (!turns.empty()) {
-        out << "\nTranslational error (m) by the reference motion's turn |Δyaw|, mean ± std "
-               "(relations); scoring a frame d m off the reference's adds up to "
-               "2·d·sin(|Δyaw|/2) (compare with --frame-offset):\n\n| method |";
-        for (const TurnErrors& t : turns) {
-            out << " " << formatFixed(t.minTurnDeg, 0) << "–" << formatFixed(t.maxTurnDeg, 0)
-                << "° (" << t.totalRelations << ") |";
-        }
-        out << "\n|---|";
-        for (std::size_t i = 0; i < turns.size(); ++i)
-            out << "---|";
-        out << "\n";
-        for (const MethodEvaluation& m : ev.methods) {
-            out << "| " << m.name << " |";
-            for (const TurnErrors& t : m.byTurn) {
-                out << " "
-                    << (t.translation.count ? formatMeanStd(t.translation, 4) : std::string("–"))
-                    << " |";
-            }
-            out << "\n";
-        }
-    }
-
-    const auto& scales =
-        ev.methods.empty() ? std::vector<SeparationErrors>() : ev.methods.front().bySeparation;
-    if (!scales.empty()) {
-        out << "\nTranslational error (m) by relation separation (travelled path), mean ± std "
-               "(relations):\n\n| method |";
-        for (const SeparationErrors& s : scales) {
-            out << " "
-                << (s.separation == 0 ? std::string("consecutive")
-                                      : formatFixed(s.separation, 2) + " m")
-                << " (" << s.totalRelations << ") |";
-        }
-        out << "\n|---|";
-        for (std::size_t i = 0; i < scales.size(); ++i)
-            out << "---|";
-        out << "\n";
-        for (const MethodEvaluation& m : ev.methods) {
-            out << "| " << m.name << " |";
-            for (const SeparationErrors& s : m.bySeparation) {
-                out << " "
-                    << (s.translation.count ? formatMeanStd(s.translation, 4) : std::string("–"))
-                    << " |";
-            }
-            out << "\n";
-        }
-    }
+    appendBreakdownTable(
+        out,
+        "Translational error (m) by the reference motion's turn |Δyaw|, mean ± std "
+        "(relations); scoring a frame d m off the reference's adds up to "
+        "2·d·sin(|Δyaw|/2) (compare with --frame-offset):",
+        ev.methods, &MethodEvaluation::byTurn, [](const TurnErrors& t) {
+            return formatFixed(t.minTurnDeg, 0) + "–" + formatFixed(t.maxTurnDeg, 0) + "°";
+        });
+    appendBreakdownTable(
+        out,
+        "Translational error (m) by relation separation (travelled path), mean ± std "
+        "(relations):",
+        ev.methods, &MethodEvaluation::bySeparation, [](const SeparationErrors& s) {
+            return s.separation == 0 ? std::string("consecutive")
+                                     : formatFixed(s.separation, 2) + " m";
+        });
     return out.str();
 }
 

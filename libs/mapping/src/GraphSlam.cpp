@@ -54,6 +54,13 @@ CPose2D GraphSlam::scanPose(std::size_t i) const {
 }
 
 std::vector<CPose2D> GraphSlam::scanPoses() const {
+    if (!options_.smoothScans) {
+        std::vector<CPose2D> out;
+        out.reserve(scans_.size());
+        for (std::size_t i = 0; i < scans_.size(); ++i)
+            out.push_back(scanPose(i));
+        return out;
+    }
     std::vector<SmoothingInput> in(scans_.size());
     for (std::size_t i = 0; i < scans_.size(); ++i) {
         const ScanRecord& s = scans_[i];
@@ -66,12 +73,6 @@ std::vector<CPose2D> GraphSlam::scanPoses() const {
                 options_.odometrySigmaXY + options_.odometrySigmaXYPerMetre * s.odometry->norm();
             in[i].odometryVariance = sigma * sigma;
         }
-    }
-    if (!options_.smoothScans) {
-        std::vector<CPose2D> out;
-        for (const SmoothingInput& s : in)
-            out.push_back(s.pose);
-        return out;
     }
     return smoothScanPositions(in);
 }

@@ -127,6 +127,13 @@ int run(int argc, char** argv) {
         "negative: behind), for relations made in another frame on the robot than the "
         "trajectories give, e.g. a laser mounted ahead of the robot's centre. Default 0",
         0.0, cli::NumberRange<double>::closed(-10, 10), "metres", cmd);
+    cli::NumberArg<int> worst(
+        "", "worst",
+        "After the tables, list each method's N relations with the largest translational error: "
+        "stamps, the reference's and the method's motion, the error, and every other method's "
+        "error on that relation (all methods off: a doubtful reference; only this one: its "
+        "failure). Default 0 (none)",
+        0, cli::NumberRange<int>::closed(0, 1000000), "N", cmd);
     TCLAP::ValueArg<std::string> writeRelations(
         "", "write-relations",
         "Also write the relations used (with --ground-truth: the derived ones) in .relations "
@@ -163,6 +170,7 @@ int run(int argc, char** argv) {
     request.groundTruthSeparation = separation.getValue();
     request.stampTolerance = tolerance.getValue();
     request.frameOffset = frameOffset.getValue();
+    request.worstRelations = static_cast<std::size_t>(worst.getValue());
     request.rawlog = rawlog.getValue();
     request.scanStamps = scanStamps.getValue();
     request.keepEstimates = plot.isSet();

@@ -49,6 +49,7 @@ const NumericOption kNumericOptions[] = {
     {"toposlam-eval-slam", "--frame-offset", -10, 10, false, false},
     {"toposlam-eval-slam", "--gt-separation", 0, kBig, false, false},
     {"toposlam-eval-slam", "--stamp-tolerance", 0, 3600, false, false},
+    {"toposlam-eval-slam", "--worst", 0, 1e6, false, true},
     {"toposlam-plan", "--robot-radius", 0, 10, true, false},
     {"toposlam-plan", "--time", 0, 3600, true, false},
     {"toposlam-plan", "--free-threshold", 0.5, 0.999, false, false},

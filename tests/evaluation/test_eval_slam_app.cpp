@@ -49,7 +49,7 @@ TEST(EvalSlamApp, HelpExplainsEveryOption) {
     for (const char* option :
          {"--relations", "--ground-truth", "--trajectory", "--icp-slam-path", "--rawlog",
           "--scan-stamps", "--json", "--name", "--gt-separation", "--stamp-tolerance",
-          "--write-relations", "--plot", "--frame-offset", "Kuemmerle"}) {
+          "--write-relations", "--plot", "--frame-offset", "--worst", "Kuemmerle"}) {
         EXPECT_TRUE(contains(r.output, option)) << option;
     }
 }
@@ -84,6 +84,29 @@ TEST(EvalSlamApp, SeveralMethodsSideBySide) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_TRUE(contains(r.output, "| odometry | 3 / 4 | 2.0000 ± 1.0000 |")) << r.output;
     EXPECT_TRUE(contains(r.output, "| perfect | 3 / 4 | 0.0000 ± 0.0000 |")) << r.output;
+}
+
+TEST(EvalSlamApp, WorstListsTheLargestErrorsInTheTableAndTheJson) {
+    Fixture f;
+    const auto r = runApp("toposlam-eval-slam", "--worst 2 --trajectory mine=" + f.trajectory +
+                                                    " --trajectory " + f.perfect + " --relations " +
+                                                    f.relations + " --json " + f.json);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    // mine's worst: 10 -> 13 (3 m off; perfect: exact), then 11 -> 13 (2 m).
+    EXPECT_TRUE(contains(r.output, "Worst relations of mine")) << r.output;
+    EXPECT_TRUE(contains(r.output,
+                         "| 10.000 | 3.00 | 0.000, 0.000 m, 0.0° | 3.000, 0.000 m, "
+                         "0.0° | 3.000 / 0.00 | 0.000 m |"))
+        << r.output;
+    const auto json = toposlam::io::loadJsonFile(f.json);
+    const auto& worst = json.at("methods").at(0).at("worst_relations");
+    ASSERT_EQ(worst.size(), 2u);
+    EXPECT_EQ(worst.at(0).at("relation"), 2);
+    EXPECT_EQ(worst.at(1).at("translation_m"), 2.0);
+    EXPECT_EQ(worst.at(1).at("estimate").at("x"), 2.0);
+    // Without --worst there is no such list.
+    const auto plain = runApp("toposlam-eval-slam", f.trajectory + " --relations " + f.relations);
+    EXPECT_FALSE(contains(plain.output, "Worst relations")) << plain.output;
 }
 
 TEST(EvalSlamApp, FrameOffsetScoresTheFrameAheadOfThePoses) {

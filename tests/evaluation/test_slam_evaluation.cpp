@@ -1,5 +1,7 @@
 // evaluateMethod's breakdown by the reference motion's turn: a trajectory given 0.1 m ahead of
 // the reference's frame is exact on straight relations and off by 2·d·sin(θ/2) on turns.
+// worstRelations: the largest errors first, each with the method's own motion, and the other
+// methods' errors on the same relation in the table.
 #include <gtest/gtest.h>
 #include <toposlam/evaluation/SlamEvaluation.h>
 
@@ -51,6 +53,52 @@ TEST(SlamEvaluation, ErrorsByTurnShowAFrameOffset) {
     EXPECT_NE(table.find("| ahead | 0.0000 ± 0.0000 | – | 0.1414 ± 0.0000 | 0.2000 ± 0.0000 |"),
               std::string::npos)
         << table;
+}
+
+TEST(SlamEvaluation, WorstRelationsComeFirstWithEachMethodsMotion) {
+    // Truth: 1 m steps along x. "slipped" places pose 3 0.3 m to the left; "exact" is the truth.
+    io::Trajectory2D truth, slipped;
+    for (int i = 0; i < 5; ++i) {
+        truth.push_back({double(i), {double(i), 0, 0}});
+        slipped.push_back({double(i), {double(i), i == 3 ? 0.3 : 0.0, 0}});
+    }
+    PoseRelations relations;
+    for (const auto& [a, b] : {std::pair{0, 1}, {2, 3}, {3, 4}, {0, 3}, {1, 4}}) {
+        relations.push_back({truth[a].stamp,
+                             truth[b].stamp,
+                             {double(b - a), 0, 0}});  // straight ahead, b - a metres
+    }
+    SlamEvaluation ev;
+    ev.methods.push_back(evaluateMethod("slipped", "", slipped, relations, nullptr, 1e-5));
+    ev.methods.push_back(evaluateMethod("exact", "", truth, relations, nullptr, 1e-5));
+
+    // Three relations end or start at pose 3, each 0.3 m off; ties keep relation order.
+    const std::vector<WorstRelation> worst = worstRelations(ev.methods[0].relative, relations, 4);
+    ASSERT_EQ(worst.size(), 4u);
+    EXPECT_EQ(worst[0].relation, 1u);
+    EXPECT_EQ(worst[1].relation, 2u);
+    EXPECT_EQ(worst[2].relation, 3u);
+    EXPECT_NEAR(worst[0].translation, 0.3, 1e-12);
+    EXPECT_NEAR(worst[3].translation, 0, 1e-12);
+    // The method's own motion from 2 to 3 and from 3 to 4, recovered as δ_gt ⊕ e.
+    EXPECT_NEAR(worst[0].estimate.x, 1, 1e-12);
+    EXPECT_NEAR(worst[0].estimate.y, 0.3, 1e-12);
+    EXPECT_NEAR(worst[1].estimate.y, -0.3, 1e-12);
+    EXPECT_NEAR(worst[2].reference.x, 3, 1e-12);
+    EXPECT_EQ(worst[2].stamp1, 0);
+    EXPECT_EQ(worst[2].stamp2, 3);
+    // More asked for than matched: all of them.
+    EXPECT_EQ(worstRelations(ev.methods[0].relative, relations, 99).size(), relations.size());
+
+    // The table names the other method's error on each of them: here, none.
+    ev.methods[0].worst = worstRelations(ev.methods[0].relative, relations, 1);
+    const std::string table = formatEvaluationTable(ev);
+    EXPECT_NE(table.find("Worst relations of slipped"), std::string::npos) << table;
+    EXPECT_NE(table.find("| 2.000 | 1.00 | 1.000, 0.000 m, 0.0° | 1.000, 0.300 m, 0.0° | "
+                         "0.300 / 0.00 | 0.000 m |"),
+              std::string::npos)
+        << table;
+    EXPECT_EQ(table.find("Worst relations of exact"), std::string::npos) << table;
 }
 
 }  // namespace

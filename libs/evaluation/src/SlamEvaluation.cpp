@@ -176,6 +176,7 @@ std::string formatEvaluationTable(const SlamEvaluation& ev) {
             return s.separation == 0 ? std::string("consecutive")
                                      : formatFixed(s.separation, 2) + " m";
         });
+    out << formatWorstRelations(ev);
     return out.str();
 }
 
@@ -248,6 +249,24 @@ io::Json methodJson(const MethodEvaluation& m) {
                               {"rotation_deg", jsonStats(s.rotation)}});
         }
         out["by_separation"] = scales;
+    }
+    if (!m.worst.empty()) {
+        const auto motion = [](const mrpt::math::TPose2D& p) {
+            return io::Json{{"x", jsonNumber(p.x)},
+                            {"y", jsonNumber(p.y)},
+                            {"yaw_deg", jsonNumber(p.phi * 180.0 / M_PI)}};
+        };
+        io::Json worst = io::Json::array();
+        for (const WorstRelation& w : m.worst) {
+            worst.push_back({{"relation", w.relation},
+                             {"t1", w.stamp1},
+                             {"t2", w.stamp2},
+                             {"reference", motion(w.reference)},
+                             {"estimate", motion(w.estimate)},
+                             {"translation_m", jsonNumber(w.translation)},
+                             {"rotation_deg", jsonNumber(w.rotationDeg)}});
+        }
+        out["worst_relations"] = worst;
     }
     return out;
 }

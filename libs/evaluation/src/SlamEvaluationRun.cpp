@@ -149,6 +149,8 @@ SlamEvaluationRun runSlamEvaluation(const SlamEvaluationRequest& request,
         } catch (const std::invalid_argument& e) {
             throw io::InputError(t.file, e.what());
         }
+        MethodEvaluation& m = ev.methods.back();
+        m.worst = worstRelations(m.relative, run.relations, request.worstRelations);
         if (ev.methods.back().relative.matchedRelations == 0) {
             throw io::InputError(t.file,
                                  "matches none of the " + std::to_string(ev.relationCount) +

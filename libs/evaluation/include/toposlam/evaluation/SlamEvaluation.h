@@ -6,6 +6,7 @@
 #include <toposlam/evaluation/GroundTruthRelations.h>
 #include <toposlam/evaluation/RelationFile.h>
 #include <toposlam/evaluation/RelativePoseError.h>
+#include <toposlam/evaluation/WorstRelations.h>
 #include <toposlam/io/Trajectory.h>
 
 #include <optional>
@@ -48,6 +49,8 @@ struct MethodEvaluation {
     std::vector<SeparationErrors> bySeparation;
     /// Always: one entry per bin of kTurnBinEdgesDeg.
     std::vector<TurnErrors> byTurn;
+    /// Its worst relations, when asked for (SlamEvaluationRequest::worstRelations).
+    std::vector<WorstRelation> worst;
 };
 
 struct SlamEvaluation {
@@ -75,7 +78,8 @@ MethodEvaluation evaluateMethod(const std::string& name, const std::string& sour
 
 /// A Markdown table (readable in a terminal, pasteable into a README), one row per method,
 /// preceded by a line that names the reference; then the translational error by the
-/// relations' turn and, with a ground-truth reference, by relation separation.
+/// relations' turn and, with a ground-truth reference, by relation separation; then each
+/// method's worst relations, if any (formatWorstRelations).
 std::string formatEvaluationTable(const SlamEvaluation& evaluation);
 
 /// The whole evaluation as a JSON document (keys: share/doc/apps.md).

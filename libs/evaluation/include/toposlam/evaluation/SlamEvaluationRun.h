@@ -46,6 +46,8 @@ struct SlamEvaluationRequest {
     /// poses as they are): for relations made in another frame on the robot than the one the
     /// trajectories give (a laser mounted off the robot's centre).
     double frameOffset = 0;
+    /// List this many relations with the largest translational error per method (0: none).
+    std::size_t worstRelations = 0;
 
     /// Throws std::invalid_argument naming the option (e.g. "--icp-slam-path needs --rawlog")
     /// when the request cannot be run as given.

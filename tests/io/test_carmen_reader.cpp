@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -77,6 +78,42 @@ TEST(CarmenReader, OldFormatBeamLayoutFollowsCarmen) {
         EXPECT_TRUE(r.scan->rightToLeft);
         EXPECT_EQ(r.scan->sensorLabel, "FLASER");
     }
+}
+
+TEST(CarmenReader, OneLaserKeepsTheFrontLaserAndCountsTheOthers) {
+    toposlam::test::TempDir dir;
+    // The rear laser's line comes first; the front one is still the one kept.
+    const std::string log = flaser(180, 1.0, "0 0 0", "0 0 0", "1.0", "RLASER") +
+                            flaser(180, 2.0, "0 0 0", "0 0 0", "1.1") +
+                            flaser(180, 1.0, "0 0 0", "0 0 0", "1.2", "RLASER") +
+                            flaser(180, 2.0, "0 0 0", "0 0 0", "1.3");
+    writeText(dir.file("two.clf"), log);
+    EXPECT_EQ(LaserLogReader::readAll(dir.file("two.clf")).size(), 4u) << "default: every scan";
+    LaserLogOptions one;
+    one.oneLaser = true;
+    LaserLogReader reader(dir.file("two.clf"), one);
+    EXPECT_EQ(reader.laserLabel(), "FLASER") << "known before the first scan";
+    LaserLogRecord r;
+    std::vector<double> stamps;
+    while (reader.next(r)) {
+        EXPECT_EQ(r.scan->sensorLabel, "FLASER");
+        EXPECT_EQ(r.index, stamps.size()) << "indices count the scans kept";
+        stamps.push_back(r.fileStamp);
+    }
+    EXPECT_EQ(stamps, (std::vector<double>{1.1, 1.3}));
+    EXPECT_EQ(reader.otherLaserScans(), (std::map<std::string, std::size_t>{{"RLASER", 2}}));
+    // A label given wins over oneLaser.
+    one.scanLabel = "RLASER";
+    const auto rear = LaserLogReader::readAll(dir.file("two.clf"), one);
+    ASSERT_EQ(rear.size(), 2u);
+    EXPECT_EQ(rear[0].scan->sensorLabel, "RLASER");
+    // Only a rear laser: that one.
+    writeText(dir.file("rear.clf"), flaser(180, 1.0, "0 0 0", "0 0 0", "1.0", "RLASER"));
+    one.scanLabel.clear();
+    LaserLogReader onlyRear(dir.file("rear.clf"), one);
+    EXPECT_TRUE(onlyRear.next(r));
+    EXPECT_EQ(onlyRear.laserLabel(), "RLASER");
+    EXPECT_TRUE(onlyRear.otherLaserScans().empty());
 }
 
 TEST(CarmenReader, ParamResolutionMaxRangeAndOffset) {

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "TestSupport.h"
 
@@ -111,6 +112,29 @@ TEST(RawlogRoundTrip, ObservationsFormatKeepsEverything) {
         }
         EXPECT_EQ(mrptObjectCount(dir.file(name)), 100u);
     }
+}
+
+TEST(RawlogRoundTrip, OneLaserKeepsTheFirstScansLaser) {
+    // Two lasers, the second one's scan first in each pair: that one is kept.
+    toposlam::test::TempDir dir;
+    auto records = syntheticRecords(6);
+    for (std::size_t i = 0; i < records.size(); ++i)
+        records[i].scan->sensorLabel = i % 2 == 0 ? "LASER_REAR" : "LASER_FRONT";
+    writeAndRead(records, dir.file("two.rawlog"), RawlogFormat::Observations);
+    LaserLogOptions one;
+    one.oneLaser = true;
+    LaserLogReader reader(dir.file("two.rawlog"), one);
+    EXPECT_EQ(reader.laserLabel(), "") << "a rawlog says which only with its first scan";
+    LaserLogRecord r;
+    std::size_t kept = 0;
+    while (reader.next(r)) {
+        EXPECT_EQ(r.scan->sensorLabel, "LASER_REAR");
+        EXPECT_EQ(r.fileStamp, records[2 * kept].fileStamp);
+        ++kept;
+    }
+    EXPECT_EQ(kept, 3u);
+    EXPECT_EQ(reader.laserLabel(), "LASER_REAR");
+    EXPECT_EQ(reader.otherLaserScans(), (std::map<std::string, std::size_t>{{"LASER_FRONT", 3}}));
 }
 
 TEST(RawlogRoundTrip, SensoryFramesFormatKeepsRelativeOdometry) {

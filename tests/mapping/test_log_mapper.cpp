@@ -9,6 +9,7 @@
 #include <toposlam/io/RawlogWriter.h>
 #include <toposlam/io/Trajectory.h>
 #include <toposlam/mapping/LogMapper.h>
+#include <toposlam/mapping/MappingOutputs.h>
 #include <toposlam/simulation/LaserModel.h>
 #include <toposlam/simulation/PolygonWorld.h>
 
@@ -16,6 +17,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 
 #include "SimulatedDrive.h"
 #include "TestSupport.h"
@@ -53,13 +55,21 @@ struct SimulatedLog {
 
 // Drives from the left room through the corridor into the right room at 0.1 m per scan;
 // the odometry over-reads distance by 3 % and turns 2 % too much (typical wheel errors).
-SimulatedLog writeLog(const std::string& path) {
+// `withRearLaser`: a second laser, labelled REAR, looks backwards from 0.2 m behind the
+// centre; its scan follows the front one's (labelled FRONT) at each step.
+SimulatedLog writeLog(const std::string& path, bool withRearLaser = false) {
     const auto world = twoRooms();
     simulation::LaserModel laser;
     laser.beams = 361;
     laser.maxRange = 20;
     laser.rangeNoiseStd = 0.01;
     laser.sensorPose = mrpt::poses::CPose3D(0.2, 0, 0, 0, 0, 0);
+    simulation::LaserModel rear = laser;
+    rear.sensorPose = mrpt::poses::CPose3D(-0.2, 0, 0, M_PI, 0, 0);
+    if (withRearLaser) {
+        laser.sensorLabel = "FRONT";
+        rear.sensorLabel = "REAR";
+    }
     std::mt19937 rng(7);
 
     SimulatedLog log;
@@ -86,6 +96,12 @@ SimulatedLog writeLog(const std::string& path) {
         rec.odometry = odo;
         rec.hasOdometry = true;
         writer.write(rec);
+        if (withRearLaser) {
+            rec.scan = mrpt::obs::CObservation2DRangeScan::Create(
+                simulation::simulateScan(world, rear, log.truth[i], rng));
+            rec.scan->timestamp = mrpt::Clock::fromDouble(rec.fileStamp);
+            writer.write(rec);
+        }
     }
     writer.commit();
     return log;
@@ -149,6 +165,45 @@ TEST(LogMapper, TurnsTheMapToLineUpTheWalls) {
     // To rounding: composing the turn wraps the angle to (-pi, pi], which may move the last
     // bits (here 2e-16 rad).
     EXPECT_NEAR(firstPose.phi(), result.wallAlignment, 1e-12) << "the first pose turned with it";
+}
+
+TEST(LogMapper, MapsWithOneLaserOfSeveral) {
+    // A front and a rear laser: one laser's scans are registered against each other, the
+    // other's are left out and counted; scan_label picks the laser, and a label the log does
+    // not have is an error naming it.
+    test::TempDir dir;
+    const SimulatedLog log = writeLog(dir.file("two.rawlog"), true);
+    std::string text = test::readFile(kConfig);
+    const mapping::MappingResult front =
+        mapping::mapLog(dir.file("two.rawlog"), mrpt::config::CConfigFileMemory(text));
+    EXPECT_EQ(front.laserLabel, "FRONT") << "auto: the first scan's laser";
+    EXPECT_EQ(front.otherLaserScans, (std::map<std::string, std::size_t>{{"REAR", 121}}));
+    ASSERT_EQ(front.trajectory.size(), log.truth.size());
+    EXPECT_NE(mapping::formatSummary(front).find("left out: 121 of REAR"), std::string::npos)
+        << mapping::formatSummary(front);
+    const double odoError = finalPositionError(log.truth.front(), log.truth.back(),
+                                               log.odometry.front(), log.odometry.back());
+    EXPECT_LT(finalPositionError(log.truth.front(), log.truth.back(),
+                                 CPose2D(front.trajectory.front().pose),
+                                 CPose2D(front.trajectory.back().pose)),
+              0.5 * odoError);
+
+    const std::string automatic = "\nscan_label = auto";
+    ASSERT_NE(text.find(automatic), std::string::npos);
+    text.replace(text.find(automatic), automatic.size(), "\nscan_label = REAR");
+    const mapping::MappingResult rear =
+        mapping::mapLog(dir.file("two.rawlog"), mrpt::config::CConfigFileMemory(text));
+    EXPECT_EQ(rear.laserLabel, "REAR");
+    EXPECT_TRUE(rear.otherLaserScans.empty()) << "a label given keeps that laser only, silently";
+    EXPECT_EQ(rear.trajectory.size(), log.truth.size());
+
+    text.replace(text.find("\nscan_label = REAR"), 19, "\nscan_label = SIDE");
+    try {
+        mapping::mapLog(dir.file("two.rawlog"), mrpt::config::CConfigFileMemory(text));
+        ADD_FAILURE() << "a laser the log does not have";
+    } catch (const io::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("'SIDE'"), std::string::npos) << e.what();
+    }
 }
 
 TEST(LogMapper, MissingLogIsAnInputError) {

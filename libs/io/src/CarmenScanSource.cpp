@@ -147,6 +147,7 @@ CarmenScanSource::CarmenScanSource(const std::string& path, const LaserLogOption
     LineReader pass1(path);
     std::vector<std::string> printed;
     std::size_t messages = 0;
+    bool flaser = false, robotLaser1 = false;
     std::string_view line;
     while (pass1.next(line)) {
         split(line, tokens_);
@@ -154,9 +155,20 @@ CarmenScanSource::CarmenScanSource(const std::string& path, const LaserLogOption
             continue;
         if (isCarmenMessage(tokens_[0]))
             ++messages;
-        if (isLaser(tokens_[0]))
+        if (isLaser(tokens_[0])) {
             printed.emplace_back(printedStamp(tokens_));
+            if (preferredLaser_.empty())
+                preferredLaser_ = std::string(tokens_[0]);
+            flaser = flaser || tokens_[0] == "FLASER";
+            robotLaser1 = robotLaser1 || tokens_[0] == "ROBOTLASER1";
+        }
     }
+    // The front laser is the robot's main one (the rear one of old logs often sees only the
+    // robot's own structure).
+    if (flaser)
+        preferredLaser_ = "FLASER";
+    else if (robotLaser1)
+        preferredLaser_ = "ROBOTLASER1";
     if (const std::string damage = pass1.streamError(); !damage.empty()) {
         throw InputError(path, "truncated or corrupt gzip data (" + damage + ")");
     }

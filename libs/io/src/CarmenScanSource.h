@@ -18,6 +18,7 @@ class CarmenScanSource : public ScanSource {
     bool next(LaserLogRecord& out) override;
     LaserLogFormat format() const override { return LaserLogFormat::Carmen; }
     double fractionRead() const override { return lines_.fractionRead(); }
+    std::string preferredLaser() const override { return preferredLaser_; }
 
   private:
     void parseFlaser(LaserLogRecord& out, bool front);
@@ -35,8 +36,9 @@ class CarmenScanSource : public ScanSource {
     std::string path_;
     LaserLogOptions options_;
     LineReader lines_;
-    std::vector<double> times_;  // repaired acquisition times of the laser lines, in order
-    std::size_t laserLine_ = 0;  // laser lines parsed so far
+    std::vector<double> times_;   // repaired acquisition times of the laser lines, in order
+    std::size_t laserLine_ = 0;   // laser lines parsed so far
+    std::string preferredLaser_;  // the front laser, found in pass 1
     std::map<std::string, double> params_;  // numeric PARAM values, lower-case keys
     std::vector<std::string_view> tokens_;  // fields of the current line (workspace)
 };

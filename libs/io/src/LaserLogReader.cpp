@@ -50,6 +50,10 @@ struct LaserLogReader::Impl {
     std::size_t count = 0;
     std::size_t adjusted = 0;
     double lastTime = -INFINITY;
+    bool oneLaser = false;
+    bool labelChosen = false;  // oneLaser: label is the one to keep (it may be "")
+    std::string label;         // kept scans' label (oneLaser or scanLabel)
+    std::map<std::string, std::size_t> others;
 };
 
 LaserLogReader::LaserLogReader(const std::string& path, const LaserLogOptions& options)
@@ -60,14 +64,31 @@ LaserLogReader::LaserLogReader(const std::string& path, const LaserLogOptions& o
     } else {
         impl_->source = std::make_unique<RawlogScanSource>(path, options);
     }
+    impl_->label = options.scanLabel;
+    impl_->oneLaser = options.oneLaser && options.scanLabel.empty();
+    if (impl_->oneLaser) {
+        impl_->label = impl_->source->preferredLaser();
+        impl_->labelChosen = !impl_->label.empty();
+    }
 }
 
 LaserLogReader::~LaserLogReader() = default;
 
 bool LaserLogReader::next(LaserLogRecord& out) {
-    out.storedFeatures.reset();
-    if (!impl_->source->next(out))
-        return false;
+    for (;;) {
+        out.storedFeatures.reset();
+        if (!impl_->source->next(out))
+            return false;
+        if (!impl_->oneLaser)
+            break;
+        if (!impl_->labelChosen) {
+            impl_->label = out.scan->sensorLabel;
+            impl_->labelChosen = true;
+        }
+        if (out.scan->sensorLabel == impl_->label)
+            break;
+        ++impl_->others[out.scan->sensorLabel];
+    }
     out.index = impl_->count++;
     // Strictly increasing acquisition times (CARMEN times are already repaired).
     double t = mrpt::Clock::toDouble(out.scan->timestamp);
@@ -95,6 +116,14 @@ double LaserLogReader::fractionRead() const {
 
 std::size_t LaserLogReader::adjustedTimestamps() const {
     return impl_->adjusted;
+}
+
+const std::string& LaserLogReader::laserLabel() const {
+    return impl_->label;
+}
+
+const std::map<std::string, std::size_t>& LaserLogReader::otherLaserScans() const {
+    return impl_->others;
 }
 
 std::vector<LaserLogRecord> LaserLogReader::readAll(const std::string& path,

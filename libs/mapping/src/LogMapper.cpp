@@ -19,32 +19,47 @@ namespace toposlam::mapping {
 void SlamEngineOptions::declare(config::OptionsSchema& s) {
     s.choice<std::string>("engine", engine, {{"graph", "graph"}, {"icp", "icp"}},
                           "graph (TopoSLAM's graph SLAM) or icp (MRPT's icp-slam engine)");
+    s.text("scan_label", scanLabel,
+           "sensor label of the laser to map with (auto: the log's only or front laser)");
 }
 
 using mrpt::poses::CPose2D;
 
 namespace {
-/// Every record of the log, in order, to `consume`; progress reported on the way.
+/// Every record of one laser of the log (SlamEngineOptions::scanLabel), in order, to
+/// `consume`; progress reported on the way; which laser, and what was left out, into `result`.
 template <typename Consume>
-void readLog(const std::string& logPath, const io::ProgressCallback& progress, Consume&& consume) {
-    io::LaserLogReader reader(logPath);
+void readLog(const std::string& logPath, const SlamEngineOptions& engine,
+             const io::ProgressCallback& progress, MappingResult& result, Consume&& consume) {
+    const bool automatic = engine.scanLabel == "auto";
+    io::LaserLogOptions options;
+    options.scanLabel = automatic ? std::string() : engine.scanLabel;
+    options.oneLaser = automatic;
+    io::LaserLogReader reader(logPath, options);
     io::LaserLogRecord record;
     std::size_t n = 0;
     while (reader.next(record)) {
         consume(record);
+        ++n;
         if (progress)
-            progress(reader.fractionRead(), ++n);
+            progress(reader.fractionRead(), n);
     }
+    if (n == 0 && !automatic)
+        throw io::InputError(
+            logPath, "no laser scans labelled '" + engine.scanLabel + "' ([Slam] scan_label)");
+    result.laserLabel = reader.laserLabel();
+    result.otherLaserScans = reader.otherLaserScans();
 }
 
 /// TopoSLAM's graph SLAM over the log; fills the poses of `scans` and the graph outputs.
 void runGraphEngine(const std::string& logPath, const mrpt::config::CConfigFileBase& ini,
-                    const io::ProgressCallback& progress, std::vector<PosedScan>& scans,
-                    io::Trajectory2D& trajectory, MappingResult& result) {
+                    const SlamEngineOptions& engine, const io::ProgressCallback& progress,
+                    std::vector<PosedScan>& scans, io::Trajectory2D& trajectory,
+                    MappingResult& result) {
     CGraphSlamBuilder builder;
     builder.loadFromConfigFile(ini);
     builder.initialize();
-    readLog(logPath, progress, [&](const io::LaserLogRecord& record) {
+    readLog(logPath, engine, progress, result, [&](const io::LaserLogRecord& record) {
         if (record.hasOdometry) {
             auto odometry = mrpt::obs::CObservationOdometry::Create();
             odometry->odometry = record.odometry;
@@ -75,10 +90,11 @@ void runGraphEngine(const std::string& logPath, const mrpt::config::CConfigFileB
 
 /// MRPT's ICP map builder (icp-slam's engine) over the log.
 void runIcpEngine(const std::string& logPath, const mrpt::config::CConfigFileBase& ini,
-                  const io::ProgressCallback& progress, std::vector<PosedScan>& scans,
-                  io::Trajectory2D& trajectory) {
+                  const SlamEngineOptions& engine, const io::ProgressCallback& progress,
+                  std::vector<PosedScan>& scans, io::Trajectory2D& trajectory,
+                  MappingResult& result) {
     IcpSlam slam(ini);
-    readLog(logPath, progress, [&](const io::LaserLogRecord& record) {
+    readLog(logPath, engine, progress, result, [&](const io::LaserLogRecord& record) {
         const CPose2D pose = slam.process(record);
         trajectory.push_back({record.fileStamp, pose.asTPose()});
         scans.push_back({record.scan, pose});
@@ -122,9 +138,9 @@ MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFile
 
     std::vector<PosedScan> scans;
     if (engine.engine == "graph")
-        runGraphEngine(logPath, ini, progress, scans, result.trajectory, result);
+        runGraphEngine(logPath, ini, engine, progress, scans, result.trajectory, result);
     else
-        runIcpEngine(logPath, ini, progress, scans, result.trajectory);
+        runIcpEngine(logPath, ini, engine, progress, scans, result.trajectory, result);
     if (scans.empty())
         throw io::InputError(logPath, "the log contains no laser scans");
     const bool anyReading = std::any_of(scans.begin(), scans.end(), [](const PosedScan& s) {

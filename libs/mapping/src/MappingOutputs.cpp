@@ -44,6 +44,16 @@ std::string formatSummary(const MappingResult& r) {
         "time)",
         r.scans, r.logDuration, r.wallSeconds, r.cpuSeconds,
         r.wallSeconds > 0 ? r.logDuration / r.wallSeconds : 0.0);
+    if (!r.otherLaserScans.empty()) {
+        std::string others;
+        for (const auto& [label, count] : r.otherLaserScans)
+            others += (others.empty() ? "" : ", ") + std::to_string(count) + " of " +
+                      (label.empty() ? std::string("(no label)") : label);
+        s += line(
+            "laser: %s; scans of the log's other lasers left out: %s ([Slam] scan_label "
+            "chooses the laser)",
+            r.laserLabel.empty() ? "(no label)" : r.laserLabel.c_str(), others.c_str());
+    }
     if (const auto& st = r.statistics) {
         const std::size_t n = st->scans > 1 ? st->scans - 1 : 0;
         s += line("keyframes: %zu in %zu submaps; the scans between them placed by %s",
@@ -98,6 +108,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
         {"wall_s", r.wallSeconds},
         {"cpu_s", r.cpuSeconds},
         {"real_time_factor", r.wallSeconds > 0 ? r.logDuration / r.wallSeconds : 0.0},
+        {"laser", {{"label", r.laserLabel}, {"other_lasers", r.otherLaserScans}}},
         {"wall_alignment_deg", r.wallAlignment * 180.0 / M_PI}};
     if (const auto& st = r.statistics) {
         j["keyframes"] = st->keyframes;

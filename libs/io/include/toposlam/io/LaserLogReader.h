@@ -64,6 +64,7 @@
 #include <mrpt/poses/CPose2D.h>
 
 #include <cstddef>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -81,9 +82,16 @@ enum class LaserLogFormat { RawlogSensoryFrames, RawlogObservations, Carmen };
 const char* toString(LaserLogFormat f);
 
 struct LaserLogOptions {
-    /// Keep only scans with this sensor label (empty: every CObservation2DRangeScan). CARMEN
-    /// scans are labelled with their message name: FLASER, RLASER, ROBOTLASER1, ROBOTLASER2.
+    /// Keep only scans with this sensor label (empty: every CObservation2DRangeScan, or see
+    /// oneLaser). CARMEN scans are labelled with their message name: FLASER, RLASER,
+    /// ROBOTLASER1, ROBOTLASER2.
     std::string scanLabel;
+    /// With scanLabel empty: when the log holds scans of several lasers, keep those of one
+    /// (a SLAM front end registers one sensor's scans against each other): in a CARMEN log
+    /// the front laser (FLASER, else ROBOTLASER1, else the first laser line's), in a rawlog
+    /// the first scan's label. The reader counts the scans it leaves out
+    /// (LaserLogReader::otherLaserScans).
+    bool oneLaser = false;
     /// CARMEN: max range (m) when no PARAM line gives one; readings >= it are invalid.
     float carmenDefaultMaxRange = 81.0f;
     /// CARMEN: the laser's pose on the robot (x, y in m, phi in rad), replacing whatever the
@@ -146,6 +154,11 @@ class LaserLogReader {
     /// Scans so far whose scan->timestamp differs from their fileStamp by more than 1 us
     /// (recovered CARMEN stamps, times made strictly increasing).
     std::size_t adjustedTimestamps() const;
+    /// The label of the scans kept: scanLabel, or with oneLaser the chosen laser's (empty
+    /// until the first scan is read, and when every scan is kept).
+    const std::string& laserLabel() const;
+    /// With oneLaser: the scans left out so far, by sensor label.
+    const std::map<std::string, std::size_t>& otherLaserScans() const;
 
     /// Reads the whole log. Throws like next().
     static std::vector<LaserLogRecord> readAll(const std::string& path,

@@ -16,6 +16,7 @@
 #include <toposlam/mapping/SlamStatistics.h>
 
 #include <cstddef>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -26,6 +27,10 @@ struct SlamEngineOptions : public config::Options {
     /// "graph": TopoSLAM's graph SLAM (CGraphSlamBuilder); "icp": MRPT's ICP map builder,
     /// the engine of icp-slam (IcpSlam), kept as the comparison row of B3.
     std::string engine = "graph";
+    /// The laser to map with, by sensor label (CARMEN: FLASER, RLASER, ROBOTLASER1, ...).
+    /// "auto": the log's only laser, or when it has several its front laser (CARMEN) or the
+    /// first scan's (rawlog); the scans of the others are left out and counted in the summary.
+    std::string scanLabel = "auto";
     void declare(config::OptionsSchema& s) override;
 };
 
@@ -41,6 +46,9 @@ struct MappingResult {
     double wallAlignment = 0;
     double wallDirectionStrength = 0;  ///< see WallDirection::strength
     std::size_t scans = 0;
+    std::string laserLabel;  ///< the sensor label of the scans mapped
+    /// Scans of other lasers in the log, left out (by sensor label); empty for a one-laser log.
+    std::map<std::string, std::size_t> otherLaserScans;
     double logDuration = 0;  ///< s, last minus first scan time
     double wallSeconds = 0;  ///< s spent mapping (reading and the grid included)
     double cpuSeconds = 0;   ///< CPU time of the process spent on it (s)

@@ -151,7 +151,7 @@ SlamEvaluationRun runSlamEvaluation(const SlamEvaluationRequest& request,
         }
         MethodEvaluation& m = ev.methods.back();
         m.worst = worstRelations(m.relative, run.relations, request.worstRelations);
-        if (ev.methods.back().relative.matchedRelations == 0) {
+        if (m.relative.matchedRelations == 0) {
             throw io::InputError(t.file,
                                  "matches none of the " + std::to_string(ev.relationCount) +
                                      " relations of " + ev.referenceFile +

@@ -163,8 +163,7 @@ CarmenScanSource::CarmenScanSource(const std::string& path, const LaserLogOption
             robotLaser1 = robotLaser1 || tokens_[0] == "ROBOTLASER1";
         }
     }
-    // The front laser is the robot's main one (the rear one of old logs often sees only the
-    // robot's own structure).
+    // The front laser: the one the robot looks ahead with.
     if (flaser)
         preferredLaser_ = "FLASER";
     else if (robotLaser1)

@@ -8,6 +8,7 @@
 #include <mrpt/maps/CSimpleMap.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
 #include <toposlam/features/CObservationLaserFeatures.h>
@@ -16,6 +17,8 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
+#include <memory>
 #include <string>
 #include <utility>
 
@@ -92,6 +95,47 @@ TEST(CGraphSlamBuilder, DrivenByActionsAndSensoryFramesLikeMrptBuilders) {
     const auto grid = metric->mapByClass<mrpt::maps::COccupancyGridMap2D>();
     ASSERT_TRUE(grid);
     EXPECT_GT(grid->getSizeX() * grid->getSizeY(), 0u);
+}
+
+TEST(CGraphSlamBuilder, MapsTheFirstLaserAndSkipsOthersKeepingTheirOdometry) {
+    // Observations one at a time, as an observations-format rawlog gives them: odometry, then
+    // (after the first step) a second laser's scan (all readings 1 m: nothing like the room),
+    // then the first laser's. The second laser is left out and counted, and the odometry read
+    // before it still moves the robot: the trajectory is bit for bit that of the first laser
+    // alone.
+    const auto drive = roomTour();
+    const auto run = [&](bool withOther) {
+        auto builder = std::make_unique<mapping::CGraphSlamBuilder>();
+        builder->loadFromConfigFile(mrpt::config::CConfigFile(kConfig));
+        builder->initialize();
+        for (std::size_t i = 0; i < drive.scans.size(); ++i) {
+            auto odometry = mrpt::obs::CObservationOdometry::Create();
+            odometry->odometry = drive.odometry[i];
+            odometry->timestamp = drive.scans[i]->timestamp;
+            builder->processObservation(odometry);
+            if (withOther && i > 0) {
+                auto other = mrpt::obs::CObservation2DRangeScan::Create(*drive.scans[i]);
+                other->sensorLabel = "OTHER_LASER";
+                for (std::size_t b = 0; b < other->getScanSize(); ++b)
+                    other->setScanRange(b, 1.0f);
+                builder->processObservation(other);
+            }
+            builder->processObservation(drive.scans[i]);
+        }
+        builder->finish();
+        return builder;
+    };
+    const auto alone = run(false), both = run(true);
+    ASSERT_TRUE(both->laserLabel());
+    EXPECT_EQ(*both->laserLabel(), drive.scans.front()->sensorLabel);
+    EXPECT_EQ(both->otherLaserScans(),
+              (std::map<std::string, std::size_t>{{"OTHER_LASER", drive.scans.size() - 1}}));
+    EXPECT_TRUE(alone->otherLaserScans().empty());
+    ASSERT_EQ(both->slam().statistics().scans, drive.scans.size());
+    const auto a = alone->slam().scanPoses(), b = both->slam().scanPoses();
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i)
+        ASSERT_EQ(a[i], b[i]) << "scan " << i;
 }
 
 TEST(CGraphSlamBuilder, AppOutputsAreReadByMrpt) {

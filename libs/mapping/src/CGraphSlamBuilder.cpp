@@ -40,6 +40,8 @@ void CGraphSlamBuilder::initialize(const mrpt::maps::CSimpleMap& initialMap,
     lastOdometry_.reset();
     pendingIncrement_.reset();
     pendingFeatures_.reset();
+    laserLabel_.reset();
+    otherLasers_.clear();
     metricMap_.maps.clear();
     metricMapVersion_ = {0, 0};
 }
@@ -104,6 +106,12 @@ void CGraphSlamBuilder::processObservation(const mrpt::obs::CObservation::Ptr& o
 }
 
 void CGraphSlamBuilder::processScan(const mrpt::obs::CObservation2DRangeScan::Ptr& scan) {
+    if (!laserLabel_)
+        laserLabel_ = scan->sensorLabel;
+    if (scan->sensorLabel != *laserLabel_) {  // another laser: its odometry stays pending
+        ++otherLasers_[scan->sensorLabel];
+        return;
+    }
     // Stored features count only when they are this scan's.
     features::CObservationLaserFeatures::Ptr stored;
     if (pendingFeatures_ && pendingFeatures_->scanLabel == scan->sensorLabel &&

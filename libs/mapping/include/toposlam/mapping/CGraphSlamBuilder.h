@@ -6,7 +6,9 @@
 // used instead of extracting the features again). The map handed out is the keyframes
 // (getCurrentlyBuiltMap: a CSimpleMap of their poses and sensory frames, each with the scan
 // and its features) and an occupancy grid of them at their optimised poses
-// (getCurrentlyBuiltMetricMap, built when asked for).
+// (getCurrentlyBuiltMetricMap, built when asked for). It maps one laser: the scans of the
+// first sensor label it is given; those of other lasers are counted and left out (their
+// odometry still counts), since each scan is registered against the keyframes before it.
 //
 // Configuration (loadFromConfigFile): [GraphSlam] (GraphSlamOptions), [GraphScanMatcher]
 // (matching::GraphMatcherOptions), the feature extractor's own section (e.g.
@@ -20,8 +22,10 @@
 #include <toposlam/mapping/OccupancyGridBuilder.h>
 #include <toposlam/matching/GraphScanMatcher.h>
 
+#include <map>
 #include <memory>
 #include <optional>
+#include <string>
 
 namespace toposlam::mapping {
 
@@ -56,6 +60,10 @@ class CGraphSlamBuilder : public mrpt::slam::CMetricMapBuilder {
     void finish();
     /// The engine (trajectory of every scan, keyframes, graph, statistics).
     const GraphSlam& slam() const;
+    /// The sensor label of the laser mapped (that of the first scan given), and the scans of
+    /// other lasers left out, by label.
+    const std::optional<std::string>& laserLabel() const { return laserLabel_; }
+    const std::map<std::string, std::size_t>& otherLaserScans() const { return otherLasers_; }
 
   private:
     GraphSlam& engine();
@@ -66,6 +74,8 @@ class CGraphSlamBuilder : public mrpt::slam::CMetricMapBuilder {
     std::optional<mrpt::poses::CPose2D> lastOdometry_;       // cumulative, observations format
     std::optional<mrpt::poses::CPose2D> pendingIncrement_;   // since the last scan
     features::CObservationLaserFeatures::Ptr pendingFeatures_;
+    std::optional<std::string> laserLabel_;
+    std::map<std::string, std::size_t> otherLasers_;
     mutable mrpt::maps::CMultiMetricMap metricMap_;
     /// (keyframes, optimisations) of the graph the metric map was built from.
     mutable std::pair<std::size_t, std::size_t> metricMapVersion_{0, 0};

@@ -68,11 +68,8 @@ std::vector<CPose2D> GraphSlam::scanPoses() const {
         in[i].fixed = keyframes_[s.keyframe].scanIndex == i;  // the keyframe's own scan
         in[i].poseVariance = s.registrationVariance;
         in[i].odometry = s.odometry;
-        if (s.odometry) {
-            const double sigma =
-                options_.odometrySigmaXY + options_.odometrySigmaXYPerMetre * s.odometry->norm();
-            in[i].odometryVariance = sigma * sigma;
-        }
+        if (s.odometry)  // the position noise of the graph's own odometry model
+            in[i].odometryVariance = registration_.odometryCovariance(s.odometry->norm(), 0)(0, 0);
     }
     return smoothScanPositions(in);
 }

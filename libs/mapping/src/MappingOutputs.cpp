@@ -45,14 +45,16 @@ std::string formatSummary(const MappingResult& r) {
         r.scans, r.logDuration, r.wallSeconds, r.cpuSeconds,
         r.wallSeconds > 0 ? r.logDuration / r.wallSeconds : 0.0);
     if (!r.otherLaserScans.empty()) {
+        const auto named = [](const std::string& label) {
+            return label.empty() ? std::string("(no label)") : label;
+        };
         std::string others;
         for (const auto& [label, count] : r.otherLaserScans)
-            others += (others.empty() ? "" : ", ") + std::to_string(count) + " of " +
-                      (label.empty() ? std::string("(no label)") : label);
+            others += (others.empty() ? "" : ", ") + std::to_string(count) + " of " + named(label);
         s += line(
             "laser: %s; scans of the log's other lasers left out: %s ([Slam] scan_label "
             "chooses the laser)",
-            r.laserLabel.empty() ? "(no label)" : r.laserLabel.c_str(), others.c_str());
+            named(r.laserLabel).c_str(), others.c_str());
     }
     if (const auto& st = r.statistics) {
         const std::size_t n = st->scans > 1 ? st->scans - 1 : 0;

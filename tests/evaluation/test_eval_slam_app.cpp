@@ -74,6 +74,24 @@ TEST(EvalSlamApp, TableAndJsonWithKnownErrors) {
     EXPECT_EQ(mine.at("translation_m").at("std"), 1.0);
     EXPECT_EQ(mine.at("translation_m").at("max"), 3.0);
     EXPECT_EQ(json.at("reference").at("relations"), 4);
+    EXPECT_EQ(json.at("reference").at("repeated_relations"), 0);
+    EXPECT_FALSE(contains(r.output, "repeating")) << r.output;
+}
+
+TEST(EvalSlamApp, SaysWhenTheRelationFileRepeatsALine) {
+    Fixture f;
+    const std::string repeated =
+        write(f.dir, "repeated.relations", readFile(f.relations) + "11 13 0 0 0 0 0 0\n");
+    const auto r = runApp("toposlam-eval-slam",
+                          f.trajectory + " --relations " + repeated + " --json " + f.json);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(
+        contains(r.output, "(5 relations, 1 repeating an earlier line, scored as published)"))
+        << r.output;
+    // Scored as published: the repeated 2 m error counts twice, {1, 2, 2, 3}.
+    EXPECT_TRUE(contains(r.output, "| 4 / 5 | 2.0000 ± 0.8165 |")) << r.output;
+    const auto json = toposlam::io::loadJsonFile(f.json);
+    EXPECT_EQ(json.at("reference").at("repeated_relations"), 1);
 }
 
 TEST(EvalSlamApp, SeveralMethodsSideBySide) {

@@ -74,6 +74,16 @@ TEST(RelationFile, SaveThenLoadRoundTrips) {
     }
 }
 
+TEST(RelationFile, CountsLinesThatRepeatAnEarlierOne) {
+    // fr079.relations has 4 such lines, mit-csail.relations 1: each is scored again.
+    const PoseRelation a{2175.240865, 2231.5813, {0.5, -0.25, 0.125}};
+    const PoseRelation b{2175.240865, 2231.5813, {0.5, -0.25, 0.126}};  // another motion
+    const PoseRelation c{2231.5813, 2175.240865, {0.5, -0.25, 0.125}};  // the other way round
+    EXPECT_EQ(countRepeatedRelations({a, b, c}), 0u);
+    EXPECT_EQ(countRepeatedRelations({a, b, a, c, a}), 2u);
+    EXPECT_EQ(countRepeatedRelations({}), 0u);
+}
+
 TEST(RelationFile, MissingFileIsAnInputError) {
     TempDir dir;
     EXPECT_THROW(loadRelations(dir.file("does-not-exist.relations")), InputError);

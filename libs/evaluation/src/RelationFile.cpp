@@ -2,6 +2,8 @@
 #include <toposlam/io/AtomicFile.h>
 #include <toposlam/io/InputError.h>
 
+#include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -70,6 +72,16 @@ PoseRelations loadRelations(const std::string& path) {
     if (relations.empty())
         throw io::InputError(path, "no relation in the file");
     return relations;
+}
+
+std::size_t countRepeatedRelations(const PoseRelations& relations) {
+    using Key = std::array<double, 5>;
+    std::vector<Key> keys;
+    keys.reserve(relations.size());
+    for (const PoseRelation& r : relations)
+        keys.push_back({r.stamp1, r.stamp2, r.motion.x, r.motion.y, r.motion.phi});
+    std::sort(keys.begin(), keys.end());
+    return static_cast<std::size_t>(keys.end() - std::unique(keys.begin(), keys.end()));
 }
 
 void saveRelations(const PoseRelations& relations, const std::string& path) {

@@ -220,6 +220,8 @@ SlamBenchmarkLogResult SlamBenchmark::runLog(const SlamBenchmarkLog& log,
     const auto [first, last] = std::minmax_element(stamps.begin(), stamps.end());
     result.durationSeconds = stamps.empty() ? 0.0 : *last - *first;
     result.relations = reference.relations.size();
+    if (!reference.groundTruth)
+        result.repeatedRelations = countRepeatedRelations(reference.relations);
     const io::Trajectory2D* groundTruth = reference.groundTruth ? &*reference.groundTruth : nullptr;
     for (const SlamEngine engine : options_.engines) {
         const bool startsProcess = engine != SlamEngine::IcpSlam || !options_.setup.icpSlam.empty();

@@ -23,13 +23,20 @@ std::string factor(double duration, double seconds) {
     return formatFixed(f, f >= 10 ? 0 : 1) + "×";
 }
 
+// ", 4 repeating an earlier line" when the relation file has repeats (scored as published).
+std::string repeatedNote(const SlamBenchmarkLogResult& log) {
+    if (log.repeatedRelations == 0)
+        return "";
+    return ", " + std::to_string(log.repeatedRelations) + " repeating an earlier line";
+}
+
 std::string logLine(const SlamBenchmarkLogResult& log) {
     std::string line = log.log.name + " (" + log.log.logFile + ": ";
     if (!log.error.empty() && log.scans == 0)
         return line + "not read)";
     line += std::to_string(log.scans) + " scans, " + formatFixed(log.durationSeconds, 0) + " s; ";
     if (log.log.groundTruthFile.empty())
-        return line + std::to_string(log.relations) + " relations)";
+        return line + std::to_string(log.relations) + " relations" + repeatedNote(log) + ")";
     return line + "ground truth " + log.log.groundTruthFile + ": " + std::to_string(log.relations) +
            " derived relations + ATE)";
 }
@@ -238,7 +245,8 @@ nlohmann::json slamBenchmarkJson(const SlamBenchmarkResult& result) {
                         {"reference",
                          {{"kind", truth ? "ground_truth" : "relations"},
                           {"file", truth ? log.log.groundTruthFile : log.log.relationsFile},
-                          {"relations", log.relations}}},
+                          {"relations", log.relations},
+                          {"repeated_relations", log.repeatedRelations}}},
                         {"scans", log.scans},
                         {"duration_s", log.durationSeconds},
                         {"error", log.error},

@@ -125,7 +125,12 @@ std::string formatEvaluationTable(const SlamEvaluation& ev) {
                     : std::string())
             << ")\n";
     } else {
-        out << ev.relationCount << " relations)\n";
+        out << ev.relationCount << " relations";
+        if (ev.repeatedRelations > 0) {
+            out << ", " << ev.repeatedRelations
+                << " repeating an earlier line, scored as published";
+        }
+        out << ")\n";
     }
     out << "Metric: Kümmerle et al. 2009, e = δ_gt⁻¹ ⊕ δ_est, δ_est = x_t1⁻¹ ⊕ x_t2; mean ± "
            "std; stamps matched within "
@@ -200,6 +205,8 @@ io::Json referenceJson(const SlamEvaluation& ev) {
     io::Json reference = {{"file", ev.referenceFile},
                           {"kind", ev.referenceIsGroundTruth ? "ground_truth" : "relations"},
                           {"relations", ev.relationCount}};
+    if (!ev.referenceIsGroundTruth)
+        reference["repeated_relations"] = ev.repeatedRelations;
     if (ev.referenceIsGroundTruth) {
         reference["ground_truth_poses"] = ev.groundTruthPoses;
         reference["relation_scheme"] = {

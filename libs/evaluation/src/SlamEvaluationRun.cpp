@@ -78,6 +78,7 @@ void readReference(const SlamEvaluationRequest& request, SlamEvaluationRun& run)
     if (!request.relationsFile.empty()) {
         ev.referenceFile = request.relationsFile;
         run.relations = loadRelations(ev.referenceFile);
+        ev.repeatedRelations = countRepeatedRelations(run.relations);
     } else {
         ev.referenceFile = request.groundTruthFile;
         ev.referenceIsGroundTruth = true;

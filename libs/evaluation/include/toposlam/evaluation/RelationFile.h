@@ -9,6 +9,7 @@
 // be 0.
 #include <mrpt/math/TPose2D.h>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,11 @@ using PoseRelations = std::vector<PoseRelation>;
 /// unreadable, has no relation, or a line does not have exactly 8 finite numbers, or has a
 /// nonzero z, roll or pitch.
 PoseRelations loadRelations(const std::string& path);
+
+/// How many relations repeat an earlier one exactly (same stamps, same motion). Published files
+/// have a few (fr079.relations 4, mit-csail.relations 1); they are scored as published, so each
+/// counts twice in a mean, for every method alike. The evaluators report the count.
+std::size_t countRepeatedRelations(const PoseRelations& relations);
 
 /// Writes relations in the same format (stamps with microseconds, like the benchmark files,
 /// motion with 9 decimals). Atomic: no partial file is left on failure.

@@ -46,8 +46,9 @@ struct SlamBenchmarkRow {
 struct SlamBenchmarkLogResult {
     SlamBenchmarkLog log;
     std::size_t scans = 0;
-    double durationSeconds = 0;  ///< last minus first scan stamp
-    std::size_t relations = 0;   ///< relations scored (derived ones for a ground truth)
+    double durationSeconds = 0;         ///< last minus first scan stamp
+    std::size_t relations = 0;          ///< relations scored (derived ones for a ground truth)
+    std::size_t repeatedRelations = 0;  ///< of those, repeats of an earlier line of the file
     /// Set when the log or its reference could not be read (then no engine ran on it), or
     /// when its pictures could not be written.
     std::string error;

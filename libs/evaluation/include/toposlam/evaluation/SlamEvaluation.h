@@ -61,6 +61,9 @@ struct SlamEvaluation {
     std::size_t groundTruthPoses = 0;
     GroundTruthRelationOptions groundTruthRelations;
     std::size_t relationCount = 0;
+    /// Relation file: how many lines repeat an earlier one (countRepeatedRelations); they are
+    /// scored as published.
+    std::size_t repeatedRelations = 0;
     /// Ground-truth reference: the separation of each relation (relationsFromGroundTruth).
     std::vector<double> relationSeparations;
     double stampTolerance = StampedPoseLookup::kDefaultTolerance;

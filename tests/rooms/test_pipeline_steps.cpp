@@ -2,6 +2,7 @@
 #include <toposlam/rooms/DoorFilters.h>
 #include <toposlam/rooms/DoorSearchPaths.h>
 #include <toposlam/rooms/FreeSpaceBinarizer.h>
+#include <toposlam/rooms/FurniturePockets.h>
 #include <toposlam/rooms/LineMerger.h>
 #include <toposlam/rooms/MainDirectionVoter.h>
 #include <toposlam/rooms/RegionBoundary.h>
@@ -374,4 +375,82 @@ TEST(FreeSpaceBinarizer, ObstaclesAreTheNonFreeComponentsOfTheWholeMap) {
         }
         EXPECT_EQ(distinct.size(), static_cast<std::size_t>(n - 1)) << "trial " << trial;
     }
+}
+
+namespace {
+
+// Labels of a 6 x 4 m room (id 1) beside a 2 m corridor (id 2), both inside 0.1 m walls, a
+// 0.2 m wall between them (wall cells 0); `notches`: non-free rectangles cut out of the room.
+cv::Mat roomBesideCorridor(const std::vector<cv::Rect>& notches) {
+    cv::Mat labels(84, 168, CV_32S, cv::Scalar(0));
+    labels(cv::Rect(2, 2, 120, 80)) = 1;
+    labels(cv::Rect(126, 2, 40, 80)) = 2;
+    for (const cv::Rect& r : notches)
+        labels(r) = 0;
+    return labels;
+}
+
+int countLabel(const cv::Mat& labels, const cv::Rect& area, int label) {
+    return cv::countNonZero(labels(area) == label);
+}
+
+}  // namespace
+
+TEST(FurniturePockets, CornerAndWallFurnitureJoinTheRoomWallsDoNot) {
+    const cv::Rect cornerDesk(2, 2, 32, 16);  // 1.6 x 0.8 m in the top left corner
+    const cv::Rect cabinet(50, 72, 24, 10);   // 1.2 x 0.5 m against the bottom wall
+    const cv::Rect longShelf(2, 30, 8, 52);   // 2.6 m along the left wall: longer than 2 m
+    cv::Mat labels = roomBesideCorridor({cornerDesk, cabinet, longShelf});
+    const cv::Mat before = labels.clone();
+    FurniturePockets pockets;
+    const std::size_t n = pockets.label({}, 0.0, {}, kRes, labels);
+    // The room's box is one cell in from its outermost lines (a wall drawn at an angle has steps
+    // a cell deep): the furniture's line along the wall stays out.
+    EXPECT_EQ(countLabel(labels, cornerDesk, 1), 31 * 15);
+    EXPECT_EQ(countLabel(labels, cabinet, 1), 24 * 9);
+    EXPECT_EQ(countLabel(labels, longShelf, 0), longShelf.area());
+    EXPECT_EQ(n, static_cast<std::size_t>(31 * 15 + 24 * 9));
+    EXPECT_EQ(cv::countNonZero(labels != before), static_cast<int>(n));
+    EXPECT_EQ(countLabel(labels, cv::Rect(0, 0, 168, 2), 0), 2 * 168) << "walls stay unlabelled";
+    EXPECT_EQ(countLabel(labels, cv::Rect(122, 0, 4, 84), 0), 4 * 84);
+}
+
+TEST(FurniturePockets, NoPocketBetweenTwoRoomsOrBeyondADoorOrRoundACurvedEnd) {
+    // An L-shaped room round a small room: the L's box holds the small room and the walls
+    // between the two, which touch the small room: walls, not furniture.
+    cv::Mat labels = roomBesideCorridor({});
+    labels(cv::Rect(62, 2, 60, 40)) = 0;
+    labels(cv::Rect(66, 2, 56, 36)) = 3;
+    cv::Mat before = labels.clone();
+    FurniturePockets pockets;
+    pockets.label({}, 0.0, {}, kRes, labels);
+    EXPECT_EQ(cv::countNonZero(labels != before), 0);
+
+    // A 1.4 m door from a 3 x 1.8 m room to a corridor through a 0.2 m wall: the room's half of
+    // the opening must not stretch the room's box over the wall, nor the wall along the room
+    // become a pocket.
+    labels = cv::Mat(40, 110, CV_32S, cv::Scalar(0));
+    labels(cv::Rect(2, 2, 60, 36)) = 1;
+    labels(cv::Rect(66, 2, 40, 36)) = 2;
+    labels(cv::Rect(62, 6, 2, 28)) = 1;
+    labels(cv::Rect(64, 6, 2, 28)) = 2;
+    VirtualDoor door;
+    door.jambA = {63, 5};
+    door.jambB = {63, 34};
+    door.width = 29;
+    before = labels.clone();
+    pockets.label({}, 0.0, {door}, kRes, labels);
+    EXPECT_EQ(cv::countNonZero(labels != before), 0);
+    // Without the door, the half opening (28 of the room's 36 cells across) is taken for a side
+    // of the room: the check above would fail.
+    pockets.label({}, 0.0, {}, kRes, labels);
+    EXPECT_GT(cv::countNonZero(labels != before), 0);
+
+    // A room whose far end is a half circle: the corners beside it fill less than half their box.
+    labels = cv::Mat(84, 144, CV_32S, cv::Scalar(0));
+    labels(cv::Rect(2, 2, 100, 80)) = 1;
+    cv::circle(labels, {101, 41}, 40, cv::Scalar(1), cv::FILLED);
+    before = labels.clone();
+    pockets.label({}, 0.0, {}, kRes, labels);
+    EXPECT_EQ(cv::countNonZero(labels != before), 0);
 }

@@ -135,6 +135,47 @@ TEST(RoomSegmenter, FurnitureMakesNoFalseDoors) {
     expectMatchesDrawing(result.map, drawn, kDoorTolerance);
 }
 
+TEST(RoomSegmenter, FurnitureAgainstAWallTakesItsRoomsIdWallsDoNot) {
+    // The furnished office's corner cabinet (2 x 0.6 m, in the upper left room) and its sofa
+    // (3 m, longer than max_furniture_size), as masks drawn on the office's image.
+    const DrawnMap office = toposlam::rooms::test::office();
+    auto mask = [&](double x0, double y0, double x1, double y1) {
+        DrawnMap m = office;
+        m.image = cv::Mat(office.image.size(), CV_8U, cv::Scalar(0));
+        const double res = toposlam::rooms::test::kResolution;
+        cv::rectangle(m.image, cv::Point2d(x0 / res, m.image.rows - y1 / res),
+                      cv::Point2d(x1 / res - 1, m.image.rows - y0 / res - 1), cv::Scalar(255),
+                      cv::FILLED);
+        return m;
+    };
+    const DrawnMap cabinet = mask(1.2, 12.2, 3.2, 12.8), sofa = mask(16.5, 12.2, 19.5, 12.8);
+    for (const double degrees : {0.0, 17.0, 30.0}) {
+        SCOPED_TRACE(degrees);
+        using toposlam::rooms::test::rotated;
+        const DrawnMap drawn = rotated(toposlam::rooms::test::furnishedOffice(), degrees);
+        const cv::Mat walls = rotated(office, degrees).image == 0;  // occupied unfurnished
+        const cv::Mat cabinetCells = rotated(cabinet, degrees).image == 255;
+        const cv::Mat sofaCells = rotated(sofa, degrees).image == 255;
+        const auto map = RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image)).map;
+        const int room = map.roomAt(drawn.rooms[1].x, drawn.rooms[1].y);  // upper left
+        ASSERT_GT(room, 0);
+        // All but the cabinet's lines along the two walls (a cell each): 39 x 11 of 40 x 12
+        // cells; a cell fewer each way at an angle, where the walls' steps are a cell deep.
+        const int cells = cv::countNonZero(cabinetCells);
+        EXPECT_GE(cv::countNonZero((map.labels == room) & cabinetCells),
+                  (degrees == 0 ? 39 * 11 : 38 * 10))
+            << "of " << cells;
+        EXPECT_EQ(cv::countNonZero((map.labels != 0) & walls), 0) << "a wall cell has a room";
+        EXPECT_EQ(cv::countNonZero((map.labels != 0) & sofaCells), 0) << "the sofa is 3 m long";
+        expectMatchesDrawing(map, drawn, kDoorTolerance + (degrees == 0 ? 0 : 0.05));
+    }
+    RoomSegmenter::Options off;
+    off.maxFurnitureSize = 0;
+    const DrawnMap drawn = toposlam::rooms::test::furnishedOffice();
+    const auto map = RoomSegmenter(off).segment(toposlam::rooms::test::gridOf(drawn.image)).map;
+    EXPECT_EQ(cv::countNonZero((map.labels != 0) & (cabinet.image == 255)), 0);
+}
+
 TEST(RoomSegmenter, NoisyMapKeepsRoomsAndDoors) {
     for (unsigned seed : {1u, 2u, 3u}) {
         SCOPED_TRACE(seed);
@@ -185,13 +226,19 @@ TEST(RoomSegmenter, FreePocketsCutOffDiagonallyJoinTheRoomTheyTouch) {
     const int id = labels.at<int>(room.y + room.height - 5, room.x + room.width - 5);
     ASSERT_GT(id, 0);
     EXPECT_EQ(cv::countNonZero(labels(smallPocket) == id), smallPocket.area());
-    // Off (the paper): the pocket stays unlabelled.
+    // Off (the paper): the pocket stays unlabelled. (Furniture pockets off too: a walled pocket
+    // up to max_furniture_size across inside a room is labelled as furniture would be.)
     RoomSegmenter::Options off;
     off.maxSliverArea = 0;
+    off.maxFurnitureSize = 0;
     EXPECT_EQ(cv::countNonZero(labelsOf(small, off)(smallPocket)), 0);
     // A pocket larger than max_sliver_area (25 x 25 cells: 1.56 m^2) is no sliver.
     const auto [large, largePocket] = withPocket(25);
-    EXPECT_EQ(cv::countNonZero(labelsOf(large, RoomSegmenter::Options())(largePocket)), 0);
+    RoomSegmenter::Options slivers;
+    slivers.maxFurnitureSize = 0;
+    EXPECT_EQ(cv::countNonZero(labelsOf(large, slivers)(largePocket)), 0);
+    EXPECT_EQ(cv::countNonZero(labelsOf(large, RoomSegmenter::Options())(largePocket) == id),
+              largePocket.area());
 }
 
 TEST(RoomSegmenter, OpenPlanHallIsOneRoom) {
@@ -338,6 +385,7 @@ TEST(RoomSegmenter, PaperPresetSwitchesOffEveryDeviationAndKeepsTheRest) {
     EXPECT_EQ(o.filters.maxOpenBoundary, 1.0);  // off
     EXPECT_EQ(o.wide.enabled, paper.wide.enabled);
     EXPECT_FALSE(o.wide.enabled || o.filters.requireWallEnd || o.door.localDirection);
+    EXPECT_EQ(o.maxFurnitureSize, 0.0);
     EXPECT_EQ(o.door.doorWidth, 0.9);  // the rest is kept
     EXPECT_EQ(o.filters.minRoomArea, 3.5);
     // What the apps' "-c file --paper" gives: the file's values, every deviation off.

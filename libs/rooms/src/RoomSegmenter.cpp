@@ -1,4 +1,5 @@
 #include <toposlam/rooms/DoorSearchPaths.h>
+#include <toposlam/rooms/FurniturePockets.h>
 #include <toposlam/rooms/RegionPartition.h>
 #include <toposlam/rooms/RoomSegmenter.h>
 
@@ -228,6 +229,7 @@ void RoomSegmenter::Options::applyPaperPreset() {
     wide.enabled = false;
     labelIslands = false;
     maxSliverArea = 0;
+    maxFurnitureSize = 0;
     medialAxisWithTrajectory = false;
 }
 
@@ -346,6 +348,10 @@ void RoomSegmenter::Options::declare(config::OptionsSchema& s) {
            "free pockets up to this size cut off from the free space join the one room they "
            "touch (deviation; 0 = off)")
         .atLeast(0);
+    s.real("max_furniture_size", maxFurnitureSize, "m",
+           "non-free pockets along a room's walls up to this long both ways (furniture) join the "
+           "room (deviation; 0 = off)")
+        .atLeast(0);
     s.flag("medial_axis_with_trajectory", medialAxisWithTrajectory,
            "with a trajectory, search the medial axis too (deviation)");
 }
@@ -372,6 +378,7 @@ struct RoomSegmenter::Workspace {
     RegionPartition partition;
     RegionBoundary boundary;
     std::vector<cv::Point> sliverCells, sliver;  // labelSlivers' scratch
+    FurniturePockets furniture;
 };
 
 RoomSegmenter::RoomSegmenter() : RoomSegmenter(Options{}) {}
@@ -502,6 +509,14 @@ RoomSegmenter::Result RoomSegmenter::segment(
         labelSlivers(space.otherFree,
                      static_cast<std::size_t>(options_.maxSliverArea / space.frame.cellArea()),
                      labels, ws.sliverCells, ws.sliver);
+    }
+    if (options_.maxFurnitureSize > 0) {
+        // A pocket's box side: the narrowest door; near a door: the half of a wall's thickness.
+        const FurniturePockets::Options pockets{
+            options_.maxFurnitureSize, options_.door.doorWidth - options_.door.doorWidthTolerance,
+            0.5 * options_.filters.maxWallThickness};
+        ws.furniture.label(pockets, result.directions.phi1, result.afterDistance,
+                           space.frame.resolution, labels);
     }
     lap("labels");
     // Room geometry on the cropped frame (world coordinates do not depend on the crop), then the

@@ -63,6 +63,10 @@ class RoomSegmenter {
         /// desk) join the one room they touch (8-neighbours); 0 = off (deviation: the paper
         /// labels the largest free region only).
         double maxSliverArea = 0.25;
+        /// m; furniture against a room's walls (non-free pockets inside the room's box along
+        /// the main directions, touching no other room, up to this long both ways) takes the
+        /// room's id, as islands do (deviation, FurniturePockets.h); 0 = off.
+        double maxFurnitureSize = 2.0;
         /// With a trajectory, search from the medial axis too (deviation: the paper searches
         /// the trajectory only, assuming the robot went through every door; a tour that visits
         /// every room need not, e.g. through the second door of a room).
@@ -75,9 +79,9 @@ class RoomSegmenter {
         /// Switches off every deviation of paperExact() (speck removal, local directions,
         /// narrowest-of-group, smallest-first merging, wall-jamb, wall-end and constriction
         /// tests, wide openings, unknown as no wall, the open-boundary merge, islands,
-        /// slivers, medial axis with trajectory) and keeps every other value (door width, areas,
-        /// ...):
-        /// `--paper` on top of an ini file. The one place that knows what "paper" means.
+        /// slivers, furniture pockets, medial axis with trajectory) and keeps every other
+        /// value (door width, areas, ...): `--paper` on top of an ini file. The one place that
+        /// knows what "paper" means.
         void applyPaperPreset();
         /// The options of the apps' `-c file.ini [--paper]`: the built-in defaults, then the
         /// [RoomSegmenter] section of `iniPath` when not empty (config::ConfigError naming the

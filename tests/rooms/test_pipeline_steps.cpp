@@ -16,6 +16,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <cmath>
+#include <random>
 #include <set>
 
 using namespace toposlam::rooms;
@@ -453,4 +454,45 @@ TEST(FurniturePockets, NoPocketBetweenTwoRoomsOrBeyondADoorOrRoundACurvedEnd) {
     before = labels.clone();
     pockets.label({}, 0.0, {}, kRes, labels);
     EXPECT_EQ(cv::countNonZero(labels != before), 0);
+}
+
+TEST(FurniturePockets, OnRandomLabelsOnlyUnlabelledCellsChangeAndNoPocketTouchesAnotherRoom) {
+    std::mt19937 rng(7);
+    std::uniform_int_distribution<int> coordinate(0, 99), extent(3, 40), room(1, 5);
+    std::uniform_real_distribution<double> angle(0, M_PI);
+    FurniturePockets pockets;
+    std::size_t labelled = 0;
+    for (int trial = 0; trial < 200; ++trial) {
+        cv::Mat labels(100, 100, CV_32S, cv::Scalar(0));
+        for (int k = 0; k < 12; ++k) {  // rooms and obstacles drawn over each other
+            const cv::Rect r(coordinate(rng), coordinate(rng), extent(rng), extent(rng));
+            labels(r & cv::Rect(0, 0, 100, 100)) = k % 3 == 2 ? 0 : room(rng);
+        }
+        std::vector<VirtualDoor> doors(1);
+        doors[0].jambA = {coordinate(rng), coordinate(rng)};
+        doors[0].jambB = doors[0].jambA + cv::Point(0, 20);
+        doors[0].width = 20;
+        const cv::Mat before = labels.clone();
+        const std::size_t n = pockets.label({}, angle(rng), doors, kRes, labels);
+        ASSERT_EQ(cv::countNonZero(labels != before), static_cast<int>(n));
+        labelled += n;
+        for (int y = 0; y < labels.rows; ++y) {
+            for (int x = 0; x < labels.cols; ++x) {
+                const int now = labels.at<int>(y, x), was = before.at<int>(y, x);
+                if (now == was)
+                    continue;
+                ASSERT_EQ(was, 0) << "a labelled cell changed";
+                for (int dy = -1; dy <= 1; ++dy) {
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const cv::Point q(x + dx, y + dy);
+                        if (q.x < 0 || q.y < 0 || q.x >= 100 || q.y >= 100)
+                            continue;
+                        const int l = labels.at<int>(q);
+                        ASSERT_TRUE(l == 0 || l == now) << "a pocket touches another room";
+                    }
+                }
+            }
+        }
+    }
+    EXPECT_GT(labelled, 0u) << "no trial had a pocket: the checks above saw nothing";
 }

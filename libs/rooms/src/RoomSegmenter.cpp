@@ -511,7 +511,8 @@ RoomSegmenter::Result RoomSegmenter::segment(
                      labels, ws.sliverCells, ws.sliver);
     }
     if (options_.maxFurnitureSize > 0) {
-        // A pocket's box side: the narrowest door; near a door: the half of a wall's thickness.
+        // A line bounding a room's box holds at least the narrowest door's width of the room;
+        // cells within half the thickest wall beyond a door's half width do not count.
         const FurniturePockets::Options pockets{
             options_.maxFurnitureSize, options_.door.doorWidth - options_.door.doorWidthTolerance,
             0.5 * options_.filters.maxWallThickness};

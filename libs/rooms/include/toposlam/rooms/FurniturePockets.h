@@ -11,10 +11,10 @@
 // and filling at least half of its own box (furniture is rectangular).
 //
 // R's box is the rectangle, along the main directions (the frame the walls are drawn in), that
-// spans the outermost lines across R holding at least `minSide` of R's cells, shrunk by one cell
-// (a wall drawn at an angle has steps a cell deep, which are wall, not furniture). Cells near a
-// door do not count: the room's half of a door opening reaches into the wall and would stretch
-// the box over it.
+// spans the outermost lines across R holding at least `minSide` of R's cells and at least half
+// as many as the line two cells further in, shrunk by one cell (a wall drawn at an angle ends
+// in steps a cell deep, which are wall, not furniture). Cells near a door do not count: the
+// room's half of a door opening reaches into the wall and would stretch the box over it.
 //
 // What it cannot tell apart from furniture: a notch of the room's outline of the same size and
 // shape (a pillar or a duct shaft against a wall, the outside of an L-shaped building corner

@@ -205,13 +205,13 @@ io::Json referenceJson(const SlamEvaluation& ev) {
     io::Json reference = {{"file", ev.referenceFile},
                           {"kind", ev.referenceIsGroundTruth ? "ground_truth" : "relations"},
                           {"relations", ev.relationCount}};
-    if (!ev.referenceIsGroundTruth)
-        reference["repeated_relations"] = ev.repeatedRelations;
     if (ev.referenceIsGroundTruth) {
         reference["ground_truth_poses"] = ev.groundTruthPoses;
         reference["relation_scheme"] = {
             {"consecutive", ev.groundTruthRelations.consecutive},
             {"base_separation_m", jsonNumber(ev.groundTruthRelations.baseSeparation)}};
+    } else {
+        reference["repeated_relations"] = ev.repeatedRelations;
     }
     return reference;
 }

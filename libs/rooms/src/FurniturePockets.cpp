@@ -12,6 +12,11 @@ namespace toposlam::rooms {
 
 namespace {
 
+/// Cell `p` in the main directions' frame (cells): x along the main direction, y across it.
+cv::Point2d inMainFrame(const cv::Point& p, double cosine, double sine) {
+    return {p.x * cosine + p.y * sine, p.y * cosine - p.x * sine};
+}
+
 /// The lines of `histogram` (1-cell bins from `origin`) from the first to the last full one, as
 /// the interval [lo, hi) of the axis; empty (hi <= lo) when there is none. A full line holds at
 /// least `minCount` cells and at least half as many as the line two cells further in: a wall
@@ -96,10 +101,9 @@ void FurniturePockets::measureBoxes(double cosine, double sine, double minSideCe
             }
             // How many of the room's cells each line across it holds; not counting the cells
             // near a door (the room's half of a door opening reaches into the wall).
-            auto u = static_cast<std::int64_t>(
-                std::llround((x0 * cosine + y * sine - uOrigin) * kFixed));
-            auto v = static_cast<std::int64_t>(
-                std::llround((y * cosine - x0 * sine - vOrigin) * kFixed));
+            const cv::Point2d start = inMainFrame({x0, y}, cosine, sine);
+            auto u = static_cast<std::int64_t>(std::llround((start.x - uOrigin) * kFixed));
+            auto v = static_cast<std::int64_t>(std::llround((start.y - vOrigin) * kFixed));
             int* alongU = b.alongU.data();
             int* alongV = b.alongV.data();
             for (int k = x0; k < x; ++k, u += uStep, v += vStep) {
@@ -158,8 +162,8 @@ std::size_t FurniturePockets::label(const Options& options, double mainDirection
         const int room = static_cast<int>(id);
         const int firstFlood = flood + 1;
         auto inBox = [&](const cv::Point& p) {
-            const double u = p.x * cosine + p.y * sine, v = p.y * cosine - p.x * sine;
-            return u >= b.u0 && u < b.u1 && v >= b.v0 && v < b.v1;
+            const cv::Point2d q = inMainFrame(p, cosine, sine);
+            return q.x >= b.u0 && q.x < b.u1 && q.y >= b.v0 && q.y < b.v1;
         };
         for (const cv::Point& seed : b.seeds) {
             if (labels.at<int>(seed) != 0 || visited_.at<int>(seed) >= firstFlood || !inBox(seed))
@@ -173,7 +177,8 @@ std::size_t FurniturePockets::label(const Options& options, double mainDirection
             while (!stack_.empty() && isPocket) {
                 const cv::Point p = stack_.back();
                 stack_.pop_back();
-                const double u = p.x * cosine + p.y * sine, v = p.y * cosine - p.x * sine;
+                const cv::Point2d q = inMainFrame(p, cosine, sine);
+                const double u = q.x, v = q.y;
                 if (pocket_.empty())
                     u0 = u1 = u, v0 = v1 = v;
                 u0 = std::min(u0, u), u1 = std::max(u1, u);

@@ -355,4 +355,19 @@ DrawnMap corridorOffAHall() {
     return m;
 }
 
+DrawnMap cabinetAcrossFromAColumnEnd() {
+    DrawnMap m;
+    m.image = cv::Mat(200, 180, CV_8U, cv::Scalar(128));
+    cv::Mat& img = m.image;
+    fill(img, 1, 1, 7.8, 9, 0);
+    fill(img, 1.2, 1.2, 7.6, 8.8, 255);
+    fill(img, 5.0, 1.2, 5.1, 8.8, 0);    // the partition...
+    fill(img, 5.0, 1.8, 5.1, 2.8, 255);  // ... with its door
+    fill(img, 4.5, 5.0, 5.1, 8.8, 0);    // the column against its upper half
+    fill(img, 6.4, 4.6, 7.6, 5.4, 0);    // a cabinet against the right room's far wall
+    m.doors.push_back({{5.05, 2.3}, 1.0});
+    m.rooms = {{3, 3}, {6.3, 7}};
+    return m;
+}
+
 }  // namespace toposlam::rooms::test

@@ -63,6 +63,14 @@ DrawnMap corridorBend();
 /// hall; the side door), but both its jambs are on walls running along the corridor: no door.
 /// 2 rooms (hall with corridor, room), 1 door.
 DrawnMap corridorOffAHall();
+/// Two rooms either side of a 0.1 m partition with a 1 m door at its lower end. In the left
+/// room a 0.5 m deep column stands against the partition's upper half, flush with its face (a
+/// duct shaft). The right room is 2.4 m wide, and across from the column's lower end a 1.2 x
+/// 0.8 m cabinet stands against its far wall: the 1.3 m cut from the partition's face to the
+/// cabinet opens on both sides, and where the column ends the obstacle runs 0.6 m along the
+/// cut with free space below it, as at a wall end. But that jamb lies on the partition's face,
+/// which runs on above and below it: no door. 2 rooms, 1 door.
+DrawnMap cabinetAcrossFromAColumnEnd();
 /// Two 4.4 x 4 m rooms either side of a 0.55 m thick wall (as thick as B4's Freiburg52 walls)
 /// with a 1 m door in it. 2 rooms, 1 door.
 DrawnMap thickWall();

@@ -312,6 +312,20 @@ TEST(RoomSegmenter, CorridorMouthBesideASideDoorIsNotCut) {
         3u);
 }
 
+TEST(RoomSegmenter, CabinetAcrossFromAColumnEndIsNoDoorAtAnyAngle) {
+    const DrawnMap drawn = toposlam::rooms::test::cabinetAcrossFromAColumnEnd();
+    RoomSegmenter::Options off;
+    off.filters.wallEndNotOnAFace = false;
+    for (const double degrees : {0.0, 10.0, 17.0, 30.0, 45.0}) {
+        SCOPED_TRACE(degrees);
+        const DrawnMap turned = toposlam::rooms::test::rotated(drawn, degrees);
+        const auto grid = toposlam::rooms::test::gridOf(turned.image);
+        expectMatchesDrawing(RoomSegmenter().segment(grid).map, turned, kDoorTolerance);
+        // Without the rule the column's end frames a door to the cabinet: the right room is cut.
+        EXPECT_EQ(RoomSegmenter(off).segment(grid).map.rooms.size(), 3u);
+    }
+}
+
 TEST(RoomSegmenter, CorridorBendIsNotCutAtAnyAngle) {
     const DrawnMap drawn = toposlam::rooms::test::corridorBend();
     for (const double degrees : {0.0, 10.0, 17.0, 30.0, 45.0}) {
@@ -379,7 +393,8 @@ TEST(RoomSegmenter, PaperPresetSwitchesOffEveryDeviationAndKeepsTheRest) {
     EXPECT_EQ(o.filters.requireWallJambs, paper.filters.requireWallJambs);
     EXPECT_EQ(o.filters.requireWallEnd, paper.filters.requireWallEnd);
     EXPECT_EQ(o.filters.requireConstriction, paper.filters.requireConstriction);
-    EXPECT_FALSE(o.filters.constrictionAtWaist || o.filters.rejectCorridorCuts);
+    EXPECT_FALSE(o.filters.constrictionAtWaist || o.filters.rejectCorridorCuts ||
+                 o.filters.wallEndNotOnAFace);
     EXPECT_EQ(o.filters.wallThicknessFromMap, paper.filters.wallThicknessFromMap);
     EXPECT_EQ(o.filters.maxOpenBoundary, paper.filters.maxOpenBoundary);
     EXPECT_EQ(o.filters.maxOpenBoundary, 1.0);  // off

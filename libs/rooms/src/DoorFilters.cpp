@@ -284,6 +284,12 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
     auto sidesOf = [&](const cv::Point& jamb, double ux, double uy, double reach) {
         return wallsAcross(jamb, ux, uy, reach) | segmentsAcross(jamb, ux, uy, reach);
     };
+    // A wall end that lies on the face of a wall running on to both sides of the door line
+    // (seen edge-on, or a T-junction) bounds the space the cut crosses; it frames no doorway.
+    auto endsItsWall = [&](const cv::Point& jamb, double ux, double uy) {
+        return wallEnd(jamb, ux, uy) &&
+               !(options_.wallEndNotOnAFace && sidesOf(jamb, ux, uy, length) == 3);
+    };
     // Both jambs framed by wall ends: neither in the middle of a wall that runs across the door
     // line, and the two not on walls that go on to the same side (the two side walls of a
     // corridor, with the cut across it).
@@ -309,8 +315,8 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
                                    }
                                    if (!options_.requireWallEnd)
                                        return false;
-                                   const bool endA = wallEnd(d.jambA, -ux, -uy);
-                                   const bool endB = wallEnd(d.jambB, ux, uy);
+                                   const bool endA = endsItsWall(d.jambA, -ux, -uy);
+                                   const bool endB = endsItsWall(d.jambB, ux, uy);
                                    if (!options_.requireBothWallEnds) {
                                        return !(endA || endB) || (options_.rejectCorridorCuts &&
                                                                   acrossCorridor(d, ux, uy));

@@ -224,6 +224,7 @@ void RoomSegmenter::Options::applyPaperPreset() {
     filters.requireConstriction = false;
     filters.constrictionAtWaist = false;
     filters.rejectCorridorCuts = false;
+    filters.wallEndNotOnAFace = false;
     filters.wallThicknessFromMap = false;
     filters.maxOpenBoundary = 1;
     wide.enabled = false;
@@ -322,6 +323,9 @@ void RoomSegmenter::Options::declare(config::OptionsSchema& s) {
         "reject_corridor_cuts", filters.rejectCorridorCuts,
         "no door with both jambs on walls going on to one side of it: a corridor's cross-section "
         "(deviation)");
+    s.flag("wall_end_not_on_a_face", filters.wallEndNotOnAFace,
+           "a jamb on the face of a wall running on to both sides of the door line is no wall end "
+           "(deviation)");
     s.flag("wall_thickness_from_map", filters.wallThicknessFromMap,
            "wall ends as thick as the building's walls, measured on the map (deviation)");
     s.flag("require_constriction", filters.requireConstriction,

@@ -21,9 +21,11 @@
 //                 the obstacle goes on along the door line for wallEndProbe and, a third of
 //                 the way in, is no thicker than maxWallThickness and as thick as the
 //                 building's walls are (WallThickness; or is the edge of the mapped space,
-//                 free on one side only). Rules out chairs, bins and plants as door frames, gaps
-//                 between desks (too deep to be walls) and the cross-sections of corridors between
-//                 doors (both jambs on side walls). On SLAM grids unknown space away from
+//                 free on one side only), and does not lie on the face of a wall that runs
+//                 on to both sides of the door line (where a column against a wall ends).
+//                 Rules out chairs, bins and plants as door frames, gaps between desks (too
+//                 deep to be walls) and the cross-sections of corridors between doors (both
+//                 jambs on side walls). On SLAM grids unknown space away from
 //                 every occupied cell (FreeSpace::noWall: the shadow behind a table) is no
 //                 jamb and no wall;
 //   constriction: a door is a narrow place between two wider spaces: walking away from the door
@@ -82,6 +84,12 @@ class DoorFilters {
         /// and from the wall segments passing within 0.25 m of it (a cut at an angle to the grid
         /// ends anywhere on a wall's staircase).
         bool rejectCorridorCuts = true;
+        /// Part of the wall-end test: the jamb that ends the door's wall does not lie on the
+        /// face of a wall that runs across the door line to both sides, farther than
+        /// wallEndProbe (a wall seen edge-on, a T-junction of walls): from such a jamb the cut
+        /// runs along the face's normal into the room or corridor the face bounds (to a pillar,
+        /// a cabinet on the far wall), not across a doorway.
+        bool wallEndNotOnAFace = true;
         /// m: the thickest inner wall (B4's drawn walls: 0.55 m in Freiburg52, 0.65 m in office_i).
         double maxWallThickness = 0.65;
         /// m: how far from a wall-end jamb, along the door line, the wall must go on and is

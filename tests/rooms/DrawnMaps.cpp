@@ -202,6 +202,47 @@ DrawnMap thickWall() {
     return m;
 }
 
+DrawnMap thinWalls() {
+    DrawnMap m;
+    m.image = cv::Mat(160, 360, CV_8U, cv::Scalar(128));
+    cv::Mat& img = m.image;
+    fill(img, 1, 1, 17.4, 7.4, 0);
+    fill(img, 1.2, 1.2, 17.2, 7.2, 255);
+    const double doorBottom[] = {3.7, 5.7, 1.7};  // m: middle, near the top, near the bottom
+    for (int i = 0; i < 3; ++i) {
+        const double x = 5.1 + 4.0 * i;
+        fill(img, x, 1.2, x + 0.1, doorBottom[i], 0);
+        fill(img, x, doorBottom[i] + 1.0, x + 0.1, 7.2, 0);
+        m.doors.push_back({{x + 0.05, doorBottom[i] + 0.5}, 1.0});
+    }
+    m.rooms = {{3.1, 4.2}, {7.1, 4.2}, {11.1, 4.2}, {15.1, 4.2}};
+    m.tour = {{3.1, 4.2},  {5.15, 4.2}, {7.1, 4.2},   {7.1, 6.2}, {9.15, 6.2},
+              {11.1, 6.2}, {11.1, 2.2}, {13.15, 2.2}, {15.1, 2.2}};
+    return m;
+}
+
+DrawnMap wallAtAnAngle() {
+    DrawnMap m;
+    m.image = cv::Mat(200, 360, CV_8U, cv::Scalar(128));
+    cv::Mat& img = m.image;
+    fill(img, 1, 1, 17.4, 9.4, 0);
+    fill(img, 1.2, 1.2, 17.2, 9.2, 255);
+    // From (6.5, 1.2) to (11.5, 9.2): direction (5, 8) / 9.43; the door's middle at 4.2 m along.
+    const mrpt::math::TPoint2D from{6.5, 1.2}, to{11.5, 9.2};
+    const double length = std::hypot(to.x - from.x, to.y - from.y);
+    auto at = [&](double s) {
+        return mrpt::math::TPoint2D{from.x + (to.x - from.x) * s / length,
+                                    from.y + (to.y - from.y) * s / length};
+    };
+    const auto gapStart = at(3.7), gapEnd = at(4.7);
+    cv::line(img, pixel(img, from.x, from.y), pixel(img, gapStart.x, gapStart.y), 0, 3);
+    cv::line(img, pixel(img, gapEnd.x, gapEnd.y), pixel(img, to.x, to.y), 0, 3);
+    m.doors.push_back({at(4.2), 0.85});  // the line's round caps (0.075 m) narrow the gap
+    m.rooms = {{4, 5}, {14, 5}};
+    m.tour = {{4, 5}, at(4.2), {14, 5}};
+    return m;
+}
+
 DrawnMap deskRow() {
     DrawnMap m;
     m.image = cv::Mat(200, 320, CV_8U, cv::Scalar(128));

@@ -71,6 +71,15 @@ DrawnMap corridorOffAHall();
 /// cut with free space below it, as at a wall end. But that jamb lies on the partition's face,
 /// which runs on above and below it: no door. 2 rooms, 1 door.
 DrawnMap cabinetAcrossFromAColumnEnd();
+/// A row of four 3.9 x 6 m rooms behind each other, parted by walls only 0.1 m (two cells)
+/// thick, each with a 1 m door (in the middle, near the top, near the bottom). At an angle to
+/// the grid such a wall is a two-cell staircase, and the cut between its two ends is a few
+/// degrees off the wall. 4 rooms, 3 doors.
+DrawnMap thinWalls();
+/// A 16 x 8 m hall parted by a 0.15 m wall at 56 degrees to the others (a wing at an angle),
+/// with a 1 m door in it: the wall is a staircase at any angle of the plan, and off both of the
+/// building's main directions. 2 rooms, 1 door.
+DrawnMap wallAtAnAngle();
 /// Two 4.4 x 4 m rooms either side of a 0.55 m thick wall (as thick as B4's Freiburg52 walls)
 /// with a 1 m door in it. 2 rooms, 1 door.
 DrawnMap thickWall();

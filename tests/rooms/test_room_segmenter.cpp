@@ -347,6 +347,28 @@ TEST(RoomSegmenter, DoorInAThickWallIsCut) {
     EXPECT_EQ(RoomSegmenter(thin).segment(grid).map.rooms.size(), 1u);
 }
 
+TEST(RoomSegmenter, DoorsInThinWallsAreFoundAtAnyAngle) {
+    const DrawnMap drawn = toposlam::rooms::test::thinWalls();
+    for (double degrees = 0; degrees <= 90; degrees += 5) {
+        SCOPED_TRACE(degrees);
+        const DrawnMap turned = toposlam::rooms::test::rotated(drawn, degrees);
+        expectMatchesDrawing(
+            RoomSegmenter().segment(toposlam::rooms::test::gridOf(turned.image)).map, turned,
+            kDoorTolerance);
+    }
+}
+
+TEST(RoomSegmenter, DoorInAWallAtAnAngleIsFoundAtAnyAngle) {
+    const DrawnMap drawn = toposlam::rooms::test::wallAtAnAngle();
+    for (double degrees = 0; degrees <= 90; degrees += 5) {
+        SCOPED_TRACE(degrees);
+        const DrawnMap turned = toposlam::rooms::test::rotated(drawn, degrees);
+        expectMatchesDrawing(
+            RoomSegmenter().segment(toposlam::rooms::test::gridOf(turned.image)).map, turned,
+            kDoorTolerance);
+    }
+}
+
 TEST(RoomSegmenter, GapsInARowOfDesksAreNotCut) {
     const DrawnMap drawn = toposlam::rooms::test::deskRow();
     const auto grid = toposlam::rooms::test::gridOf(drawn.image);

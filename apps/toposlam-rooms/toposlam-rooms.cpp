@@ -32,8 +32,8 @@ const char* const kDescription =
     "Examples:\n"
     "  toposlam-rooms office.gridmap.gz --trajectory office.traj.txt -o office-rooms\n"
     "  toposlam-rooms map.yaml -c config_ini/rooms.ini -o rooms\n"
-    "  toposlam-rooms office_a.png --free-threshold 0.98 -o rooms   # Bormann PNG: grey < 250 is "
-    "not free\n"
+    "  toposlam-rooms office_a.png --drawn -o rooms   # a drawn plan (Bormann PNG): grey < 250 "
+    "is not free, every non-free pixel a wall\n"
     "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input (a missing or "
     "corrupt map, a map without free cells, a malformed trajectory); 2 for bad options (an "
     "unknown option, a value out of range). Nothing is written unless the segmentation "
@@ -76,9 +76,16 @@ int run(int argc, char** argv) {
     cli::NumberArg<double> freeThreshold(
         "", "free-threshold",
         "A cell is free when p(free) exceeds this. Default: 0.8 (ROS map_server's free "
-        "threshold; MRPT grids: unknown = 0.5). Use 0.98 for maps drawn with grey < 250 = not "
-        "free (Bormann et al.'s benchmark)",
+        "threshold; MRPT grids: unknown = 0.5). 0.98 with --drawn: maps drawn with grey < 250 = "
+        "not free (Bormann et al.'s benchmark)",
         0.8, cli::NumberRange<double>::closed(0.5, 0.999), "p", cmd);
+    TCLAP::SwitchArg drawn(
+        "", "drawn",
+        "The map is a drawn floor plan or a scanned one, not a SLAM grid: grey below 250 is not "
+        "free (--free-threshold 0.98 unless given) and every non-free pixel is a wall "
+        "(occupied_threshold = 1), as toposlam-bench-rooms reads Bormann et al.'s maps. Without "
+        "it, mid-grey pixels read as unknown space, and walls drawn in grey are no walls",
+        cmd);
     cli::NumberArg<double> resolution(
         "", "resolution",
         "Cell size in m of a bare input image (overrides its .yaml sidecar). "
@@ -105,6 +112,10 @@ int run(int argc, char** argv) {
         job.options.door.doorWidthTolerance = doorTolerance.getValue();
     if (minRoomArea.isSet())
         job.options.filters.minRoomArea = minRoomArea.getValue();
+    if (drawn.getValue()) {
+        job.options.freeSpace.freeThreshold = 0.98;
+        job.options.freeSpace.occupiedThreshold = 1;
+    }
     if (freeThreshold.isSet())
         job.options.freeSpace.freeThreshold = freeThreshold.getValue();
     job.options.validate();

@@ -33,6 +33,23 @@ TEST(ToposlamRooms, SegmentsADrawnOfficeAndWritesEveryOutput) {
     EXPECT_EQ(toposlam::rooms::loadTopologicalMap(dir.file("out/rooms.graphml")).doors.size(), 6u);
 }
 
+TEST(ToposlamRooms, DrawnPlanWithGreyWallsNeedsDrawn) {
+    // Walls drawn in mid-grey (p(free) = 0.63): read as a SLAM grid they are unknown space,
+    // far from any occupied cell, so no wall frames a door; --drawn makes them walls.
+    const TempDir dir;
+    const auto drawn = toposlam::rooms::test::office();
+    cv::Mat grey = drawn.image.clone();
+    grey.setTo(160, drawn.image == 0);
+    ASSERT_TRUE(cv::imwrite(dir.file("office.png"), grey));
+    auto r = runApp("toposlam-rooms",
+                    "'" + dir.file("office.png") + "' --drawn -o '" + dir.file("drawn") + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("6 rooms, 6 doors"), std::string::npos) << r.output;
+    r = runApp("toposlam-rooms", "'" + dir.file("office.png") + "' -o '" + dir.file("grid") + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_LT(toposlam::rooms::loadTopologicalMap(dir.file("grid/rooms.json")).rooms.size(), 6u);
+}
+
 TEST(ToposlamRooms, UsesTheTrajectory) {
     const TempDir dir;
     const auto drawn = toposlam::rooms::test::office();

@@ -369,6 +369,57 @@ TEST(RoomSegmenter, DoorInAWallAtAnAngleIsFoundAtAnyAngle) {
     }
 }
 
+// The drawing as a grid of `factor` times coarser cells: a cell is occupied when any of its
+// pixels is, free when all are (a laser grid at that resolution), else unknown.
+mrpt::maps::COccupancyGridMap2D coarseGridOf(const cv::Mat& image, int factor) {
+    const double resolution = toposlam::rooms::test::kResolution * factor;
+    const int cols = image.cols / factor, rows = image.rows / factor;
+    mrpt::maps::COccupancyGridMap2D grid;
+    grid.setSize(0, static_cast<float>(cols * resolution), 0, static_cast<float>(rows * resolution),
+                 static_cast<float>(resolution), 0.5f);
+    for (int r = 0; r < rows; ++r) {
+        for (int c = 0; c < cols; ++c) {
+            bool occupied = false, allFree = true;
+            for (int dr = 0; dr < factor; ++dr) {
+                for (int dc = 0; dc < factor; ++dc) {
+                    // Rows counted from the bottom, as the world's y.
+                    const int v =
+                        image.at<std::uint8_t>(image.rows - 1 - (r * factor + dr), c * factor + dc);
+                    occupied = occupied || v == 0;
+                    allFree = allFree && v == 255;
+                }
+            }
+            if (occupied || allFree)
+                grid.setCell(c, r, occupied ? 0.0f : 1.0f);
+        }
+    }
+    return grid;
+}
+
+TEST(RoomSegmenter, RoomsAndDoorsHoldOnA10cmGrid) {
+    for (const auto& [name, drawn] :
+         {std::pair{"office", toposlam::rooms::test::office()},
+          std::pair{"furnished office", toposlam::rooms::test::furnishedOffice()},
+          std::pair{"thin walls", toposlam::rooms::test::thinWalls()},
+          std::pair{"thick wall", toposlam::rooms::test::thickWall()}}) {
+        SCOPED_TRACE(name);
+        const TopologicalMap map = RoomSegmenter().segment(coarseGridOf(drawn.image, 2)).map;
+        std::set<int> ids;
+        for (const auto& p : drawn.rooms)
+            EXPECT_TRUE(ids.insert(map.roomAt(p.x, p.y)).second && map.roomAt(p.x, p.y) > 0);
+        EXPECT_EQ(map.rooms.size(), drawn.rooms.size());
+        ASSERT_EQ(map.doors.size(), drawn.doors.size());
+        for (const auto& truth : drawn.doors) {
+            double nearest = 1e9;
+            for (const auto& d : map.doors) {
+                nearest = std::min(nearest, std::hypot(d.middle().x - truth.middle.x,
+                                                       d.middle().y - truth.middle.y));
+            }
+            EXPECT_LT(nearest, kDoorTolerance + 0.1);  // a 10 cm cell more
+        }
+    }
+}
+
 TEST(RoomSegmenter, GapsInARowOfDesksAreNotCut) {
     const DrawnMap drawn = toposlam::rooms::test::deskRow();
     const auto grid = toposlam::rooms::test::gridOf(drawn.image);

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <fstream>
 #include <set>
+#include <vector>
 
 using namespace toposlam::rooms;
 using toposlam::rooms::test::DrawnMap;
@@ -65,6 +66,27 @@ void expectMatchesDrawing(const TopologicalMap& map, const DrawnMap& drawn, doub
 // Door middles: the cut lies inside the wall opening, whose depth is the wall thickness (0.2 m);
 // the middle of the cut is within half the thickness plus a cell of the drawn middle.
 constexpr double kDoorTolerance = 0.1 + 0.05 + 0.05;
+
+// The drawing turned by each of `angles` (degrees), segmented with `options`, matches the
+// turned drawing.
+static void expectMatchesDrawingAtAngles(const DrawnMap& drawn, const std::vector<double>& angles,
+                                         const RoomSegmenter::Options& options = {}) {
+    for (const double degrees : angles) {
+        SCOPED_TRACE(degrees);
+        const DrawnMap turned = toposlam::rooms::test::rotated(drawn, degrees);
+        expectMatchesDrawing(
+            RoomSegmenter(options).segment(toposlam::rooms::test::gridOf(turned.image)).map, turned,
+            kDoorTolerance);
+    }
+}
+
+// 0, 5, ..., 90 degrees.
+static std::vector<double> everyFiveDegrees() {
+    std::vector<double> angles;
+    for (int degrees = 0; degrees <= 90; degrees += 5)
+        angles.push_back(degrees);
+    return angles;
+}
 
 /// With the default options, along the drawing's tour and from the medial axis: the rooms and
 /// doors of the drawing, and the pocket at `pocket` in the same room as `room`.
@@ -297,13 +319,7 @@ TEST(RoomSegmenter, CorridorMouthBesideASideDoorIsNotCut) {
     RoomSegmenter::Options on;
     on.wide.enabled = false;
     const DrawnMap drawn = toposlam::rooms::test::corridorOffAHall();
-    for (const double degrees : {0.0, 17.0, 30.0, 45.0}) {
-        SCOPED_TRACE(degrees);
-        const DrawnMap turned = toposlam::rooms::test::rotated(drawn, degrees);
-        expectMatchesDrawing(
-            RoomSegmenter(on).segment(toposlam::rooms::test::gridOf(turned.image)).map, turned,
-            kDoorTolerance);
-    }
+    expectMatchesDrawingAtAngles(drawn, {0.0, 17.0, 30.0, 45.0}, on);
     // Without the rule the mouth is cut: the corridor becomes a room of its own.
     RoomSegmenter::Options off = on;
     off.filters.rejectCorridorCuts = false;
@@ -327,14 +343,8 @@ TEST(RoomSegmenter, CabinetAcrossFromAColumnEndIsNoDoorAtAnyAngle) {
 }
 
 TEST(RoomSegmenter, CorridorBendIsNotCutAtAnyAngle) {
-    const DrawnMap drawn = toposlam::rooms::test::corridorBend();
-    for (const double degrees : {0.0, 10.0, 17.0, 30.0, 45.0}) {
-        SCOPED_TRACE(degrees);
-        const DrawnMap turned = toposlam::rooms::test::rotated(drawn, degrees);
-        expectMatchesDrawing(
-            RoomSegmenter().segment(toposlam::rooms::test::gridOf(turned.image)).map, turned,
-            kDoorTolerance);
-    }
+    expectMatchesDrawingAtAngles(toposlam::rooms::test::corridorBend(),
+                                 {0.0, 10.0, 17.0, 30.0, 45.0});
 }
 
 TEST(RoomSegmenter, DoorInAThickWallIsCut) {
@@ -348,25 +358,11 @@ TEST(RoomSegmenter, DoorInAThickWallIsCut) {
 }
 
 TEST(RoomSegmenter, DoorsInThinWallsAreFoundAtAnyAngle) {
-    const DrawnMap drawn = toposlam::rooms::test::thinWalls();
-    for (double degrees = 0; degrees <= 90; degrees += 5) {
-        SCOPED_TRACE(degrees);
-        const DrawnMap turned = toposlam::rooms::test::rotated(drawn, degrees);
-        expectMatchesDrawing(
-            RoomSegmenter().segment(toposlam::rooms::test::gridOf(turned.image)).map, turned,
-            kDoorTolerance);
-    }
+    expectMatchesDrawingAtAngles(toposlam::rooms::test::thinWalls(), everyFiveDegrees());
 }
 
 TEST(RoomSegmenter, DoorInAWallAtAnAngleIsFoundAtAnyAngle) {
-    const DrawnMap drawn = toposlam::rooms::test::wallAtAnAngle();
-    for (double degrees = 0; degrees <= 90; degrees += 5) {
-        SCOPED_TRACE(degrees);
-        const DrawnMap turned = toposlam::rooms::test::rotated(drawn, degrees);
-        expectMatchesDrawing(
-            RoomSegmenter().segment(toposlam::rooms::test::gridOf(turned.image)).map, turned,
-            kDoorTolerance);
-    }
+    expectMatchesDrawingAtAngles(toposlam::rooms::test::wallAtAnAngle(), everyFiveDegrees());
 }
 
 // The drawing as a grid of `factor` times coarser cells: a cell is occupied when any of its

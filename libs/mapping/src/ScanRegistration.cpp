@@ -118,9 +118,19 @@ bool ScanRegistration::tryGraphMatcher(const matching::PolarScan& scan,
         matcher_.match(kf.polar, kf.features->features, scan, features, guess);
     if (!m.reliable())
         return false;
+    const CPose2D pose = kf.sensorOnRobot + m.pose + (-sensorOnRobot);
+    // Unless the odometry jumped, it bounds the answer: a correction it would have counted as
+    // a jump is a look-alike match (a corridor seen the other way round), not the robot's
+    // motion. Guess-free answers are exactly the ones that can land there.
+    const CPose2D correction = pose - prediction.fromLastKeyframe;
+    if (!prediction.odometryJumped &&
+        (correction.norm() > options_.odometryJumpDistance ||
+         std::abs(mrpt::math::wrapToPi(correction.phi())) > options_.odometryJumpAngle)) {
+        return false;
+    }
     out.method = RegistrationMethod::GraphMatcher;
     out.reference = kf.id;
-    out.pose = kf.sensorOnRobot + m.pose + (-sensorOnRobot);
+    out.pose = pose;
     out.rawCovariance = m.covariance;
     out.covariance = edgeCovariance(m.covariance, prediction.distanceFromLastKeyframe,
                                     prediction.turnFromLastKeyframe);

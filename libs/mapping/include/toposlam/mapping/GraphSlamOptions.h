@@ -42,7 +42,8 @@ struct GraphSlamOptions : public config::Options {
     /// that says so has locked onto the wrong structure (seen in fast turns on mit-csail).
     double maxLateralCorrection = 0.06;
     /// Odometry increments larger than this between two scans are jumps, not motion: the
-    /// prediction is then the previous pose and the graph matcher registers the scan.
+    /// prediction is then the previous pose and the graph matcher registers the scan. Without
+    /// a jump, a graph-matcher answer that corrects the prediction by more is not used.
     double odometryJumpDistance = 0.5;  ///< m
     double odometryJumpAngle = 0.7854;  ///< rad (45 deg)
     /// Odometry noise (standard deviations) for edges that only odometry supports: a floor,

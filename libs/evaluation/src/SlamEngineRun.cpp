@@ -69,6 +69,8 @@ void runToposlamSlam(SlamEngineRun& run, const SlamBenchmarkLog& log, const Slam
         run.note = "no readable summary.json";
     } else if (run.summary.value("mostly_unregistered", false)) {
         run.note = "WARNING: most scans could not be registered (mostly raw odometry)";
+    } else if (run.summary.value("weak_front_end", false)) {
+        run.note = "WARNING: ICP registered less than 90 % of the scans (the map may be distorted)";
     }
     if (fs::is_regular_file(out / "map.png"))
         run.mapImage = (out / "map.png").string();

@@ -36,6 +36,13 @@ bool mostlyUnregistered(const MappingResult& result) {
     return result.statistics && result.statistics->registeredShare() < 0.5;
 }
 
+bool weakFrontEnd(const MappingResult& result) {
+    constexpr double kMinIcpShare = 0.9;
+    const auto& st = result.statistics;
+    return st && st->scans > 1 && !mostlyUnregistered(result) &&
+           double(st->registeredByIcp) < kMinIcpShare * double(st->scans - 1);
+}
+
 std::string formatSummary(const MappingResult& r) {
     std::string s;
     s += line("engine: %s", r.engine.c_str());
@@ -99,6 +106,13 @@ std::string formatSummary(const MappingResult& r) {
             "WARNING: only %.1f %% of the scans could be registered: the trajectory is "
             "mostly raw odometry and the map is not reliable",
             100.0 * r.statistics->registeredShare());
+    if (weakFrontEnd(r))
+        s += line(
+            "WARNING: only %.1f %% of the scans were registered by ICP against the local map: "
+            "the front end struggled (a narrow field of view, bare walls, crowds) and the map "
+            "may be distorted; compare the trajectory with the odometry (toposlam-eval-slam "
+            "--odometry-of)",
+            percent(r.statistics->registeredByIcp, r.statistics->scans - 1));
     return s;
 }
 
@@ -136,6 +150,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
                                {"optimization", st->optimizationSeconds}};
         j["optimizations"] = st->optimizations;
         j["mostly_unregistered"] = mostlyUnregistered(r);
+        j["weak_front_end"] = weakFrontEnd(r);
     }
     return j;
 }

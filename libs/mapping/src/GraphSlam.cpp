@@ -77,18 +77,14 @@ std::vector<CPose2D> GraphSlam::scanPoses() const {
 Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
     Prediction p;
     CPose2D increment = odometryIncrement.value_or(CPose2D());
-    const double turn = std::abs(mrpt::math::wrapToPi(increment.phi()));
-    if (increment.norm() > options_.odometryJumpDistance || turn > options_.odometryJumpAngle) {
+    odometrySinceKeyframe_ += increment.norm();
+    turnSinceKeyframe_ += std::abs(mrpt::math::wrapToPi(increment.phi()));
+    if (beyondOdometryJump(options_, increment)) {
         // Wheels do not teleport: predict the motion of the last scan instead (a stalled
         // odometry that catches up in one step jumps; the robot kept moving meanwhile).
         p.odometryJumped = true;
         ++stats_.odometryJumps;
-        odometrySinceKeyframe_ += increment.norm();
-        turnSinceKeyframe_ += turn;
         increment = lastMotion_;
-    } else {
-        odometrySinceKeyframe_ += increment.norm();
-        turnSinceKeyframe_ += turn;
     }
     const CPose2D predicted = current_ + increment;
     const Keyframe& last = keyframes_.back();

@@ -37,6 +37,11 @@ CMatrixDouble33 clampEigen(const CMatrixDouble33& c, const Eigen::Vector3d& floo
 }
 }  // namespace
 
+bool beyondOdometryJump(const GraphSlamOptions& options, const CPose2D& motion) {
+    return motion.norm() > options.odometryJumpDistance ||
+           std::abs(mrpt::math::wrapToPi(motion.phi())) > options.odometryJumpAngle;
+}
+
 ScanRegistration::ScanRegistration(const GraphSlamOptions& options,
                                    const matching::GraphMatcherOptions& matcherOptions)
     : options_(options), matcher_(matcherOptions) {
@@ -122,10 +127,8 @@ bool ScanRegistration::tryGraphMatcher(const matching::PolarScan& scan,
     // Unless the odometry jumped, it bounds the answer: a correction it would have counted as
     // a jump is a look-alike match (a corridor seen the other way round), not the robot's
     // motion. Guess-free answers are exactly the ones that can land there.
-    const CPose2D correction = pose - prediction.fromLastKeyframe;
     if (!prediction.odometryJumped &&
-        (correction.norm() > options_.odometryJumpDistance ||
-         std::abs(mrpt::math::wrapToPi(correction.phi())) > options_.odometryJumpAngle)) {
+        beyondOdometryJump(options_, pose - prediction.fromLastKeyframe)) {
         return false;
     }
     out.method = RegistrationMethod::GraphMatcher;

@@ -37,6 +37,11 @@ struct Registration {
     double overlap = 0;  ///< share of the scan's valid points on the map (ICP), else 0
 };
 
+/// True when `motion` goes farther than options.odometryJumpDistance or turns more than
+/// options.odometryJumpAngle: more than the robot moves between two scans, whether it is an
+/// odometry increment (a jump) or a registration's correction of the odometry (a look-alike).
+bool beyondOdometryJump(const GraphSlamOptions& options, const mrpt::poses::CPose2D& motion);
+
 /// Where the scan is expected from odometry, in the frames the registration works in.
 struct Prediction {
     const Submap* submap = nullptr;  ///< matched against (nullptr: none yet)

@@ -411,4 +411,70 @@ DrawnMap cabinetAcrossFromAColumnEnd() {
     return m;
 }
 
+DrawnMap officesSeenThroughTheirDoors() {
+    DrawnMap m;
+    m.image = cv::Mat(160, 320, CV_8U, cv::Scalar(128));
+    cv::Mat& img = m.image;
+    fill(img, 1.0, 1.0, 14.6, 7.8, 0);
+    fill(img, 1.2, 1.2, 14.4, 3.4, 255);  // the corridor
+    m.rooms.push_back({7.8, 2.3});
+    for (int k = 0; k < 3; ++k) {
+        const double x0 = 1.2 + 4.4 * k, x1 = x0 + 4.2;  // the office, above the wall y 3.4-3.6
+        const double door = 0.5 * (x0 + x1);
+        fill(img, x0, 3.6, x1, 7.6, 255);
+        fill(img, door - 0.5, 3.4, door + 0.5, 3.6, 255);
+        m.doors.push_back({{door, 3.5}, 1.0});
+        m.rooms.push_back({door, 6.0});
+        // The shadows beside the door: from each jamb's inner corner up to the side wall
+        // (slope 0.5), the wall's inner face below them included.
+        for (const double side : {-1.0, 1.0}) {
+            // The wall cell beside the opening (the opening's cells stay free).
+            const double jamb = side < 0 ? door - 0.5 - kResolution : door + 0.5;
+            const double wall = side < 0 ? x0 : x1;
+            const cv::Point wedge[3] = {pixel(img, jamb, 3.5), pixel(img, wall, 3.5),
+                                        pixel(img, wall, 3.6 + 0.5 * std::abs(jamb - wall))};
+            cv::fillConvexPoly(img, wedge, 3, cv::Scalar(128));
+        }
+        // Seen through the door by few beams each, the cells between two beams stayed unknown:
+        // broken one-cell streaks fanning out from the door.
+        for (double x = x0 + 0.1; x < x1; x += 0.2) {
+            const double length = std::hypot(x - door, 4.0);
+            for (double t = 0.1; t + 0.4 < 1.0; t += 0.5 / length) {
+                const double t1 = t + 0.4 / length;
+                cv::line(img, pixel(img, door + t * (x - door), 3.6 + t * 4.0),
+                         pixel(img, door + t1 * (x - door), 3.6 + t1 * 4.0), cv::Scalar(128));
+            }
+        }
+    }
+    m.tour = {{1.8, 2.3}, {13.8, 2.3}};
+    return m;
+}
+
+DrawnMap corridorRing() {
+    DrawnMap m;
+    m.image = cv::Mat(480, 880, CV_8U, cv::Scalar(0));
+    cv::Mat& img = m.image;
+    const double x0 = 2, y0 = 2, x1 = 42, y1 = 22, width = 2.2;
+    fill(img, x0, y0, x1, y0 + width, 255);
+    fill(img, x0, y1 - width, x1, y1, 255);
+    fill(img, x0, y0, x0 + width, y1, 255);
+    fill(img, x1 - width, y0, x1, y1, 255);
+    m.rooms.push_back({x0 + width / 2, 12});
+    for (double x = x0 + width + 3; x + 4 < x1 - width - 2; x += 8) {
+        for (const bool top : {false, true}) {
+            // 0.2 m wall between the corridor and the office, door in its middle.
+            const double wall = top ? y1 - width - 0.2 : y0 + width;
+            const double office0 = top ? wall - 5 : wall + 0.2;
+            fill(img, x, office0, x + 4, office0 + 5, 255);
+            fill(img, x + 1.5, wall, x + 2.5, wall + 0.2, 255);
+            m.rooms.push_back({x + 2, office0 + 2.5});
+            m.doors.push_back({{x + 2, wall + 0.1}, 1.0});
+        }
+    }
+    const double cx0 = x0 + width / 2, cy0 = y0 + width / 2;
+    const double cx1 = x1 - width / 2, cy1 = y1 - width / 2;
+    m.tour = {{9, cy0}, {cx1, cy0}, {cx1, cy1}, {cx0, cy1}, {cx0, cy0}, {9, cy0}};
+    return m;
+}
+
 }  // namespace toposlam::rooms::test

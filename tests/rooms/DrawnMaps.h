@@ -104,5 +104,17 @@ DrawnMap tableShadow();
 /// wall ends (with unknown behind, a face looks like the building's edge), but most of the
 /// pocket's boundary was never observed. 2 rooms (the pocket belongs to the room), 1 door.
 DrawnMap cabinetPocket();
+/// A 2.2 m corridor (walls 0.2 m) with three 4.2 x 4 m offices along one side, as a SLAM grid
+/// shows them when the robot only drove along the corridor: the laser saw each office through
+/// its 1 m door, so the office's two corners beside the door, and the inner face of the wall
+/// the door is in there, stayed unknown (wedges from the door's jambs up the side walls), and
+/// between the beams fanning in through the door broken one-cell streaks stayed unknown.
+/// 4 rooms, 3 doors.
+DrawnMap officesSeenThroughTheirDoors();
+/// A 40 x 20 m ring corridor (2.2 m wide, walls 0.2 m) with four 4 x 5 m offices (1 m doors)
+/// inside the ring along each long side; everything else solid. The tour is the loop along the
+/// corridor's centre line, corner to corner, starting and ending at (9, 3.1): a robot driving
+/// it maps the offices only through their doors. 9 rooms, 8 doors.
+DrawnMap corridorRing();
 
 }  // namespace toposlam::rooms::test

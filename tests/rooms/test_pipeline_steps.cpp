@@ -8,6 +8,7 @@
 #include <toposlam/rooms/RegionBoundary.h>
 #include <toposlam/rooms/RegionPartition.h>
 #include <toposlam/rooms/VirtualDoorDetector.h>
+#include <toposlam/rooms/WallThickness.h>
 
 #include "DrawnMaps.h"
 
@@ -313,6 +314,29 @@ TEST(RegionBoundary, OpenIsUnobservedSpaceReachingTheMapsEdgeNotShadowsInside) {
     // The pocket's flanks and the cabinets behind them reach the unknown outside.
     EXPECT_GT(fraction(pocket), 0.5);
     EXPECT_LT(fraction(room), 0.4);
+}
+
+TEST(WallThickness, RunsThroughUnknownCellsOnlyAreNoWalls) {
+    // Walls 0.2 m (4 cells); each office, seen through its door only, is streaked with broken
+    // one-cell lines of unknown cells between the beams: more one-cell runs than wall runs.
+    const auto drawn = toposlam::rooms::test::officesSeenThroughTheirDoors();
+    const FreeSpace space =
+        FreeSpaceBinarizer().binarize(toposlam::rooms::test::gridOf(drawn.image));
+    ASSERT_FALSE(space.unknown.empty());
+    const Clearance clearance(space.free);
+    WallThickness walls;
+    walls.measure(space, clearance, 0.65);
+    EXPECT_EQ(walls.mostFrequent(), 4);
+    EXPECT_TRUE(walls.isWallThickness(4));
+    EXPECT_FALSE(walls.isWallThickness(1));
+    // The same cells drawn as a plan, every non-free cell a wall: the streaks are one-cell walls.
+    FreeSpaceBinarizer::Options drawnPlan;
+    drawnPlan.occupiedThreshold = 1;
+    const FreeSpace plan =
+        FreeSpaceBinarizer(drawnPlan).binarize(toposlam::rooms::test::gridOf(drawn.image));
+    ASSERT_TRUE(plan.unknown.empty());
+    walls.measure(plan, Clearance(plan.free), 0.65);
+    EXPECT_EQ(walls.mostFrequent(), 1);
 }
 
 TEST(FreeSpaceBinarizer, KeepsTheLargestFreeRegionAboveTheThreshold) {

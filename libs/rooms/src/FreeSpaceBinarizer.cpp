@@ -131,14 +131,16 @@ void FreeSpaceBinarizer::keepLargestComponent(const cv::Mat& all, const cv::Rect
     out.freeCells = static_cast<std::size_t>(area[static_cast<std::size_t>(best)]);
 }
 
-// out.noWall from `all` (255 = free, specks included) and unknown_ (255 = unknown cell).
+// out.noWall from `all` (255 = free, specks included) and out.unknown (255 = unknown cell).
 void FreeSpaceBinarizer::markNoWall(const cv::Mat& all, FreeSpace& out) const {
-    cv::bitwise_and(unknown_, ~all, unknown_);  // specks made free are no longer unknown
-    if (cv::countNonZero(unknown_) == 0) {
+    cv::Mat& unknown = out.unknown;
+    cv::bitwise_and(unknown, ~all, unknown);  // specks made free are no longer unknown
+    if (cv::countNonZero(unknown) == 0) {
         out.noWall.release();
+        out.unknown.release();
         return;
     }
-    cv::bitwise_or(all, unknown_, nearOccupied_);
+    cv::bitwise_or(all, unknown, nearOccupied_);
     cv::bitwise_not(nearOccupied_, nearOccupied_);  // occupied cells
     const int reach =
         static_cast<int>(std::round(detail::toCells(options_.wallHoleReach, out.frame.resolution)));
@@ -147,7 +149,7 @@ void FreeSpaceBinarizer::markNoWall(const cv::Mat& all, FreeSpace& out) const {
             nearOccupied_, nearOccupied_,
             cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * reach + 1, 2 * reach + 1)));
     }
-    cv::bitwise_and(unknown_, ~nearOccupied_, out.noWall);
+    cv::bitwise_and(unknown, ~nearOccupied_, out.noWall);
     cv::bitwise_or(out.noWall, out.free, out.noWall);
 }
 
@@ -181,12 +183,12 @@ void FreeSpaceBinarizer::binarize(const COccupancyGridMap2D& grid, FreeSpace& ou
     const auto& raw = grid.getRawMap();
     cv::Mat& all = all_;
     all.create(out.frame.rows, out.frame.cols, CV_8U);
-    unknown_.create(out.frame.rows, out.frame.cols, CV_8U);
+    out.unknown.create(out.frame.rows, out.frame.cols, CV_8U);
     for (int r = 0; r < out.frame.rows; ++r) {
         const Cell* src = raw.data() + static_cast<std::size_t>(out.frame.rows - 1 - r) *
                                            static_cast<std::size_t>(out.frame.cols);
         auto* dst = all.ptr<std::uint8_t>(r);
-        auto* unknown = unknown_.ptr<std::uint8_t>(r);
+        auto* unknown = out.unknown.ptr<std::uint8_t>(r);
         for (int c = 0; c < out.frame.cols; ++c) {
             dst[c] = isFree[static_cast<std::uint8_t>(src[c])];
             unknown[c] = isUnknown[static_cast<std::uint8_t>(src[c])];
@@ -209,6 +211,7 @@ FreeSpace FreeSpaceBinarizer::binarize(const cv::Mat& freeImage, GridImageFrame 
     cv::compare(freeImage, 0, all_, cv::CMP_NE);
     labelFreeSpace(all_, sourceName, out);
     out.noWall.release();  // free or not: every non-free cell is a wall
+    out.unknown.release();
     return out;
 }
 

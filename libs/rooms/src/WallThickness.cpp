@@ -11,6 +11,11 @@ namespace toposlam::rooms {
 void WallThickness::measure(const FreeSpace& space, const Clearance& clearance,
                             double maxThickness) {
     const cv::Mat& free = space.free;
+    // On SLAM grids a run must cross a cell the laser hit: one through unknown cells only (a
+    // streak between the beams that saw a room through its door, the ragged edge of the mapped
+    // space) is no wall. Such one-cell runs outnumbered the walls' own on a long corridor whose
+    // offices were seen only through their doors, and every wall end there failed the test.
+    const cv::Mat& unknown = space.unknown;
     const cv::Mat& d = clearance.distances();
     const int cap =
         static_cast<int>(std::ceil(detail::toCells(maxThickness, space.frame.resolution))) + 2;
@@ -29,11 +34,20 @@ void WallThickness::measure(const FreeSpace& space, const Clearance& clearance,
             if (norm < 1e-6)
                 continue;
             cv::Point hit;
+            bool occupied = unknown.empty();  // drawn maps: every non-free cell is occupied
             const bool found =
                 detail::withMaskReader(free, {c, r}, cap + 1, [&](const auto& isFree) {
-                    return detail::walkRay({c, r}, -gx / norm, -gy / norm, cap, isFree, hit);
+                    return detail::walkRay(
+                        {c, r}, -gx / norm, -gy / norm, cap,
+                        [&](int x, int y) {
+                            if (isFree(x, y))
+                                return true;
+                            occupied = occupied || !detail::isSet(unknown, x, y);
+                            return false;
+                        },
+                        hit);
                 });
-            if (!found)
+            if (!found || !occupied)
                 continue;
             const double run =
                 detail::cellDistance(hit.x - c, hit.y - r) - 1.0;  // obstacle cells crossed

@@ -54,6 +54,10 @@ struct FreeSpace {
     /// cell (shadows behind furniture, unexplored space). Empty when the map has no such
     /// unknown cell: then `free` is where no wall can be.
     cv::Mat noWall;
+    /// CV_8U, 255 = unknown cell (p(free) from occupiedThreshold to freeThreshold): never or
+    /// hardly ever seen. The non-free cells that are not unknown are occupied. Empty when the
+    /// map has no unknown cell (drawn maps: every non-free cell is occupied).
+    cv::Mat unknown;
 };
 
 class FreeSpaceBinarizer {
@@ -106,7 +110,7 @@ class FreeSpaceBinarizer {
 
     Options options_;
     // Scratch images, reused across calls (one binarizer per thread).
-    mutable cv::Mat all_, labels_, notFree_, unknown_, nearOccupied_;
+    mutable cv::Mat all_, labels_, notFree_, nearOccupied_;
 };
 
 }  // namespace toposlam::rooms

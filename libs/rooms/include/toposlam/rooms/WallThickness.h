@@ -4,7 +4,8 @@
 // direction on the grid) to the next free cell. The obstacle runs between two free cells are
 // wall thicknesses (or furniture plus the wall it stands against); walls are by far the longest
 // obstacle boundary of a building, so the thicknesses its walls have are the frequent ones.
-// Outer walls (unknown space behind them) give no run.
+// Outer walls (unknown space behind them) give no run, nor, on SLAM grids, runs through unknown
+// cells only (no cell the laser hit: streaks between beams, the ragged edge of the mapped space).
 //
 // TopoSLAM uses it to tell a wall end from a cabinet, a fridge or a shelf standing against a
 // wall (DoorFilters, wall-end test): a wall end is as thick as the building's walls are.

@@ -3,6 +3,7 @@
 // to end; the virtual-door segmenter against the morphological and distance baselines in one
 // run.
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/cli/ImageMemoryReuse.h>
 #include <toposlam/cli/NumberArg.h>
 #include <toposlam/cli/UsageError.h>
 #include <toposlam/io/InputError.h>
@@ -281,5 +282,6 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    toposlam::cli::reuseFreedImageMemory();
     return toposlam::cli::runReportingErrors(run, argc, argv);
 }

@@ -2,6 +2,7 @@
 // a topological map (rooms = nodes, doors = edges) in JSON, GraphML, PNG and MRPT formats.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/cli/ImageMemoryReuse.h>
 #include <toposlam/cli/NumberArg.h>
 #include <toposlam/rooms/RoomSegmentationJob.h>
 
@@ -144,5 +145,6 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    toposlam::cli::reuseFreedImageMemory();
     return toposlam::cli::runReportingErrors(run, argc, argv);
 }

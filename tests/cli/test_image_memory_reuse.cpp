@@ -8,12 +8,22 @@
 #include <malloc.h>
 #endif
 
+// AddressSanitizer replaces malloc: GCC says so with __SANITIZE_ADDRESS__, clang with
+// __has_feature.
+#if defined(__SANITIZE_ADDRESS__)
+#define TOPOSLAM_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define TOPOSLAM_ASAN 1
+#endif
+#endif
+
 namespace {
 
 constexpr std::size_t kImageBytes = 16u << 20;  // a 4 Mpx CV_32S label image
 
 TEST(ImageMemoryReuse, LargeImagesComeFromTheHeapAndStayThereWhenFreed) {
-#if !defined(__GLIBC__) || defined(__SANITIZE_ADDRESS__)
+#if !defined(__GLIBC__) || defined(TOPOSLAM_ASAN)
     GTEST_SKIP() << "glibc's own allocator only (AddressSanitizer replaces it)";
 #else
     toposlam::cli::reuseFreedImageMemory();

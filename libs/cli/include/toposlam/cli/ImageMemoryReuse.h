@@ -1,8 +1,10 @@
 #pragma once
 // Room segmentation allocates and frees dozens of full-map images (1-20 MB each) per map.
-// glibc serves every block above 128 KiB with a fresh mmap and unmaps it on free, so each image
-// is page-faulted and zeroed by the kernel again: on the project's 2-core VMs a fifth of B4's
-// time per map, and 40 % of one toposlam-rooms run on a 4.7 Mpx map (benchmarks.md, B4 time).
+// By default glibc gives such blocks back to the kernel when they are freed: it unmaps those it
+// mapped on their own and trims the top of its heap (both thresholds adapt to the blocks seen,
+// from 128 KiB up). The next image's pages are then page-faulted and zeroed by the kernel again:
+// on the project's 2-core VMs a fifth of B4's time per map, and 40 % of one toposlam-rooms run
+// on a 4.7 Mpx map (benchmarks.md, B4 time).
 // Apps that segment maps call this once, before any work.
 
 namespace toposlam::cli {

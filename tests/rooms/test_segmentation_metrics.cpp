@@ -61,6 +61,59 @@ TEST(BormannPrecisionRecall, UnassignedLabelIsASegmentAndTinySegmentsAreIgnored)
     EXPECT_DOUBLE_EQ(pr.precision, 1.0);
     EXPECT_DOUBLE_EQ(pr.recall, 200.0 / 400);  // the best scored segment covers half of the room
     EXPECT_EQ(countSegments(seg), 2);          // 3 and 5; 65280 is not counted, tiny ones are
+    EXPECT_EQ(pr.unassignedPixels, 200u);
+    EXPECT_DOUBLE_EQ(pr.precisionOfRooms, 0.0);  // no segment but 65280
+}
+
+TEST(BormannPrecisionRecall, PrecisionOfRoomsLeavesTheUnassignedSegmentOut) {
+    // One room of 20 x 20 px; segment 4 covers it; 65280 holds 150 px outside it.
+    GroundTruthRooms truth;
+    truth.labels = labels(20, 30);
+    truth.labels(cv::Rect(0, 0, 20, 20)) = 1;
+    truth.count = 1;
+    cv::Mat seg = labels(20, 30);
+    seg(cv::Rect(0, 0, 20, 20)) = 4;
+    seg(cv::Rect(20, 0, 10, 15)) = kUnassignedLabel;
+    const PrecisionRecall pr = bormannPrecisionRecall(truth, seg);
+    EXPECT_EQ(pr.segments, 2);
+    EXPECT_DOUBLE_EQ(pr.precision, (1.0 + 0.0) / 2);
+    EXPECT_DOUBLE_EQ(pr.precisionOfRooms, 1.0);
+    EXPECT_EQ(pr.unassignedPixels, 150u);
+}
+
+TEST(OpenFloorOfRooms, DropsTheRoomPixelsNextToWallsAndFurnitureAndKeepsLabels) {
+    // Free 30 x 20 px with a 2 px wall at column 15 (two rooms) and a 2 x 2 px table in room 1.
+    cv::Mat free(20, 30, CV_8U, cv::Scalar(255));
+    free(cv::Rect(15, 0, 2, 20)) = 0;
+    free(cv::Rect(5, 8, 2, 2)) = 0;
+    GroundTruthRooms truth;
+    truth.labels = labels(20, 30);
+    truth.labels(cv::Rect(0, 0, 15, 20)) = 1;  // the table's pixels belong to the room
+    truth.labels(cv::Rect(17, 0, 13, 20)) = 2;
+    truth.count = 2;
+    const GroundTruthRooms open = openFloorOfRooms(truth, free);
+    EXPECT_EQ(open.count, 2);
+    // Room 1 loses its column next to the wall (20 px) and the table with its ring (4 x 4 px);
+    // the image border is no wall.
+    EXPECT_EQ(cv::countNonZero(open.labels == 1), 15 * 20 - 20 - 16);
+    EXPECT_EQ(open.labels.at<int>(0, 13), 1);
+    EXPECT_EQ(open.labels.at<int>(0, 14), 0);
+    EXPECT_EQ(open.labels.at<int>(9, 7), 0);
+    EXPECT_EQ(open.labels.at<int>(9, 8), 1);
+    EXPECT_EQ(cv::countNonZero(open.labels == 2), 13 * 20 - 20);
+    EXPECT_EQ(open.labels.at<int>(0, 17), 0);
+}
+
+TEST(OpenFloorOfRooms, ARoomWithTooLittleOpenFloorStaysWhole) {
+    // A corridor 3 px wide between walls: 1 px of open floor per row, 40 px in all (<= 100).
+    cv::Mat free(5, 40, CV_8U, cv::Scalar(0));
+    free(cv::Rect(0, 1, 40, 3)) = 255;
+    GroundTruthRooms truth;
+    truth.labels = labels(5, 40);
+    truth.labels(cv::Rect(0, 1, 40, 3)) = 1;
+    truth.count = 1;
+    const GroundTruthRooms open = openFloorOfRooms(truth, free);
+    EXPECT_EQ(cv::countNonZero(open.labels == 1), 120);
 }
 
 TEST(DoorMetric, GapFillingJoinsLabelsAcrossDrawnSeparators) {

@@ -193,6 +193,11 @@ std::vector<RoomBenchmarkScore> RoomBenchmark::score(const RoomBenchmarkCase& c)
         s.rotationDeg = c.rotationDeg;
         s.method = method;
         s.pr = bormannPrecisionRecall(c.truth, labels);
+        if (!c.openFloor.labels.empty()) {
+            cv::Mat openLabels = labels.clone();
+            openLabels.setTo(0, (c.truth.labels != 0) & (c.openFloor.labels == 0));
+            s.openFloor = bormannPrecisionRecall(c.openFloor, openLabels);
+        }
         s.segments = countSegments(labels);
         s.groundTruthRooms = c.truth.count;
         const auto virtualDoors = labelBoundaryDoors(doorMetricSegmentLabels(labels), c.scoredFree);

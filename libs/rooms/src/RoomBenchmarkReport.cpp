@@ -38,24 +38,33 @@ io::Json doorJson(const DoorMatchCounts& d) {
 }
 
 io::Json scoreJson(const RoomBenchmarkScore& s) {
-    return {{"dataset", s.dataset},
-            {"map", s.map},
-            {"furnished", s.furnished},
-            {"rotation_deg", s.rotationDeg},
-            {"method", s.method},
-            {"recall", s.pr.recall},
-            {"precision", s.pr.precision},
-            {"recall_px_weighted", s.pr.recallPixels},
-            {"precision_px_weighted", s.pr.precisionPixels},
-            {"segments", s.segments},
-            {"ground_truth_rooms", s.groundTruthRooms},
-            {"room_recall", s.pr.roomRecall},
-            {"room_pixels", s.pr.roomPixels},
-            {"doors_0.5m", doorJson(s.doors)},
-            {"doors_1.0m", doorJson(s.doors1m)},
-            {"seconds_median", s.seconds},
-            {"seconds_min", s.minSeconds},
-            {"cpu_seconds_median", s.cpuSeconds}};
+    io::Json j = {{"dataset", s.dataset},
+                  {"map", s.map},
+                  {"furnished", s.furnished},
+                  {"rotation_deg", s.rotationDeg},
+                  {"method", s.method},
+                  {"recall", s.pr.recall},
+                  {"precision", s.pr.precision},
+                  {"recall_px_weighted", s.pr.recallPixels},
+                  {"precision_px_weighted", s.pr.precisionPixels},
+                  {"precision_of_rooms", s.pr.precisionOfRooms},
+                  {"unassigned_pixels", s.pr.unassignedPixels},
+                  {"segments", s.segments},
+                  {"ground_truth_rooms", s.groundTruthRooms},
+                  {"room_recall", s.pr.roomRecall},
+                  {"room_pixels", s.pr.roomPixels},
+                  {"doors_0.5m", doorJson(s.doors)},
+                  {"doors_1.0m", doorJson(s.doors1m)},
+                  {"seconds_median", s.seconds},
+                  {"seconds_min", s.minSeconds},
+                  {"cpu_seconds_median", s.cpuSeconds}};
+    if (s.openFloor) {
+        j["open_floor"] = {{"recall", s.openFloor->recall},
+                           {"precision", s.openFloor->precision},
+                           {"room_recall", s.openFloor->roomRecall},
+                           {"room_pixels", s.openFloor->roomPixels}};
+    }
+    return j;
 }
 
 io::Json summaryJson(const RoomBenchmarkSummary& m) {

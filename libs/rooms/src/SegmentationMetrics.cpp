@@ -62,6 +62,32 @@ GroundTruthRooms groundTruthFromLabels(const cv::Mat& roomLabels) {
     return out;
 }
 
+GroundTruthRooms openFloorOfRooms(const GroundTruthRooms& truth, const cv::Mat& free) {
+    CV_Assert(free.type() == CV_8U && free.size() == truth.labels.size());
+    cv::Mat open;
+    // Pixels outside the image count as free: a room at the border keeps its border pixels.
+    cv::erode(free != 0, open, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 3)),
+              cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(255));
+    std::vector<int> openPixels(static_cast<std::size_t>(truth.count) + 1, 0);
+    for (int r = 0; r < open.rows; ++r) {
+        const int* label = truth.labels.ptr<int>(r);
+        const auto* o = open.ptr<std::uint8_t>(r);
+        for (int c = 0; c < open.cols; ++c)
+            openPixels[static_cast<std::size_t>(label[c])] += o[c] != 0;
+    }
+    GroundTruthRooms out{truth.labels.clone(), truth.count};
+    for (int r = 0; r < open.rows; ++r) {
+        int* label = out.labels.ptr<int>(r);
+        const auto* o = open.ptr<std::uint8_t>(r);
+        for (int c = 0; c < open.cols; ++c) {
+            if (o[c] == 0 &&
+                openPixels[static_cast<std::size_t>(label[c])] > kMaxIgnoredRegionPixels)
+                label[c] = 0;
+        }
+    }
+    return out;
+}
+
 PrecisionRecall bormannPrecisionRecall(const GroundTruthRooms& truth, const cv::Mat& segmentation) {
     CV_Assert(segmentation.type() == CV_32S && segmentation.size() == truth.labels.size());
     // Segment label -> dense index; per segment its size and its overlap with every GT room.
@@ -105,7 +131,9 @@ PrecisionRecall bormannPrecisionRecall(const GroundTruthRooms& truth, const cv::
         recallCovered += static_cast<double>(best);
         recallTotal += size;
     }
-    double precisionSum = 0, precisionCovered = 0, precisionTotal = 0;
+    const auto unassigned = index.find(kUnassignedLabel);
+    double precisionSum = 0, precisionCovered = 0, precisionTotal = 0, roomsPrecisionSum = 0;
+    int roomSegments = 0;
     for (std::size_t s = 0; s < segmentSize.size(); ++s) {
         if (!scored[s])
             continue;
@@ -113,10 +141,19 @@ PrecisionRecall bormannPrecisionRecall(const GroundTruthRooms& truth, const cv::
         std::size_t best = 0;
         for (int g = 1; g <= truth.count; ++g)
             best = std::max(best, overlap[s][static_cast<std::size_t>(g)]);
-        precisionSum += static_cast<double>(best) / static_cast<double>(segmentSize[s]);
+        const double precision = static_cast<double>(best) / static_cast<double>(segmentSize[s]);
+        precisionSum += precision;
         precisionCovered += static_cast<double>(best);
         precisionTotal += static_cast<double>(segmentSize[s]);
+        if (unassigned != index.end() && unassigned->second == s) {
+            out.unassignedPixels = segmentSize[s];
+        } else {
+            roomsPrecisionSum += precision;
+            ++roomSegments;
+        }
     }
+    if (roomSegments > 0)
+        out.precisionOfRooms = roomsPrecisionSum / roomSegments;
     if (truth.count > 0) {
         out.recall = recallSum / truth.count;
         out.recallPixels = recallCovered / recallTotal;

@@ -169,8 +169,11 @@ simulation::SimulatorConfig endToEndSimulatorDefaults() {
 }
 
 rooms::RoomBenchmarkCase drawnPlanCase(const PlanToTour& plan) {
-    return rooms::drawnCase("drawn", plan.name, true, 0, plan.map == 255, plan.unfurnishedFree,
-                            plan.roomLabels, plan.resolution);
+    rooms::RoomBenchmarkCase c =
+        rooms::drawnCase("drawn", plan.name, true, 0, plan.map == 255, plan.unfurnishedFree,
+                         plan.roomLabels, plan.resolution);
+    c.openFloor = rooms::openFloorOfRooms(c.truth, plan.map == 255);
+    return c;
 }
 
 rooms::RoomBenchmarkCase endToEndCase(const PlanToTour& plan, const EndToEndOptions& options,
@@ -207,6 +210,7 @@ rooms::RoomBenchmarkCase endToEndCase(const PlanToTour& plan, const EndToEndOpti
     };
     c.truth = rooms::groundTruthFromLabels(plan.roomLabels);
     c.trueDoors = rooms::labelBoundaryDoors(c.truth.labels, plan.unfurnishedFree);
+    c.openFloor = rooms::openFloorOfRooms(c.truth, plan.map == 255);
     run.roomsOutOfView =
         roomsOutOfView(c.truth, clearance, tour.poses, options.simulator.tour.coverage.viewRange);
     return c;

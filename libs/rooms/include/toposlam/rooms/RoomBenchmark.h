@@ -39,6 +39,9 @@ struct RoomBenchmarkScore {
     double rotationDeg = 0;
     std::string method;
     PrecisionRecall pr;
+    /// Over the open floor of the rooms (RoomBenchmarkCase::openFloor; segment pixels on the
+    /// rooms' other pixels left out): only for cases that have it.
+    std::optional<PrecisionRecall> openFloor;
     int segments = 0;          ///< labels returned (65280 excluded, tiny included)
     int groundTruthRooms = 0;  ///< GT rooms > 100 px
     DoorMatchCounts doors;     ///< at 0.5 m (10 px)

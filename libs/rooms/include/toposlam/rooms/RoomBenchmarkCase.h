@@ -34,6 +34,9 @@ struct RoomBenchmarkCase {
     cv::Mat scoredFree;
     GroundTruthRooms truth;
     std::vector<LabelBoundaryDoor> trueDoors;
+    /// When not empty, also scored over the rooms' open floor only (openFloorOfRooms; the
+    /// end-to-end cases: what a SLAM grid loses beyond the one-cell quantisation of its walls).
+    GroundTruthRooms openFloor;
     /// Carries a label image of `grid` (CV_32S, map-image layout) into the ground truth's
     /// image (nearest cell). Empty: the two are the same image.
     std::function<cv::Mat(const cv::Mat&)> toTruthFrame;

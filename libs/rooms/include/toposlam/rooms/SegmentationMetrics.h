@@ -33,6 +33,15 @@ GroundTruthRooms groundTruthRooms(const cv::Mat& groundTruthGrey);
 /// 100 pixels, renumbered 1..count in order of their values; the others become 0.
 GroundTruthRooms groundTruthFromLabels(const cv::Mat& roomLabels);
 
+/// The open floor of the ground-truth rooms: the room pixels that are free in `free` (CV_8U,
+/// non-zero = free; the map that was toured or segmented) and have no non-free pixel among
+/// their 8 neighbours; every other pixel becomes 0. Labels and count are kept; a room whose
+/// open floor would have at most 100 pixels stays whole. A grid built from a laser marks the cell a
+/// wall face lies in as occupied, so its walls and furniture stand up to one cell into a drawn
+/// plan's free pixels; scoring over the open floor leaves that quantisation out and keeps
+/// everything else.
+GroundTruthRooms openFloorOfRooms(const GroundTruthRooms& truth, const cv::Mat& free);
+
 struct PrecisionRecall {
     double recall = 0;  ///< mean over GT rooms of best overlap / room area ("recall_micro")
     double precision =
@@ -45,6 +54,11 @@ struct PrecisionRecall {
     std::vector<double> roomRecall;
     std::vector<std::size_t> roomPixels;
     int segments = 0;  ///< segments scored (> 100 px, 65280 included)
+    /// As `precision`, over the scored segments other than 65280: the rooms a method returned,
+    /// without the free space it left unassigned (on a SLAM grid mostly free cells outside every
+    /// room, seen through gaps in walls). 0 when there is no such segment.
+    double precisionOfRooms = 0;
+    std::size_t unassignedPixels = 0;  ///< pixels of the 65280 segment (0: none or ignored)
 };
 /// `segmentation`: CV_32S, 0 = obstacle, any other value a segment (65280 included).
 PrecisionRecall bormannPrecisionRecall(const GroundTruthRooms& truth, const cv::Mat& segmentation);

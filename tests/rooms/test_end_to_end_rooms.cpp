@@ -1,0 +1,45 @@
+// Rooms on the grid our SLAM builds of a simulated tour (libs/roomsbench, the end-to-end set of
+// toposlam-bench-rooms), scored against the generated plan's exact rooms.
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFile.h>
+#include <toposlam/rooms/RoomBenchmark.h>
+#include <toposlam/roomsbench/EndToEndRoomCases.h>
+
+#include "TestSupport.h"
+
+using namespace toposlam;
+
+TEST(EndToEndRooms, OnTheOpenFloorTheSlamGridsRoomsAreThePlansRooms) {
+    // A laser grid marks the cell a wall face lies in as occupied: its walls and furniture
+    // stand up to a cell into the plan's free pixels, which the plain recall counts as lost.
+    // Over the rooms' open floor (a cell away from walls and furniture) the SLAM grid's rooms
+    // must be the drawn plan's, up to what 1 cm range noise and a few cm of pose error move.
+    const auto plans = roomsbench::plansToTour({3}, {}, "");
+    ASSERT_EQ(plans.size(), 1u);
+    const mrpt::config::CConfigFile ini(std::string(TOPOSLAM_TEST_SOURCE_DIR) +
+                                        "/config_ini/toposlam-slam.ini");
+    const test::TempDir dir;
+    roomsbench::EndToEndOptions options;
+    options.slamConfig = &ini;
+    options.workDir = dir.path();
+    roomsbench::EndToEndRun run;
+    const rooms::RoomBenchmarkCase slam = roomsbench::endToEndCase(plans[0], options, run);
+    const rooms::RoomBenchmarkCase drawn = roomsbench::drawnPlanCase(plans[0]);
+    ASSERT_FALSE(slam.openFloor.labels.empty());
+    ASSERT_EQ(slam.openFloor.count, slam.truth.count);
+
+    rooms::RoomBenchmarkOptions bench;
+    bench.methods = {"vdoor"};
+    bench.repeats = 1;
+    const rooms::RoomBenchmark benchmark(bench);
+    const auto onSlam = benchmark.score(slam).at(0), onDrawn = benchmark.score(drawn).at(0);
+    ASSERT_TRUE(onSlam.openFloor && onDrawn.openFloor);
+    EXPECT_EQ(onSlam.segments, onDrawn.segments);
+    // The plain recall loses the ring: at least a point (a 4 x 4 m room's one-cell ring is 5 %
+    // of it, and about half the ring's cells are lost).
+    EXPECT_GT(onDrawn.pr.recall - onSlam.pr.recall, 0.01);
+    // On the open floor: within a point of the drawn plan, every room at least 95 % found.
+    EXPECT_LT(onDrawn.openFloor->recall - onSlam.openFloor->recall, 0.01);
+    for (const double r : onSlam.openFloor->roomRecall)
+        EXPECT_GT(r, 0.95);
+}

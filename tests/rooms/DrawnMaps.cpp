@@ -336,6 +336,28 @@ DrawnMap cubicles() {
     return m;
 }
 
+DrawnMap doubleDoors() {
+    DrawnMap m;
+    m.image = cv::Mat(170, 330, CV_8U, cv::Scalar(128));
+    cv::Mat& img = m.image;
+    fill(img, 1, 1, 15.4, 7.4, 0);
+    fill(img, 1.2, 1.2, 15.2, 7.2, 255);
+    fill(img, 1.2, 3.2, 15.2, 3.3, 0);  // the corridor's upper wall, 0.1 m
+    const double roomX0[] = {1.2, 4.8, 8.3, 11.8}, clear[] = {1.45, 1.5, 1.55, 1.6};
+    for (int i = 0; i < 4; ++i) {
+        if (i > 0)
+            fill(img, roomX0[i] - 0.1, 3.3, roomX0[i], 7.2, 0);  // partitions, 0.1 m
+        const double x0 = roomX0[i] + 1.0, x1 = x0 + clear[i];
+        fill(img, x0, 3.2, x1, 3.3, 255);
+        const double middle = 0.5 * (x0 + x1);
+        m.doors.push_back({{middle, 3.25}, clear[i]});
+        m.rooms.push_back({middle, 5.2});
+        m.tour.insert(m.tour.end(), {{middle, 2.2}, {middle, 5.2}, {middle, 2.2}});
+    }
+    m.rooms.push_back({8.2, 2.2});
+    return m;
+}
+
 DrawnMap corridorWithOppositeDoors() {
     DrawnMap m;
     m.image = cv::Mat(220, 380, CV_8U, cv::Scalar(128));

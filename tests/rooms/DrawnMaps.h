@@ -49,6 +49,10 @@ DrawnMap singleRoom();
 /// partitions with 0.6 m stubs at the front, so each cubicle opens to the hall through 2.0 m
 /// framed by wall ends (wider than any door). 4 rooms, 3 openings.
 DrawnMap cubicles();
+/// A 2 m corridor below four rooms in a row, each entered through a double door in the
+/// corridor's 0.1 m wall: clear openings 1.45, 1.5, 1.55 and 1.6 m, around the widest door
+/// (1.6 m between the jamb cells' centres is the 1.55 m one). 5 rooms, 4 doors.
+DrawnMap doubleDoors();
 /// A 2.2 m corridor between three rooms above and three below, each entered through a 1 m door
 /// beside a partition, the doors above and below opposite each other: the corridor's
 /// cross-section there is 2.2 m, framed by wall corners, and no room border. 7 rooms, 6 doors.

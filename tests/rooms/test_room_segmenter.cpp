@@ -308,6 +308,23 @@ TEST(RoomSegmenter, CubicleFrontsWiderThanDoorsAreCut) {
     EXPECT_EQ(joined.map.rooms.size(), 1u);
 }
 
+TEST(RoomSegmenter, DoubleDoorsAroundTheWidestDoorWidthAreAllCut) {
+    // Eq. 10 takes openings strictly inside the door range, 0.6-1.6 m between the jamb cells;
+    // the wide openings start at 1.6 m. The 1.55 m door, exactly 1.6 m between its jamb cells,
+    // fell between the two (generated plans 23, 34, 54 and 56 lost a door each so).
+    const DrawnMap drawn = toposlam::rooms::test::doubleDoors();
+    const auto grid = toposlam::rooms::test::gridOf(drawn.image);
+    for (const bool withTour : {false, true}) {
+        SCOPED_TRACE(withTour ? "with trajectory" : "medial axis");
+        const auto result = RoomSegmenter().segment(
+            grid, withTour ? posesOf(drawn.tour) : std::vector<mrpt::math::TPose2D>{});
+        expectMatchesDrawing(result.map, drawn, kDoorTolerance);
+    }
+    // Axis-aligned both ways: widths between jamb cells are whole cells there. (At 40 degrees
+    // the 1.55 m door is still missed, at 5 the 1.6 m one cut on a slant: not checked here.)
+    expectMatchesDrawingAtAngles(drawn, {90});
+}
+
 TEST(RoomSegmenter, CorridorBetweenOppositeDoorsIsNotCut) {
     const DrawnMap drawn = toposlam::rooms::test::corridorWithOppositeDoors();
     const auto result = RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image));

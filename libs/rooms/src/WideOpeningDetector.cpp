@@ -4,10 +4,14 @@ namespace toposlam::rooms {
 
 namespace {
 
-// Eq. 10's range for the wide openings: (widest door, maxWidth).
+// Eq. 10's range for the wide openings: [widest door, maxWidth). Eq. 10 leaves both ends of
+// the door range out, so the wide range reaches a millimetre below it: an opening exactly as
+// wide as the widest door (1.6 m = 32 cells of 5 cm between its jamb cells, a 1.55 m double
+// door) would otherwise be neither.
 VirtualDoorDetector::Options wideRange(const WideOpeningDetector::Options& o,
                                        VirtualDoorDetector::Options door) {
-    const double lo = door.doorWidth + door.doorWidthTolerance;
+    constexpr double kOverlap = 1e-3;  // m
+    const double lo = door.doorWidth + door.doorWidthTolerance - kOverlap;
     door.doorWidth = 0.5 * (lo + o.maxWidth);
     door.doorWidthTolerance = 0.5 * (o.maxWidth - lo);
     door.localDirection = door.localDirection && o.localDirection;

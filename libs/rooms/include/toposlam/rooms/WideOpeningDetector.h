@@ -1,9 +1,9 @@
 #pragma once
-// TopoSLAM's second door pass (a deviation from the paper, Options::enabled): openings wider
-// than the widest door, up to maxWidth, that are still a room border. The open fronts of
-// cubicles, the mouths of alcoves and 2-3 m passages between two rooms are drawn as room
-// borders by people, but eq. 10 with a door-width range cannot find them, and a wider range for
-// every door would cut corridors everywhere.
+// TopoSLAM's second door pass (a deviation from the paper, Options::enabled): openings from the
+// widest door's width (which eq. 10 leaves out) up to maxWidth that are still a room border. The
+// open fronts of cubicles, the mouths of alcoves and 2-3 m passages between two rooms are drawn as
+// room borders by people, but eq. 10 with a door-width range cannot find them, and a wider range
+// for every door would cut corridors everywhere.
 //
 // A wide opening is searched like a door (step 4, from the search paths; across the main
 // directions only, unless Options::localDirection) and must pass stricter versions of step 5's

@@ -55,8 +55,9 @@ struct PrecisionRecall {
     std::vector<std::size_t> roomPixels;
     int segments = 0;  ///< segments scored (> 100 px, 65280 included)
     /// As `precision`, over the scored segments other than 65280: the rooms a method returned,
-    /// without the free space it left unassigned (on a SLAM grid mostly free cells outside every
-    /// room, seen through gaps in walls). 0 when there is no such segment.
+    /// without the free space it left unassigned (on a SLAM grid mostly specks of free cells
+    /// next to and inside walls, outside every ground-truth room). 0 when 65280 is the only
+    /// scored segment.
     double precisionOfRooms = 0;
     std::size_t unassignedPixels = 0;  ///< pixels of the 65280 segment (0: none or ignored)
 };

@@ -264,6 +264,31 @@ TEST(RoomSegmenter, FreePocketsCutOffDiagonallyJoinTheRoomTheyTouch) {
               largePocket.area());
 }
 
+TEST(RoomSegmenter, FreeLinesInsideAWallJoinTheNearestRoom) {
+    // On SLAM grids a few rays go through a wall and leave lines of free cells inside it, with
+    // no room among their 8-neighbours. Inside the 0.55 m wall (columns 112-122) between the two
+    // rooms, away from the door: one line 3 cells from the left room, one 3 from the right.
+    const DrawnMap drawn = toposlam::rooms::test::thickWall();
+    cv::Mat image = drawn.image.clone();
+    const cv::Rect nearLeft(114, 40, 1, 6), nearRight(120, 40, 1, 6);
+    image(nearLeft) = 255;
+    image(nearRight) = 255;
+    const auto labelsOf = [&](const RoomSegmenter::Options& o) {
+        return RoomSegmenter(o).segment(toposlam::rooms::test::gridOf(image)).map.labels;
+    };
+    const cv::Mat labels = labelsOf(RoomSegmenter::Options());
+    const int left = labels.at<int>(60, 60), right = labels.at<int>(60, 180);
+    ASSERT_GT(left, 0);
+    ASSERT_GT(right, 0);
+    ASSERT_NE(left, right);
+    EXPECT_EQ(cv::countNonZero(labels(nearLeft) == left), nearLeft.area());
+    EXPECT_EQ(cv::countNonZero(labels(nearRight) == right), nearRight.area());
+    // Off (the paper): they stay unlabelled.
+    RoomSegmenter::Options off;
+    off.maxSliverArea = 0;
+    EXPECT_EQ(cv::countNonZero(labelsOf(off)(nearLeft)), 0);
+}
+
 TEST(RoomSegmenter, OpenPlanHallIsOneRoom) {
     const DrawnMap drawn = toposlam::rooms::test::openPlan();
     const auto result = RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image));

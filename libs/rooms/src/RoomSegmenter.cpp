@@ -158,14 +158,51 @@ void labelIslands(const FreeSpace& space, cv::Mat& labels) {
     }
 }
 
+// The room with the most cells at the smallest Chebyshev distance d, 2 <= d <= reach, from
+// `pocket` (whose 8-neighbours hold no room), or 0 when no room is that close. `votes` is scratch.
+int nearestRoomAcrossWall(const std::vector<cv::Point>& pocket, const cv::Mat& labels, int reach,
+                          std::vector<std::pair<int, int>>& votes) {
+    const cv::Rect image(0, 0, labels.cols, labels.rows);
+    for (int d = 2; d <= reach; ++d) {
+        votes.clear();
+        for (const cv::Point& p : pocket) {
+            for (int k = -d; k < d; ++k) {  // the ring of side 2d + 1, each cell once
+                for (const cv::Point q :
+                     {cv::Point(p.x + k, p.y - d), cv::Point(p.x + d, p.y + k),
+                      cv::Point(p.x - k, p.y + d), cv::Point(p.x - d, p.y - k)}) {
+                    const int l = image.contains(q) ? labels.at<int>(q) : 0;
+                    if (l <= 0)
+                        continue;
+                    auto it = std::find_if(votes.begin(), votes.end(),
+                                           [l](const auto& v) { return v.first == l; });
+                    if (it == votes.end())
+                        votes.emplace_back(l, 1);
+                    else
+                        ++it->second;
+                }
+            }
+        }
+        if (!votes.empty()) {
+            return std::max_element(
+                       votes.begin(), votes.end(),
+                       [](const auto& a, const auto& b) { return a.second < b.second; })
+                ->first;
+        }
+    }
+    return 0;
+}
+
 // Gives each free pocket outside the segmented free space (`otherFree`: no 4-connected way in)
 // of at most `maxCells` cells the room it touches, when its 8-neighbours hold exactly one room.
 // Such pockets are mostly drawing artefacts: free cells caught between the steps of a wall
-// rasterised at an angle. Larger pockets, those between two rooms, and those reaching the edge
-// of the (cropped) image, which may go on beyond it, stay unlabelled. `cells` and `pocket` are
-// scratch.
-void labelSlivers(const cv::Mat& otherFree, std::size_t maxCells, cv::Mat& labels,
-                  std::vector<cv::Point>& cells, std::vector<cv::Point>& pocket) {
+// rasterised at an angle. A pocket whose 8-neighbours hold no room at all lies inside a wall
+// (on SLAM grids: cells a few grazing or noisy rays went through) and takes the nearest room
+// within `wallReach` cells (0: none). Larger pockets, those between two rooms, and those reaching
+// the edge of the (cropped) image, which may go on beyond it, stay unlabelled. `cells`, `pocket`
+// and `votes` are scratch.
+void labelSlivers(const cv::Mat& otherFree, std::size_t maxCells, int wallReach, cv::Mat& labels,
+                  std::vector<cv::Point>& cells, std::vector<cv::Point>& pocket,
+                  std::vector<std::pair<int, int>>& votes) {
     cv::findNonZero(otherFree, cells);        // empty when there is no pocket
     constexpr int kVisited = -1, kLeft = -2;  // in this pocket; in a pocket left unlabelled
     const cv::Rect image(0, 0, labels.cols, labels.rows);
@@ -175,11 +212,11 @@ void labelSlivers(const cv::Mat& otherFree, std::size_t maxCells, cv::Mat& label
         pocket.assign(1, seed);
         labels.at<int>(seed) = kVisited;
         int room = 0;
-        bool oneRoom = true;
+        bool oneRoom = true, atEdge = false;
         for (std::size_t k = 0; k < pocket.size(); ++k) {
             const cv::Point p = pocket[k];
             if (p.x == 0 || p.y == 0 || p.x == labels.cols - 1 || p.y == labels.rows - 1)
-                oneRoom = false;  // it may go on beyond the image
+                atEdge = true;  // it may go on beyond the image
             for (int dy = -1; dy <= 1; ++dy) {
                 for (int dx = -1; dx <= 1; ++dx) {
                     const cv::Point q(p.x + dx, p.y + dy);
@@ -196,7 +233,10 @@ void labelSlivers(const cv::Mat& otherFree, std::size_t maxCells, cv::Mat& label
                 }
             }
         }
-        const int label = pocket.size() <= maxCells && oneRoom && room > 0 ? room : kLeft;
+        if (room == 0 && !atEdge && pocket.size() <= maxCells)
+            room = nearestRoomAcrossWall(pocket, labels, wallReach, votes);
+        const int label =
+            pocket.size() <= maxCells && !atEdge && oneRoom && room > 0 ? room : kLeft;
         for (const cv::Point& p : pocket)
             labels.at<int>(p) = label;
     }
@@ -351,7 +391,7 @@ void RoomSegmenter::Options::declare(config::OptionsSchema& s) {
            "free-standing furniture inside a room takes its label (deviation)");
     s.real("max_sliver_area", maxSliverArea, "m^2",
            "free pockets up to this size cut off from the free space join the one room they "
-           "touch (deviation; 0 = off)")
+           "touch, or inside a wall the nearest room (deviation; 0 = off)")
         .atLeast(0);
     s.real("max_furniture_size", maxFurnitureSize, "m",
            "non-free pockets along a room's walls up to this long both ways (furniture) join the "
@@ -382,7 +422,8 @@ struct RoomSegmenter::Workspace {
     WallThickness wallThickness;
     RegionPartition partition;
     RegionBoundary boundary;
-    std::vector<cv::Point> sliverCells, sliver;  // labelSlivers' scratch
+    std::vector<cv::Point> sliverCells, sliver;    // labelSlivers' scratch
+    std::vector<std::pair<int, int>> sliverVotes;  // room, cells: nearestRoomAcrossWall's
     FurniturePockets furniture;
 };
 
@@ -510,11 +551,12 @@ RoomSegmenter::Result RoomSegmenter::segment(
     labelRooms(space.free, rooms.roomOfRegion, labels);
     if (options_.labelIslands && !space.obstacles.empty())
         labelIslands(space, labels);
-    if (options_.maxSliverArea > 0 && !space.otherFree.empty()) {
-        labelSlivers(space.otherFree,
-                     static_cast<std::size_t>(options_.maxSliverArea / space.frame.cellArea()),
-                     labels, ws.sliverCells, ws.sliver);
-    }
+    const bool slivers = options_.maxSliverArea > 0 && !space.otherFree.empty();
+    const auto maxSliverCells =
+        static_cast<std::size_t>(options_.maxSliverArea / space.frame.cellArea());
+    if (slivers)
+        labelSlivers(space.otherFree, maxSliverCells, 0, labels, ws.sliverCells, ws.sliver,
+                     ws.sliverVotes);
     if (options_.maxFurnitureSize > 0) {
         // A line bounding a room's box holds at least the narrowest door's width of the room;
         // cells within half the thickest wall beyond a door's half width do not count.
@@ -523,6 +565,14 @@ RoomSegmenter::Result RoomSegmenter::segment(
             0.5 * options_.filters.maxWallThickness};
         ws.furniture.label(pockets, result.directions.phi1, result.afterDistance,
                            space.frame.resolution, labels);
+    }
+    if (slivers) {
+        // Once more, now that furniture has its room (a gap behind a desk touches the desk),
+        // and across walls: the pockets inside a wall join the nearest room.
+        labelSlivers(
+            space.otherFree, maxSliverCells,
+            static_cast<int>(0.5 * options_.filters.maxWallThickness / space.frame.resolution),
+            labels, ws.sliverCells, ws.sliver, ws.sliverVotes);
     }
     lap("labels");
     // Room geometry on the cropped frame (world coordinates do not depend on the crop), then the

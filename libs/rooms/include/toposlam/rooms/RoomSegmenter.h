@@ -60,8 +60,10 @@ class RoomSegmenter {
         bool labelIslands = true;
         /// m^2; free pockets up to this size cut off from the map's free space (no 4-connected
         /// way in: free cells between the steps of a wall drawn at an angle, a gap behind a
-        /// desk) join the one room they touch (8-neighbours); 0 = off (deviation: the paper
-        /// labels the largest free region only).
+        /// desk) join the one room they touch (8-neighbours); a pocket touching no room (inside
+        /// a wall: cells a few rays went through on a SLAM grid) joins the nearest room up to
+        /// half of filters.maxWallThickness away; 0 = off (deviation: the paper labels the
+        /// largest free region only).
         double maxSliverArea = 0.25;
         /// m; furniture against a room's walls (non-free pockets inside the room's box along
         /// the main directions, touching no other room, up to this long both ways) takes the

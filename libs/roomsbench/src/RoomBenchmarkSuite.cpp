@@ -83,6 +83,16 @@ double openFloorRecallInView(const rooms::RoomBenchmarkScore& score,
     return score.openFloor ? recallInView(score.openFloor->roomRecall, outOfView) : 0;
 }
 
+// The drawn plan's score beside a SLAM grid's (same plan, same method), or null.
+const rooms::RoomBenchmarkScore* drawnScoreOf(const RoomBenchmarkSuiteResult& result,
+                                              const rooms::RoomBenchmarkScore& slam) {
+    const auto drawn = std::find_if(
+        result.scores.begin(), result.scores.end(), [&](const rooms::RoomBenchmarkScore& s) {
+            return s.dataset == "drawn" && s.map == slam.map && s.method == slam.method;
+        });
+    return drawn == result.scores.end() ? nullptr : &*drawn;
+}
+
 // Recall of drawn plan and SLAM grid over the rooms the tour had in view, then over their open
 // floor only, per plan and method: what the segmentation loses on a SLAM grid, apart from rooms
 // no robot on that tour saw and from the one-cell quantisation of walls and furniture.
@@ -97,12 +107,8 @@ std::string inViewTable(const RoomBenchmarkSuiteResult& result) {
         for (const auto& slam : result.scores) {
             if (slam.dataset != "slam" || slam.map != e.map)
                 continue;
-            const auto drawn = std::find_if(result.scores.begin(), result.scores.end(),
-                                            [&](const rooms::RoomBenchmarkScore& s) {
-                                                return s.dataset == "drawn" && s.map == e.map &&
-                                                       s.method == slam.method;
-                                            });
-            if (drawn == result.scores.end())
+            const rooms::RoomBenchmarkScore* drawn = drawnScoreOf(result, slam);
+            if (!drawn)
                 continue;
             const auto& out = e.run.roomsOutOfView;
             const std::array<double, 4> r = {
@@ -127,6 +133,7 @@ std::string inViewTable(const RoomBenchmarkSuiteResult& result) {
     }
     return text;
 }
+
 // Precision of drawn plan and SLAM grid with and without the segment of free space no room
 // took (65280), per plan and method: on a SLAM grid that one segment, mostly free cells outside
 // every ground-truth room, is most of what precision loses.
@@ -139,11 +146,8 @@ std::string unassignedTable(const RoomBenchmarkSuiteResult& result) {
     for (const auto& slam : result.scores) {
         if (slam.dataset != "slam")
             continue;
-        const auto drawn = std::find_if(
-            result.scores.begin(), result.scores.end(), [&](const rooms::RoomBenchmarkScore& s) {
-                return s.dataset == "drawn" && s.map == slam.map && s.method == slam.method;
-            });
-        if (drawn == result.scores.end())
+        const rooms::RoomBenchmarkScore* drawn = drawnScoreOf(result, slam);
+        if (!drawn)
             continue;
         auto& p = pooled[slam.method];
         p[0] += drawn->pr.precision;

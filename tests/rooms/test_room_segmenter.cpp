@@ -289,6 +289,26 @@ TEST(RoomSegmenter, FreeLinesInsideAWallJoinTheNearestRoom) {
     EXPECT_EQ(cv::countNonZero(labelsOf(off)(nearLeft)), 0);
 }
 
+TEST(RoomSegmenter, AFreeLineInsideAWallJoinsTheNearestRoomHoweverLong) {
+    // Two 11 x 1.9 m rooms, one above the other, either side of a 0.3 m wall (rows 62-67) with
+    // a 1 m door at its left end. Inside the wall, a line of free cells 6 m long (120 cells:
+    // more than max_sliver_area, 100 cells, but a line), 3 cells from the upper room and 4 from
+    // the lower one.
+    cv::Mat image(130, 270, CV_8U, cv::Scalar(128));
+    image(cv::Rect(20, 20, 230, 90)) = 0;
+    image(cv::Rect(24, 24, 222, 38)) = 255;  // upper room, rows 24-61
+    image(cv::Rect(24, 68, 222, 38)) = 255;  // lower room, rows 68-105
+    image(cv::Rect(30, 62, 20, 6)) = 255;    // the door
+    const cv::Rect line(80, 64, 120, 1);
+    image(line) = 255;
+    const cv::Mat labels = RoomSegmenter().segment(toposlam::rooms::test::gridOf(image)).map.labels;
+    const int upper = labels.at<int>(40, 120), lower = labels.at<int>(90, 120);
+    ASSERT_GT(upper, 0);
+    ASSERT_GT(lower, 0);
+    ASSERT_NE(upper, lower);
+    EXPECT_EQ(cv::countNonZero(labels(line) == upper), line.area());
+}
+
 TEST(RoomSegmenter, OpenPlanHallIsOneRoom) {
     const DrawnMap drawn = toposlam::rooms::test::openPlan();
     const auto result = RoomSegmenter().segment(toposlam::rooms::test::gridOf(drawn.image));

@@ -9,6 +9,7 @@
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <toposlam/config/IniFile.h>
 #include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include <toposlam/io/InputError.h>
 
@@ -197,9 +198,9 @@ int nearestRoomAcrossWall(const std::vector<cv::Point>& pocket, const cv::Mat& l
 // Such pockets are mostly drawing artefacts: free cells caught between the steps of a wall
 // rasterised at an angle. A pocket whose 8-neighbours hold no room at all lies inside a wall
 // (on SLAM grids: cells a few grazing or noisy rays went through) and takes the nearest room
-// within `wallReach` cells (0: none). Larger pockets, those between two rooms, and those reaching
-// the edge of the (cropped) image, which may go on beyond it, stay unlabelled. `cells`, `pocket`
-// and `votes` are scratch.
+// within `wallReach` cells (0: none), whatever its size if it is a line. Larger pockets, those
+// between two rooms, and those reaching the edge of the (cropped) image, which may go on beyond
+// it, stay unlabelled. `cells`, `pocket` and `votes` are scratch.
 void labelSlivers(const cv::Mat& otherFree, std::size_t maxCells, int wallReach, cv::Mat& labels,
                   std::vector<cv::Point>& cells, std::vector<cv::Point>& pocket,
                   std::vector<std::pair<int, int>>& votes) {
@@ -233,10 +234,17 @@ void labelSlivers(const cv::Mat& otherFree, std::size_t maxCells, int wallReach,
                 }
             }
         }
-        if (room == 0 && !atEdge && pocket.size() <= maxCells)
-            room = nearestRoomAcrossWall(pocket, labels, wallReach, votes);
-        const int label =
-            pocket.size() <= maxCells && !atEdge && oneRoom && room > 0 ? room : kLeft;
+        bool fits = pocket.size() <= maxCells;
+        if (room == 0 && !atEdge && wallReach > 0) {
+            // Inside a wall a pocket may run the wall's whole length: a line of at most three
+            // cells across on average (walls are a few cells thick) is no room, however long.
+            const cv::Rect box = cv::boundingRect(pocket);
+            fits = fits ||
+                   pocket.size() <= 3 * static_cast<std::size_t>(std::max(box.width, box.height));
+            if (fits)
+                room = nearestRoomAcrossWall(pocket, labels, wallReach, votes);
+        }
+        const int label = fits && !atEdge && oneRoom && room > 0 ? room : kLeft;
         for (const cv::Point& p : pocket)
             labels.at<int>(p) = label;
     }

@@ -62,7 +62,8 @@ class RoomSegmenter {
         /// way in: free cells between the steps of a wall drawn at an angle, a gap behind a
         /// desk) join the one room they touch (8-neighbours); a pocket touching no room (inside
         /// a wall: cells a few rays went through on a SLAM grid) joins the nearest room up to
-        /// half of filters.maxWallThickness away; 0 = off (deviation: the paper labels the
+        /// half of filters.maxWallThickness away, whatever its size if it is a line at most
+        /// three cells across on average; 0 = off (deviation: the paper labels the
         /// largest free region only).
         double maxSliverArea = 0.25;
         /// m; furniture against a room's walls (non-free pockets inside the room's box along

@@ -63,8 +63,8 @@ class RoomSegmenter {
         /// desk) join the one room they touch (8-neighbours); a pocket touching no room (inside
         /// a wall: cells a few rays went through on a SLAM grid) joins the nearest room up to
         /// half of filters.maxWallThickness away, whatever its size if it is a line at most
-        /// three cells across on average; 0 = off (deviation: the paper labels the
-        /// largest free region only).
+        /// three cells across on average; 0 = off (deviation: the paper labels the largest
+        /// free region only).
         double maxSliverArea = 0.25;
         /// m; furniture against a room's walls (non-free pockets inside the room's box along
         /// the main directions, touching no other room, up to this long both ways) takes the

@@ -1,6 +1,7 @@
 // LineMap's lookup: the point it returns against a brute-force search, fusing, and a grid that
 // stays small when readings lie far apart.
 #include <gtest/gtest.h>
+#include <mrpt/poses/CPose2D.h>
 #include <toposlam/matching/LineMap.h>
 
 #include <cmath>
@@ -87,6 +88,48 @@ TEST(LineMap, FusesRepeatedObservationsOfOneSurface) {
     // The opposite side of a thin wall (normal reversed) stays a point of its own.
     map.insert(pointAt(1.02f, 2.0f, -1, 0));
     EXPECT_EQ(map.size(), 2u);
+}
+
+// Views: a wall seen from two poses 0.3 m apart is confirmed; a disc that keeps 1 m ahead of
+// the sensor (a person walking along) is somewhere else in each scan and is not; and readings
+// of one scan, however close, count once.
+TEST(LineMap, CountsTheScansThatSawEachPoint) {
+    using matching::SurfacePoint;
+    const auto scanAt = [](double sensorX) {
+        std::vector<SurfacePoint> points;
+        for (double x = -1; x <= 1.5; x += 0.01)  // the wall y = 1 (dense: readings fuse)
+            points.push_back({x - sensorX, 1, 0, -1});
+        for (double a = -1.0; a <= 1.0; a += 0.05) {  // the disc's face towards the sensor
+            const double cx = 1.25 - 0.25 * std::cos(a), cy = 0.25 * std::sin(a);
+            points.push_back({cx, cy, -std::cos(a), std::sin(a)});
+        }
+        return points;
+    };
+    LineMap map;
+    map.insertSurface(scanAt(0), mrpt::poses::CPose2D(0, 0, 0));
+    for (const LineMapPoint& p : map.points())
+        EXPECT_EQ(p.views, 1u);
+    map.insertSurface(scanAt(0.3), mrpt::poses::CPose2D(0.3, 0, 0));
+    EXPECT_EQ(map.scans(), 2u);
+    std::size_t wall = 0, confirmed = 0, disc = 0;
+    for (const LineMapPoint& p : map.points()) {
+        if (p.y > 0.9) {
+            if (p.x > -0.65 && p.x < 1.45) {  // where both scans saw the wall
+                ++wall;
+                confirmed += p.views == 2;
+            }
+        } else {
+            EXPECT_EQ(p.views, 1u) << p.x << ", " << p.y;
+            ++disc;
+        }
+    }
+    EXPECT_GE(disc, 10u);
+    // A reading confirms only the point its lookup cell holds: points of the first scan that
+    // the second's new points shadow in the lookup keep one view (here a third of them).
+    ASSERT_GT(wall, 10u);
+    EXPECT_GT(double(confirmed), 0.5 * double(wall)) << confirmed << " of " << wall;
+    map.clear();
+    EXPECT_EQ(map.scans(), 0u);
 }
 
 // clear() empties the map but keeps its memory; the refilled map answers as a new one does.

@@ -30,6 +30,7 @@ matching::LineMapOptions lineMapOptions(const GraphSlamOptions& o) {
     m.resolution = o.mapResolution;
     m.radius = o.icpMaxDistance;
     m.fuseDistance = o.mapFuseDistance;
+    m.confirmDistance = o.mapConfirmDistance;
     m.maxRange = o.mapMaxRange;
     return m;
 }
@@ -146,6 +147,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     switch (r.method) {
         case RegistrationMethod::Icp:
             ++stats_.registeredByIcp;
+            stats_.icpSecondStarts += r.secondStart;
             break;
         case RegistrationMethod::GraphMatcher:
             ++stats_.registeredByGraphMatcher;

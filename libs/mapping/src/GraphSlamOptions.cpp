@@ -29,6 +29,9 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
     s.real("map_fuse_distance", mapFuseDistance, "m",
            "observations this close to a map point are fused into it")
         .above(0);
+    s.real("map_confirm_distance", mapConfirmDistance, "m",
+           "a map point counts one more view when another keyframe puts a reading this close")
+        .atLeast(0);
     s.real("map_max_range", mapMaxRange, "m", "farther readings are not put into submaps...")
         .above(0);
     s.real("map_far_share", mapFarShare, "",
@@ -43,6 +46,22 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
     s.real("icp_robust_scale", icpRobustScale, "m", "Cauchy kernel scale of ICP").above(0);
     s.integer("icp_stride", icpStride, "", "every stride-th point in ICP's first stage")
         .within(1, 100);
+    s.integer("icp_min_views", icpMinViews, "keyframes",
+              "ICP's first stage matches only submap points seen from this many keyframes")
+        .within(1, 100);
+    s.angle("icp_max_incidence", icpMaxIncidence,
+            "submap points whose surface faces the sensor at a larger incidence are not matched")
+        .above(0)
+        .atMost(180);
+    s.flag("second_opinion", secondOpinion,
+           "when ICP has not settled, also start it from the graph matcher and turned predictions");
+    s.real("second_opinion_margin", secondOpinionMargin, "",
+           "... a start that puts this share of the readings more on the map replaces it")
+        .within(0, 1);
+    s.angle("second_opinion_turn", secondOpinionTurn,
+            "... the prediction turned by +-1 and +-2 times this (0: no turned starts)")
+        .atLeast(0)
+        .atMost(90);
     s.real("min_inlier_ratio", minInlierRatio, "",
            "a registration is good when this share of the scan's points lies on the map ...")
         .within(0, 1);

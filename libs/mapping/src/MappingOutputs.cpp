@@ -70,11 +70,11 @@ std::string formatSummary(const MappingResult& r) {
                   r.smoothedScans ? "registration and odometry together"
                                   : "registration alone (smooth_scans off)");
         s += line(
-            "registration: %zu by ICP (%.1f %%), %zu by the graph matcher (%.1f %%), %zu "
-            "failed (%.1f %%, odometry kept); %zu odometry jumps",
-            st->registeredByIcp, percent(st->registeredByIcp, n), st->registeredByGraphMatcher,
-            percent(st->registeredByGraphMatcher, n), st->registrationFailed,
-            percent(st->registrationFailed, n), st->odometryJumps);
+            "registration: %zu by ICP (%.1f %%; %zu from a second start), %zu by the graph "
+            "matcher (%.1f %%), %zu failed (%.1f %%, odometry kept); %zu odometry jumps",
+            st->registeredByIcp, percent(st->registeredByIcp, n), st->icpSecondStarts,
+            st->registeredByGraphMatcher, percent(st->registeredByGraphMatcher, n),
+            st->registrationFailed, percent(st->registrationFailed, n), st->odometryJumps);
         // A rule that is off says so, instead of a count that could not be anything but 0.
         const std::string guessFree =
             r.guessFreeSearch ? std::to_string(st->globalConfirmed) + " of them guess-free"
@@ -131,6 +131,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
         j["submaps"] = st->submaps;
         j["smoothed_scans"] = r.smoothedScans;
         j["registration"] = {{"icp", st->registeredByIcp},
+                             {"icp_second_start", st->icpSecondStarts},
                              {"graph_matcher", st->registeredByGraphMatcher},
                              {"failed", st->registrationFailed},
                              {"odometry_jumps", st->odometryJumps},

@@ -5,8 +5,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
+#include <optional>
 
 namespace toposlam::mapping {
 
@@ -14,6 +13,13 @@ using mrpt::math::CMatrixDouble33;
 using mrpt::poses::CPose2D;
 
 namespace {
+/// m: a reading this close to the submap's surface counts as explained by a pose.
+constexpr double kFitDistance = 0.05;
+/// ICP that did not converge has not settled when less than this share of the scan is on the
+/// map (it never reached its tight stage) ...
+constexpr double kUnsettledOverlap = 0.5;
+/// ... or its residual RMS is more than this times the median of the recent registrations.
+constexpr double kUnsettledResidualRatio = 2.0;
 /// The covariance with every eigenvalue clamped to [lo, hi] (per eigen-direction of position
 /// and heading together; position and heading are in different units, but ICP's covariance is
 /// nearly block-diagonal, so this clamps each block).
@@ -49,6 +55,8 @@ ScanRegistration::ScanRegistration(const GraphSlamOptions& options,
     icpOptions_.maxDistance = options.icpMaxDistance;
     icpOptions_.robustScale = options.icpRobustScale;
     icpOptions_.stride = options.icpStride;
+    icpOptions_.minMapViews = static_cast<std::uint32_t>(options.icpMinViews);
+    icpOptions_.maxIncidence = options.icpMaxIncidence;
     icpOptions_.translationTolerance = 1e-4;
     icpOptions_.rotationTolerance = 1e-5;
 }
@@ -102,6 +110,13 @@ bool ScanRegistration::tryIcp(const matching::PolarScan& scan, const CPose2D& se
          std::abs(correction.y()) <= options_.maxLateralCorrection);
     if (best.overlap < options_.minInlierRatio || !plausible)
         return false;
+    // Not settled: no convergence, and little of the scan on the map or a residual well above
+    // the recent ones (a start too far off for ICP's basin, typically the heading).
+    const double typical = typicalResidual();
+    icpUnsettled_ = !best.icp.converged &&
+                    (best.overlap < kUnsettledOverlap ||
+                     (typical > 0 && best.icp.residualRms > kUnsettledResidualRatio * typical));
+    recentResiduals_[residualCount_++ % recentResiduals_.size()] = best.icp.residualRms;
     out.method = RegistrationMethod::Icp;
     out.reference = prediction.submap->anchor();
     out.pose = best.robot;
@@ -110,6 +125,60 @@ bool ScanRegistration::tryIcp(const matching::PolarScan& scan, const CPose2D& se
     out.covariance = edgeCovariance(best.icp.covariance, prediction.distanceFromLastKeyframe,
                                     prediction.turnFromLastKeyframe);
     return true;
+}
+
+void ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPose2D& sensorOnRobot,
+                                     const Prediction& prediction, const Registration* matched,
+                                     Registration& icp) {
+    const Submap& submap = *prediction.submap;
+    std::array<CPose2D, 5> starts;
+    std::size_t count = 0;
+    if (matched) {
+        // The matcher's pose is in its keyframe's frame; the keyframe in the submap's frame is
+        // the prediction less the motion predicted since that keyframe.
+        const CPose2D keyframeInSubmap = prediction.inSubmap + (-prediction.fromLastKeyframe);
+        starts[count++] = keyframeInSubmap + matched->pose;
+    }
+    if (options_.secondOpinionTurn > 0) {
+        for (const double k : {-2.0, -1.0, 1.0, 2.0})
+            starts[count++] = prediction.inSubmap + CPose2D(0, 0, k * options_.secondOpinionTurn);
+    }
+    const auto onMap = [&](const CPose2D& robot) {
+        return matching::PointToLineIcp::countOnMap(submap.map(), scan, robot + sensorOnRobot,
+                                                    kFitDistance);
+    };
+    // A clear margin: along a corridor a shifted start explains nearly as much as the right one.
+    std::size_t bestOn =
+        onMap(icp.pose) + std::size_t(options_.secondOpinionMargin * double(scan.validCount()));
+    std::optional<IcpAttempt> best;
+    for (std::size_t i = 0; i < count; ++i) {
+        IcpAttempt alt = icpFrom(scan, sensorOnRobot, submap, starts[i]);
+        const std::size_t altOn = onMap(alt.robot);
+        if (altOn <= bestOn || (!prediction.odometryJumped &&
+                                beyondOdometryJump(options_, alt.robot - prediction.inSubmap))) {
+            continue;
+        }
+        bestOn = altOn;
+        best = alt;
+    }
+    if (!best)
+        return;
+    icp.pose = best->robot;
+    icp.overlap = best->overlap;
+    icp.rawCovariance = best->icp.covariance;
+    icp.covariance = edgeCovariance(best->icp.covariance, prediction.distanceFromLastKeyframe,
+                                    prediction.turnFromLastKeyframe);
+    icp.secondStart = true;
+}
+
+double ScanRegistration::typicalResidual() const {
+    constexpr std::size_t kMinCount = 20;
+    if (residualCount_ < kMinCount)
+        return 0;
+    std::array<double, 101> sorted = recentResiduals_;
+    const std::size_t n = std::min(residualCount_, sorted.size());
+    std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.begin() + n);
+    return sorted[n / 2];
 }
 
 bool ScanRegistration::tryGraphMatcher(const matching::PolarScan& scan,

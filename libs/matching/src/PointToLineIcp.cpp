@@ -169,7 +169,7 @@ IcpResult PointToLineIcp::twoStageRefine(const PolarScan& current,
             const mrpt::math::TPoint2D& p = current.point(i);
             const double rx = c * p.x - s * p.y, ry = s * p.x + c * p.y;
             double nx, ny, r;
-            if (correspond(rx + x, ry + y, gate2, nx, ny, r))
+            if (correspond(rx + x, ry + y, x, y, gate2, tightened, nx, ny, r))
                 acc.add(nx, ny, r, rx, ry, c2);
         }
         out.iterations = it + 1;
@@ -200,8 +200,8 @@ IcpResult PointToLineIcp::refineOnScan(const PolarScan& reference, const PolarSc
     if (lines_.size() != reference.size())
         prepareReference(reference);  // never prepared
     // The local line of the nearest reference point among the beams around q's bearing.
-    const auto correspond = [&](double qx, double qy, double gate2, double& nx, double& ny,
-                                double& r) {
+    const auto correspond = [&](double qx, double qy, double /*sensorX*/, double /*sensorY*/,
+                                double gate2, bool /*tight*/, double& nx, double& ny, double& r) {
         const long b = reference.beamAtPoint(qx, qy);
         if (b < 0)
             return false;
@@ -228,11 +228,21 @@ IcpResult PointToLineIcp::refineOnScan(const PolarScan& reference, const PolarSc
 IcpResult PointToLineIcp::refineOnMap(const LineMap& map, const PolarScan& current,
                                       const mrpt::poses::CPose2D& initial,
                                       const IcpOptions& options) {
-    // The local line of the map point nearest to q (O(1) lookup).
-    const auto correspond = [&](double qx, double qy, double gate2, double& nx, double& ny,
-                                double& r) {
+    // The local line of the map point nearest to q (O(1) lookup), if the sensor can see that
+    // surface from where it is and, in the wide-gate stage, the map point is confirmed.
+    const std::uint32_t minViews = std::min(options.minMapViews, map.scans());
+    const bool checkFacing = options.maxIncidence < M_PI;
+    const double minFacing = std::cos(options.maxIncidence);
+    const double minFacing2 = minFacing * std::abs(minFacing);
+    const auto correspond = [&](double qx, double qy, double sensorX, double sensorY, double gate2,
+                                bool tight, double& nx, double& ny, double& r) {
         const LineMapPoint* m = map.nearest(qx, qy);
-        if (!m)
+        if (!m || (!tight && m->views < minViews))
+            return false;
+        // cos(incidence) = n . v / |v| with v towards the sensor, compared without a root.
+        const double vx = sensorX - m->x, vy = sensorY - m->y;
+        const double facing = m->nx * vx + m->ny * vy;
+        if (checkFacing && facing * std::abs(facing) < minFacing2 * (vx * vx + vy * vy))
             return false;
         const double dx = qx - m->x, dy = qy - m->y;
         if (dx * dx + dy * dy > gate2)
@@ -242,6 +252,21 @@ IcpResult PointToLineIcp::refineOnMap(const LineMap& map, const PolarScan& curre
     };
     return twoStageRefine(current, initial, options,
                           std::min(options.maxDistance, map.options().radius), correspond);
+}
+
+std::size_t PointToLineIcp::countOnMap(const LineMap& map, const PolarScan& current,
+                                       const mrpt::poses::CPose2D& pose, double distance) {
+    const double c = std::cos(pose.phi()), s = std::sin(pose.phi());
+    std::size_t on = 0;
+    for (std::size_t i = 0; i < current.size(); ++i) {
+        if (!current.valid(i))
+            continue;
+        const mrpt::math::TPoint2D& p = current.point(i);
+        const double qx = pose.x() + c * p.x - s * p.y, qy = pose.y() + s * p.x + c * p.y;
+        const LineMapPoint* m = map.nearest(qx, qy);
+        on += m && std::abs(m->nx * (qx - m->x) + m->ny * (qy - m->y)) <= distance;
+    }
+    return on;
 }
 
 void PointToLineIcp::finish(IcpResult& out, const Accumulator& acc,

@@ -4,6 +4,7 @@
 // (keys ending in _deg), radians in code. Loading is strict (config/Options.h).
 #include <toposlam/config/Options.h>
 
+#include <cmath>
 #include <cstddef>
 #include <string>
 
@@ -21,7 +22,9 @@ struct GraphSlamOptions : public config::Options {
     std::size_t submapKeyframes = 20;
     double mapResolution = 0.05;    ///< m, lookup cells of the submaps' line maps
     double mapFuseDistance = 0.05;  ///< m, observations this close to a map point are fused
-    double mapMaxRange = 20;        ///< m, farther readings are not put into submaps...
+    /// m: a map point counts one more view when another keyframe puts a reading this close.
+    double mapConfirmDistance = 0.1;
+    double mapMaxRange = 20;  ///< m, farther readings are not put into submaps...
     /// ... unless more than this share of a scan's valid readings lie farther: then all of
     /// them (an open hall, a long-range laser; MapRange.h).
     double mapFarShare = 0.1;
@@ -31,6 +34,23 @@ struct GraphSlamOptions : public config::Options {
     double icpMaxDistance = 0.4;   ///< m, association gate of the first stage
     double icpRobustScale = 0.05;  ///< m, Cauchy kernel scale
     std::size_t icpStride = 2;     ///< every stride-th point in the first stage
+    /// ICP's first stage matches only submap points seen from this many keyframes (1 = all):
+    /// a person walking along with the robot is somewhere else in every keyframe, a wall is not.
+    /// Opt-in: walls new to the last keyframe drop out of that stage too. This and the next
+    /// two rules are the "crowded places" settings of config_ini/toposlam-slam.ini.
+    std::size_t icpMinViews = 1;
+    /// rad: submap points whose surface faces the scan's sensor at a larger incidence are not
+    /// matched (the faces of a rough wall that looked back along a corridor; 90 deg and more:
+    /// surfaces seen from behind).
+    double icpMaxIncidence = M_PI;  ///< 180 deg = off (80 deg for crowded places, see the ini)
+    /// When ICP has not settled (no convergence, and little of the scan on the map or a residual
+    /// well above the recent ones), also start it from the graph matcher's answer and from the
+    /// prediction turned by +-1 and +-2 second_opinion_turn; the start that puts at least
+    /// secondOpinionMargin more of the scan's readings on the submap replaces it (an odometry
+    /// heading off by 10-15 deg in one fast-turning step, seen on mit-csail).
+    bool secondOpinion = false;  ///< off by default, see the ini
+    double secondOpinionMargin = 0.25;
+    double secondOpinionTurn = 0.15;  ///< rad (8.6 deg)
     /// A registration is good when at least this share of the scan's valid points ends on
     /// the local map...
     double minInlierRatio = 0.35;

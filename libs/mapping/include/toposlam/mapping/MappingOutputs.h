@@ -26,9 +26,9 @@ std::string formatSummary(const MappingResult& result);
 
 /// The summary as JSON: engine, scans, log_duration_s, wall_s, cpu_s, real_time_factor,
 /// wall_alignment_deg; graph engine also keyframes, submaps, registration {icp,
-/// graph_matcher, failed, odometry_jumps, registered_share}, loops {candidates, accepted,
-/// guess_free_accepted, contested_accepted, unmatched, rejected, withdrawn}, cpu_by_stage_s
-/// {front_end, loop_search, loop_search_on_workers, optimization}, optimizations,
+/// icp_second_start, graph_matcher, failed, odometry_jumps, registered_share}, loops {candidates,
+/// accepted, guess_free_accepted, contested_accepted, unmatched, rejected, withdrawn},
+/// cpu_by_stage_s {front_end, loop_search, loop_search_on_workers, optimization}, optimizations,
 /// mostly_unregistered, weak_front_end.
 nlohmann::json summaryJson(const MappingResult& result);
 

@@ -3,7 +3,11 @@
 //  1. point-to-line ICP of the scan against the local submap's line map, from the odometry
 //     prediction (PointToLineIcp::refineOnMap); good when enough of the scan lands on the map
 //     and the correction of the prediction is plausible. After an odometry jump the
-//     prediction is the last scan's motion instead, and this step is skipped;
+//     prediction is the last scan's motion instead, and this step is skipped.
+//     When ICP has not settled (no convergence, and under half of the scan on the map or a
+//     residual over twice the recent median), it is run again from the graph matcher's answer
+//     and from the prediction turned either way, and the start that explains clearly more of
+//     the scan wins (an odometry heading off by 10-15 deg in one step of a fast turn);
 //  2. otherwise (poor overlap, a correction too large to trust, or an odometry jump) the graph
 //     matcher against the last keyframe, from the prediction and, failing that, guess-free;
 //  3. if both fail, the odometry prediction, with the odometry model's covariance.
@@ -18,6 +22,7 @@
 #include <toposlam/matching/GraphScanMatcher.h>
 #include <toposlam/matching/PointToLineIcp.h>
 
+#include <array>
 #include <cstddef>
 #include <optional>
 
@@ -35,6 +40,8 @@ struct Registration {
     /// The matcher's own covariance, before that (ICP and graph matcher).
     mrpt::math::CMatrixDouble33 rawCovariance;
     double overlap = 0;  ///< share of the scan's valid points on the map (ICP), else 0
+    /// ICP, from a second start (ScanRegistration's second opinion) that fits better.
+    bool secondStart = false;
 };
 
 /// True when `motion` goes farther than options.odometryJumpDistance or turns more than
@@ -87,7 +94,22 @@ class ScanRegistration {
                          const Prediction& prediction, const features::ScanFeatures& features,
                          Registration& out);
 
+    /// ICP from `prediction` ended in `icp` without settling: ICP again from the graph
+    /// matcher's answer `matched` (when it has one) and from the prediction turned by +-1 and
+    /// +-2 second_opinion_turn; the end that puts at least second_opinion_margin more of the
+    /// scan's readings on the submap than `icp` replaces it.
+    void secondOpinion(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
+                       const Prediction& prediction, const Registration* matched,
+                       Registration& icp);
+    /// Median residual RMS of the last accepted ICP registrations (m; 0 before there are
+    /// enough): the scale of "a residual well above the recent ones" for this laser and place.
+    double typicalResidual() const;
+
     const GraphSlamOptions& options_;
+    /// Residual RMS of the last accepted ICP registrations (m), a ring.
+    std::array<double, 101> recentResiduals_{};
+    std::size_t residualCount_ = 0;
+    bool icpUnsettled_ = false;  ///< the last ICP registration tryIcp accepted had not settled
     matching::PointToLineIcp icp_;
     matching::IcpOptions icpOptions_;
     matching::GraphScanMatcher matcher_;
@@ -100,8 +122,15 @@ Registration ScanRegistration::registerScan(const matching::PolarScan& scan,
                                             ExtractFeatures&& extractFeatures,
                                             features::ScanFeatures& features) {
     Registration out;
-    if (!prediction.odometryJumped && tryIcp(scan, sensorOnRobot, prediction, out))
+    if (!prediction.odometryJumped && tryIcp(scan, sensorOnRobot, prediction, out)) {
+        if (icpUnsettled_ && options_.secondOpinion && prediction.lastKeyframe) {
+            extractFeatures(features);
+            Registration matched;
+            const bool found = tryGraphMatcher(scan, sensorOnRobot, prediction, features, matched);
+            secondOpinion(scan, sensorOnRobot, prediction, found ? &matched : nullptr, out);
+        }
         return out;
+    }
     if (prediction.lastKeyframe) {
         extractFeatures(features);
         if (tryGraphMatcher(scan, sensorOnRobot, prediction, features, out))

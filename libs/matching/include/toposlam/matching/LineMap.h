@@ -24,6 +24,11 @@ struct LineMapPoint {
     float x = 0, y = 0;    ///< m, map frame
     float nx = 0, ny = 0;  ///< unit normal, towards the sensors that saw it
     float weight = 0;      ///< observations fused into it
+    /// Scans that saw a surface here (LineMapOptions::confirmDistance; one scan counts once): a
+    /// wall has one from every pose that had it in view; a person walking along with the robot
+    /// is somewhere else in every scan, so its points keep one.
+    std::uint32_t views = 1;
+    std::uint32_t lastScan = 0;  ///< the insertScan / insertSurface call that last saw it
 };
 
 /// A reading with the normal of its local line, in the sensor frame of its scan (m): what a
@@ -39,6 +44,9 @@ struct LineMapOptions {
     /// m: a new observation within this distance of a map point with a similar normal is
     /// fused into it instead of added.
     double fuseDistance = 0.05;
+    /// m: a point counts one more view (LineMapPoint::views) when a point of another scan
+    /// lands this close to it, fused or not (a door frame seen from two poses a few cm apart).
+    double confirmDistance = 0.1;
     double maxRange = 20.0;        ///< m, farther readings are not inserted
     double maxJoinDistance = 0.3;  ///< m, fitLocalLine's jump distance
 };
@@ -77,6 +85,8 @@ class LineMap {
     }
 
     std::size_t size() const { return points_.size(); }
+    /// insertScan / insertSurface calls since the map was made or cleared.
+    std::uint32_t scans() const { return scans_; }
     /// Lookup cells in use (whole tiles near map points): the grid's memory is this times 8 B.
     std::size_t lookupCells() const { return tilesUsed_ * kTileCells; }
     const std::vector<LineMapPoint>& points() const { return points_; }
@@ -115,6 +125,7 @@ class LineMap {
     long firstCellX_ = 0, firstCellY_ = 0;
     double inverseResolution_ = 20;
     long stampRadius_ = 8;  ///< radius in cells
+    std::uint32_t scans_ = 0;
 };
 
 /// The readings of `scan` within options.maxRange that have a local line (fitLocalLine with

@@ -31,6 +31,7 @@
 #include <toposlam/matching/LocalLine.h>
 #include <toposlam/matching/PolarScan.h>
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -56,6 +57,16 @@ struct IcpOptions {
     /// of the largest: nearly parallel lines fix nothing along themselves, and a plain
     /// Gauss-Newton step there is noise amplified, sliding the pose down a corridor.
     double minEigenRatio = 1e-2;
+    /// Map mode, wide-gate stage: only map points seen from at least this many scans
+    /// (LineMapPoint::views; at most as many as the map holds) are associated; the tight stage
+    /// takes them all. A person walking along with the robot stays a step ahead of it, and
+    /// the places it stood in earlier scans pull a registration back by that step. 1 = all.
+    std::uint32_t minMapViews = 1;
+    /// Map mode: a map point is associated only when its surface faces the sensor at an
+    /// incidence below this (rad; angle between its normal and the direction to the sensor).
+    /// A rough wall seen from down a corridor keeps the normals of the faces that looked back
+    /// along it; passing beside them, a reading on the wall must not be held by them. pi = all.
+    double maxIncidence = M_PI;
 
     /// Its .ini keys (GraphScanMatcher.h gives them a prefix).
     void declare(config::OptionsSchema& s);
@@ -98,11 +109,18 @@ class PointToLineIcp {
     IcpResult refineOnMap(const LineMap& map, const PolarScan& current,
                           const mrpt::poses::CPose2D& initial, const IcpOptions& options = {});
 
+    /// Map mode: how many valid points of `current`, at SENSOR pose `pose` in the map frame, lie
+    /// within `distance` (m) of the local line of their nearest map point (any point within the
+    /// map's radius): how much of the scan a pose explains, comparable between poses.
+    static std::size_t countOnMap(const LineMap& map, const PolarScan& current,
+                                  const mrpt::poses::CPose2D& pose, double distance);
+
   private:
     struct Accumulator;
-    /// The two stages of scan and map mode around `correspond(qx, qy, gate2, nx, ny, r)`,
-    /// which finds the line for the current point moved to the world point q and its residual,
-    /// false when there is none within the squared gate (PointToLineIcp.cpp).
+    /// The two stages of scan and map mode around
+    /// `correspond(qx, qy, sensorX, sensorY, gate2, tight, nx, ny, r)`, which finds the line for
+    /// the current point moved to the world point q (the sensor at (sensorX, sensorY)) and its
+    /// residual, false when there is none within the squared gate; `tight`: second stage.
     template <typename Correspond>
     IcpResult twoStageRefine(const PolarScan& current, const mrpt::poses::CPose2D& initial,
                              const IcpOptions& options, double gate, Correspond&& correspond) const;

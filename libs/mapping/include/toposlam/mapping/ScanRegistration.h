@@ -4,10 +4,11 @@
 //     prediction (PointToLineIcp::refineOnMap); good when enough of the scan lands on the map
 //     and the correction of the prediction is plausible. After an odometry jump the
 //     prediction is the last scan's motion instead, and this step is skipped.
-//     When ICP has not settled (no convergence, and under half of the scan on the map or a
-//     residual over twice the recent median), it is run again from the graph matcher's answer
-//     and from the prediction turned either way, and the start that explains clearly more of
-//     the scan wins (an odometry heading off by 10-15 deg in one step of a fast turn);
+//     With second_opinion on (off by default), when ICP has not settled (no convergence, and
+//     under half of the scan on the map or a residual over twice the recent median), it is
+//     run again from the graph matcher's answer and from the prediction turned either way,
+//     and the start that explains clearly more of the scan wins (an odometry heading off by
+//     10-15 deg in one step of a fast turn);
 //  2. otherwise (poor overlap, a correction too large to trust, or an odometry jump) the graph
 //     matcher against the last keyframe, from the prediction and, failing that, guess-free;
 //  3. if both fail, the odometry prediction, with the odometry model's covariance.

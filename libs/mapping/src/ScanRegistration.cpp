@@ -110,13 +110,15 @@ bool ScanRegistration::tryIcp(const matching::PolarScan& scan, const CPose2D& se
          std::abs(correction.y()) <= options_.maxLateralCorrection);
     if (best.overlap < options_.minInlierRatio || !plausible)
         return false;
-    // Not settled: no convergence, and little of the scan on the map or a residual well above
-    // the recent ones (a start too far off for ICP's basin, typically the heading).
-    const double typical = typicalResidual();
-    icpUnsettled_ = !best.icp.converged &&
-                    (best.overlap < kUnsettledOverlap ||
-                     (typical > 0 && best.icp.residualRms > kUnsettledResidualRatio * typical));
-    recentResiduals_[residualCount_++ % recentResiduals_.size()] = best.icp.residualRms;
+    if (options_.secondOpinion) {
+        // Not settled: no convergence, and little of the scan on the map or a residual well
+        // above the recent ones (a start too far off for ICP's basin, typically the heading).
+        const double typical = typicalResidual();
+        icpUnsettled_ = !best.icp.converged &&
+                        (best.overlap < kUnsettledOverlap ||
+                         (typical > 0 && best.icp.residualRms > kUnsettledResidualRatio * typical));
+        recentResiduals_[residualCount_++ % recentResiduals_.size()] = best.icp.residualRms;
+    }
     out.method = RegistrationMethod::Icp;
     out.reference = prediction.submap->anchor();
     out.pose = best.robot;

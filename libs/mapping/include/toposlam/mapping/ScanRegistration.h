@@ -124,7 +124,7 @@ Registration ScanRegistration::registerScan(const matching::PolarScan& scan,
                                             features::ScanFeatures& features) {
     Registration out;
     if (!prediction.odometryJumped && tryIcp(scan, sensorOnRobot, prediction, out)) {
-        if (icpUnsettled_ && options_.secondOpinion && prediction.lastKeyframe) {
+        if (icpUnsettled_ && prediction.lastKeyframe) {  // set only with second_opinion on
             extractFeatures(features);
             Registration matched;
             const bool found = tryGraphMatcher(scan, sensorOnRobot, prediction, features, matched);

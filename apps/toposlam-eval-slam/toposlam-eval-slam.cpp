@@ -121,6 +121,14 @@ int run(int argc, char** argv) {
         "trajectory pose (nearest one wins). Default 1e-5 s",
         evaluation::StampedPoseLookup::kDefaultTolerance,
         cli::NumberRange<double>::nonNegative(3600), "seconds", cmd);
+    TCLAP::ValueArg<std::string> mountingFrom(
+        "", "mounting-from",
+        "Also estimate where each trajectory's poses sit on the robot (x, y, yaw of the mounting, "
+        "and the odometry's scale) from this log's odometry: planar hand-eye calibration over "
+        "pairs of poses 5 apart that turn by 3 deg or more. The odometry's own frame gives 0, "
+        "0, 0; a SLAM trajectory of laser poses gives the laser's mounting, e.g. to check "
+        "--frame-offset or toposlam-convert --laser-offset",
+        false, "", "log", cmd);
     cli::NumberArg<double> frameOffset(
         "", "frame-offset",
         "Score the frame this many metres ahead of each estimated pose (along its heading; "
@@ -170,6 +178,7 @@ int run(int argc, char** argv) {
     request.groundTruthSeparation = separation.getValue();
     request.stampTolerance = tolerance.getValue();
     request.frameOffset = frameOffset.getValue();
+    request.mountingLog = mountingFrom.getValue();
     request.worstRelations = static_cast<std::size_t>(worst.getValue());
     request.rawlog = rawlog.getValue();
     request.scanStamps = scanStamps.getValue();

@@ -4,6 +4,7 @@
 #include <toposlam/io/JsonFile.h>
 #include <toposlam/io/LaserLogReader.h>
 #include <toposlam/io/RawlogWriter.h>
+#include <toposlam/io/Trajectory.h>
 
 #include <TestSupport.h>
 
@@ -46,10 +47,10 @@ struct Fixture {
 TEST(EvalSlamApp, HelpExplainsEveryOption) {
     const auto r = runApp("toposlam-eval-slam", "--help");
     EXPECT_EQ(r.exitCode, 0) << r.output;
-    for (const char* option :
-         {"--relations", "--ground-truth", "--trajectory", "--icp-slam-path", "--rawlog",
-          "--scan-stamps", "--json", "--name", "--gt-separation", "--stamp-tolerance",
-          "--write-relations", "--plot", "--frame-offset", "--worst", "Kuemmerle"}) {
+    for (const char* option : {"--relations", "--ground-truth", "--trajectory", "--icp-slam-path",
+                               "--rawlog", "--scan-stamps", "--json", "--name", "--gt-separation",
+                               "--stamp-tolerance", "--write-relations", "--plot", "--frame-offset",
+                               "--worst", "--mounting-from", "Kuemmerle"}) {
         EXPECT_TRUE(contains(r.output, option)) << option;
     }
 }
@@ -300,4 +301,37 @@ TEST(EvalSlamApp, BundledSimulatedOfficeLogScoresAgainstItsGroundTruth) {
     EXPECT_EQ(odometry.at("ate").at("matched_poses"),
               json.at("reference").at("ground_truth_poses"));
     EXPECT_FALSE(contains(r.output, "| 0.0000 ± 0.0000 |")) << "odometry drift is not zero";
+}
+
+TEST(EvalSlamApp, MountingFromTheOdometryFindsWhereThePosesSitOnTheRobot) {
+    // The bundled office: its ground truth gives the robot's poses, so against the log's
+    // odometry they sit at the robot's origin; the same poses moved 0.2 m ahead, as a laser
+    // mounted there would give them, sit 0.2 m ahead. The odometry drifts (simulated noise), so
+    // both within 1 cm.
+    const std::string office = toposlam::test::shareDir() + "/office/";
+    TempDir dir;
+    std::string ahead;
+    for (const auto& p : toposlam::io::loadTrajectory(office + "office_gt.txt")) {
+        ahead += std::to_string(p.stamp) + " " +
+                 std::to_string(p.pose.x + 0.2 * std::cos(p.pose.phi)) + " " +
+                 std::to_string(p.pose.y + 0.2 * std::sin(p.pose.phi)) + " " +
+                 std::to_string(p.pose.phi) + "\n";
+    }
+    write(dir, "ahead.txt", ahead);
+    const auto r =
+        runApp("toposlam-eval-slam",
+               "--ground-truth " + office + "office_gt.txt --trajectory truth=" + office +
+                   "office_gt.txt --trajectory ahead=" + dir.file("ahead.txt") +
+                   " --stamp-tolerance 1e-4 --mounting-from " + office + "office.rawlog --json " +
+                   dir.file("m.json"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(contains(r.output, "Where each trajectory's poses sit on the robot")) << r.output;
+    const auto json = toposlam::io::loadJsonFile(dir.file("m.json"));
+    const auto& truth = json.at("methods").at(0).at("mounting");
+    const auto& moved = json.at("methods").at(1).at("mounting");
+    EXPECT_NEAR(truth.at("x").get<double>(), 0.0, 0.01) << r.output;
+    EXPECT_NEAR(truth.at("y").get<double>(), 0.0, 0.01) << r.output;
+    EXPECT_NEAR(moved.at("x").get<double>(), 0.2, 0.01) << r.output;
+    EXPECT_NEAR(moved.at("y").get<double>(), 0.0, 0.01) << r.output;
+    EXPECT_GT(moved.at("pairs").get<int>(), 20) << r.output;
 }

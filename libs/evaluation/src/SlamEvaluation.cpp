@@ -111,6 +111,30 @@ void appendBreakdownTable(std::ostringstream& out, const std::string& title,
     }
 }
 
+// Where each method's poses sit on the robot, as the odometry of ev.mountingLog sees it.
+void appendMountingTable(std::ostringstream& out, const SlamEvaluation& ev) {
+    if (ev.mountingLog.empty())
+        return;
+    out << "\nWhere each trajectory's poses sit on the robot, from the odometry of "
+        << ev.mountingLog
+        << " (planar hand-eye calibration over pairs of poses that turn; robot (+) mounting = "
+           "pose; x forward, y left; 0 m, 0 m, 0° = the odometry's own frame):\n\n"
+           "| method | x (m) | y (m) | yaw (deg) | odometry scale | turning pairs | residual "
+           "RMS (m) |\n|---|---|---|---|---|---|---|\n";
+    for (const MethodEvaluation& m : ev.methods) {
+        out << "| " << m.name << " | ";
+        if (!m.mounting) {
+            out << "– | – | – | – | too few | – |\n";
+            continue;
+        }
+        const SensorMounting& k = *m.mounting;
+        out << formatFixed(k.mounting.x, 4) << " ± " << formatFixed(k.stdX, 4) << " | "
+            << formatFixed(k.mounting.y, 4) << " ± " << formatFixed(k.stdY, 4) << " | "
+            << formatFixed(k.mounting.phi * 180.0 / M_PI, 2) << " | "
+            << formatFixed(k.odometryScale, 4) << " | " << k.pairs << " | "
+            << formatFixed(k.residualRms, 4) << " |\n";
+    }
+}
 }  // namespace
 
 std::string formatEvaluationTable(const SlamEvaluation& ev) {
@@ -181,6 +205,7 @@ std::string formatEvaluationTable(const SlamEvaluation& ev) {
             return s.separation == 0 ? std::string("consecutive")
                                      : formatFixed(s.separation, 2) + " m";
         });
+    appendMountingTable(out, ev);
     out << formatWorstRelations(ev);
     return out.str();
 }
@@ -257,6 +282,17 @@ io::Json methodJson(const MethodEvaluation& m) {
         }
         out["by_separation"] = scales;
     }
+    if (m.mounting) {
+        const SensorMounting& k = *m.mounting;
+        out["mounting"] = {{"x", jsonNumber(k.mounting.x)},
+                           {"y", jsonNumber(k.mounting.y)},
+                           {"yaw_deg", jsonNumber(k.mounting.phi * 180.0 / M_PI)},
+                           {"x_std", jsonNumber(k.stdX)},
+                           {"y_std", jsonNumber(k.stdY)},
+                           {"odometry_scale", jsonNumber(k.odometryScale)},
+                           {"pairs", k.pairs},
+                           {"residual_rms_m", jsonNumber(k.residualRms)}};
+    }
     if (!m.worst.empty()) {
         const auto motion = [](const mrpt::math::TPose2D& p) {
             return io::Json{{"x", jsonNumber(p.x)},
@@ -292,6 +328,7 @@ std::string formatEvaluationJson(const SlamEvaluation& ev) {
          {"reference", referenceJson(ev)},
          {"stamp_tolerance_s", jsonNumber(ev.stampTolerance)},
          {"frame_offset_m", jsonNumber(ev.frameOffset)},
+         {"mounting_log", ev.mountingLog},
          {"methods", methods}});
 }
 

@@ -125,11 +125,17 @@ SlamEvaluationRun runSlamEvaluation(const SlamEvaluationRequest& request,
     const auto logs = static_cast<std::size_t>(
         std::count_if(request.trajectories.begin(), request.trajectories.end(),
                       [](const auto& t) { return t.source == TrajectorySource::LogOdometry; }) +
-        (request.scanStamps.empty() ? 0 : 1));
+        (request.scanStamps.empty() ? 0 : 1) + (request.mountingLog.empty() ? 0 : 1));
     LogsProgress logsProgress(progress, logs);
     std::optional<std::vector<double>> stamps;
     if (!request.scanStamps.empty()) {
         stamps = scanFileStamps(request.scanStamps, logsProgress.nextLog());
+        logsProgress.logDone();
+    }
+    std::optional<io::Trajectory2D> mountingOdometry;
+    if (!request.mountingLog.empty()) {
+        ev.mountingLog = request.mountingLog;
+        mountingOdometry = odometryAtScans(request.mountingLog, logsProgress.nextLog());
         logsProgress.logDone();
     }
     const io::Trajectory2D* groundTruth = run.groundTruth ? &*run.groundTruth : nullptr;
@@ -139,6 +145,9 @@ SlamEvaluationRun runSlamEvaluation(const SlamEvaluationRequest& request,
             readTrajectory(t, request, stamps ? &*stamps : nullptr, logsProgress, source);
         if (estimate.empty())
             throw io::InputError(t.file, "no pose in the trajectory");
+        std::optional<SensorMounting> mounting;
+        if (mountingOdometry)
+            mounting = estimateSensorMounting(*mountingOdometry, estimate, ev.stampTolerance);
         for (io::TimedPose2D& p : estimate) {  // the frame the relations were made in
             p.pose.x += request.frameOffset * std::cos(p.pose.phi);
             p.pose.y += request.frameOffset * std::sin(p.pose.phi);
@@ -151,6 +160,7 @@ SlamEvaluationRun runSlamEvaluation(const SlamEvaluationRequest& request,
             throw io::InputError(t.file, e.what());
         }
         MethodEvaluation& m = ev.methods.back();
+        m.mounting = mounting;
         m.worst = worstRelations(m.relative, run.relations, request.worstRelations);
         if (m.relative.matchedRelations == 0) {
             throw io::InputError(t.file,

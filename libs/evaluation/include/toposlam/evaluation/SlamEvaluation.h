@@ -6,6 +6,7 @@
 #include <toposlam/evaluation/GroundTruthRelations.h>
 #include <toposlam/evaluation/RelationFile.h>
 #include <toposlam/evaluation/RelativePoseError.h>
+#include <toposlam/evaluation/SensorMounting.h>
 #include <toposlam/evaluation/WorstRelations.h>
 #include <toposlam/io/Trajectory.h>
 
@@ -51,6 +52,9 @@ struct MethodEvaluation {
     std::vector<TurnErrors> byTurn;
     /// Its worst relations, when asked for (SlamEvaluationRequest::worstRelations).
     std::vector<WorstRelation> worst;
+    /// Where its poses sit on the robot as the odometry sees it, when asked for
+    /// (SlamEvaluationRequest::mountingLog) and enough of its motion turns (SensorMounting.h).
+    std::optional<SensorMounting> mounting;
 };
 
 struct SlamEvaluation {
@@ -68,6 +72,8 @@ struct SlamEvaluation {
     std::vector<double> relationSeparations;
     double stampTolerance = StampedPoseLookup::kDefaultTolerance;
     double frameOffset = 0;  ///< m ahead of each estimated pose: the frame scored
+    /// The log whose odometry each method's mounting was estimated against ("": not asked).
+    std::string mountingLog;
     std::vector<MethodEvaluation> methods;
 };
 
@@ -81,8 +87,9 @@ MethodEvaluation evaluateMethod(const std::string& name, const std::string& sour
 
 /// A Markdown table (readable in a terminal, pasteable into a README), one row per method,
 /// preceded by a line that names the reference; then the translational error by the
-/// relations' turn and, with a ground-truth reference, by relation separation; then each
-/// method's worst relations, if any (formatWorstRelations).
+/// relations' turn and, with a ground-truth reference, by relation separation; then the
+/// estimated sensor mountings, if asked for; then each method's worst relations, if any
+/// (formatWorstRelations).
 std::string formatEvaluationTable(const SlamEvaluation& evaluation);
 
 /// The whole evaluation as a JSON document (keys: share/doc/apps.md).

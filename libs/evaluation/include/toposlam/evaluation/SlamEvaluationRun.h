@@ -46,6 +46,10 @@ struct SlamEvaluationRequest {
     /// poses as they are): for relations made in another frame on the robot than the one the
     /// trajectories give (a laser mounted off the robot's centre).
     double frameOffset = 0;
+    /// A log (CARMEN, rawlog) whose odometry each trajectory is
+    /// checked against: where on the robot its poses sit (SensorMounting.h; "": not asked).
+    /// Estimated on the poses as given, before frameOffset.
+    std::string mountingLog;
     /// List this many relations with the largest translational error per method (0: none).
     std::size_t worstRelations = 0;
 

@@ -147,6 +147,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     switch (r.method) {
         case RegistrationMethod::Icp:
             ++stats_.registeredByIcp;
+            stats_.icpUnsettled += r.unsettled;
             stats_.icpSecondStarts += r.secondStart;
             break;
         case RegistrationMethod::GraphMatcher:

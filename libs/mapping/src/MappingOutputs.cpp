@@ -70,11 +70,13 @@ std::string formatSummary(const MappingResult& r) {
                   r.smoothedScans ? "registration and odometry together"
                                   : "registration alone (smooth_scans off)");
         s += line(
-            "registration: %zu by ICP (%.1f %%; %zu from a second start), %zu by the graph "
+            "registration: %zu by ICP (%.1f %%; %zu unsettled, %zu of them from a second start), "
+            "%zu by the graph "
             "matcher (%.1f %%), %zu failed (%.1f %%, odometry kept); %zu odometry jumps",
-            st->registeredByIcp, percent(st->registeredByIcp, n), st->icpSecondStarts,
-            st->registeredByGraphMatcher, percent(st->registeredByGraphMatcher, n),
-            st->registrationFailed, percent(st->registrationFailed, n), st->odometryJumps);
+            st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
+            st->icpSecondStarts, st->registeredByGraphMatcher,
+            percent(st->registeredByGraphMatcher, n), st->registrationFailed,
+            percent(st->registrationFailed, n), st->odometryJumps);
         // A rule that is off says so, instead of a count that could not be anything but 0.
         const std::string guessFree =
             r.guessFreeSearch ? std::to_string(st->globalConfirmed) + " of them guess-free"
@@ -131,6 +133,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
         j["submaps"] = st->submaps;
         j["smoothed_scans"] = r.smoothedScans;
         j["registration"] = {{"icp", st->registeredByIcp},
+                             {"icp_unsettled", st->icpUnsettled},
                              {"icp_second_start", st->icpSecondStarts},
                              {"graph_matcher", st->registeredByGraphMatcher},
                              {"failed", st->registrationFailed},

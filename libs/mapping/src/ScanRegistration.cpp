@@ -15,10 +15,9 @@ using mrpt::poses::CPose2D;
 namespace {
 /// m: a reading this close to the submap's surface counts as explained by a pose.
 constexpr double kFitDistance = 0.05;
-/// ICP that did not converge has not settled when less than this share of the scan is on the
-/// map (it never reached its tight stage) ...
-constexpr double kUnsettledOverlap = 0.5;
-/// ... or its residual RMS is more than this times the median of the recent registrations.
+/// ICP that did not converge has not settled when its residual RMS is more than this times the
+/// median of the recent registrations. (Less than half of the scan on the map, tried as a
+/// second sign, flagged 5 % of intel's scans and never changed a result.)
 constexpr double kUnsettledResidualRatio = 2.0;
 /// The covariance with every eigenvalue clamped to [lo, hi] (per eigen-direction of position
 /// and heading together; position and heading are in different units, but ICP's covariance is
@@ -111,12 +110,11 @@ bool ScanRegistration::tryIcp(const matching::PolarScan& scan, const CPose2D& se
     if (best.overlap < options_.minInlierRatio || !plausible)
         return false;
     if (options_.secondOpinion) {
-        // Not settled: no convergence, and little of the scan on the map or a residual well
-        // above the recent ones (a start too far off for ICP's basin, typically the heading).
+        // Not settled: no convergence, and a residual well above the recent ones (a start too
+        // far off for ICP's basin, typically the heading).
         const double typical = typicalResidual();
-        icpUnsettled_ = !best.icp.converged &&
-                        (best.overlap < kUnsettledOverlap ||
-                         (typical > 0 && best.icp.residualRms > kUnsettledResidualRatio * typical));
+        icpUnsettled_ = !best.icp.converged && typical > 0 &&
+                        best.icp.residualRms > kUnsettledResidualRatio * typical;
         recentResiduals_[residualCount_++ % recentResiduals_.size()] = best.icp.residualRms;
     }
     out.method = RegistrationMethod::Icp;

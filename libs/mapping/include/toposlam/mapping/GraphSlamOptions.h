@@ -37,18 +37,18 @@ struct GraphSlamOptions : public config::Options {
     /// ICP's first stage matches only submap points seen from this many keyframes (1 = all):
     /// a person walking along with the robot is somewhere else in every keyframe, a wall is not.
     /// Opt-in: walls new to the last keyframe drop out of that stage too. This and the next
-    /// two rules are the "crowded places" settings of config_ini/toposlam-slam.ini.
+    /// rule are the "crowded places" settings of config_ini/toposlam-slam.ini.
     std::size_t icpMinViews = 1;
     /// rad: submap points whose surface faces the scan's sensor at a larger incidence are not
     /// matched (the faces of a rough wall that looked back along a corridor; 90 deg and more:
     /// surfaces seen from behind).
     double icpMaxIncidence = M_PI;  ///< 180 deg = off (80 deg for crowded places, see the ini)
-    /// When ICP has not settled (no convergence, and little of the scan on the map or a residual
-    /// well above the recent ones), also start it from the graph matcher's answer and from the
-    /// prediction turned by +-1 and +-2 second_opinion_turn; the start that puts at least
-    /// secondOpinionMargin more of the scan's readings on the submap replaces it (an odometry
-    /// heading off by 10-15 deg in one fast-turning step, seen on mit-csail).
-    bool secondOpinion = false;  ///< off by default, see the ini
+    /// When ICP has not settled (no convergence, and a residual well above the recent ones),
+    /// also start it from the graph matcher's answer and from the prediction turned by +-1 and
+    /// +-2 second_opinion_turn; the start that puts at least secondOpinionMargin more of the
+    /// scan's readings on the submap replaces it (an odometry heading off by 10-15 deg in one
+    /// fast-turning step, seen on mit-csail).
+    bool secondOpinion = true;
     double secondOpinionMargin = 0.25;
     double secondOpinionTurn = 0.15;  ///< rad (8.6 deg)
     /// A registration is good when at least this share of the scan's valid points ends on

@@ -4,11 +4,10 @@
 //     prediction (PointToLineIcp::refineOnMap); good when enough of the scan lands on the map
 //     and the correction of the prediction is plausible. After an odometry jump the
 //     prediction is the last scan's motion instead, and this step is skipped.
-//     With second_opinion on (off by default), when ICP has not settled (no convergence, and
-//     under half of the scan on the map or a residual over twice the recent median), it is
-//     run again from the graph matcher's answer and from the prediction turned either way,
-//     and the start that explains clearly more of the scan wins (an odometry heading off by
-//     10-15 deg in one step of a fast turn);
+//     With second_opinion on (the default), when ICP has not settled (no convergence, and a
+//     residual over twice the recent median), it is run again from the graph matcher's answer
+//     and from the prediction turned either way, and the start that explains clearly more of
+//     the scan wins (an odometry heading off by 10-15 deg in one step of a fast turn);
 //  2. otherwise (poor overlap, a correction too large to trust, or an odometry jump) the graph
 //     matcher against the last keyframe, from the prediction and, failing that, guess-free;
 //  3. if both fail, the odometry prediction, with the odometry model's covariance.
@@ -43,6 +42,8 @@ struct Registration {
     double overlap = 0;  ///< share of the scan's valid points on the map (ICP), else 0
     /// ICP, from a second start (ScanRegistration's second opinion) that fits better.
     bool secondStart = false;
+    /// ICP had not settled, so a second start was tried (second_opinion on).
+    bool unsettled = false;
 };
 
 /// True when `motion` goes farther than options.odometryJumpDistance or turns more than
@@ -125,6 +126,7 @@ Registration ScanRegistration::registerScan(const matching::PolarScan& scan,
     Registration out;
     if (!prediction.odometryJumped && tryIcp(scan, sensorOnRobot, prediction, out)) {
         if (icpUnsettled_ && prediction.lastKeyframe) {  // set only with second_opinion on
+            out.unsettled = true;
             extractFeatures(features);
             Registration matched;
             const bool found = tryGraphMatcher(scan, sensorOnRobot, prediction, features, matched);

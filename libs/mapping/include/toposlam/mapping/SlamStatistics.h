@@ -11,7 +11,9 @@ struct SlamStatistics {
     std::size_t submaps = 0;
     // Registration of each scan (the first scan is the origin and counts in none of them).
     std::size_t registeredByIcp = 0;  ///< point-to-line ICP against the local submap
-    std::size_t icpSecondStarts = 0;  ///< of those, from a second start (ScanRegistration.h)
+    /// Of those, not settled (ScanRegistration.h; with second_opinion on), and how many of
+    /// these a second start replaced.
+    std::size_t icpUnsettled = 0, icpSecondStarts = 0;
     std::size_t registeredByGraphMatcher = 0;  ///< ICP was poor; the graph matcher succeeded
     std::size_t registrationFailed = 0;        ///< both failed: odometry prediction kept
     std::size_t odometryJumps = 0;             ///< odometry increments rejected as jumps

@@ -207,6 +207,12 @@ TEST(EvalSlamApp, BadInputExitsNonZeroAndWritesNoJson) {
         {f.trajectory + " --relations " + badRelations, "line 2", 1},
         {nanTrajectory + " --relations " + f.relations, "nan.txt", 1},
         {f.dir.file("missing.txt") + " --relations " + f.relations, "missing.txt", 1},
+        // The log the mounting is checked against: missing, or not a laser log.
+        {f.trajectory + " --relations " + f.relations + " --mounting-from " +
+             f.dir.file("missing.clf"),
+         "missing.clf", 1},
+        {f.trajectory + " --relations " + f.relations + " --mounting-from " + badRelations,
+         "not a CARMEN log", 1},
         // Nothing measured is not a result: stamps of another log match no relation.
         {otherLog + " --relations " + f.relations, "other.txt: matches none of the 4 relations", 1},
         {"--icp-slam-path " + f.trajectory + " --relations " + f.relations, "--rawlog", 2},

@@ -149,6 +149,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
             ++stats_.registeredByIcp;
             stats_.icpUnsettled += r.unsettled;
             stats_.icpSecondStarts += r.secondStart;
+            stats_.icpWithoutForeground += r.withoutForeground;
             break;
         case RegistrationMethod::GraphMatcher:
             ++stats_.registeredByGraphMatcher;

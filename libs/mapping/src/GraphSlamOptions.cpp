@@ -62,6 +62,14 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
             "... the prediction turned by +-1 and +-2 times this (0: no turned starts)")
         .atLeast(0)
         .atMost(90);
+    s.real("foreground_check", foregroundCheck, "m",
+           "ICP correcting the prediction by more than this along the heading runs again "
+           "without small objects near the laser (people); 0 = off")
+        .atLeast(0);
+    s.real("foreground_max_range", foregroundMaxRange, "m",
+           "... objects whose nearest reading is at most this far ...")
+        .above(0);
+    s.real("foreground_max_width", foregroundMaxWidth, "m", "... and at most this wide").above(0);
     s.real("min_inlier_ratio", minInlierRatio, "",
            "a registration is good when this share of the scan's points lies on the map ...")
         .within(0, 1);

@@ -70,11 +70,12 @@ std::string formatSummary(const MappingResult& r) {
                   r.smoothedScans ? "registration and odometry together"
                                   : "registration alone (smooth_scans off)");
         s += line(
-            "registration: %zu by ICP (%.1f %%; %zu unsettled, %zu of them from a second start), "
+            "registration: %zu by ICP (%.1f %%; %zu unsettled, %zu of them from a second start; "
+            "%zu without foreground objects), "
             "%zu by the graph "
             "matcher (%.1f %%), %zu failed (%.1f %%, odometry kept); %zu odometry jumps",
             st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
-            st->icpSecondStarts, st->registeredByGraphMatcher,
+            st->icpSecondStarts, st->icpWithoutForeground, st->registeredByGraphMatcher,
             percent(st->registeredByGraphMatcher, n), st->registrationFailed,
             percent(st->registrationFailed, n), st->odometryJumps);
         // A rule that is off says so, instead of a count that could not be anything but 0.
@@ -135,6 +136,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
         j["registration"] = {{"icp", st->registeredByIcp},
                              {"icp_unsettled", st->icpUnsettled},
                              {"icp_second_start", st->icpSecondStarts},
+                             {"icp_without_foreground", st->icpWithoutForeground},
                              {"graph_matcher", st->registeredByGraphMatcher},
                              {"failed", st->registrationFailed},
                              {"odometry_jumps", st->odometryJumps},

@@ -50,6 +50,8 @@ bool beyondOdometryJump(const GraphSlamOptions& options, const CPose2D& motion) 
 ScanRegistration::ScanRegistration(const GraphSlamOptions& options,
                                    const matching::GraphMatcherOptions& matcherOptions)
     : options_(options), matcher_(matcherOptions) {
+    foregroundOptions_.maxRange = options.foregroundMaxRange;
+    foregroundOptions_.maxWidth = options.foregroundMaxWidth;
     icpOptions_.maxIterations = options.icpMaxIterations;
     icpOptions_.maxDistance = options.icpMaxDistance;
     icpOptions_.robustScale = options.icpRobustScale;
@@ -95,20 +97,44 @@ ScanRegistration::IcpAttempt ScanRegistration::icpFrom(const matching::PolarScan
     return a;
 }
 
+bool ScanRegistration::plausibleCorrection(const CPose2D& correction) const {
+    return correction.norm() <= options_.maxCorrectionDistance &&
+           std::abs(mrpt::math::wrapToPi(correction.phi())) <= options_.maxCorrectionAngle &&
+           (options_.maxLateralCorrection <= 0 ||
+            std::abs(correction.y()) <= options_.maxLateralCorrection);
+}
+
+bool ScanRegistration::withoutForeground(const matching::PolarScan& scan,
+                                         const CPose2D& sensorOnRobot, const Prediction& prediction,
+                                         IcpAttempt& icp) {
+    const double along = (icp.robot - prediction.inSubmap).x();
+    if (options_.foregroundCheck <= 0 || std::abs(along) <= options_.foregroundCheck)
+        return false;
+    if (foreground_.remove(scan, foregroundOptions_, background_) == 0)
+        return false;
+    IcpAttempt alt = icpFrom(background_, sensorOnRobot, *prediction.submap, prediction.inSubmap);
+    const CPose2D altCorrection = alt.robot - prediction.inSubmap;
+    // Without the objects ICP keeps most of the odometry's step: they were what took it back.
+    if (std::abs(altCorrection.x()) >= 0.5 * std::abs(along) ||
+        alt.overlap < options_.minInlierRatio || !plausibleCorrection(altCorrection)) {
+        return false;
+    }
+    icp = alt;
+    return true;
+}
+
 bool ScanRegistration::tryIcp(const matching::PolarScan& scan, const CPose2D& sensorOnRobot,
                               const Prediction& prediction, Registration& out) {
     if (!prediction.submap || prediction.submap->map().size() == 0 || scan.validCount() == 0)
         return false;
     IcpAttempt best = icpFrom(scan, sensorOnRobot, *prediction.submap, prediction.inSubmap);
+    // Before judging it: a person ahead can also push the answer beyond the plausible.
+    out.withoutForeground = withoutForeground(scan, sensorOnRobot, prediction, best);
     out.overlap = best.overlap;
-    const CPose2D correction = best.robot - prediction.inSubmap;
-    const bool plausible =
-        correction.norm() <= options_.maxCorrectionDistance &&
-        std::abs(mrpt::math::wrapToPi(correction.phi())) <= options_.maxCorrectionAngle &&
-        (options_.maxLateralCorrection <= 0 ||
-         std::abs(correction.y()) <= options_.maxLateralCorrection);
-    if (best.overlap < options_.minInlierRatio || !plausible)
+    if (best.overlap < options_.minInlierRatio ||
+        !plausibleCorrection(best.robot - prediction.inSubmap)) {
         return false;
+    }
     if (options_.secondOpinion) {
         // Not settled: no convergence, and a residual well above the recent ones (a start too
         // far off for ICP's basin, typically the heading).

@@ -51,6 +51,14 @@ struct GraphSlamOptions : public config::Options {
     bool secondOpinion = true;
     double secondOpinionMargin = 0.25;
     double secondOpinionTurn = 0.15;  ///< rad (8.6 deg)
+    /// When ICP corrects the prediction by more than this along the robot's heading (m; 0 =
+    /// off), it is run again without the scan's small objects close to the laser
+    /// (ForegroundObjects.h), and that answer is taken when it keeps less than half of the
+    /// correction: a person walking just ahead stands in the submap where the next scan sees it
+    /// again, and ICP fitted to it takes back the robot's step (people in a corridor).
+    double foregroundCheck = 0.1;
+    double foregroundMaxRange = 1.5;  ///< m: such an object's nearest reading, at most
+    double foregroundMaxWidth = 0.8;  ///< m: its width (first to last reading), at most
     /// A registration is good when at least this share of the scan's valid points ends on
     /// the local map...
     double minInlierRatio = 0.35;

@@ -7,7 +7,12 @@
 //     With second_opinion on (the default), when ICP has not settled (no convergence, and a
 //     residual over twice the recent median), it is run again from the graph matcher's answer
 //     and from the prediction turned either way, and the start that explains clearly more of
-//     the scan wins (an odometry heading off by 10-15 deg in one step of a fast turn);
+//     the scan wins (an odometry heading off by 10-15 deg in one step of a fast turn).
+//     Before that, when ICP corrected the prediction by more than foreground_check along the
+//     robot's heading, it is run again without the small objects close to the laser
+//     (ForegroundObjects.h: a person walking just ahead, whom the submap holds where the next
+//     scan sees it again); if that keeps less than half of the correction and passes the
+//     same tests, it is the answer;
 //  2. otherwise (poor overlap, a correction too large to trust, or an odometry jump) the graph
 //     matcher against the last keyframe, from the prediction and, failing that, guess-free;
 //  3. if both fail, the odometry prediction, with the odometry model's covariance.
@@ -16,6 +21,7 @@
 #include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/poses/CPose2D.h>
 #include <toposlam/features/FeatureExtractor.h>
+#include <toposlam/mapping/ForegroundObjects.h>
 #include <toposlam/mapping/GraphSlamOptions.h>
 #include <toposlam/mapping/Keyframe.h>
 #include <toposlam/mapping/Submap.h>
@@ -44,6 +50,8 @@ struct Registration {
     bool secondStart = false;
     /// ICP had not settled, so a second start was tried (second_opinion on).
     bool unsettled = false;
+    /// ICP without the scan's foreground objects (foreground_check), which took back the step.
+    bool withoutForeground = false;
 };
 
 /// True when `motion` goes farther than options.odometryJumpDistance or turns more than
@@ -90,6 +98,14 @@ class ScanRegistration {
     };
     IcpAttempt icpFrom(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                        const Submap& submap, const mrpt::poses::CPose2D& start);
+    /// The correction passes max_correction_distance, _angle and max_lateral_correction.
+    bool plausibleCorrection(const mrpt::poses::CPose2D& correction) const;
+    /// The foreground check (foreground_check): `icp`, ICP from the prediction, replaced by ICP
+    /// without the scan's foreground objects when that keeps less than half of the correction
+    /// along the heading; true when replaced.
+    bool withoutForeground(const matching::PolarScan& scan,
+                           const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
+                           IcpAttempt& icp);
     bool tryIcp(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                 const Prediction& prediction, Registration& out);
     bool tryGraphMatcher(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
@@ -115,6 +131,9 @@ class ScanRegistration {
     matching::PointToLineIcp icp_;
     matching::IcpOptions icpOptions_;
     matching::GraphScanMatcher matcher_;
+    ForegroundObjectOptions foregroundOptions_;
+    ForegroundObjects foreground_;
+    matching::PolarScan background_;  ///< the scan without its foreground objects (reused)
 };
 
 template <typename ExtractFeatures>

@@ -1,0 +1,86 @@
+// Small objects close to the laser, in front of what lies behind (ForegroundObjects.h).
+#include <gtest/gtest.h>
+#include <toposlam/mapping/ForegroundObjects.h>
+
+#include <cmath>
+#include <vector>
+
+namespace toposlam::mapping {
+namespace {
+
+struct Disc {
+    double x, y, radius;  // sensor frame, m
+};
+
+// 361 readings over 180 deg (x ahead) of a wall along y = wallY (m, sensor frame), across the
+// view, with `discs` (people) in front of it; readings beyond 20 m are invalid.
+matching::PolarScan scanOf(double wallY, const std::vector<Disc>& discs) {
+    constexpr std::size_t kBeams = 361;
+    const double first = -M_PI / 2, step = M_PI / double(kBeams - 1);
+    std::vector<float> ranges(kBeams);
+    std::vector<char> valid(kBeams, 1);
+    for (std::size_t b = 0; b < kBeams; ++b) {
+        const double c = std::cos(first + step * double(b)), s = std::sin(first + step * double(b));
+        // The wall as the line x = wallY across the view: hit where the beam goes ahead.
+        double range = c > 1e-6 ? wallY / c : 1e9;
+        for (const Disc& d : discs) {  // nearest intersection of the ray with the circle
+            const double along = d.x * c + d.y * s;
+            const double across2 = d.x * d.x + d.y * d.y - along * along;
+            if (along > 0 && across2 <= d.radius * d.radius)
+                range = std::min(range, along - std::sqrt(d.radius * d.radius - across2));
+        }
+        ranges[b] = float(std::min(range, 30.0));
+        valid[b] = range < 20.0;
+    }
+    matching::PolarScan scan;
+    scan.assign(first, step, ranges, valid, 20.0);
+    return scan;
+}
+
+TEST(ForegroundObjects, APersonJustAheadIsLeftOutAndTheWallBehindKept) {
+    const matching::PolarScan scan = scanOf(3.0, {{0.8, 0.0, 0.25}});
+    ForegroundObjects foreground;
+    matching::PolarScan out;
+    const std::size_t removed = foreground.remove(scan, {}, out);
+    ASSERT_GT(removed, 10u);
+    ASSERT_EQ(out.size(), scan.size());
+    EXPECT_EQ(out.validCount(), scan.validCount() - removed);
+    for (std::size_t b = 0; b < scan.size(); ++b) {
+        if (!scan.valid(b))
+            continue;
+        // The person's readings (within 1 m) are gone, every wall reading is kept as it was.
+        EXPECT_EQ(out.valid(b), scan.range(b) > 1.0) << "beam " << b;
+        if (out.valid(b)) {
+            EXPECT_EQ(out.range(b), scan.range(b));
+        }
+    }
+}
+
+TEST(ForegroundObjects, FarWideOrBarelyProtrudingObjectsStay) {
+    ForegroundObjects foreground;
+    matching::PolarScan out;
+    const ForegroundObjectOptions options;  // 1.5 m, 0.8 m wide, 0.2 m in front
+    // Beyond foreground_max_range.
+    EXPECT_EQ(foreground.remove(scanOf(4.0, {{2.0, 0.0, 0.25}}), options, out), 0u);
+    // Wider than foreground_max_width (a 1.2 m cabinet seen face on, as a wide disc).
+    EXPECT_EQ(foreground.remove(scanOf(3.0, {{1.4, 0.0, 0.6}}), options, out), 0u);
+    // A thin column against the wall: the readings beside it are not 0.2 m farther.
+    EXPECT_EQ(foreground.remove(scanOf(1.3, {{1.2, 0.0, 0.1}}), options, out), 0u);
+    // A scan with nothing in front leaves `out` untouched.
+    matching::PolarScan untouched;
+    EXPECT_EQ(foreground.remove(scanOf(3.0, {}), options, untouched), 0u);
+    EXPECT_EQ(untouched.size(), 0u);
+}
+
+TEST(ForegroundObjects, TwoPeopleAreTwoObjects) {
+    // Side by side with a gap the wall shows through: each is narrow enough on its own.
+    const matching::PolarScan scan = scanOf(3.0, {{1.0, -0.4, 0.25}, {1.0, 0.4, 0.25}});
+    ForegroundObjects foreground;
+    matching::PolarScan out;
+    EXPECT_GT(foreground.remove(scan, {}, out), 20u);
+    for (std::size_t b = 0; b < out.size(); ++b)
+        EXPECT_TRUE(!out.valid(b) || out.range(b) > 2.0) << "beam " << b;
+}
+
+}  // namespace
+}  // namespace toposlam::mapping

@@ -2,12 +2,18 @@
 // the reference's frame is exact on straight relations and off by 2·d·sin(θ/2) on turns.
 // worstRelations: the largest errors first, each with the method's own motion, and the other
 // methods' errors on the same relation in the table.
+// runSlamEvaluation: a log named by two options is read once.
 #include <gtest/gtest.h>
+#include <toposlam/evaluation/LogOdometry.h>
 #include <toposlam/evaluation/SlamEvaluation.h>
+#include <toposlam/evaluation/SlamEvaluationRun.h>
 
 #include <mrpt/poses/CPose2D.h>
 
+#include <algorithm>
 #include <cmath>
+
+#include "TestSupport.h"
 
 namespace toposlam::evaluation {
 namespace {
@@ -99,6 +105,32 @@ TEST(SlamEvaluation, WorstRelationsComeFirstWithEachMethodsMotion) {
               std::string::npos)
         << table;
     EXPECT_EQ(table.find("Worst relations of exact"), std::string::npos) << table;
+}
+
+TEST(SlamEvaluationRun, ALogNamedTwiceIsReadOnce) {
+    // The bundled office log as both --odometry-of and --mounting-from: the progress counts
+    // its scans once, and both uses get its odometry.
+    const std::string office = test::shareDir() + "/office/";
+    SlamEvaluationRequest request;
+    request.groundTruthFile = office + "office_gt.txt";
+    request.trajectories.push_back(
+        {TrajectorySource::LogOdometry, "odometry", office + "office.rawlog"});
+    request.mountingLog = office + "office.rawlog";
+    std::size_t scansRead = 0;
+    double fraction = 0;
+    const SlamEvaluationRun run = runSlamEvaluation(request, [&](double f, std::size_t scans) {
+        scansRead = std::max(scansRead, scans);
+        fraction = std::max(fraction, f);
+    });
+    const std::size_t scans = odometryAtScans(office + "office.rawlog", {}).size();
+    ASSERT_GT(scans, 300u);
+    EXPECT_EQ(scansRead, scans);
+    EXPECT_DOUBLE_EQ(fraction, 1.0);
+    ASSERT_EQ(run.evaluation.methods.size(), 1u);
+    EXPECT_EQ(run.evaluation.methods[0].relative.matchedRelations, run.evaluation.relationCount);
+    // The odometry against itself sits at the origin.
+    ASSERT_TRUE(run.evaluation.methods[0].mounting.has_value());
+    EXPECT_NEAR(run.evaluation.methods[0].mounting->mounting.x, 0.0, 1e-6);
 }
 
 }  // namespace

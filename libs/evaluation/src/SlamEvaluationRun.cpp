@@ -8,7 +8,10 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
+#include <set>
 #include <stdexcept>
+#include <string>
 
 namespace toposlam::evaluation {
 
@@ -93,17 +96,33 @@ void readReference(const SlamEvaluationRequest& request, SlamEvaluationRun& run)
     ev.relationCount = run.relations.size();
 }
 
+/// A laser log's odometry at its scans, read once however many options name the log
+/// (--odometry-of X --mounting-from X).
+class LogOdometryCache {
+  public:
+    explicit LogOdometryCache(LogsProgress& progress) : progress_(progress) {}
+    const io::Trajectory2D& of(const std::string& log) {
+        auto it = read_.find(log);
+        if (it == read_.end()) {
+            it = read_.emplace(log, odometryAtScans(log, progress_.nextLog())).first;
+            progress_.logDone();
+        }
+        return it->second;
+    }
+
+  private:
+    LogsProgress& progress_;
+    std::map<std::string, io::Trajectory2D> read_;
+};
+
 io::Trajectory2D readTrajectory(const TrajectoryToScore& t, const SlamEvaluationRequest& request,
-                                const std::vector<double>* stamps, LogsProgress& progress,
+                                const std::vector<double>* stamps, LogOdometryCache& odometry,
                                 std::string& source) {
     source = t.file;
     switch (t.source) {
-        case TrajectorySource::LogOdometry: {
+        case TrajectorySource::LogOdometry:
             source = "odometry of " + t.file;
-            auto odometry = odometryAtScans(t.file, progress.nextLog());
-            progress.logDone();
-            return odometry;
-        }
+            return odometry.of(t.file);
         case TrajectorySource::IcpSlamPath:
             source = t.file + " + " + request.rawlog;
             return loadIcpSlamPath(t.file, request.rawlog, stamps);
@@ -122,27 +141,30 @@ SlamEvaluationRun runSlamEvaluation(const SlamEvaluationRequest& request,
     readReference(request, run);
     SlamEvaluation& ev = run.evaluation;
 
-    const auto logs = static_cast<std::size_t>(
-        std::count_if(request.trajectories.begin(), request.trajectories.end(),
-                      [](const auto& t) { return t.source == TrajectorySource::LogOdometry; }) +
-        (request.scanStamps.empty() ? 0 : 1) + (request.mountingLog.empty() ? 0 : 1));
-    LogsProgress logsProgress(progress, logs);
+    std::set<std::string> odometryLogs;  // each read once
+    for (const TrajectoryToScore& t : request.trajectories) {
+        if (t.source == TrajectorySource::LogOdometry)
+            odometryLogs.insert(t.file);
+    }
+    if (!request.mountingLog.empty())
+        odometryLogs.insert(request.mountingLog);
+    LogsProgress logsProgress(progress, odometryLogs.size() + (request.scanStamps.empty() ? 0 : 1));
+    LogOdometryCache odometry(logsProgress);
     std::optional<std::vector<double>> stamps;
     if (!request.scanStamps.empty()) {
         stamps = scanFileStamps(request.scanStamps, logsProgress.nextLog());
         logsProgress.logDone();
     }
-    std::optional<io::Trajectory2D> mountingOdometry;
+    const io::Trajectory2D* mountingOdometry = nullptr;  // in the cache, which outlives it
     if (!request.mountingLog.empty()) {
         ev.mountingLog = request.mountingLog;
-        mountingOdometry = odometryAtScans(request.mountingLog, logsProgress.nextLog());
-        logsProgress.logDone();
+        mountingOdometry = &odometry.of(request.mountingLog);
     }
     const io::Trajectory2D* groundTruth = run.groundTruth ? &*run.groundTruth : nullptr;
     for (const TrajectoryToScore& t : request.trajectories) {
         std::string source;
         io::Trajectory2D estimate =
-            readTrajectory(t, request, stamps ? &*stamps : nullptr, logsProgress, source);
+            readTrajectory(t, request, stamps ? &*stamps : nullptr, odometry, source);
         if (estimate.empty())
             throw io::InputError(t.file, "no pose in the trajectory");
         std::optional<SensorMounting> mounting;

@@ -12,7 +12,8 @@
 //     robot's heading, it is run again without the small objects close to the laser
 //     (ForegroundObjects.h: a person walking just ahead, whom the submap holds where the next
 //     scan sees it again); if that keeps less than half of the correction and passes the
-//     same tests, it is the answer;
+//     same tests, it is the answer; so is, when it slid along a corridor whose walls do not fix
+//     the position along the heading, its pose moved back to the odometry's along the heading;
 //  2. otherwise (poor overlap, a correction too large to trust, or an odometry jump) the graph
 //     matcher against the last keyframe, from the prediction and, failing that, guess-free;
 //  3. if both fail, the odometry prediction, with the odometry model's covariance.
@@ -102,7 +103,8 @@ class ScanRegistration {
     bool plausibleCorrection(const mrpt::poses::CPose2D& correction) const;
     /// The foreground check (foreground_check): `icp`, ICP from the prediction, replaced by ICP
     /// without the scan's foreground objects when that keeps less than half of the correction
-    /// along the heading; true when replaced.
+    /// along the heading, or when the rest of the scan fits as well at the odometry's position
+    /// along the heading (then with that position); true when replaced.
     bool withoutForeground(const matching::PolarScan& scan,
                            const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
                            IcpAttempt& icp);

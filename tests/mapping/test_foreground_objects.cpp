@@ -12,17 +12,17 @@ struct Disc {
     double x, y, radius;  // sensor frame, m
 };
 
-// 361 readings over 180 deg (x ahead) of a wall along y = wallY (m, sensor frame), across the
-// view, with `discs` (people) in front of it; readings beyond 20 m are invalid.
-matching::PolarScan scanOf(double wallY, const std::vector<Disc>& discs) {
+// 361 readings over 180 deg (x ahead) of a wall across the view, the line x = wallX (m, sensor
+// frame), with `discs` (people) in front of it; readings beyond 20 m are invalid.
+matching::PolarScan scanOf(double wallX, const std::vector<Disc>& discs) {
     constexpr std::size_t kBeams = 361;
     const double first = -M_PI / 2, step = M_PI / double(kBeams - 1);
     std::vector<float> ranges(kBeams);
     std::vector<char> valid(kBeams, 1);
     for (std::size_t b = 0; b < kBeams; ++b) {
         const double c = std::cos(first + step * double(b)), s = std::sin(first + step * double(b));
-        // The wall as the line x = wallY across the view: hit where the beam goes ahead.
-        double range = c > 1e-6 ? wallY / c : 1e9;
+        // The wall is hit where the beam goes ahead.
+        double range = c > 1e-6 ? wallX / c : 1e9;
         for (const Disc& d : discs) {  // nearest intersection of the ray with the circle
             const double along = d.x * c + d.y * s;
             const double across2 = d.x * d.x + d.y * d.y - along * along;

@@ -54,8 +54,10 @@ struct GraphSlamOptions : public config::Options {
     /// When ICP corrects the prediction by more than this along the robot's heading (m; 0 =
     /// off), it is run again without the scan's small objects close to the laser
     /// (ForegroundObjects.h), and that answer is taken when it keeps less than half of the
-    /// correction: a person walking just ahead stands in the submap where the next scan sees it
-    /// again, and ICP fitted to it takes back the robot's step (people in a corridor).
+    /// correction, or, when it slid along a corridor and the rest of the scan fits as well
+    /// there, with the odometry's position along the heading (ScanRegistration.h): a person
+    /// walking just ahead stands in the submap where the next scan sees it again, and ICP
+    /// fitted to it takes back the robot's step (people in a corridor).
     double foregroundCheck = 0.1;
     double foregroundMaxRange = 1.5;  ///< m: such an object's nearest reading, at most
     double foregroundMaxWidth = 0.8;  ///< m: its width (first to last reading), at most

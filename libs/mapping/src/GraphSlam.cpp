@@ -150,6 +150,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
             stats_.icpUnsettled += r.unsettled;
             stats_.icpSecondStarts += r.secondStart;
             stats_.icpWithoutForeground += r.withoutForeground;
+            stats_.icpHeldAlongHeading += r.heldAlongHeading;
             break;
         case RegistrationMethod::GraphMatcher:
             ++stats_.registeredByGraphMatcher;

@@ -70,6 +70,13 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "... objects whose nearest reading is at most this far ...")
         .above(0);
     s.real("foreground_max_width", foregroundMaxWidth, "m", "... and at most this wide").above(0);
+    s.real("along_heading_check", alongHeadingCheck, "m",
+           "ICP correcting the prediction by more than this along the heading keeps the "
+           "odometry's position along it unless the scan fits better at ICP's; 0 = off")
+        .atLeast(0);
+    s.real("along_heading_margin", alongHeadingMargin, "",
+           "... better: by more than this share of the readings")
+        .within(0, 1);
     s.real("min_inlier_ratio", minInlierRatio, "",
            "a registration is good when this share of the scan's points lies on the map ...")
         .within(0, 1);

@@ -71,13 +71,13 @@ std::string formatSummary(const MappingResult& r) {
                                   : "registration alone (smooth_scans off)");
         s += line(
             "registration: %zu by ICP (%.1f %%; %zu unsettled, %zu of them from a second start; "
-            "%zu without foreground objects), "
-            "%zu by the graph "
+            "%zu without foreground objects; %zu held at the odometry's position along the "
+            "heading), %zu by the graph "
             "matcher (%.1f %%), %zu failed (%.1f %%, odometry kept); %zu odometry jumps",
             st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
-            st->icpSecondStarts, st->icpWithoutForeground, st->registeredByGraphMatcher,
-            percent(st->registeredByGraphMatcher, n), st->registrationFailed,
-            percent(st->registrationFailed, n), st->odometryJumps);
+            st->icpSecondStarts, st->icpWithoutForeground, st->icpHeldAlongHeading,
+            st->registeredByGraphMatcher, percent(st->registeredByGraphMatcher, n),
+            st->registrationFailed, percent(st->registrationFailed, n), st->odometryJumps);
         // A rule that is off says so, instead of a count that could not be anything but 0.
         const std::string guessFree =
             r.guessFreeSearch ? std::to_string(st->globalConfirmed) + " of them guess-free"
@@ -137,6 +137,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
                              {"icp_unsettled", st->icpUnsettled},
                              {"icp_second_start", st->icpSecondStarts},
                              {"icp_without_foreground", st->icpWithoutForeground},
+                             {"icp_held_along_heading", st->icpHeldAlongHeading},
                              {"graph_matcher", st->registeredByGraphMatcher},
                              {"failed", st->registrationFailed},
                              {"odometry_jumps", st->odometryJumps},

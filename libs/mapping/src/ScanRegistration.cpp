@@ -19,11 +19,14 @@ constexpr double kFitDistance = 0.05;
 /// median of the recent registrations. (Less than half of the scan on the map, tried as a
 /// second sign, flagged 5 % of intel's scans and never changed a result.)
 constexpr double kUnsettledResidualRatio = 2.0;
-/// Foreground check: ICP without the foreground objects "slid" along the heading when at least
-/// this share of the remaining readings lies on the submap there (a good fit), and at least as
-/// many at the odometry's position along the heading. (Allowing the latter 2 % fewer took a
-/// right 0.1 m correction from a simulated tour.)
+/// Along-heading check: ICP "slid" along a corridor only where at least this share of the
+/// readings lies on the submap at its pose (a good fit, not a place where nothing fits).
 constexpr double kSlideMinFit = 0.5;
+/// Readings of `scan` within kFitDistance of the submap's surface at sensor pose `sensor`.
+std::size_t readingsOnMap(const matching::LineMap& map, const matching::PolarScan& scan,
+                          const CPose2D& sensor) {
+    return matching::PointToLineIcp::countOnMap(map, scan, sensor, kFitDistance);
+}
 /// The covariance with every eigenvalue clamped to [lo, hi] (per eigen-direction of position
 /// and heading together; position and heading are in different units, but ICP's covariance is
 /// nearly block-diagonal, so this clamps each block).
@@ -109,37 +112,47 @@ bool ScanRegistration::plausibleCorrection(const CPose2D& correction) const {
             std::abs(correction.y()) <= options_.maxLateralCorrection);
 }
 
-bool ScanRegistration::withoutForeground(const matching::PolarScan& scan,
+void ScanRegistration::checkAlongHeading(const matching::PolarScan& scan,
                                          const CPose2D& sensorOnRobot, const Prediction& prediction,
-                                         IcpAttempt& icp) {
-    const double along = (icp.robot - prediction.inSubmap).x();
-    if (options_.foregroundCheck <= 0 || std::abs(along) <= options_.foregroundCheck)
-        return false;
-    if (foreground_.remove(scan, foregroundOptions_, background_) == 0)
-        return false;
-    IcpAttempt alt = icpFrom(background_, sensorOnRobot, *prediction.submap, prediction.inSubmap);
-    const CPose2D altCorrection = alt.robot - prediction.inSubmap;
-    if (alt.overlap < options_.minInlierRatio || !plausibleCorrection(altCorrection))
-        return false;
-    // Without the objects ICP keeps most of the odometry's step: they were what took it back.
-    if (std::abs(altCorrection.x()) < 0.5 * std::abs(along)) {
-        icp = alt;
-        return true;
+                                         IcpAttempt& icp, Registration& out) {
+    const double along = std::abs((icp.robot - prediction.inSubmap).x());
+    const bool foreground = options_.foregroundCheck > 0 && along > options_.foregroundCheck;
+    const bool support = options_.alongHeadingCheck > 0 && along > options_.alongHeadingCheck;
+    if (foreground && foreground_.remove(scan, foregroundOptions_, background_) > 0) {
+        IcpAttempt alt =
+            icpFrom(background_, sensorOnRobot, *prediction.submap, prediction.inSubmap);
+        const CPose2D altCorrection = alt.robot - prediction.inSubmap;
+        if (alt.overlap >= options_.minInlierRatio && plausibleCorrection(altCorrection)) {
+            // Without the objects ICP keeps most of the odometry's step: they took it back.
+            // Or it slid along a corridor: the walls left fix nothing along it.
+            if (std::abs(altCorrection.x()) < 0.5 * along ||
+                (support && holdAlongHeading(background_, sensorOnRobot, prediction, alt))) {
+                out.heldAlongHeading = std::abs(altCorrection.x()) >= 0.5 * along;
+                out.withoutForeground = true;
+                icp = alt;
+            }
+            return;  // with the objects in view, only the rest of the scan is evidence
+        }
     }
-    // Or the rest of the scan does not fix the position along the heading at all (walls along
-    // a corridor), and ICP without the objects slid along it: where the odometry puts the
-    // robot along the heading, with ICP's sideways and turn correction, fits it as well.
-    const CPose2D kept = prediction.inSubmap + CPose2D(0, altCorrection.y(), altCorrection.phi());
-    const auto onMap = [&](const CPose2D& robot) {
-        return double(matching::PointToLineIcp::countOnMap(prediction.submap->map(), background_,
-                                                           robot + sensorOnRobot, kFitDistance));
-    };
-    const double readings = double(background_.validCount());
-    const double atAlt = onMap(alt.robot);
-    if (atAlt < kSlideMinFit * readings || onMap(kept) < atAlt)
+    out.heldAlongHeading = support && holdAlongHeading(scan, sensorOnRobot, prediction, icp);
+}
+
+bool ScanRegistration::holdAlongHeading(const matching::PolarScan& scan,
+                                        const CPose2D& sensorOnRobot, const Prediction& prediction,
+                                        IcpAttempt& attempt) const {
+    const CPose2D correction = attempt.robot - prediction.inSubmap;
+    const CPose2D kept = prediction.inSubmap + CPose2D(0, correction.y(), correction.phi());
+    const matching::LineMap& map = prediction.submap->map();
+    const double readings = double(scan.validCount());
+    const double atAttempt = double(readingsOnMap(map, scan, attempt.robot + sensorOnRobot));
+    // A corridor, not a place where nothing fits: most readings lie on the submap.
+    if (atAttempt < kSlideMinFit * readings ||
+        double(readingsOnMap(map, scan, kept + sensorOnRobot)) +
+                options_.alongHeadingMargin * readings <
+            atAttempt) {
         return false;
-    alt.robot = kept;
-    icp = alt;
+    }
+    attempt.robot = kept;
     return true;
 }
 
@@ -149,7 +162,7 @@ bool ScanRegistration::tryIcp(const matching::PolarScan& scan, const CPose2D& se
         return false;
     IcpAttempt best = icpFrom(scan, sensorOnRobot, *prediction.submap, prediction.inSubmap);
     // Before judging it: a person ahead can also push the answer beyond the plausible.
-    out.withoutForeground = withoutForeground(scan, sensorOnRobot, prediction, best);
+    checkAlongHeading(scan, sensorOnRobot, prediction, best, out);
     out.overlap = best.overlap;
     if (best.overlap < options_.minInlierRatio ||
         !plausibleCorrection(best.robot - prediction.inSubmap)) {
@@ -190,8 +203,7 @@ void ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
             starts[count++] = prediction.inSubmap + CPose2D(0, 0, k * options_.secondOpinionTurn);
     }
     const auto onMap = [&](const CPose2D& robot) {
-        return matching::PointToLineIcp::countOnMap(submap.map(), scan, robot + sensorOnRobot,
-                                                    kFitDistance);
+        return readingsOnMap(submap.map(), scan, robot + sensorOnRobot);
     };
     // A clear margin: along a corridor a shifted start explains nearly as much as the right one.
     std::size_t bestOn =

@@ -53,6 +53,9 @@ struct Registration {
     bool unsettled = false;
     /// ICP without the scan's foreground objects (foreground_check), which took back the step.
     bool withoutForeground = false;
+    /// At the odometry's position along the heading: the scan did not bear out ICP's
+    /// correction along it (along_heading_check).
+    bool heldAlongHeading = false;
 };
 
 /// True when `motion` goes farther than options.odometryJumpDistance or turns more than
@@ -101,13 +104,21 @@ class ScanRegistration {
                        const Submap& submap, const mrpt::poses::CPose2D& start);
     /// The correction passes max_correction_distance, _angle and max_lateral_correction.
     bool plausibleCorrection(const mrpt::poses::CPose2D& correction) const;
-    /// The foreground check (foreground_check): `icp`, ICP from the prediction, replaced by ICP
-    /// without the scan's foreground objects when that keeps less than half of the correction
-    /// along the heading, or when the rest of the scan fits as well at the odometry's position
-    /// along the heading (then with that position); true when replaced.
-    bool withoutForeground(const matching::PolarScan& scan,
+    /// The checks of a large correction along the heading, on `icp`, ICP from the prediction.
+    /// The foreground check (foreground_check): replaced by ICP without the scan's foreground
+    /// objects when that keeps less than half of the correction. Then the along-heading check
+    /// (along_heading_check), on that ICP and the scan without the objects if there were any:
+    /// held at the odometry's position along the heading when the readings do not fit better
+    /// at ICP's. Sets out.withoutForeground and out.heldAlongHeading.
+    void checkAlongHeading(const matching::PolarScan& scan,
                            const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
-                           IcpAttempt& icp);
+                           IcpAttempt& icp, Registration& out);
+    /// True, and `attempt` moved there, when `scan`'s readings lie on the submap at the
+    /// odometry's position along the heading (with the attempt's sideways and turn correction)
+    /// nearly as often as at the attempt's pose (along_heading_margin).
+    bool holdAlongHeading(const matching::PolarScan& scan,
+                          const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
+                          IcpAttempt& attempt) const;
     bool tryIcp(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                 const Prediction& prediction, Registration& out);
     bool tryGraphMatcher(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,

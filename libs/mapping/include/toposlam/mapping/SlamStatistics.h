@@ -16,6 +16,8 @@ struct SlamStatistics {
     std::size_t icpUnsettled = 0, icpSecondStarts = 0;
     /// Of those, registered without the scan's foreground objects (foreground_check).
     std::size_t icpWithoutForeground = 0;
+    /// Of those, kept at the odometry's position along the heading (along_heading_check).
+    std::size_t icpHeldAlongHeading = 0;
     std::size_t registeredByGraphMatcher = 0;  ///< ICP was poor; the graph matcher succeeded
     std::size_t registrationFailed = 0;        ///< both failed: odometry prediction kept
     std::size_t odometryJumps = 0;             ///< odometry increments rejected as jumps

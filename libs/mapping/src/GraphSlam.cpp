@@ -161,13 +161,6 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     }
     const CPose2D pose = graph_.pose(r.reference) + r.pose;
     const CPose2D step = pose - current_;
-    if (std::getenv("TOPOSLAM_TRACE")) {
-        const CPose2D pred = current_ + (prediction.odometryJumped ? lastMotion_ : odometryIncrement.value_or(CPose2D()));
-        const CPose2D corr = pred - pose;
-        fprintf(stderr, "TRACE %.6f m%d odo %.3f %.3f %.2f corr %.3f %.3f %.2f ov %.2f u%d s%d f%d h%d kf%zu\n",
-            mrpt::Clock::toDouble(scan->timestamp), int(r.method), odometryIncrement.value_or(CPose2D()).x(), odometryIncrement.value_or(CPose2D()).y(), mrpt::RAD2DEG(odometryIncrement.value_or(CPose2D()).phi()),
-            corr.x(), corr.y(), mrpt::RAD2DEG(corr.phi()), r.overlap, int(r.unsettled), int(r.secondStart), int(r.withoutForeground), int(r.heldAlongHeading), keyframes_.size());
-    }
     lastMotion_ = step;
     travelled_ += step.norm();
     turned_ += std::abs(mrpt::math::wrapToPi(step.phi()));

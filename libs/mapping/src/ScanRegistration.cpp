@@ -125,9 +125,10 @@ void ScanRegistration::checkAlongHeading(const matching::PolarScan& scan,
         if (alt.overlap >= options_.minInlierRatio && plausibleCorrection(altCorrection)) {
             // Without the objects ICP keeps most of the odometry's step: they took it back.
             // Or it slid along a corridor: the walls left fix nothing along it.
-            if (std::abs(altCorrection.x()) < 0.5 * along ||
+            const bool keptStep = std::abs(altCorrection.x()) < 0.5 * along;
+            if (keptStep ||
                 (support && holdAlongHeading(background_, sensorOnRobot, prediction, alt))) {
-                out.heldAlongHeading = std::abs(altCorrection.x()) >= 0.5 * along;
+                out.heldAlongHeading = !keptStep;
                 out.withoutForeground = true;
                 icp = alt;
             }

@@ -12,8 +12,10 @@
 //     robot's heading, it is run again without the small objects close to the laser
 //     (ForegroundObjects.h: a person walking just ahead, whom the submap holds where the next
 //     scan sees it again); if that keeps less than half of the correction and passes the
-//     same tests, it is the answer; so is, when it slid along a corridor whose walls do not fix
-//     the position along the heading, its pose moved back to the odometry's along the heading;
+//     same tests, it is the answer. And a correction of more than along_heading_check along
+//     the heading must be borne out by the scan (by its rest, without such objects): where
+//     the odometry's position along the heading fits it nearly as well, along a corridor whose
+//     walls do not fix that position, the pose is moved back there;
 //  2. otherwise (poor overlap, a correction too large to trust, or an odometry jump) the graph
 //     matcher against the last keyframe, from the prediction and, failing that, guess-free;
 //  3. if both fail, the odometry prediction, with the odometry model's covariance.

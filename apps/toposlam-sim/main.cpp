@@ -162,7 +162,8 @@ struct Arguments {
         "",
         "start",
         "Tour start pose x,y[,yaw_deg] (m, m, deg; map frame). Default: the centre "
-        "of the largest free area.",
+        "of the largest room-sized area the tour visits (free space that runs on to the map's "
+        "edge, such as the background of a drawn plan, is not toured).",
         false,
         "",
         "x,y[,yaw]",
@@ -282,14 +283,20 @@ int simulate(Arguments& a, const SimulatorConfig& config, bool verbose) {
     if (plan.tour && verbose) {
         const Tour& t = *plan.tour;
         std::printf("tour: %zu room-sized areas (%zu unreachable), %.1f m, %.0f s, %zu scans\n",
-                    t.areas.size(), t.unreachable.size(), t.length,
+                    t.areas.size() - t.outside.size(), t.unreachable.size(), t.length,
                     t.poses.back().stamp - t.poses.front().stamp, t.poses.size());
+        if (!t.outside.empty()) {
+            std::printf(
+                "      %zu free areas open to the map's edge (around the building) left "
+                "out\n",
+                t.outside.size());
+        }
         if (!t.unseen.empty()) {
             double area = 0;
             std::size_t stops = 0;
             for (const UnseenArea& u : t.unseen) {
                 area += u.areaM2;
-                stops += u.hasViewpoint ? 1 : 0;
+                stops += u.viewpoints.size();
             }
             std::printf(
                 "      %zu areas (%.1f m^2) the room-sized tour left unseen; %zu stops "

@@ -213,9 +213,72 @@ TEST(TourPlanner, LooksIntoAClosetTooSmallToBeARoomSizedArea) {
     looking.coverage.lookIntoUnseen = true;
     const Tour tour = planTour(map, looking);
     ASSERT_EQ(tour.unseen.size(), 1u);
-    EXPECT_TRUE(tour.unseen[0].hasViewpoint);
+    EXPECT_EQ(tour.unseen[0].viewpoints.size(), 1u) << "the closet's doorway";
     EXPECT_EQ(plan.roomAt(tour.unseen[0].centroid), 2) << "the unseen area is in the closet";
     EXPECT_GT(closetSeen(plan, map, tour), 0.95);
     for (const auto& p : tour.poses)
         ASSERT_GE(test::distanceToSolid(plan, {p.pose.x, p.pose.y}), roomsOnly.robotRadius);
+}
+
+TEST(TourPlanner, StaysInsideABuildingDrawnOnAFreeBackground) {
+    // A plan as drawn (Bormann's, a floor plan image read as p(free) = grey): a 12 x 8 m
+    // building of two rooms, its door open to a free background 4 m wide all round that runs on
+    // to the map's edge. The background is the largest free area; the tour is the building's.
+    mrpt::maps::COccupancyGridMap2D grid(0.0f, 20.0f, 0.0f, 16.0f, 0.05f);
+    grid.fill(1.0f);
+    const auto wall = [&](double x0, double y0, double x1, double y1) {
+        for (int cy = grid.y2idx(y0); cy <= grid.y2idx(y1); ++cy)
+            for (int cx = grid.x2idx(x0); cx <= grid.x2idx(x1); ++cx)
+                grid.setCell(cx, cy, 0.0f);
+    };
+    const Box building{4.0, 4.0, 16.0, 12.0};
+    wall(building.xMin, building.yMin, building.xMax, building.yMin + 0.1);
+    wall(building.xMin, building.yMax - 0.1, building.xMax, building.yMax);
+    wall(building.xMin, building.yMin, building.xMin + 0.1, building.yMax);
+    wall(building.xMax - 0.1, building.yMin, building.xMax, 7.5);  // the door: 7.5 to 8.5 m
+    wall(building.xMax - 0.1, 8.5, building.xMax, building.yMax);
+    wall(10.0, building.yMin, 10.1, 7.5);  // the two rooms, a door between them
+    wall(10.0, 8.5, 10.1, building.yMax);
+    const ClearanceMap map(grid);
+    for (const bool looking : {false, true}) {
+        TourOptions o;
+        o.coverage.lookIntoUnseen = looking;
+        const Tour tour = planTour(map, o);
+        ASSERT_EQ(tour.outside.size(), 1u) << "the background";
+        EXPECT_TRUE(tour.areas[tour.outside[0]].openToMapEdge);
+        EXPECT_EQ(tour.visitOrder.size(), 2u) << "both rooms";
+        for (const auto& p : tour.poses) {
+            ASSERT_TRUE(building.contains({p.pose.x, p.pose.y}))
+                << "pose (" << p.pose.x << ", " << p.pose.y << ") at t=" << p.stamp
+                << (looking ? ", looking into unseen areas" : "");
+        }
+    }
+}
+
+TEST(TourPlanner, StartsWhereItReachesTheMostRooms) {
+    // Two rooms joined by a door, and apart from them a walled hall larger than either (a
+    // courtyard drawn free, with no way in): the default start is in the rooms, and the tour
+    // visits both of them.
+    mrpt::maps::COccupancyGridMap2D grid(0.0f, 30.0f, 0.0f, 16.0f, 0.05f);
+    grid.fill(0.5f);
+    const auto fill = [&](double x0, double y0, double x1, double y1, float p) {
+        for (int cy = grid.y2idx(y0); cy <= grid.y2idx(y1); ++cy)
+            for (int cx = grid.x2idx(x0); cx <= grid.x2idx(x1); ++cx)
+                grid.setCell(cx, cy, p);
+    };
+    fill(1.9, 1.9, 14.1, 8.1, 0.0f);  // the rooms' walls, then their floor
+    fill(2.0, 2.0, 14.0, 8.0, 1.0f);
+    fill(7.95, 2.0, 8.05, 4.5, 0.0f);  // the wall between them, a 1 m door at 4.5-5.5 m
+    fill(7.95, 5.5, 8.05, 8.0, 0.0f);
+    fill(16.9, 2.9, 27.1, 13.1, 0.0f);  // the hall
+    fill(17.0, 3.0, 27.0, 13.0, 1.0f);
+    const Box rooms{2.0, 2.0, 14.0, 8.0};
+    const Tour tour = planTour(ClearanceMap(grid), TourOptions());
+    ASSERT_EQ(tour.areas.size(), 3u);
+    EXPECT_EQ(tour.visitOrder.size(), 2u) << "both rooms";
+    EXPECT_EQ(tour.unreachable.size(), 1u) << "the hall";
+    for (const auto& p : tour.poses) {
+        ASSERT_TRUE(rooms.contains({p.pose.x, p.pose.y}))
+            << "pose (" << p.pose.x << ", " << p.pose.y << ") at t=" << p.stamp;
+    }
 }

@@ -7,6 +7,11 @@
 
 namespace toposlam::simulation {
 
+namespace {
+/// Cells of slack when comparing a clearance with the distance to the map's edge.
+constexpr double kEdgeTolerance = 0.25;
+}  // namespace
+
 std::vector<RoomSizedArea> findRoomSizedAreas(const ClearanceMap& map,
                                               const RoomSizedAreaOptions& options) {
     const GridGeometry& g = map.geometry();
@@ -37,6 +42,10 @@ std::vector<RoomSizedArea> findRoomSizedAreas(const ClearanceMap& map,
                 const float c = map.clearance(cx, cy);
                 if (pass == 0) {
                     a.clearance = std::max(a.clearance, static_cast<double>(c));
+                    // Nothing nearer than the map's edge: free space runs on beyond it.
+                    const int edgeCells = std::min({cx, cy, g.sizeX - 1 - cx, g.sizeY - 1 - cy});
+                    a.openToMapEdge =
+                        a.openToMapEdge || c >= (edgeCells + 0.5 - kEdgeTolerance) * g.resolution;
                     continue;
                 }
                 if (c < a.clearance - 0.5 * g.resolution)

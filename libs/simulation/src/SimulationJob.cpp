@@ -31,10 +31,8 @@ void planTourInto(SimulationPlan& plan, const ClearanceMap& clearance,
     plan.poses = plan.tour->poses;
     for (std::size_t a : plan.tour->visitOrder)
         plan.marks.push_back(plan.tour->areas[a].centre);
-    for (const UnseenArea& u : plan.tour->unseen) {  // the stops that look into them
-        if (u.hasViewpoint)
-            plan.marks.push_back(u.viewpoint);
-    }
+    for (const UnseenArea& u : plan.tour->unseen)  // the stops that look into them
+        plan.marks.insert(plan.marks.end(), u.viewpoints.begin(), u.viewpoints.end());
 }
 
 void loadPosesInto(SimulationPlan& plan, const ClearanceMap& clearance, const std::string& path) {

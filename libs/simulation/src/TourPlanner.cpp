@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace toposlam::simulation {
 
@@ -123,6 +124,38 @@ void planLegs(GridPathPlanner& planner, const std::vector<TPoint2D>& places,
         tour.legs.push_back({places[order.front()]});
 }
 
+/// The default start among the `toured` areas (indices, largest first): the largest area of
+/// the group of areas reachable from one another that holds the most areas (then the most
+/// area). A free courtyard, or the free background around a drawn building, is one large area
+/// from where no room is reached.
+std::size_t defaultStartArea(GridPathPlanner& planner, const ClearanceMap& map,
+                             const std::vector<RoomSizedArea>& areas,
+                             const std::vector<std::size_t>& toured) {
+    const GridGeometry& g = map.geometry();
+    std::vector<bool> grouped(areas.size(), false);
+    std::size_t best = toured.front();
+    std::pair<std::size_t, double> bestSize{0, 0.0};  // areas, m^2
+    for (std::size_t first : toured) {
+        if (grouped[first])
+            continue;
+        const std::vector<float>& costs = planner.costsFrom(areas[first].centre);
+        std::pair<std::size_t, double> size{0, 0.0};
+        for (std::size_t a : toured) {
+            const TPoint2D& c = areas[a].centre;
+            if (!grouped[a] && std::isfinite(costs[g.index(g.cellX(c.x), g.cellY(c.y))])) {
+                grouped[a] = true;
+                ++size.first;
+                size.second += areas[a].erodedAreaM2;
+            }
+        }
+        if (size > bestSize) {
+            bestSize = size;
+            best = first;
+        }
+    }
+    return best;
+}
+
 /// Every kViewEvery-th point of the legs, and each leg's last: where the laser looks from.
 std::vector<TPoint2D> pointsAlong(const std::vector<std::vector<TPoint2D>>& legs) {
     std::vector<TPoint2D> points;
@@ -159,7 +192,7 @@ Tour planTour(const ClearanceMap& map, const TourOptions& options) {
             metres(options.areas.doorWidthMax / 2) + ", from obstacles)");
     }
 
-    // Places: the start, then every area (the default start is the largest area itself).
+    // Places: the start, then every area toured (the default start is an area itself).
     std::vector<TPoint2D> places;
     std::vector<long> areaOfPlace;
     if (options.start) {
@@ -172,7 +205,18 @@ Tour planTour(const ClearanceMap& map, const TourOptions& options) {
         places.push_back(s);
         areaOfPlace.push_back(-1);
     }
-    for (std::size_t a = 0; a < tour.areas.size(); ++a) {
+    const bool anyEnclosed = std::any_of(tour.areas.begin(), tour.areas.end(),
+                                         [](const RoomSizedArea& a) { return !a.openToMapEdge; });
+    std::vector<std::size_t> toured;
+    for (std::size_t a = 0; a < tour.areas.size(); ++a)
+        (anyEnclosed && tour.areas[a].openToMapEdge ? tour.outside : toured).push_back(a);
+    if (!options.start) {
+        // The start first: the areas the robot can reach from it are the ones it tours.
+        const std::size_t start = defaultStartArea(planner, map, tour.areas, toured);
+        const auto first = std::find(toured.begin(), toured.end(), start);
+        std::rotate(toured.begin(), first, first + 1);
+    }
+    for (std::size_t a : toured) {
         places.push_back(tour.areas[a].centre);
         areaOfPlace.push_back(static_cast<long>(a));
     }
@@ -188,16 +232,19 @@ Tour planTour(const ClearanceMap& map, const TourOptions& options) {
             reachable[i] = std::isfinite(costs[i]) ? 1 : 0;
         tour.unseen = findUnseenAreas(
             map, cellsInView(map, pointsAlong(tour.legs), options.coverage.viewRange), reachable,
-            options.coverage);
+            options.coverage, !tour.outside.empty());
         const std::size_t before = places.size();
         for (const UnseenArea& u : tour.unseen) {
-            // A stop next to one the tour makes anyway adds nothing but a twitch.
-            const bool nearStop = std::any_of(places.begin(), places.end(), [&](const TPoint2D& p) {
-                return std::hypot(p.x - u.viewpoint.x, p.y - u.viewpoint.y) < kSameStop;
-            });
-            if (u.hasViewpoint && !nearStop) {
-                places.push_back(u.viewpoint);
-                areaOfPlace.push_back(-1);
+            for (const TPoint2D& v : u.viewpoints) {
+                // A stop next to one the tour makes anyway adds nothing but a twitch.
+                const bool nearStop =
+                    std::any_of(places.begin(), places.end(), [&](const TPoint2D& p) {
+                        return std::hypot(p.x - v.x, p.y - v.y) < kSameStop;
+                    });
+                if (!nearStop) {
+                    places.push_back(v);
+                    areaOfPlace.push_back(-1);
+                }
             }
         }
         if (places.size() > before) {  // the same tour, with the viewpoints among its stops

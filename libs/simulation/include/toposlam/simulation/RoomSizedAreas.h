@@ -23,6 +23,9 @@ struct RoomSizedArea {
     mrpt::math::TPoint2D centre;  ///< world frame, m: centre of the largest empty disc
     double clearance = 0;         ///< m, that disc's radius
     double erodedAreaM2 = 0;      ///< m^2 of the eroded region (grows with the room's size)
+    /// The region reaches the map's edge: free space the map does not bound, such as the
+    /// surroundings of a building drawn on a free background (a room ends at walls).
+    bool openToMapEdge = false;
 };
 
 /// Areas sorted by decreasing erodedAreaM2.

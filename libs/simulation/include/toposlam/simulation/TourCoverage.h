@@ -38,19 +38,25 @@ std::vector<std::uint8_t> cellsInView(const ClearanceMap& map, const io::Traject
                                       double range);
 
 struct UnseenArea {
-    double areaM2 = 0;               ///< free cells in it
-    mrpt::math::TPoint2D centroid;   ///< world frame, m
-    bool hasViewpoint = false;       ///< false: no reachable place within the view range
-    mrpt::math::TPoint2D viewpoint;  ///< world frame, m (when hasViewpoint)
+    double areaM2 = 0;              ///< free cells in it
+    mrpt::math::TPoint2D centroid;  ///< world frame, m
+    /// Where to stop to see it (world frame, m): one for a closet (its doorway), one per room
+    /// for a wing the tour did not enter; none when no reachable place is within view range.
+    std::vector<mrpt::math::TPoint2D> viewpoints;
 };
 
 /// The 8-connected areas of free cells not in `seen` of at least options.minUnseenAreaM2, each
-/// with the place nearest to it (walking distance through free cells, at most
-/// options.viewRange) that is `reachable` (indexed like `seen`: the robot can get there from the
-/// tour). Largest first.
+/// with the stops from where the robot sees it, chosen greedily until what it still hides is
+/// smaller than options.minUnseenAreaM2: the `reachable` cell (indexed like `seen`: the robot can
+/// get there from the tour) of the hidden part farthest from obstacles, or, when it has none,
+/// the reachable place nearest to it (walking through free cells, at most options.viewRange).
+/// A stop sees what is in line of sight within options.viewRange. Largest first. With
+/// `skipOpenToMapEdge`, areas that reach the map's edge (the free background around a drawn
+/// building, see Tour::outside) are left out.
 std::vector<UnseenArea> findUnseenAreas(const ClearanceMap& map,
                                         const std::vector<std::uint8_t>& seen,
                                         const std::vector<std::uint8_t>& reachable,
-                                        const TourCoverageOptions& options);
+                                        const TourCoverageOptions& options,
+                                        bool skipOpenToMapEdge = false);
 
 }  // namespace toposlam::simulation

@@ -2,9 +2,10 @@
 // An automatic robot tour over a map that visits every room-sized free area: find the areas
 // (RoomSizedAreas), order them (TourOrder) by path cost, plan a clearance-keeping path between
 // consecutive ones (GridPathPlanner), smooth it (PathSmoother) and drive it (MotionProfile),
-// which gives the timed poses at which the laser records. Then look at what that tour leaves
-// unseen (TourCoverage: closets, side rooms, space behind furniture), add a stop in view of each
-// unseen area, and plan the tour again over all stops.
+// which gives the timed poses at which the laser records. Free space that runs on to the map's
+// edge (the background of a drawn plan) is no room: it is left out. Then look at what that tour
+// leaves unseen (TourCoverage: closets, side rooms, space behind furniture), add a stop in view of
+// each unseen area, and plan the tour again over all stops.
 #include <mrpt/math/TPose2D.h>
 #include <toposlam/config/Options.h>
 #include <toposlam/io/Trajectory.h>
@@ -29,8 +30,8 @@ struct TourOptions : public config::Options {
     double smoothingSigma = 0.3;  ///< m; see smoothPath
     bool returnToStart = true;    ///< close the loop (SLAM needs loops to be tested)
     TourCoverageOptions coverage;
-    /// Start pose (world frame); default: the centre of the largest area, heading along the
-    /// first leg.
+    /// Start pose (world frame); default: the centre of the largest area the tour visits,
+    /// heading along the first leg.
     std::optional<mrpt::math::TPose2D> start;
     MotionOptions motion;
 
@@ -44,6 +45,9 @@ struct Tour {
     std::vector<RoomSizedArea> areas;      ///< every area found, largest first
     std::vector<std::size_t> visitOrder;   ///< indices into `areas`, in visiting order
     std::vector<std::size_t> unreachable;  ///< areas the robot cannot reach from the start
+    /// Areas open to the map's edge (RoomSizedArea::openToMapEdge), left out of the tour
+    /// unless every area is: the free background around a drawn building is no room.
+    std::vector<std::size_t> outside;
     /// Unseen by the room-sized tour (coverage.lookIntoUnseen), largest first; the final tour
     /// also stops at the viewpoint of each that has one.
     std::vector<UnseenArea> unseen;

@@ -111,6 +111,27 @@ TEST(OdometryModel, RotationScaleAndNoiseWhenTurningOnTheSpot) {
     EXPECT_NEAR(stats(turned).std / sigma, 1.0, kStdRelTolerance);
 }
 
+TEST(OdometryModel, AStepOfMillimetresOffTheHeadingTurnsOnlyAsMuchAsTheRobot) {
+    // Turning on the spot while the path drifts sideways by 3 mm per 2 degree step (a twitch
+    // between two close stops): the heading error is that of the 72 degrees turned, not of the
+    // 90 degrees sideways and back that a rot1 / rot2 decomposition would see in each step.
+    OdometryErrorModel m = noErrorsBut();
+    m.alpha1 = 1e-3;  // rad^2 per rad
+    std::mt19937 rng(15);
+    std::vector<double> turned;
+    const double step = M_PI / 90;
+    for (int t = 0; t < kTrials; ++t) {
+        OdometryModel odo(m);
+        double sum = 0;
+        for (int k = 0; k < 36; ++k)
+            sum += odo.measureIncrement(CPose2D(0, 0.003, step), rng).phi();
+        turned.push_back(sum);
+    }
+    const double sigma = std::sqrt(m.alpha1 * 36 * step);
+    EXPECT_NEAR(stats(turned).mean, 36 * step, meanTolerance(sigma));
+    EXPECT_NEAR(stats(turned).std / sigma, 1.0, kStdRelTolerance);
+}
+
 TEST(OdometryModel, DriftDoesNotDependOnTheOdometryRate) {
     // Linear variances: 10 coarse steps and 1000 fine steps drift alike.
     OdometryErrorModel m = noErrorsBut();

@@ -6,6 +6,11 @@
 
 namespace toposlam::simulation {
 
+namespace {
+constexpr double kShortStep = 0.01;        ///< m
+constexpr double kOffHeading = M_PI / 90;  ///< rad (2 deg)
+}  // namespace
+
 OdometryErrorModel OdometryErrorModel::exact() {
     OdometryErrorModel m;
     m.distanceScale = m.rotationScale = 1.0;
@@ -54,6 +59,11 @@ mrpt::poses::CPose2D OdometryModel::measureIncrement(const mrpt::poses::CPose2D&
             rot1 = mrpt::math::wrapToPi(rot1 - M_PI);
             trans = -trans;
         }
+        // A step of millimetres off the heading while turning (a twitch between two close
+        // stops) is no drive in that direction: taken as rot1 and back as rot2, it would charge
+        // up to twice 90 degrees of wheel turning, and its noise, to a step that turned a few.
+        if (std::abs(trans) < kShortStep && std::abs(rot1) > kOffHeading)
+            rot1 = 0;
     }
     const double rot2 = mrpt::math::wrapToPi(inc.phi() - rot1);
     const double absTrans = std::abs(trans);

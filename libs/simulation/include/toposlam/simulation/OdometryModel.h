@@ -1,8 +1,9 @@
 #pragma once
 // Wheel odometry with realistic drift. Each true motion increment between two odometry readings
 // is decomposed as in Thrun, Burgard & Fox, Probabilistic Robotics (2005), sec. 5.4: a rotation
-// rot1 towards the direction of travel, a translation trans, a final rotation rot2. The reading
-// then gets two kinds of error:
+// rot1 towards the direction of travel, a translation trans, a final rotation rot2 (rot1 = 0 for
+// a step under 1 cm whose direction is more than 2 deg off the heading: millimetres of drift
+// while turning are no drive in that direction). The reading then gets two kinds of error:
 //
 //  * systematic (the same every time; Borenstein & Feng's UMBmark error sources):
 //      trans' = trans * distanceScale              (mean wheel radius wrong)

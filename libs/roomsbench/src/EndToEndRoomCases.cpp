@@ -181,13 +181,23 @@ rooms::RoomBenchmarkCase endToEndCase(const PlanToTour& plan, const EndToEndOpti
     namespace fs = std::filesystem;
     const auto grid = gridOfMapImage(plan.map, plan.resolution);
     const simulation::ClearanceMap clearance(grid, options.simulator.log.world.thresholds);
-    const simulation::Tour tour = simulation::planTour(clearance, options.simulator.tour);
+    io::Trajectory2D poses = options.poses;
+    run.tourLength = 0;
+    if (poses.empty()) {
+        const simulation::Tour tour = simulation::planTour(clearance, options.simulator.tour);
+        poses = tour.poses;
+        run.tourLength = tour.length;
+    } else {
+        for (std::size_t i = 1; i < poses.size(); ++i) {
+            run.tourLength += std::hypot(poses[i].pose.x - poses[i - 1].pose.x,
+                                         poses[i].pose.y - poses[i - 1].pose.y);
+        }
+    }
     fs::create_directories(options.workDir);
     const std::string rawlog = (fs::path(options.workDir) / (plan.name + ".rawlog")).string();
     const std::string truthPath = (fs::path(options.workDir) / (plan.name + "_gt.txt")).string();
-    run.scans = simulation::simulateLogToFiles(grid, tour.poses, options.simulator.log, rawlog,
+    run.scans = simulation::simulateLogToFiles(grid, poses, options.simulator.log, rawlog,
                                                options.simulator.format, truthPath);
-    run.tourLength = tour.length;
     const mapping::MappingResult slam = mapping::mapLog(rawlog, *options.slamConfig);
     run.slamSeconds = slam.wallSeconds;
     run.slamToPlan =
@@ -212,7 +222,7 @@ rooms::RoomBenchmarkCase endToEndCase(const PlanToTour& plan, const EndToEndOpti
     c.trueDoors = rooms::labelBoundaryDoors(c.truth.labels, plan.unfurnishedFree);
     c.openFloor = rooms::openFloorOfRooms(c.truth, plan.map == 255);
     run.roomsOutOfView =
-        roomsOutOfView(c.truth, clearance, tour.poses, options.simulator.tour.coverage.viewRange);
+        roomsOutOfView(c.truth, clearance, poses, options.simulator.tour.coverage.viewRange);
     return c;
 }
 

@@ -6,6 +6,7 @@
 // that best lays the SLAM trajectory on the simulator's ground-truth trajectory (poses matched
 // by time stamp); labels are carried into the plan's image through it (nearest cell) and
 // scored against the plan's rooms and doors (rooms::RoomBenchmark).
+#include <toposlam/io/Trajectory.h>
 #include <toposlam/rooms/RoomBenchmarkCase.h>
 #include <toposlam/simulation/SimulatorConfig.h>
 
@@ -43,6 +44,9 @@ struct EndToEndOptions {
     /// toposlam-slam's settings (config_ini/toposlam-slam.ini).
     const mrpt::config::CConfigFileBase* slamConfig = nullptr;
     std::string workDir;  ///< where the simulated logs are written (created; files are kept)
+    /// Drive these poses (the plan's frame, m and rad; stamps in s) instead of planning a tour:
+    /// a recorded tour replayed, e.g. one that showed a failure. Empty: plan the tour.
+    io::Trajectory2D poses;
 };
 
 /// What the run produced besides the case: for tables and pictures.

@@ -5,8 +5,9 @@
 // person driving the robot would look into them. So: mark the free cells in line of sight of
 // the tour's path (within a view range, in every direction: the simulated laser sees 270°),
 // take every connected area of free cells left unseen that is large enough to matter, and for
-// each find the reachable place nearest to it along free space (in its doorway or just in front
-// of it), from where it is in view.
+// each choose stops until what it still hides no longer matters: inside it where the robot fits
+// (the middle of its widest room first: a whole wing the tour missed gets one per room), else
+// the reachable place nearest to it along free space (a closet's doorway).
 #include <mrpt/math/TPoint2D.h>
 #include <toposlam/io/Trajectory.h>
 #include <toposlam/simulation/ClearanceMap.h>

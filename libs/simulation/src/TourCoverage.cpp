@@ -156,7 +156,7 @@ std::vector<UnseenArea> findUnseenAreas(const ClearanceMap& map,
     std::vector<int> visited(g.cellCount(), 0);
     // Cells in view of the stops chosen so far (for every area: a stop sees what it sees).
     std::vector<std::uint8_t> inView(g.cellCount(), 0);
-    std::vector<std::size_t> cells, left;
+    std::vector<std::size_t> left;  // the cells of the area no stop sees yet
     std::vector<UnseenArea> areas;
     for (int label = 1; label < n; ++label) {
         UnseenArea area;
@@ -173,38 +173,32 @@ std::vector<UnseenArea> findUnseenAreas(const ClearanceMap& map,
                                   box.y + box.height == g.sizeY)) {
             continue;
         }
-        cells.clear();
+        left.clear();
         for (int y = box.y; y < box.y + box.height; ++y) {
             const int* row = labels.ptr<int>(y);
             for (int x = box.x; x < box.x + box.width; ++x) {
-                if (row[x] == label)
-                    cells.push_back(g.index(x, y));
+                const std::size_t cell = g.index(x, y);
+                if (row[x] == label && !inView[cell])
+                    left.push_back(cell);
             }
         }
         // Stops until what the area still hides is too small to matter: a closet is seen from
         // its doorway; a wing the tour did not enter needs a stop in each of its rooms, the
         // widest first.
-        while (area.viewpoints.size() < kMaxStopsPerArea) {
-            left.clear();
-            for (std::size_t cell : cells) {
-                if (!inView[cell])
-                    left.push_back(cell);
-            }
-            if (left.size() < minCells)
-                break;
+        while (left.size() >= minCells && area.viewpoints.size() < kMaxStopsPerArea) {
             long stop = widestReachable(map, left, reachable);
             if (stop < 0)
                 stop = nearestReachable(map, left, reachable, maxSteps, visited);
             if (stop < 0)
                 break;
             const TPoint2D p = g.centre(static_cast<std::size_t>(stop));
-            std::size_t newlySeen = 0;
-            forEachInView(map, lines, p, [&](std::size_t cell) {
-                newlySeen += !inView[cell] && labels.ptr<int>()[cell] == label;
-                inView[cell] = 1;
-            });
+            forEachInView(map, lines, p, [&](std::size_t cell) { inView[cell] = 1; });
             inView[static_cast<std::size_t>(stop)] = 1;  // even if nothing is seen from it
-            if (newlySeen < minCells && !area.viewpoints.empty())
+            const std::size_t hidden = left.size();
+            left.erase(std::remove_if(left.begin(), left.end(),
+                                      [&](std::size_t cell) { return inView[cell] != 0; }),
+                       left.end());
+            if (hidden - left.size() < minCells && !area.viewpoints.empty())
                 break;
             area.viewpoints.push_back(p);
         }

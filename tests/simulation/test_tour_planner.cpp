@@ -214,6 +214,7 @@ TEST(TourPlanner, LooksIntoAClosetTooSmallToBeARoomSizedArea) {
     const Tour tour = planTour(map, looking);
     ASSERT_EQ(tour.unseen.size(), 1u);
     EXPECT_EQ(tour.unseen[0].viewpoints.size(), 1u) << "the closet's doorway";
+    EXPECT_EQ(tour.unseenStops, 1u) << "the doorway is no stop of the room-sized tour";
     EXPECT_EQ(plan.roomAt(tour.unseen[0].centroid), 2) << "the unseen area is in the closet";
     EXPECT_GT(closetSeen(plan, map, tour), 0.95);
     for (const auto& p : tour.poses)

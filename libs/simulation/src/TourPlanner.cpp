@@ -247,6 +247,7 @@ Tour planTour(const ClearanceMap& map, const TourOptions& options) {
                 }
             }
         }
+        tour.unseenStops = places.size() - before;
         if (places.size() > before) {  // the same tour, with the viewpoints among its stops
             tour.visitOrder.clear();
             tour.unreachable.clear();

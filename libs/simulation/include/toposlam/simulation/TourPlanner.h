@@ -51,6 +51,9 @@ struct Tour {
     /// Unseen by the room-sized tour (coverage.lookIntoUnseen), largest first; the final tour
     /// also stops at the viewpoint of each that has one.
     std::vector<UnseenArea> unseen;
+    /// How many of the unseen areas' viewpoints became stops: one within 0.3 m of a stop the
+    /// tour makes anyway is that stop.
+    std::size_t unseenStops = 0;
     std::vector<std::vector<mrpt::math::TPoint2D>> legs;  ///< the smoothed path of each leg
     io::Trajectory2D poses;                               ///< scan poses (world frame), stamps in s
     double length = 0;                                    ///< m driven

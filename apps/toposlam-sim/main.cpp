@@ -194,8 +194,22 @@ struct Arguments {
         "",
         "x,y",
         cmd};
+    TCLAP::SwitchArg drawnArg{
+        "", "drawn",
+        "The map is a drawn or scanned floor plan, not a SLAM grid: only white pixels (grey "
+        "250 and above, p(free) > 0.98) are free, every other pixel is an obstacle, so grey "
+        "furniture stops the laser and a grey background around the building is no free space "
+        "to tour ([Simulation] occupied_below = free_above = 0.98; as toposlam-rooms --drawn). "
+        "Without it a pixel's grey is p(free): light greys are free.",
+        cmd, false};
     TCLAP::SwitchArg quietArg{"q", "quiet", "No progress display and no summary.", cmd, false};
 };
+
+/// --drawn: p(free) above this is free, below it occupied (Bormann et al.'s maps: grey >= 250).
+constexpr double kDrawnFreeAbove = 0.98;
+
+/// m: a tour shorter than this stays where it starts (worth a warning).
+constexpr double kShortestTour = 1.0;
 
 /// "x,y[,yaw_deg]" (m, m, deg) -> pose (m, m, rad).
 mrpt::math::TPose2D parseStart(const std::string& text) {
@@ -230,6 +244,8 @@ SimulatorConfig configuration(Arguments& a) {
         config.format = parseRawlogFormat(a.formatArg.getValue());
     if (a.startArg.isSet())
         config.tour.start = parseStart(a.startArg.getValue());
+    if (a.drawnArg.isSet())
+        config.log.world.thresholds = {kDrawnFreeAbove, kDrawnFreeAbove};
     validate(config);
     return config;
 }
@@ -293,16 +309,29 @@ int simulate(Arguments& a, const SimulatorConfig& config, bool verbose) {
         }
         if (!t.unseen.empty()) {
             double area = 0;
-            std::size_t stops = 0;
+            std::size_t viewpoints = 0;
             for (const UnseenArea& u : t.unseen) {
                 area += u.areaM2;
-                stops += u.viewpoints.size();
+                viewpoints += u.viewpoints.size();
             }
             std::printf(
                 "      %zu areas (%.1f m^2) the room-sized tour left unseen; %zu stops "
-                "added to look into them ([Tour] look_into_unseen)\n",
-                t.unseen.size(), area, stops);
+                "added to look into them ([Tour] look_into_unseen), %zu more places to look "
+                "from were already stops\n",
+                t.unseen.size(), area, t.unseenStops, viewpoints - t.unseenStops);
         }
+    }
+    if (plan.tour && plan.tour->length < kShortestTour) {
+        // Not an error (a one-room map), but rarely what was meant: say why and what helps.
+        std::fflush(stdout);  // after the summary above
+        std::fprintf(stderr,
+                     "warning: the tour drives only %.1f m (%zu scans): the robot can reach no "
+                     "room-sized area beyond its start%s\n",
+                     plan.tour->length, plan.tour->poses.size(),
+                     plan.tour->outside.empty()
+                         ? ""
+                         : "; the free space around it runs on to the map's edge and is left "
+                           "out (a drawn plan with a grey background or grey doors? try --drawn)");
     }
     if (plan.posesNotFree > 0) {
         std::fprintf(stderr, "warning: %zu of %zu poses are not in free cells of the map\n",

@@ -62,7 +62,8 @@ TEST(ToposlamSim, HelpExplainsEveryOption) {
           "--format",         "--gt",         "--config",      "--beams",
           "--fov-deg",        "--max-range",  "--range-noise", "--bearing-noise-deg",
           "--exact-odometry", "--people",     "--seed",        "--start",
-          "--plot",           "--resolution", "--origin",      "--quiet"}) {
+          "--plot",           "--resolution", "--origin",      "--quiet",
+          "--drawn"}) {
         EXPECT_NE(r.output.find(option), std::string::npos) << option;
     }
     EXPECT_NE(r.output.find("Default: 361"), std::string::npos);
@@ -92,6 +93,71 @@ TEST(ToposlamSim, TourOnASmallMapWritesARawlogAndItsGroundTruth) {
     EXPECT_EQ(scan.sensorLabel, "LASER");
     EXPECT_NEAR(scan.sensorPose.x(), 0.2, 1e-9);
     EXPECT_TRUE(fs::exists(dir.file("tour.png")));
+}
+
+/// A floor plan as drawn (Bormann's maps): white rooms, black walls and a grey (190) background
+/// around the building, 16 x 11 m at 0.05 m per pixel. Two 4 x 3 m rooms ([4.1, 8.05] and
+/// [8.15, 12.1] x [4.1, 7.1] m) with a 0.9 m door between them; the west room opens on to the
+/// background by a 2 m wide entrance; a grey (200) table 0.8 m square stands in the east room at
+/// x [10.5, 11.3], y [4.5, 5.3] m.
+void writeDrawnPlan(const std::string& path) {
+    constexpr double res = 0.05, height = 11.0;
+    cv::Mat image(static_cast<int>(height / res), static_cast<int>(16.0 / res), CV_8U,
+                  cv::Scalar(190));
+    const auto box = [&](double x0, double y0, double x1, double y1, int grey) {
+        const cv::Point a(static_cast<int>(std::lround(x0 / res)),
+                          static_cast<int>(std::lround((height - y1) / res)));
+        const cv::Point b(static_cast<int>(std::lround(x1 / res)),
+                          static_cast<int>(std::lround((height - y0) / res)));
+        image(cv::Rect(a, b)).setTo(grey);
+    };
+    box(4.0, 4.0, 12.2, 7.2, 0);     // outer walls ...
+    box(4.1, 4.1, 12.1, 7.1, 255);   // ... round the floor
+    box(8.05, 4.1, 8.15, 7.1, 0);    // the wall between the rooms ...
+    box(8.05, 5.1, 8.15, 6.0, 255);  // ... and its door
+    box(4.0, 4.6, 4.1, 6.6, 255);    // the entrance
+    box(10.5, 4.5, 11.3, 5.3, 200);  // the table
+    ASSERT_TRUE(cv::imwrite(path, image));
+}
+
+TEST(ToposlamSim, DrawnPlanToursTheBuildingAndItsFurnitureStopsTheLaser) {
+    TempDir dir;
+    writeDrawnPlan(dir.file("plan.png"));
+    const std::string plan = quoted(dir.file("plan.png"));
+    // Read as p(free) = grey / 255 the background is free: with the west room it is one area
+    // open to the map's edge, so the tour keeps to the east room and says why.
+    auto r = runApp("toposlam-sim", plan + " --tour -o " + quoted(dir.file("grey.rawlog")));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("warning: the tour drives only"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("try --drawn"), std::string::npos) << r.output;
+
+    r = runApp("toposlam-sim", plan + " --tour --drawn -o " + quoted(dir.file("drawn.rawlog")));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
+    bool west = false, east = false;
+    for (const auto& p : io::loadTrajectory(dir.file("drawn_gt.txt"))) {
+        ASSERT_TRUE(p.pose.x > 4.1 && p.pose.x < 12.1 && p.pose.y > 4.1 && p.pose.y < 7.1)
+            << "pose (" << p.pose.x << ", " << p.pose.y << ") outside the building";
+        west = west || p.pose.x < 8.05;
+        east = east || p.pose.x > 8.15;
+    }
+    EXPECT_TRUE(west && east) << "both rooms";
+
+    // The laser (0.2 m ahead of the robot) looks from x = 9.5 m straight at the table, 1.0 m
+    // ahead: with --drawn it stops there; read as grey / 255 it sees through to the east wall.
+    writeText(dir.file("pose.txt"), "1 9.3 4.9 0\n2 9.3 4.9 0\n");
+    for (const bool drawn : {true, false}) {
+        const std::string out = dir.file(drawn ? "table.rawlog" : "through.rawlog");
+        r = runApp("toposlam-sim", plan + " --poses " + quoted(dir.file("pose.txt")) +
+                                       " --exact-odometry --range-noise 0 --bearing-noise-deg 0" +
+                                       (drawn ? " --drawn" : "") + " -o " + quoted(out));
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        const auto records = io::LaserLogReader::readAll(out);
+        ASSERT_EQ(records.size(), 2u);
+        const auto& scan = *records[0].scan;
+        const float ahead = scan.getScanRange(scan.getScanSize() / 2);
+        EXPECT_NEAR(ahead, drawn ? 1.0 : 2.6, 0.06) << (drawn ? "--drawn" : "grey / 255");
+    }
 }
 
 TEST(ToposlamSim, CommandLineOverridesTheConfigFile) {

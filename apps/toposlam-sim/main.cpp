@@ -331,7 +331,7 @@ int simulate(Arguments& a, const SimulatorConfig& config, bool verbose) {
                      plan.tour->outside.empty()
                          ? ""
                          : "; the free space around it runs on to the map's edge and is left "
-                           "out (a drawn plan with a grey background or grey doors? try --drawn)");
+                           "out (a drawn plan whose grey background reads as free? try --drawn)");
     }
     if (plan.posesNotFree > 0) {
         std::fprintf(stderr, "warning: %zu of %zu poses are not in free cells of the map\n",

@@ -6,6 +6,8 @@
 #include <toposlam/evaluation/AbsoluteTrajectoryError.h>
 #include <toposlam/features/FeatureExtractor.h>
 #include <toposlam/io/InputError.h>
+#include <toposlam/io/LaserLogReader.h>
+#include <toposlam/io/Trajectory.h>
 #include <toposlam/mapping/GraphSlam.h>
 #include <toposlam/mapping/LogMapper.h>
 #include <toposlam/mapping/MappingOutputs.h>
@@ -13,6 +15,7 @@
 #include <toposlam/simulation/SimulatorConfig.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <functional>
 #include <iterator>
@@ -536,6 +539,44 @@ TEST(GraphSlam, ANarrowLaserIsReportedAsAWeakFrontEnd) {
     EXPECT_FALSE(mapping::weakFrontEnd(wide));
     EXPECT_EQ(mapping::formatSummary(wide).find("WARNING"), std::string::npos);
     EXPECT_FALSE(mapping::summaryJson(wide).at("weak_front_end").get<bool>());
+}
+
+TEST(GraphSlam, ARobotLaserLogMapsTheRobotNotItsLaser) {
+    // The bundled office log written as a new-style CARMEN log (ROBOTLASER1, as the Freiburg
+    // clinic log): each line states the laser's pose (0.2 m ahead of the robot) and the
+    // robot's. The trajectory is the robot's; taken for the laser's, it would be 0.2 m off at
+    // every pose, turning with the robot.
+    const test::TempDir dir;
+    const std::string office = test::shareDir() + "/office/office";
+    const auto records = io::LaserLogReader::readAll(office + ".rawlog");
+    ASSERT_GT(records.size(), 300u);
+    {
+        std::FILE* f = std::fopen(dir.file("office.clf").c_str(), "w");
+        ASSERT_NE(f, nullptr);
+        for (const auto& r : records) {
+            const auto& scan = *r.scan;
+            const std::size_t n = scan.getScanSize();
+            const CPose2D robot = r.odometry;
+            const CPose2D laser = robot + CPose2D(scan.sensorPose);
+            std::fprintf(f, "ROBOTLASER1 0 %.9f %.9f %.9f %.3f 0.01 0 %zu", -0.5 * scan.aperture,
+                         scan.aperture, scan.aperture / static_cast<double>(n - 1), scan.maxRange,
+                         n);
+            for (std::size_t i = 0; i < n; ++i)
+                std::fprintf(f, " %.4f",
+                             scan.getScanRangeValidity(i) ? scan.getScanRange(i) : scan.maxRange);
+            std::fprintf(f, " 0 %.9f %.9f %.9f %.9f %.9f %.9f 0 0 0 0 0 %.6f nohost %.6f\n",
+                         laser.x(), laser.y(), laser.phi(), robot.x(), robot.y(), robot.phi(),
+                         r.fileStamp, r.fileStamp);
+        }
+        std::fclose(f);
+    }
+    const mapping::MappingResult result =
+        mapping::mapLog(dir.file("office.clf"), mrpt::config::CConfigFile(kConfig));
+    const io::Trajectory2D truth = io::loadTrajectory(office + "_gt.txt");
+    ASSERT_EQ(result.trajectory.size(), truth.size());
+    const auto ate = evaluation::evaluateAbsoluteTrajectoryError(result.trajectory, truth);
+    EXPECT_EQ(ate.matchedPoses, truth.size());
+    EXPECT_LT(ate.position.rms, 0.03);  // 0.015 m; the rawlog itself maps to 0.019 m
 }
 
 TEST(GraphSlam, BadLogsGiveClearErrors) {

@@ -4,6 +4,7 @@
 #include <toposlam/cli/CommandLine.h>
 #include <toposlam/cli/ImageMemoryReuse.h>
 #include <toposlam/cli/NumberArg.h>
+#include <toposlam/io/GridMapIO.h>
 #include <toposlam/rooms/RoomSegmentationJob.h>
 
 #include <cstdlib>
@@ -114,7 +115,7 @@ int run(int argc, char** argv) {
     if (minRoomArea.isSet())
         job.options.filters.minRoomArea = minRoomArea.getValue();
     if (drawn.getValue()) {
-        job.options.freeSpace.freeThreshold = 0.98;
+        job.options.freeSpace.freeThreshold = io::kDrawnPlanFreeAbove;
         job.options.freeSpace.occupiedThreshold = 1;
     }
     if (freeThreshold.isSet())

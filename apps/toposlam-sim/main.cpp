@@ -6,6 +6,7 @@
 #include <toposlam/cli/CommandLine.h>
 #include <toposlam/cli/NumberArg.h>
 #include <toposlam/config/IniFile.h>
+#include <toposlam/io/GridMapIO.h>
 #include <toposlam/io/ProgressDisplay.h>
 #include <toposlam/simulation/OfficeDataset.h>
 #include <toposlam/simulation/SimulationJob.h>
@@ -205,9 +206,6 @@ struct Arguments {
     TCLAP::SwitchArg quietArg{"q", "quiet", "No progress display and no summary.", cmd, false};
 };
 
-/// --drawn: p(free) above this is free, below it occupied (Bormann et al.'s maps: grey >= 250).
-constexpr double kDrawnFreeAbove = 0.98;
-
 /// m: a tour shorter than this stays where it starts (worth a warning).
 constexpr double kShortestTour = 1.0;
 
@@ -245,7 +243,7 @@ SimulatorConfig configuration(Arguments& a) {
     if (a.startArg.isSet())
         config.tour.start = parseStart(a.startArg.getValue());
     if (a.drawnArg.isSet())
-        config.log.world.thresholds = {kDrawnFreeAbove, kDrawnFreeAbove};
+        config.log.world.thresholds = {io::kDrawnPlanFreeAbove, io::kDrawnPlanFreeAbove};
     validate(config);
     return config;
 }

@@ -48,6 +48,11 @@ namespace toposlam::io {
 /// 5 cm is a few million). Checked before the cells are allocated.
 constexpr unsigned long long kMaxGridMapCells = 1ULL << 28;
 
+/// p(free) above which a pixel of a drawn or scanned floor plan read as p(free) = grey / 255 is
+/// free: grey >= 250 (249 / 255 = 0.976, 250 / 255 = 0.980), the reading of Bormann et al.'s
+/// room segmentation benchmark. The `--drawn` options of toposlam-rooms and toposlam-sim use it.
+constexpr double kDrawnPlanFreeAbove = 0.98;
+
 /// Geometry for image maps that carry none themselves.
 struct GridMapGeometry {
     double resolution = 0.05;  ///< m per cell

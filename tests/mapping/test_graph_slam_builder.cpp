@@ -165,7 +165,8 @@ TEST(CGraphSlamBuilder, AppOutputsAreReadByMrpt) {
         simplemap.getAsPair(0).sf->getObservationByClass<features::CObservationLaserFeatures>());
 }
 
-// The summary names the loop rules that are off instead of counting what they could not do.
+// The summary names the loop rules that are off instead of counting what they could not do,
+// and says whether the odometry's distances were calibrated.
 TEST(CGraphSlamBuilder, SummarySaysWhichLoopRulesRan) {
     const test::TempDir dir;
     test::writeRawlog(roomTour(), dir.file("tour.rawlog"));
@@ -173,7 +174,8 @@ TEST(CGraphSlamBuilder, SummarySaysWhichLoopRulesRan) {
     for (const auto& [from, to] :
          {std::pair<std::string, std::string>{"\nglobal_search_every = 0",
                                               "\nglobal_search_every = 10"},
-          {"\nloop_contested_support = 0", "\nloop_contested_support = 4"}}) {
+          {"\nloop_contested_support = 0", "\nloop_contested_support = 4"},
+          {"\nodometry_calibration = false", "\nodometry_calibration = true"}}) {
         const auto at = ini.find(from);
         ASSERT_NE(at, std::string::npos) << from;
         ini.replace(at, from.size(), to);
@@ -189,6 +191,12 @@ TEST(CGraphSlamBuilder, SummarySaysWhichLoopRulesRan) {
         const auto loops = io::loadJsonFile(out + "/summary.json").at("loops");
         EXPECT_EQ(loops.at("guess_free_search").get<bool>(), on);
         EXPECT_EQ(loops.at("contested_rule").get<bool>(), on);
+        const auto odometry = io::loadJsonFile(out + "/summary.json").at("odometry");
+        EXPECT_EQ(odometry.at("calibration").get<bool>(), on);
+        EXPECT_EQ(odometry.at("calibration_distance_m").get<double>() > 0, on);
+        EXPECT_NE(text.find(on ? "odometry: distances " : "(odometry_calibration off)"),
+                  std::string::npos)
+            << text;
         // The shipped ini places the scans between keyframes with odometry too.
         EXPECT_TRUE(io::loadJsonFile(out + "/summary.json").at("smoothed_scans").get<bool>());
         EXPECT_NE(text.find("placed by registration and odometry together"), std::string::npos)

@@ -43,6 +43,7 @@ GraphSlam::GraphSlam(const GraphSlamOptions& options,
     : options_(options),
       extractor_(std::move(extractor)),
       registration_(options_, matcherOptions),
+      odometryCalibration_(options_.odometryCalibration),
       loopCloser_(options_, matcherOptions),
       graph_(options.loopLossScale),
       initialPose_(initialPose),
@@ -140,7 +141,11 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
         addKeyframe(scan, Registration(), initialPose_, storedFeatures);
         return;
     }
-    const Prediction prediction = predict(odometryIncrement);
+    // The odometry as the graph uses it: its distance scale calibrated.
+    std::optional<CPose2D> odometry;
+    if (odometryIncrement)
+        odometry = odometryCalibration_.corrected(*odometryIncrement);
+    const Prediction prediction = predict(odometry);
     const CPose2D sensorOnRobot(scan->sensorPose);
     const Registration r =
         registration_.registerScan(polar_, sensorOnRobot, prediction, extract, features_);
@@ -161,6 +166,17 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     }
     const CPose2D pose = graph_.pose(r.reference) + r.pose;
     const CPose2D step = pose - current_;
+    // What the scan shows of the odometry's scale: only ICP that settled where the scan put
+    // it (not held at the odometry's position along the heading; not after a jump), and not
+    // among people close by: walking along with the robot, they make ICP take back some of
+    // its step (ten people in the office: the scale 0.4 % short, 0.1 % without such scans).
+    if (options_.odometryCalibration.enabled && odometryIncrement && !prediction.odometryJumped &&
+        r.method == RegistrationMethod::Icp && !r.heldAlongHeading &&
+        !registration_.seesForegroundObjects(polar_)) {
+        odometryCalibration_.observe(*odometryIncrement, step, r.rawCovariance);
+        stats_.odometryScale = odometryCalibration_.scale();
+        stats_.odometryCalibrationDistance = odometryCalibration_.evidenceDistance();
+    }
     lastMotion_ = step;
     travelled_ += step.norm();
     turned_ += std::abs(mrpt::math::wrapToPi(step.phi()));
@@ -177,8 +193,8 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     // the previous scan (not when it jumped: then the prediction was not the odometry's).
     ScanRecord& record = scans_.back();
     record.registrationVariance = 0.5 * (r.covariance(0, 0) + r.covariance(1, 1));
-    if (odometryIncrement && !prediction.odometryJumped)
-        record.odometry = odometryIncrement;
+    if (odometry && !prediction.odometryJumped)
+        record.odometry = odometry;
 }
 
 void GraphSlam::addKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,

@@ -109,6 +109,17 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
     s.angle("edge_min_sigma_phi", edgeMinSigmaPhi, "... and heading sigma").above(0);
     s.flag("smooth_scans", smoothScans,
            "output: positions between keyframes from registration and odometry together");
+    s.flag("odometry_calibration", odometryCalibration.enabled,
+           "scale the odometry's distances by what the well-registered scans show");
+    s.real("odometry_calibration_min_distance", odometryCalibration.minDistance, "m",
+           "... once this much odometry distance counted ...")
+        .atLeast(0);
+    s.real("odometry_calibration_max_std", odometryCalibration.maxStd, "m",
+           "... from scans ICP placed to this position sigma in every direction ...")
+        .above(0);
+    s.real("odometry_calibration_max_correction", odometryCalibration.maxCorrection, "",
+           "... the scale within 1 +- this")
+        .within(0, 0.5);
     std::vector<std::pair<std::string, std::string>> extractors;
     for (const std::string& name : features::featureExtractorNames())
         extractors.emplace_back(name, name);

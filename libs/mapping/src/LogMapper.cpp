@@ -83,6 +83,7 @@ void runGraphEngine(const std::string& logPath, const mrpt::config::CConfigFileB
     result.statistics = slam.statistics();
     result.guessFreeSearch = slam.options().globalSearchEvery > 0;
     result.smoothedScans = slam.options().smoothScans;
+    result.odometryCalibration = slam.options().odometryCalibration.enabled;
     result.contestedLoops = slam.options().loopContestedSupport > 0;
     result.graph = slam.graph();
     builder.getCurrentlyBuiltMap(result.keyframes);

@@ -78,6 +78,20 @@ std::string formatSummary(const MappingResult& r) {
             st->icpSecondStarts, st->icpWithoutForeground, st->icpHeldAlongHeading,
             st->registeredByGraphMatcher, percent(st->registeredByGraphMatcher, n),
             st->registrationFailed, percent(st->registrationFailed, n), st->odometryJumps);
+        if (!r.odometryCalibration)
+            s += line("odometry: distances as read (odometry_calibration off)");
+        else if (st->odometryScale == 1.0)
+            s += line(
+                "odometry: distances as read (%.1f m of well-registered motion, fewer than "
+                "odometry_calibration_min_distance)",
+                st->odometryCalibrationDistance);
+        else
+            s += line(
+                "odometry: distances scaled by %.4f, learnt from %.0f m of well-registered "
+                "motion (the odometry reads %.1f %% %s)",
+                st->odometryScale, st->odometryCalibrationDistance,
+                100.0 * std::abs(1.0 / st->odometryScale - 1.0),
+                st->odometryScale < 1.0 ? "long" : "short");
         // A rule that is off says so, instead of a count that could not be anything but 0.
         const std::string guessFree =
             r.guessFreeSearch ? std::to_string(st->globalConfirmed) + " of them guess-free"
@@ -142,6 +156,9 @@ nlohmann::json summaryJson(const MappingResult& r) {
                              {"failed", st->registrationFailed},
                              {"odometry_jumps", st->odometryJumps},
                              {"registered_share", st->registeredShare()}};
+        j["odometry"] = {{"calibration", r.odometryCalibration},
+                         {"distance_scale", st->odometryScale},
+                         {"calibration_distance_m", st->odometryCalibrationDistance}};
         j["loops"] = {{"candidates", st->loopCandidates},
                       {"accepted", st->loopsAccepted},
                       {"guess_free_accepted", st->globalConfirmed},

@@ -112,6 +112,10 @@ bool ScanRegistration::plausibleCorrection(const CPose2D& correction) const {
             std::abs(correction.y()) <= options_.maxLateralCorrection);
 }
 
+bool ScanRegistration::seesForegroundObjects(const matching::PolarScan& scan) {
+    return foreground_.remove(scan, foregroundOptions_, background_) > 0;
+}
+
 void ScanRegistration::checkAlongHeading(const matching::PolarScan& scan,
                                          const CPose2D& sensorOnRobot, const Prediction& prediction,
                                          IcpAttempt& icp, Registration& out) {

@@ -18,6 +18,7 @@
 #include <toposlam/mapping/GraphSlamOptions.h>
 #include <toposlam/mapping/Keyframe.h>
 #include <toposlam/mapping/LoopCloser.h>
+#include <toposlam/mapping/OdometryCalibration.h>
 #include <toposlam/mapping/PoseGraph.h>
 #include <toposlam/mapping/ScanRegistration.h>
 #include <toposlam/mapping/SlamStatistics.h>
@@ -61,13 +62,15 @@ class GraphSlam {
     const std::vector<Keyframe>& keyframes() const { return keyframes_; }
     const PoseGraph& graph() const { return graph_; }
     const SlamStatistics& statistics() const { return stats_; }
+    /// The odometry's distance scale as learnt so far (odometry_calibration).
+    const OdometryCalibration& odometryCalibration() const { return odometryCalibration_; }
     const GraphSlamOptions& options() const { return options_; }
 
   private:
     struct ScanRecord {
         std::size_t keyframe;               ///< the keyframe it hangs off
         mrpt::poses::CPose2D fromKeyframe;  ///< its robot pose in that keyframe's frame
-        /// Odometry since the previous scan (none: first scan, missing, or a jump).
+        /// Odometry since the previous scan, calibrated (none: first scan, missing, or a jump).
         std::optional<mrpt::poses::CPose2D> odometry;
         double registrationVariance = 0;  ///< m², per coordinate of its position
     };
@@ -93,6 +96,7 @@ class GraphSlam {
     GraphSlamOptions options_;
     std::unique_ptr<features::FeatureExtractor> extractor_;
     ScanRegistration registration_;
+    OdometryCalibration odometryCalibration_;
     LoopCloser loopCloser_;
     PoseGraph graph_;
     std::vector<Keyframe> keyframes_;

@@ -3,6 +3,7 @@
 // config_ini/toposlam-slam.ini, every key commented there). Units: m, and degrees in the file
 // (keys ending in _deg), radians in code. Loading is strict (config/Options.h).
 #include <toposlam/config/Options.h>
+#include <toposlam/mapping/OdometryCalibration.h>
 
 #include <cmath>
 #include <cstddef>
@@ -96,6 +97,9 @@ struct GraphSlamOptions : public config::Options {
     /// registration and the odometry together, each by its noise model above
     /// (TrajectorySmoother.h); keyframes and headings stay as the graph has them.
     bool smoothScans = true;
+    /// The odometry's distance scale, learnt from the well-registered scans and applied to
+    /// the prediction (OdometryCalibration.h).
+    OdometryCalibration::Options odometryCalibration;
 
     // --- Loop closure ---
     bool loopClosure = true;

@@ -60,6 +60,8 @@ struct MappingResult {
     /// Whether the scans between keyframes were placed by registration and odometry together
     /// (smooth_scans) or by registration alone.
     bool smoothedScans = false;
+    /// Whether the odometry's distance scale was learnt and applied (odometry_calibration).
+    bool odometryCalibration = false;
     std::optional<PoseGraph> graph;    ///< keyframe pose graph, optimised
     mrpt::maps::CSimpleMap keyframes;  ///< each keyframe's scan and features at its pose
 };

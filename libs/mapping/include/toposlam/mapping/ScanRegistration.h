@@ -96,6 +96,10 @@ class ScanRegistration {
     mrpt::math::CMatrixDouble33 edgeCovariance(const mrpt::math::CMatrixDouble33& icp,
                                                double distance, double turn) const;
 
+    /// True when `scan` has objects close to the laser that stand in front of what lies behind
+    /// them (people, mostly; ForegroundObjects.h with foreground_max_range and _width).
+    bool seesForegroundObjects(const matching::PolarScan& scan);
+
   private:
     struct IcpAttempt {
         matching::IcpResult icp;

@@ -21,6 +21,10 @@ struct SlamStatistics {
     std::size_t registeredByGraphMatcher = 0;  ///< ICP was poor; the graph matcher succeeded
     std::size_t registrationFailed = 0;        ///< both failed: odometry prediction kept
     std::size_t odometryJumps = 0;             ///< odometry increments rejected as jumps
+    /// Distance scale applied to the odometry at the end (odometry_calibration; 1 = none),
+    /// and the odometry distance of the well-registered scans it was learnt from (m).
+    double odometryScale = 1.0;
+    double odometryCalibrationDistance = 0;
     // Loop closure
     std::size_t loopCandidates = 0;     ///< candidate pairs verified by the graph matcher
     std::size_t loopsUnmatched = 0;     ///< the matcher found no reliable match

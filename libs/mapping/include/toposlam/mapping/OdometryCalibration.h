@@ -18,8 +18,7 @@ namespace toposlam::mapping {
 class OdometryCalibration {
   public:
     struct Options {
-        /// Off by default: the look-alike offices of GraphSlam.NoLoopIntoALookAlikeOffice...
-        /// take a wrong loop with it (config_ini/toposlam-slam.ini, odometry_calibration).
+        /// Off by default (config_ini/toposlam-slam.ini, odometry_calibration, says why).
         bool enabled = false;
         /// Metres of well-registered odometry before the scale is applied (a few scans say
         /// little: their registration noise is a large share of their motion).

@@ -5,7 +5,7 @@
 // Why: where the laser fixes nothing along the robot's way (a corridor), registration keeps
 // much of the odometry's prediction along it. An odometry that over-reads distance by 1 %
 // then stretches every long corridor (a fifth of that error stayed in the map on Bormann's
-// long office plans), and one that over-reads by 4.5 % (intel's) lets the trajectory fall
+// long office plans), and one that over-reads by about 5 % (intel's) lets the trajectory fall
 // behind along a corridor when loops are searched less often. With the prediction scaled by
 // what the well-registered scans show, what registration keeps along a corridor is the truth.
 // (Odometry calibration from scan matching: e.g. Censi et al., "Simultaneous calibration of

@@ -636,7 +636,7 @@ TEST(GraphSlam, ARobotLaserLogMapsTheRobotNotItsLaser) {
 TEST(GraphSlam, IntelHoldsTogetherWhenLoopsAreSearchedLessOften) {
     // intel, loops searched on every third keyframe instead of every second: the map broke in
     // its inner corridor (mean relation error 0.066 m, worst 0.94 m) after ICP moved the robot
-    // 0.1 m along the corridor where its pose fitted 4-7 % more readings than the odometry's,
+    // 0.1 m along the corridor where its pose fitted a few more readings than the odometry's,
     // which the along-heading check then took (along_heading_margin 0.005). On simulated tours
     // such corrections were mostly wrong; a margin of a tenth of the readings holds them, and
     // intel with them: 0.015 / 0.13 m (shipped settings: 0.014 / 0.10 m).

@@ -66,8 +66,7 @@ struct GraphSlamOptions : public config::Options {
     /// lie on the submap than at ICP's pose, that position is taken. Along a corridor whose
     /// walls fix nothing along it, ICP slides by tenths of a metre on a few stray matches
     /// (Bormann's offices, simulated tours: 1.5-2.7 m over one corridor). The margin is wide:
-    /// such slides often fit a few percent more readings than the truth, while intel's and
-    /// fr079's corrections fit 17-85 % more.
+    /// such slides often fit a few percent more readings than the truth.
     double alongHeadingCheck = 0.1;
     double alongHeadingMargin = 0.1;  ///< share of the scan's readings
     /// A registration is good when at least this share of the scan's valid points ends on

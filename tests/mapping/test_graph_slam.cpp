@@ -654,6 +654,26 @@ TEST(GraphSlam, IntelHoldsTogetherWhenLoopsAreSearchedLessOften) {
     // Below icp-slam's 0.021 m and the 0.018 m; no relation beyond its 0.3 m bound.
     EXPECT_LT(r.translation.mean, 0.018);
     EXPECT_LT(r.translation.max, 0.3);
+    // The checks that decided it, as the summary lists them: each held one within the margin.
+    mapping::GraphSlamOptions options;
+    options.loadFromConfigFile(mrpt::config::CConfigFileMemory(text), "GraphSlam");
+    ASSERT_TRUE(result.statistics.has_value());
+    const auto& checks = result.statistics->alongHeadingChecks;
+    std::size_t held = 0;
+    for (std::size_t i = 0; i < checks.size(); ++i) {
+        const mapping::AlongHeadingCheck& c = checks[i];
+        EXPECT_LT(c.scan, result.trajectory.size());
+        if (i > 0) {
+            EXPECT_GT(c.scan, checks[i - 1].scan);
+        }
+        const double n = double(c.readings);
+        EXPECT_EQ(c.held, double(c.onMapAtIcp) >= 0.5 * n &&
+                              double(c.onMapAtOdometry) + options.alongHeadingMargin * n >=
+                                  double(c.onMapAtIcp));
+        held += c.held;
+    }
+    EXPECT_GE(held, 1u);  // three of its four (0.005 held one)
+    EXPECT_GE(held, result.statistics->icpHeldAlongHeading);
 }
 
 TEST(GraphSlam, BadLogsGiveClearErrors) {

@@ -197,6 +197,14 @@ TEST(CGraphSlamBuilder, SummarySaysWhichLoopRulesRan) {
         EXPECT_NE(text.find(on ? "odometry: distances " : "(odometry_calibration off)"),
                   std::string::npos)
             << text;
+        // Every along-heading check is listed, the held ones among them.
+        const auto registration = io::loadJsonFile(out + "/summary.json").at("registration");
+        const auto& checks = registration.at("along_heading_checks");
+        ASSERT_TRUE(checks.is_array());
+        std::size_t held = 0;
+        for (const auto& c : checks)
+            held += c.at("held").get<bool>();
+        EXPECT_GE(held, registration.at("icp_held_along_heading").get<std::size_t>());
         // The shipped ini places the scans between keyframes with odometry too.
         EXPECT_TRUE(io::loadJsonFile(out + "/summary.json").at("smoothed_scans").get<bool>());
         EXPECT_NE(text.find("placed by registration and odometry together"), std::string::npos)

@@ -149,6 +149,10 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     const CPose2D sensorOnRobot(scan->sensorPose);
     const Registration r =
         registration_.registerScan(polar_, sensorOnRobot, prediction, extract, features_);
+    if (r.alongHeading) {
+        stats_.alongHeadingChecks.push_back(*r.alongHeading);
+        stats_.alongHeadingChecks.back().scan = stats_.scans - 1;
+    }
     switch (r.method) {
         case RegistrationMethod::Icp:
             ++stats_.registeredByIcp;

@@ -156,6 +156,20 @@ nlohmann::json summaryJson(const MappingResult& r) {
                              {"failed", st->registrationFailed},
                              {"odometry_jumps", st->odometryJumps},
                              {"registered_share", st->registeredShare()}};
+        // Where ICP and the odometry disagreed along the heading, and what the scan said
+        // (along_heading_check): the stamp is the scan's, as in trajectory.txt.
+        nlohmann::json checks = nlohmann::json::array();
+        for (const AlongHeadingCheck& c : st->alongHeadingChecks) {
+            checks.push_back(
+                {{"scan", c.scan},
+                 {"stamp", c.scan < r.trajectory.size() ? r.trajectory[c.scan].stamp : 0.0},
+                 {"correction_m", c.correction},
+                 {"readings", c.readings},
+                 {"on_map_at_icp", c.onMapAtIcp},
+                 {"on_map_at_odometry", c.onMapAtOdometry},
+                 {"held", c.held}});
+        }
+        j["registration"]["along_heading_checks"] = std::move(checks);
         j["odometry"] = {{"calibration", r.odometryCalibration},
                          {"distance_scale", st->odometryScale},
                          {"calibration_distance_m", st->odometryCalibrationDistance}};

@@ -130,8 +130,8 @@ void ScanRegistration::checkAlongHeading(const matching::PolarScan& scan,
             // Without the objects ICP keeps most of the odometry's step: they took it back.
             // Or it slid along a corridor: the walls left fix nothing along it.
             const bool keptStep = std::abs(altCorrection.x()) < 0.5 * along;
-            if (keptStep ||
-                (support && holdAlongHeading(background_, sensorOnRobot, prediction, alt))) {
+            if (keptStep || (support && holdAlongHeading(background_, sensorOnRobot, prediction,
+                                                         alt, out.alongHeading.emplace()))) {
                 out.heldAlongHeading = !keptStep;
                 out.withoutForeground = true;
                 icp = alt;
@@ -139,26 +139,28 @@ void ScanRegistration::checkAlongHeading(const matching::PolarScan& scan,
             return;  // with the objects in view, only the rest of the scan is evidence
         }
     }
-    out.heldAlongHeading = support && holdAlongHeading(scan, sensorOnRobot, prediction, icp);
+    out.heldAlongHeading = support && holdAlongHeading(scan, sensorOnRobot, prediction, icp,
+                                                       out.alongHeading.emplace());
 }
 
 bool ScanRegistration::holdAlongHeading(const matching::PolarScan& scan,
                                         const CPose2D& sensorOnRobot, const Prediction& prediction,
-                                        IcpAttempt& attempt) const {
+                                        IcpAttempt& attempt, AlongHeadingCheck& check) const {
     const CPose2D correction = attempt.robot - prediction.inSubmap;
     const CPose2D kept = prediction.inSubmap + CPose2D(0, correction.y(), correction.phi());
     const matching::LineMap& map = prediction.submap->map();
-    const double readings = double(scan.validCount());
-    const double atAttempt = double(readingsOnMap(map, scan, attempt.robot + sensorOnRobot));
+    check.correction = correction.x();
+    check.readings = scan.validCount();
+    check.onMapAtIcp = readingsOnMap(map, scan, attempt.robot + sensorOnRobot);
+    check.onMapAtOdometry = readingsOnMap(map, scan, kept + sensorOnRobot);
+    const double readings = double(check.readings), atAttempt = double(check.onMapAtIcp);
     // A corridor, not a place where nothing fits: most readings lie on the submap.
-    if (atAttempt < kSlideMinFit * readings ||
-        double(readingsOnMap(map, scan, kept + sensorOnRobot)) +
-                options_.alongHeadingMargin * readings <
-            atAttempt) {
-        return false;
-    }
-    attempt.robot = kept;
-    return true;
+    check.held =
+        atAttempt >= kSlideMinFit * readings &&
+        double(check.onMapAtOdometry) + options_.alongHeadingMargin * readings >= atAttempt;
+    if (check.held)
+        attempt.robot = kept;
+    return check.held;
 }
 
 bool ScanRegistration::tryIcp(const matching::PolarScan& scan, const CPose2D& sensorOnRobot,

@@ -27,6 +27,7 @@
 #include <toposlam/mapping/ForegroundObjects.h>
 #include <toposlam/mapping/GraphSlamOptions.h>
 #include <toposlam/mapping/Keyframe.h>
+#include <toposlam/mapping/SlamStatistics.h>
 #include <toposlam/mapping/Submap.h>
 #include <toposlam/matching/GraphScanMatcher.h>
 #include <toposlam/matching/PointToLineIcp.h>
@@ -58,6 +59,9 @@ struct Registration {
     /// At the odometry's position along the heading: the scan did not bear out ICP's
     /// correction along it (along_heading_check).
     bool heldAlongHeading = false;
+    /// The along-heading check's evidence when it ran (its `scan` is left 0: the caller knows
+    /// which scan this is).
+    std::optional<AlongHeadingCheck> alongHeading;
 };
 
 /// True when `motion` goes farther than options.odometryJumpDistance or turns more than
@@ -121,10 +125,11 @@ class ScanRegistration {
                            IcpAttempt& icp, Registration& out);
     /// True, and `attempt` moved there, when `scan`'s readings lie on the submap at the
     /// odometry's position along the heading (with the attempt's sideways and turn correction)
-    /// nearly as often as at the attempt's pose (along_heading_margin).
+    /// nearly as often as at the attempt's pose (along_heading_margin). `check` gets the
+    /// evidence.
     bool holdAlongHeading(const matching::PolarScan& scan,
                           const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
-                          IcpAttempt& attempt) const;
+                          IcpAttempt& attempt, AlongHeadingCheck& check) const;
     bool tryIcp(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                 const Prediction& prediction, Registration& out);
     bool tryGraphMatcher(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,

@@ -2,8 +2,23 @@
 // What a graph SLAM run did, for its summary: how scans were registered, how many keyframes
 // and loops, where the time went.
 #include <cstddef>
+#include <vector>
 
 namespace toposlam::mapping {
+
+/// One along-heading check (along_heading_check): ICP corrected the odometry's prediction by
+/// more than that along the robot's heading, so the scan had to bear the correction out. With
+/// foreground objects in view the check is made on ICP without them (foreground_check), whose
+/// correction may be smaller, and on the rest of the scan.
+struct AlongHeadingCheck {
+    std::size_t scan = 0;      ///< index of the scan in the log's order (0 = the first)
+    double correction = 0;     ///< m along the heading: the checked pose minus the prediction
+    std::size_t readings = 0;  ///< valid readings of the scan checked
+    /// Readings within 5 cm of the submap at ICP's pose and at the odometry's position along
+    /// the heading (with ICP's sideways and turn correction).
+    std::size_t onMapAtIcp = 0, onMapAtOdometry = 0;
+    bool held = false;  ///< the odometry's position along the heading was kept
+};
 
 struct SlamStatistics {
     std::size_t scans = 0;
@@ -18,6 +33,9 @@ struct SlamStatistics {
     std::size_t icpWithoutForeground = 0;
     /// Of those, kept at the odometry's position along the heading (along_heading_check).
     std::size_t icpHeldAlongHeading = 0;
+    /// Every along-heading check, in scan order (for the summary: where ICP and the odometry
+    /// disagreed along the way, and what the scan said).
+    std::vector<AlongHeadingCheck> alongHeadingChecks;
     std::size_t registeredByGraphMatcher = 0;  ///< ICP was poor; the graph matcher succeeded
     std::size_t registrationFailed = 0;        ///< both failed: odometry prediction kept
     std::size_t odometryJumps = 0;             ///< odometry increments rejected as jumps

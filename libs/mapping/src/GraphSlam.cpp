@@ -159,7 +159,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
             stats_.icpUnsettled += r.unsettled;
             stats_.icpSecondStarts += r.secondStart;
             stats_.icpWithoutForeground += r.withoutForeground;
-            stats_.icpHeldAlongHeading += r.heldAlongHeading;
+            stats_.icpHeldAlongHeading += r.heldAlongHeading();
             break;
         case RegistrationMethod::GraphMatcher:
             ++stats_.registeredByGraphMatcher;
@@ -175,7 +175,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     // among people close by: walking along with the robot, they make ICP take back some of
     // its step (ten people in the office: the scale 0.4 % short, 0.1 % without such scans).
     if (options_.odometryCalibration.enabled && odometryIncrement && !prediction.odometryJumped &&
-        r.method == RegistrationMethod::Icp && !r.heldAlongHeading &&
+        r.method == RegistrationMethod::Icp && !r.heldAlongHeading() &&
         !registration_.seesForegroundObjects(polar_)) {
         odometryCalibration_.observe(*odometryIncrement, step, r.rawCovariance);
         stats_.odometryScale = odometryCalibration_.scale();

@@ -132,15 +132,14 @@ void ScanRegistration::checkAlongHeading(const matching::PolarScan& scan,
             const bool keptStep = std::abs(altCorrection.x()) < 0.5 * along;
             if (keptStep || (support && holdAlongHeading(background_, sensorOnRobot, prediction,
                                                          alt, out.alongHeading.emplace()))) {
-                out.heldAlongHeading = !keptStep;
                 out.withoutForeground = true;
                 icp = alt;
             }
             return;  // with the objects in view, only the rest of the scan is evidence
         }
     }
-    out.heldAlongHeading = support && holdAlongHeading(scan, sensorOnRobot, prediction, icp,
-                                                       out.alongHeading.emplace());
+    if (support)
+        holdAlongHeading(scan, sensorOnRobot, prediction, icp, out.alongHeading.emplace());
 }
 
 bool ScanRegistration::holdAlongHeading(const matching::PolarScan& scan,

@@ -56,12 +56,12 @@ struct Registration {
     bool unsettled = false;
     /// ICP without the scan's foreground objects (foreground_check), which took back the step.
     bool withoutForeground = false;
-    /// At the odometry's position along the heading: the scan did not bear out ICP's
-    /// correction along it (along_heading_check).
-    bool heldAlongHeading = false;
     /// The along-heading check's evidence when it ran (its `scan` is left 0: the caller knows
     /// which scan this is).
     std::optional<AlongHeadingCheck> alongHeading;
+    /// At the odometry's position along the heading: the scan did not bear out ICP's
+    /// correction along it (along_heading_check).
+    bool heldAlongHeading() const { return alongHeading && alongHeading->held; }
 };
 
 /// True when `motion` goes farther than options.odometryJumpDistance or turns more than
@@ -119,7 +119,7 @@ class ScanRegistration {
     /// objects when that keeps less than half of the correction. Then the along-heading check
     /// (along_heading_check), on that ICP and the scan without the objects if there were any:
     /// held at the odometry's position along the heading when the readings do not fit better
-    /// at ICP's. Sets out.withoutForeground and out.heldAlongHeading.
+    /// at ICP's. Sets out.withoutForeground and out.alongHeading.
     void checkAlongHeading(const matching::PolarScan& scan,
                            const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
                            IcpAttempt& icp, Registration& out);

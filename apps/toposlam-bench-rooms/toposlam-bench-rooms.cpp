@@ -17,6 +17,7 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFile.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -38,13 +39,15 @@ const char* const kDescription =
     "  slam     end to end: a simulated robot tours generated plans and Bormann maps, "
     "toposlam's SLAM maps the log, the SLAM grid and trajectory are segmented and scored in "
     "the plan's frame (beside the same plans as drawn, set 'drawn'). Slow: minutes per plan.\n"
-    "--rotations turns every bormann and gen map (and its ground truth) by each angle. Prints "
+    "--rotations turns every bormann and gen map (and its ground truth) by each angle; "
+    "--cell-size maps them in coarser cells. Prints "
     "one row per map and method, then the averages per set, method, furnishing and angle, and "
     "writes them as JSON. Every method runs single-threaded; times are wall-clock medians over "
     "--repeats runs of the segmentation call alone (loading excluded), with the thread's CPU "
     "time beside them.\nExamples:\n"
     "  toposlam-bench-rooms -o b4.json > b4.md\n"
     "  toposlam-bench-rooms --sets bormann,gen --rotations 0,10,17,30,45 -r 1 -o b4-rot.json\n"
+    "  toposlam-bench-rooms --sets bormann --cell-size 0.1 -m vdoor -r 1 -o b4-10cm.json\n"
     "  toposlam-bench-rooms --sets slam -r 1 --images b4-slam-png -o b4-slam.json\n"
     "  toposlam-bench-rooms --write-plans gen-maps   # B4-gen as Bormann-format files";
 
@@ -154,6 +157,16 @@ struct Arguments {
         "0",
         "list",
         cmd};
+    cli::NumberArg<double> cellSize{
+        "",
+        "cell-size",
+        "segment every bormann and gen map in cells of this size (m; a whole multiple of the "
+        "drawn 0.05 m): a cell is free when every drawn pixel in it is, as a laser grid marks a "
+        "cell a beam ended in; scored in the drawn ground truth (default: 0 = as drawn)",
+        0.0,
+        cli::NumberRange<double>::nonNegative(5),
+        "m",
+        cmd};
     TCLAP::ValueArg<std::string> genSeeds{
         "",    "gen-seeds", "B4-gen plans: seeds and ranges, e.g. 1-20 or 3,7 (default: 1-20)",
         false, "1-20",      "list",
@@ -222,6 +235,13 @@ roomsbench::RoomBenchmarkSuiteOptions suiteOptions(
     o.bench.methods = splitList(a.methods.getValue());
     o.bench.maps = splitList(a.maps.getValue());
     o.bench.rotationsDeg = angleList(a.rotations.getValue());
+    o.bench.cellSize = a.cellSize.getValue();
+    if (const double cells = o.bench.cellSize / 0.05;  // the drawn maps' cell size
+        cells > 0 && std::abs(cells - std::round(cells)) > 1e-6 * cells) {
+        throw cli::UsageError(
+            "--cell-size: a whole multiple of the drawn maps' 0.05 m cells "
+            "(0.05, 0.1, 0.15, ...)");
+    }
     o.bench.virtualDoor = rooms::RoomSegmenter::Options::load(a.config.getValue(), false);
     o.bench.virtualDoorPaper = rooms::RoomSegmenter::Options::load(a.config.getValue(), true);
     const auto sets = splitList(a.sets.getValue());

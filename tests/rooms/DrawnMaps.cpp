@@ -2,6 +2,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -28,6 +29,19 @@ cv::Point pixel(const cv::Mat& img, double x, double y) {
 }
 
 }  // namespace
+
+double labelIoU(const cv::Mat& a, int labelA, const cv::Mat& b, int labelB) {
+    const cv::Mat inA = a == labelA, inB = b == labelB;
+    const double both = cv::countNonZero(inA & inB), either = cv::countNonZero(inA | inB);
+    return either > 0 ? both / either : 0;
+}
+
+double distanceToNearestDoor(const TopologicalMap& map, const mrpt::math::TPoint2D& p) {
+    double best = 1e9;
+    for (const auto& d : map.doors)
+        best = std::min(best, std::hypot(d.middle().x - p.x, d.middle().y - p.y));
+    return best;
+}
 
 GridImageFrame frameOf(const cv::Mat& image) {
     GridImageFrame f;

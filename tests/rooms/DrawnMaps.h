@@ -3,6 +3,7 @@
 // rooms and doors are. Images are 8-bit map images (row 0 = top, 0.05 m per pixel):
 // 255 = free, 0 = occupied, 128 = unknown.
 #include <toposlam/rooms/GridImageFrame.h>
+#include <toposlam/rooms/TopologicalMap.h>
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/math/TPoint2D.h>
@@ -26,6 +27,12 @@ struct DrawnMap {
     std::vector<DrawnDoor> doors;
     std::vector<mrpt::math::TPoint2D> tour;  // a robot path through every door (m)
 };
+
+/// Intersection over union of label `labelA` of `a` and label `labelB` of `b` (CV_32S, same
+/// size); 0 when neither has any pixel.
+double labelIoU(const cv::Mat& a, int labelA, const cv::Mat& b, int labelB);
+/// Distance (m) from `p` to the middle of the nearest door of `map` (1e9 without doors).
+double distanceToNearestDoor(const TopologicalMap& map, const mrpt::math::TPoint2D& p);
 
 /// The world frame of a drawn image: origin (0, 0) at the lower-left corner.
 GridImageFrame frameOf(const cv::Mat& image);

@@ -40,12 +40,6 @@ DrawnMap turned(const DrawnMap& map, double degrees) {
     return out;
 }
 
-double iou(const cv::Mat& a, int labelA, const cv::Mat& b, int labelB) {
-    const cv::Mat inA = a == labelA, inB = b == labelB;
-    const double both = cv::countNonZero(inA & inB), either = cv::countNonZero(inA | inB);
-    return either > 0 ? both / either : 0;
-}
-
 void expectSameAsUpright(const DrawnMap& upright, double degrees) {
     SCOPED_TRACE("turned by " + std::to_string(degrees) + " deg");
     const RoomSegmenter segmenter;
@@ -61,18 +55,15 @@ void expectSameAsUpright(const DrawnMap& upright, double degrees) {
         EXPECT_TRUE(seen.insert(id).second) << "two drawn rooms share segment " << id;
         const cv::Point cell = result.map.frame.toCell(p.x, p.y);
         const int expectedId = expected.at<int>(cell);
-        EXPECT_GE(iou(result.map.labels, id, expected, expectedId), 0.9)
+        EXPECT_GE(toposlam::rooms::test::labelIoU(result.map.labels, id, expected, expectedId), 0.9)
             << "room at (" << p.x << ", " << p.y << ")";
     }
     // Every drawn door is found: a door whose middle is within the wall opening (half the wall,
     // a cell, and a cell of turning) of the drawn middle.
     EXPECT_EQ(result.map.doors.size(), drawn.doors.size());
     for (const auto& truth : drawn.doors) {
-        double best = 1e9;
-        for (const auto& d : result.map.doors)
-            best = std::min(
-                best, std::hypot(d.middle().x - truth.middle.x, d.middle().y - truth.middle.y));
-        EXPECT_LT(best, 0.1 + 2 * kResolution + kResolution)
+        EXPECT_LT(toposlam::rooms::test::distanceToNearestDoor(result.map, truth.middle),
+                  0.1 + 2 * kResolution + kResolution)
             << "drawn door at (" << truth.middle.x << ", " << truth.middle.y << ")";
     }
 }

@@ -122,7 +122,18 @@ RoomBenchmark::RoomBenchmark(RoomBenchmarkOptions options)
         if (!std::isfinite(a) || a < -360 || a > 360)
             throw std::invalid_argument("rotation angles must be in [-360, 360] degrees");
     }
+    if (!std::isfinite(options_.cellSize) || options_.cellSize < 0)
+        throw std::invalid_argument("the cell size must be a length >= 0 m");
     options_.repeats = std::max(1, options_.repeats);
+}
+
+std::vector<RoomBenchmarkCase> RoomBenchmark::atCellSize(
+    std::vector<RoomBenchmarkCase> cases) const {
+    if (options_.cellSize > 0) {
+        for (RoomBenchmarkCase& c : cases)
+            c = pooledCase(c, options_.cellSize);
+    }
+    return cases;
 }
 
 cv::Mat RoomBenchmark::scoredLabels(const TopologicalMap& map, const cv::Mat& freeImage) {
@@ -135,7 +146,8 @@ std::vector<RoomBenchmarkScore> RoomBenchmark::run(const io::ProgressCallback& p
     return runCases(
         options_.maps.size(),
         [&](std::size_t i) {
-            return bormannCases(options_.dataDir, options_.maps[i], options_.rotationsDeg);
+            return atCellSize(
+                bormannCases(options_.dataDir, options_.maps[i], options_.rotationsDeg));
         },
         progress);
 }
@@ -201,8 +213,9 @@ std::vector<RoomBenchmarkScore> RoomBenchmark::score(const RoomBenchmarkCase& c)
         s.segments = countSegments(labels);
         s.groundTruthRooms = c.truth.count;
         const auto virtualDoors = labelBoundaryDoors(doorMetricSegmentLabels(labels), c.scoredFree);
-        s.doors = matchDoors(virtualDoors, c.trueDoors, detail::toCells(0.5, resolution));
-        s.doors1m = matchDoors(virtualDoors, c.trueDoors, detail::toCells(1.0, resolution));
+        const double truthResolution = c.truthResolution > 0 ? c.truthResolution : resolution;
+        s.doors = matchDoors(virtualDoors, c.trueDoors, detail::toCells(0.5, truthResolution));
+        s.doors1m = matchDoors(virtualDoors, c.trueDoors, detail::toCells(1.0, truthResolution));
         s.seconds = median(seconds);
         s.minSeconds = *std::min_element(seconds.begin(), seconds.end());
         s.cpuSeconds = median(cpu);

@@ -4,8 +4,12 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace toposlam::rooms {
 
@@ -76,6 +80,104 @@ mrpt::maps::COccupancyGridMap2D gridOfFreeImage(const cv::Mat& free, double reso
         }
     }
     return grid;
+}
+
+cv::Mat poolFreeImage(const cv::Mat& free, int factor) {
+    CV_Assert(free.type() == CV_8U && factor >= 1);
+    const int k = factor;
+    cv::Mat out((free.rows + k - 1) / k, (free.cols + k - 1) / k, CV_8U, cv::Scalar(0));
+    const int above = out.rows * k - free.rows;  // rows of cells reaching past the image's top
+    for (int r = 0; r < out.rows; ++r) {
+        const int first = r * k - above;  // the cell's top pixel row
+        if (first < 0)
+            continue;
+        auto* cell = out.ptr<std::uint8_t>(r);
+        for (int c = 0; (c + 1) * k <= free.cols; ++c) {
+            bool allFree = true;
+            for (int dr = 0; dr < k && allFree; ++dr) {
+                const auto* pixel = free.ptr<std::uint8_t>(first + dr) + c * k;
+                allFree = std::find(pixel, pixel + k, 0) == pixel + k;
+            }
+            cell[c] = allFree ? 255 : 0;
+        }
+    }
+    return out;
+}
+
+namespace {
+
+// Labels of cells of `factor` x `factor` pixels (CV_32S) at the pixels of `free` (CV_8U, the
+// drawn plan): each pixel takes its cell's label; then the free pixels whose cell was not free
+// (along the walls) take the label of a 4-neighbour, layer by layer, as far as a cell reaches
+// (4-neighbours: across a wall drawn as a diagonal staircase, free pixels touch only at corners).
+cv::Mat labelsAtPixels(const cv::Mat& cellLabels, int factor, const cv::Mat& free) {
+    CV_Assert(cellLabels.type() == CV_32S);
+    cv::Mat out(free.size(), CV_32S, cv::Scalar(0));
+    const int above = cellLabels.rows * factor - free.rows;  // as in poolFreeImage
+    for (int r = 0; r < free.rows; ++r) {
+        const int* cells = cellLabels.ptr<int>((r + above) / factor);
+        int* row = out.ptr<int>(r);
+        for (int c = 0; c < free.cols; ++c)
+            row[c] = cells[c / factor];
+    }
+    std::vector<std::pair<cv::Point, int>> layer;
+    for (int pass = 0; pass < 2 * (factor - 1); ++pass) {
+        layer.clear();
+        for (int r = 0; r < free.rows; ++r) {
+            const auto* isFree = free.ptr<std::uint8_t>(r);
+            const int* row = out.ptr<int>(r);
+            for (int c = 0; c < free.cols; ++c) {
+                if (row[c] != 0 || isFree[c] == 0)
+                    continue;
+                int label = 0;
+                if (r > 0 && out.at<int>(r - 1, c) != 0)
+                    label = out.at<int>(r - 1, c);
+                else if (c > 0 && row[c - 1] != 0)
+                    label = row[c - 1];
+                else if (c + 1 < free.cols && row[c + 1] != 0)
+                    label = row[c + 1];
+                else if (r + 1 < free.rows && out.at<int>(r + 1, c) != 0)
+                    label = out.at<int>(r + 1, c);
+                if (label != 0)
+                    layer.emplace_back(cv::Point(c, r), label);
+            }
+        }
+        if (layer.empty())
+            break;
+        for (const auto& [p, label] : layer)
+            out.at<int>(p) = label;
+    }
+    return out;
+}
+
+}  // namespace
+
+RoomBenchmarkCase pooledCase(const RoomBenchmarkCase& drawn, double cellSize) {
+    if (drawn.toTruthFrame || !drawn.trajectory.empty() || drawn.grid.getXMin() != 0 ||
+        drawn.grid.getYMin() != 0)
+        throw std::invalid_argument("only a drawn map can be pooled ('" + drawn.name() + "')");
+    const double resolution = drawn.grid.getResolution();
+    const double ratio = cellSize / resolution;
+    const long factor = std::lround(ratio);
+    if (!std::isfinite(ratio) || factor < 1 || factor > 100 ||
+        std::abs(ratio - static_cast<double>(factor)) > 1e-6 * ratio) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf,
+                      "the cell size must be a whole multiple of the map's %g m cells (got %g m)",
+                      resolution, cellSize);
+        throw std::invalid_argument(buf);
+    }
+    if (factor == 1)
+        return drawn;
+    const int k = static_cast<int>(factor);
+    RoomBenchmarkCase c = drawn;
+    c.inputFree = poolFreeImage(drawn.inputFree, k);
+    c.grid = gridOfFreeImage(c.inputFree, cellSize);  // same origin: the same world frame
+    c.truthResolution = resolution;
+    c.toTruthFrame = [k, free = drawn.inputFree](const cv::Mat& labels) {
+        return labelsAtPixels(labels, k, free);
+    };
+    return c;
 }
 
 RoomBenchmarkCase drawnCase(std::string dataset, std::string map, bool furnished,

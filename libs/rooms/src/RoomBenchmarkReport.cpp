@@ -155,6 +155,7 @@ std::string RoomBenchmark::json(const std::vector<RoomBenchmarkScore>& scores,
     j["data_dir"] = options.dataDir;
     j["repeats"] = options.repeats;
     j["rotations_deg"] = options.rotationsDeg;
+    j["cell_size_m"] = options.cellSize > 0 ? io::Json(options.cellSize) : io::Json();
     j["maps"] = io::Json::array();
     for (const auto& s : scores)
         j["maps"].push_back(scoreJson(s));

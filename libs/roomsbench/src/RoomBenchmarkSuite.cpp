@@ -41,7 +41,9 @@ RoomBenchmarkSuiteResult runRoomBenchmarkSuite(const RoomBenchmarkSuiteOptions& 
         append(bench.run(part(0, bormann)));
     append(bench.runCases(
         generated,
-        [&](std::size_t i) { return generatedCases(options.generatedSeeds[i], o.rotationsDeg); },
+        [&](std::size_t i) {
+            return bench.atCellSize(generatedCases(options.generatedSeeds[i], o.rotationsDeg));
+        },
         part(bormann, generated)));
     if (endToEnd > 0) {
         const auto plans =

@@ -27,6 +27,10 @@ struct RoomBenchmarkOptions {
     std::vector<std::string> maps;
     /// Angles (deg, counter-clockwise) each map is turned by (nearest neighbour); {0}: as drawn.
     std::vector<double> rotationsDeg = {0};
+    /// m; > 0: every drawn map (Bormann's, B4-gen) is segmented in cells of this size (a whole
+    /// multiple of its own), pooled as a laser grid would mark them (pooledCase), and scored in
+    /// its drawn ground truth. 0: as drawn.
+    double cellSize = 0;
     RoomSegmenter::Options virtualDoor = RoomSegmenter::Options::improved();
     RoomSegmenter::Options virtualDoorPaper = RoomSegmenter::Options::paperExact();
 };
@@ -85,6 +89,9 @@ class RoomBenchmark {
         std::size_t count,
         const std::function<std::vector<RoomBenchmarkCase>(std::size_t)>& makeCases,
         const io::ProgressCallback& progress = {}) const;
+
+    /// `cases` (drawn maps) at options().cellSize (pooledCase); as they are when it is 0.
+    std::vector<RoomBenchmarkCase> atCellSize(std::vector<RoomBenchmarkCase> cases) const;
 
     /// Every selected method on one case (the images of options().imageDir included).
     std::vector<RoomBenchmarkScore> score(const RoomBenchmarkCase& c) const;

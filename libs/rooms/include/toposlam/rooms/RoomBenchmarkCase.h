@@ -40,6 +40,9 @@ struct RoomBenchmarkCase {
     /// Carries a label image of `grid` (CV_32S, map-image layout) into the ground truth's
     /// image (nearest cell). Empty: the two are the same image.
     std::function<cv::Mat(const cv::Mat&)> toTruthFrame;
+    /// Metres per pixel of the ground truth's image (what door distances are measured in);
+    /// 0: the grid's resolution.
+    double truthResolution = 0;
 
     /// "office_a_furnitures" or "office_a_furnitures@17" when turned.
     std::string name() const;
@@ -58,6 +61,21 @@ cv::Mat rotationOfImage(const cv::Size& size, double degrees, cv::Size& rotatedS
 /// free (p = 1) where `free` (CV_8U, map-image layout) is non-zero and occupied (p = 0)
 /// elsewhere: what a drawn map hands over.
 mrpt::maps::COccupancyGridMap2D gridOfFreeImage(const cv::Mat& free, double resolution);
+
+/// `free` (CV_8U, map-image layout, non-zero = free) in cells of `factor` x `factor` pixels
+/// aligned to its lower-left corner (a grid's origin): a cell is free (255) when every pixel in
+/// it is free, and not free (0) when any is not or it reaches past the image, as a laser grid
+/// marks a cell a beam ended in.
+cv::Mat poolFreeImage(const cv::Mat& free, int factor);
+
+/// A drawn case (gridOfFreeImage: no trajectory, origin (0, 0), the ground truth's frame)
+/// mapped at a coarser cell size: its grid pooled (poolFreeImage) to `cellSize`, a whole
+/// multiple of its resolution, with the same origin; the segmentation is scored in the drawn
+/// ground truth, each cell's label carried to its pixels and on into the pixels along the
+/// walls that only the drawn plan has free (the nearest label within a cell's reach).
+/// cellSize equal to the resolution returns the case as it is. Throws std::invalid_argument
+/// for any other cell size, or for a case that is not drawn.
+RoomBenchmarkCase pooledCase(const RoomBenchmarkCase& drawn, double cellSize);
 
 /// Bormann's map `base` in `dataDir` (<base>.png, <base>_furnitures.png,
 /// <base>_gt_segmentation.png; grey >= 250 free), unfurnished then furnished, at each of

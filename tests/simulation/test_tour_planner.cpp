@@ -283,3 +283,27 @@ TEST(TourPlanner, StartsWhereItReachesTheMostRooms) {
             << "pose (" << p.pose.x << ", " << p.pose.y << ") at t=" << p.stamp;
     }
 }
+
+TEST(TourPlanner, DrivesTheClosedTourAgainLapAfterLap) {
+    TourOptions o;
+    o.laps = 3;
+    const Tour& once = officeTour();
+    const Tour thrice = planTour(officeMap(), o);
+    EXPECT_EQ(thrice.visitOrder, once.visitOrder);
+    EXPECT_NEAR(thrice.length, 3 * once.length, 1e-9 * once.length);
+    EXPECT_EQ(thrice.legs.size(), 3 * once.legs.size());
+    // Each lap passes where the first did, and the last ends where the first started.
+    ASSERT_GT(thrice.poses.size(), 2 * once.poses.size());
+    EXPECT_NEAR(thrice.poses.back().pose.x, once.poses.front().pose.x, 1e-9);
+    EXPECT_NEAR(thrice.poses.back().pose.y, once.poses.front().pose.y, 1e-9);
+    std::size_t atStart = 0;
+    for (const auto& p : thrice.poses) {
+        if (std::hypot(p.pose.x - once.poses.front().pose.x, p.pose.y - once.poses.front().pose.y) <
+            1e-9)
+            ++atStart;
+    }
+    EXPECT_GE(atStart, 4u);  // the start and the end of each of the three laps
+    // Laps need a closed tour.
+    o.returnToStart = false;
+    EXPECT_THROW(planTour(officeMap(), o), std::invalid_argument);
+}

@@ -33,6 +33,10 @@ void TourOptions::declare(config::OptionsSchema& s) {
            "Gaussian path smoothing along the path, 1 sigma")
         .atLeast(0);
     s.flag("return_to_start", returnToStart, "close the loop (SLAM needs loops to be tested)");
+    s.integer("laps", laps, "",
+              "drive the closed tour this many times (a long log that keeps coming back, as a "
+              "patrolling robot records it; needs return_to_start)")
+        .within(1, 1000);
     s.flag("look_into_unseen", coverage.lookIntoUnseen,
            "also stop where the robot sees the free areas the room-sized tour leaves unseen "
            "(closets, rooms behind a vestibule, space behind furniture)");
@@ -254,6 +258,15 @@ Tour planTour(const ClearanceMap& map, const TourOptions& options) {
             order = orderPlaces(planner, map, places, areaOfPlace, options.returnToStart, tour);
             planLegs(planner, places, order, options.smoothingSigma, tour);
         }
+    }
+
+    if (options.laps > 1) {
+        if (!options.returnToStart)
+            throw std::invalid_argument("laps > 1 needs return_to_start: the tour must be closed");
+        const std::vector<std::vector<TPoint2D>> lap = tour.legs;
+        for (int k = 1; k < options.laps; ++k)
+            tour.legs.insert(tour.legs.end(), lap.begin(), lap.end());
+        tour.length *= options.laps;
     }
 
     double initialYaw = 0;

@@ -29,6 +29,9 @@ struct TourOptions : public config::Options {
     RoomSizedAreaOptions areas;
     double smoothingSigma = 0.3;  ///< m; see smoothPath
     bool returnToStart = true;    ///< close the loop (SLAM needs loops to be tested)
+    /// Drive the closed tour this many times (needs returnToStart): a long log that keeps
+    /// coming back, as a robot patrolling a building records it.
+    int laps = 1;
     TourCoverageOptions coverage;
     /// Start pose (world frame); default: the centre of the largest area the tour visits,
     /// heading along the first leg.
@@ -56,11 +59,12 @@ struct Tour {
     std::size_t unseenStops = 0;
     std::vector<std::vector<mrpt::math::TPoint2D>> legs;  ///< the smoothed path of each leg
     io::Trajectory2D poses;                               ///< scan poses (world frame), stamps in s
-    double length = 0;                                    ///< m driven
+    double length = 0;                                    ///< m driven, all laps
 };
 
 /// Plans the tour. Throws std::invalid_argument when the map has no place where the robot fits,
-/// no room-sized area, or a start pose where the robot does not fit.
+/// no room-sized area, a start pose where the robot does not fit, or laps > 1 without
+/// returnToStart.
 Tour planTour(const ClearanceMap& map, const TourOptions& options);
 
 }  // namespace toposlam::simulation

@@ -245,9 +245,13 @@ void GraphSlam::addKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
 
 void GraphSlam::scheduleOptimization(const LoopClosureOutcome& loops) {
     const std::size_t newest = keyframes_.back().id;
+    // Periodic whole-graph runs wait for the graph to grow by half: each costs more the larger
+    // the graph, and growing steps keep their sum within a few times the last one's cost.
+    const std::size_t globalEvery =
+        std::max(options_.optimizeGlobalEvery, lastGlobalOptimization_ / 2);
     if (loops.maxDistanceError > options_.optimizeGlobalDistance ||
         loops.maxAngleError > options_.optimizeGlobalAngle ||
-        (loopsWaiting_ > 0 && newest >= lastGlobalOptimization_ + options_.optimizeGlobalEvery)) {
+        (loopsWaiting_ > 0 && newest >= lastGlobalOptimization_ + globalEvery)) {
         optimize(1);
     } else if (loops.maxDistanceError > options_.optimizeTriggerDistance ||
                loops.maxAngleError > options_.optimizeTriggerAngle ||

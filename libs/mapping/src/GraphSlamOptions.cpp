@@ -208,7 +208,8 @@ void GraphSlamOptions::declareBackEnd(config::OptionsSchema& s) {
               "the recent keyframes a windowed optimisation moves")
         .within(2, 1000000);
     s.integer("optimize_global_every", optimizeGlobalEvery, "keyframes",
-              "the whole graph is optimised every this many keyframes with loops, and at the end")
+              "the whole graph is optimised every this many keyframes with loops (and once it "
+              "has grown by half since the last time), and at the end")
         .within(1, 1000000);
 }
 

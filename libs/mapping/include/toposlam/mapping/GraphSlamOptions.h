@@ -169,7 +169,9 @@ struct GraphSlamOptions : public config::Options {
     /// while the old map is sound); one that disagrees by more than optimizeGlobal* (the
     /// first closure of a long loop) over the whole graph. Loops that agree wait for
     /// optimizeEveryLoops of them. The whole graph is optimised every optimizeGlobalEvery
-    /// keyframes that added loops, and at the end.
+    /// keyframes that added loops, but not before it has grown by half since the last time
+    /// (a whole-graph run costs more the longer the log: their total stays within a few times
+    /// the last one's cost), and at the end.
     double optimizeTriggerDistance = 0.1;  ///< m
     double optimizeTriggerAngle = 0.0349;  ///< rad (2 deg)
     double optimizeGlobalDistance = 0.3;   ///< m

@@ -48,25 +48,27 @@ LoopCloser::LoopCloser(const GraphSlamOptions& options,
 std::vector<std::size_t> LoopCloser::gatedCandidates(std::size_t current, std::size_t firstActive,
                                                      const std::vector<Keyframe>& keyframes,
                                                      const PoseGraph& graph) {
-    variances_ = &uncertainty_.from(graph, current);
     const CPose2D& here = graph.pose(current);
-    std::vector<std::pair<double, std::size_t>> inGate;
+    std::vector<std::pair<double, std::size_t>>& near = nearFirst_;
+    near.clear();
     for (std::size_t j = 0; j < firstActive && j < current; ++j) {
-        if (keyframes[current].travelled - keyframes[j].travelled < options_.loopMinTravel)
+        if (keyframes[current].travelled - keyframes[j].travelled < options_.loopMinTravel ||
+            !viewsOverlap(keyframes[j], keyframes[current], graph))
             continue;
-        const PathVariance& v = (*variances_)[j];
-        if (!v.reached || !viewsOverlap(keyframes[j], keyframes[current], graph))
-            continue;
-        const double d = std::hypot(graph.pose(j).x() - here.x(), graph.pose(j).y() - here.y());
-        if (d <= options_.loopOverlapDistance + options_.loopGateSigmas * std::sqrt(v.at(d)))
-            inGate.push_back({d, j});
+        near.push_back({std::hypot(graph.pose(j).x() - here.x(), graph.pose(j).y() - here.y()), j});
     }
-    std::sort(inGate.begin(), inGate.end());
-    // Nearest first, spread out so that look-alike places in the gate get tried as well.
+    std::sort(near.begin(), near.end());
+    // Nearest first, spread out so that look-alike places in the gate get tried as well. The
+    // path uncertainty is searched only as far as the keyframes looked at (PathUncertainty).
+    uncertainty_.start(graph, current);
     std::vector<std::size_t> chosen;
-    for (const auto& [d, j] : inGate) {
+    for (const auto& [d, j] : near) {
         if (chosen.size() >= options_.loopMaxCandidates)
             break;
+        const PathVariance& v = uncertainty_.to(j);
+        if (!v.reached ||
+            d > options_.loopOverlapDistance + options_.loopGateSigmas * std::sqrt(v.at(d)))
+            continue;
         const bool spaced = std::all_of(chosen.begin(), chosen.end(), [&](std::size_t c) {
             return std::hypot(graph.pose(c).x() - graph.pose(j).x(),
                               graph.pose(c).y() - graph.pose(j).y()) >=
@@ -149,7 +151,7 @@ std::vector<LoopCloser::Measurement> LoopCloser::consistentGated(
         }
     std::vector<Measurement> out;
     for (const Measurement& m : matches) {
-        const PathVariance& v = (*variances_)[m.older];
+        const PathVariance& v = uncertainty_.to(m.older);
         CMatrixDouble33 combined = m.covariance;
         const double d = m.pose.norm();
         combined(0, 0) += v.at(d), combined(1, 1) += v.at(d), combined(2, 2) += v.heading;

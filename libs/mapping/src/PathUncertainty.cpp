@@ -35,15 +35,20 @@ void PathUncertainty::cacheNewEdges(const PoseGraph& graph) {
     }
 }
 
-const std::vector<PathVariance>& PathUncertainty::from(const PoseGraph& graph, std::size_t source) {
+void PathUncertainty::start(const PoseGraph& graph, std::size_t source) {
     cacheNewEdges(graph);
+    graph_ = &graph;
     const std::size_t n = graph.nodeCount();
     variance_.assign(n, PathVariance());
     cost_.assign(n, std::numeric_limits<double>::infinity());
+    settled_.assign(n, 0);
     heap_.clear();
     cost_[source] = 0;
     variance_[source].reached = true;
     heap_.push_back({0.0, source});
+}
+
+bool PathUncertainty::settleNext() {
     const auto later = std::greater<std::pair<double, std::size_t>>();
     while (!heap_.empty()) {
         std::pop_heap(heap_.begin(), heap_.end(), later);
@@ -51,8 +56,9 @@ const std::vector<PathVariance>& PathUncertainty::from(const PoseGraph& graph, s
         heap_.pop_back();
         if (cost > cost_[node])
             continue;  // stale entry
+        settled_[node] = 1;
         const PathVariance here = variance_[node];
-        for (std::size_t e : graph.edgesAt(node)) {
+        for (std::size_t e : graph_->edgesAt(node)) {
             const Step& step = steps_[e];
             const std::size_t next = step.from == node ? step.to : step.from;
             const double position = here.position + step.position;
@@ -65,6 +71,20 @@ const std::vector<PathVariance>& PathUncertainty::from(const PoseGraph& graph, s
                 std::push_heap(heap_.begin(), heap_.end(), later);
             }
         }
+        return true;
+    }
+    return false;
+}
+
+const PathVariance& PathUncertainty::to(std::size_t node) {
+    while (!settled_[node] && settleNext()) {
+    }
+    return variance_[node];  // not settled: unreached (nothing left to settle)
+}
+
+const std::vector<PathVariance>& PathUncertainty::from(const PoseGraph& graph, std::size_t source) {
+    start(graph, source);
+    while (settleNext()) {
     }
     return variance_;
 }

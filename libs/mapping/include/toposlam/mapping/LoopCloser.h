@@ -80,6 +80,9 @@ class LoopCloser {
         /// Accepted beyond the gate on agreeing evidence: added without the robust loss.
         bool contested = false;
     };
+    /// Older keyframes to verify: in the Mahalanobis gate, nearest first, spaced; the path
+    /// uncertainty is searched only as far as the keyframes looked at (and kept in uncertainty_
+    /// for consistentGated).
     std::vector<std::size_t> gatedCandidates(std::size_t current, std::size_t firstActive,
                                              const std::vector<Keyframe>& keyframes,
                                              const PoseGraph& graph);
@@ -130,7 +133,8 @@ class LoopCloser {
     PathUncertainty uncertainty_;
     WorkerPool pool_;
     std::vector<matching::GraphScanMatcher> guided_, free_;  // one of each per pool thread
-    const std::vector<PathVariance>* variances_ = nullptr;   // of the current query
+    // The gate's candidates of the current query, nearest first (reused).
+    std::vector<std::pair<double, std::size_t>> nearFirst_;
     std::deque<Measurement> pending_;    // guess-free matches awaiting confirmation
     std::deque<Measurement> recent_;     // accepted loops, for confirming guess-free ones
     std::deque<Measurement> contested_;  // gated matches the gate rejected, recent ones

@@ -6,11 +6,16 @@
 // own covariance, but at least the drift model's (a l)^2 and (b l)^2 for its length l: scan
 // matching's covariance ignores the map's own errors, which are what makes a trajectory drift.
 // After a loop closure the chain through the loop edge is short, so the gate shrinks there.
-// Dijkstra over all keyframes with a scalar cost (position variance + heading variance times a
-// lever arm of kLeverArm); linear in the graph's size per query, no allocation after the first.
+// Dijkstra with a scalar cost (position variance + heading variance times a lever arm of
+// kLeverArm), no allocation after the first query. It runs lazily: to(node) carries the
+// search on only until that node is settled, and keyframes are settled in order of cost, so a
+// caller that asks for the nearby keyframes first (the loop closer: a revisited place is tied to
+// its earlier visits by loops) explores only the graph around them. The answers are the same
+// as those of a full search (from()).
 #include <toposlam/mapping/PoseGraph.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -28,7 +33,13 @@ class PathUncertainty {
   public:
     /// a (m per sqrt(m)), b (rad per sqrt(m)) and c (rad per sqrt(rad)) of the drift model.
     PathUncertainty(double driftSigmaXY, double driftSigmaPhi, double driftSigmaPhiPerTurn);
-    /// Variances of every node's pose relative to `source`, through the active edges.
+    /// Starts a search from `source` through the active edges of `graph`, which must not
+    /// change until the last to() of this search.
+    void start(const PoseGraph& graph, std::size_t source);
+    /// Variances of `node`'s pose relative to the source (reached = false: no chain of active
+    /// edges joins them), settling the nodes the search has not settled yet up to it.
+    const PathVariance& to(std::size_t node);
+    /// Variances of every node's pose relative to `source` (the whole search).
     const std::vector<PathVariance>& from(const PoseGraph& graph, std::size_t source);
 
   private:
@@ -38,11 +49,15 @@ class PathUncertainty {
         double position = 0, heading = 0;  ///< m^2, rad^2
     };
     void cacheNewEdges(const PoseGraph& graph);
+    /// Settles the cheapest node not settled yet; false when none is left.
+    bool settleNext();
 
     double driftXY_, driftPhi_, driftTurn_;
-    std::vector<Step> steps_;  // by edge index
+    std::vector<Step> steps_;           // by edge index
+    const PoseGraph* graph_ = nullptr;  // of the current search
     std::vector<PathVariance> variance_;
     std::vector<double> cost_;
+    std::vector<std::uint8_t> settled_;
     std::vector<std::pair<double, std::size_t>> heap_;
 };
 

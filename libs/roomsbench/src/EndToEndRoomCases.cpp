@@ -218,6 +218,8 @@ rooms::RoomBenchmarkCase endToEndCase(const PlanToTour& plan, const EndToEndOpti
     c.toTruthFrame = [index, rows, cols](const cv::Mat& labels) {
         return resample<int>(labels, *index, rows, cols);
     };
+    // Doors are matched in the plan's pixels, whatever the SLAM grid's cell size.
+    c.truthResolution = plan.resolution;
     c.truth = rooms::groundTruthFromLabels(plan.roomLabels);
     c.trueDoors = rooms::labelBoundaryDoors(c.truth.labels, plan.unfurnishedFree);
     c.openFloor = rooms::openFloorOfRooms(c.truth, plan.map == 255);

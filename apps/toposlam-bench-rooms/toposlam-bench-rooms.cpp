@@ -9,6 +9,7 @@
 #include <toposlam/io/InputError.h>
 #include <toposlam/io/ProgressDisplay.h>
 #include <toposlam/io/TextFile.h>
+#include <toposlam/rooms/RoomBenchmarkCase.h>
 #include <toposlam/roomsbench/GeneratedRoomCases.h>
 #include <toposlam/roomsbench/RoomBenchmarkSuite.h>
 #include <toposlam/simulation/FloorPlanGenerator.h>
@@ -23,6 +24,7 @@
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 
 namespace {
 
@@ -97,8 +99,8 @@ int writePlans(const std::string& dir, const std::vector<unsigned>& seeds,
             std::string name = roomsbench::generatedPlanName(seed);
             if (angle != 0)
                 name += "_rot" + std::to_string(static_cast<int>(std::lround(angle)));
-            simulation::saveFloorPlanImages(simulation::drawFloorPlan(plan, 0.05, angle), dir,
-                                            name);
+            simulation::saveFloorPlanImages(
+                simulation::drawFloorPlan(plan, rooms::kBenchmarkMapResolution, angle), dir, name);
         }
     }
     std::cerr << "wrote " << seeds.size() * angles.size() << " plans to " << dir << "\n";
@@ -236,11 +238,12 @@ roomsbench::RoomBenchmarkSuiteOptions suiteOptions(
     o.bench.maps = splitList(a.maps.getValue());
     o.bench.rotationsDeg = angleList(a.rotations.getValue());
     o.bench.cellSize = a.cellSize.getValue();
-    if (const double cells = o.bench.cellSize / 0.05;  // the drawn maps' cell size
-        cells > 0 && std::abs(cells - std::round(cells)) > 1e-6 * cells) {
-        throw cli::UsageError(
-            "--cell-size: a whole multiple of the drawn maps' 0.05 m cells "
-            "(0.05, 0.1, 0.15, ...)");
+    if (o.bench.cellSize > 0) {
+        try {
+            rooms::poolingFactor(o.bench.cellSize, rooms::kBenchmarkMapResolution);
+        } catch (const std::invalid_argument& e) {
+            throw cli::UsageError(std::string("--cell-size: ") + e.what());
+        }
     }
     o.bench.virtualDoor = rooms::RoomSegmenter::Options::load(a.config.getValue(), false);
     o.bench.virtualDoorPaper = rooms::RoomSegmenter::Options::load(a.config.getValue(), true);

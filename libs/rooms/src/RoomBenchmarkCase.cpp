@@ -82,6 +82,20 @@ mrpt::maps::COccupancyGridMap2D gridOfFreeImage(const cv::Mat& free, double reso
     return grid;
 }
 
+int poolingFactor(double cellSize, double resolution) {
+    const double ratio = cellSize / resolution;
+    const long factor = std::isfinite(ratio) ? std::lround(ratio) : 0;
+    if (factor < 1 || factor > 100 ||
+        std::abs(ratio - static_cast<double>(factor)) > 1e-6 * ratio) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf,
+                      "the cell size must be a whole multiple of the map's %g m cells (got %g m)",
+                      resolution, cellSize);
+        throw std::invalid_argument(buf);
+    }
+    return static_cast<int>(factor);
+}
+
 cv::Mat poolFreeImage(const cv::Mat& free, int factor) {
     CV_Assert(free.type() == CV_8U && factor >= 1);
     const int k = factor;
@@ -157,19 +171,9 @@ RoomBenchmarkCase pooledCase(const RoomBenchmarkCase& drawn, double cellSize) {
         drawn.grid.getYMin() != 0)
         throw std::invalid_argument("only a drawn map can be pooled ('" + drawn.name() + "')");
     const double resolution = drawn.grid.getResolution();
-    const double ratio = cellSize / resolution;
-    const long factor = std::lround(ratio);
-    if (!std::isfinite(ratio) || factor < 1 || factor > 100 ||
-        std::abs(ratio - static_cast<double>(factor)) > 1e-6 * ratio) {
-        char buf[160];
-        std::snprintf(buf, sizeof buf,
-                      "the cell size must be a whole multiple of the map's %g m cells (got %g m)",
-                      resolution, cellSize);
-        throw std::invalid_argument(buf);
-    }
-    if (factor == 1)
+    const int k = poolingFactor(cellSize, resolution);
+    if (k == 1)
         return drawn;
-    const int k = static_cast<int>(factor);
     RoomBenchmarkCase c = drawn;
     c.inputFree = poolFreeImage(drawn.inputFree, k);
     c.grid = gridOfFreeImage(c.inputFree, cellSize);  // same origin: the same world frame
@@ -198,7 +202,6 @@ RoomBenchmarkCase drawnCase(std::string dataset, std::string map, bool furnished
 
 std::vector<RoomBenchmarkCase> bormannCases(const std::string& dataDir, const std::string& base,
                                             const std::vector<double>& rotationsDeg) {
-    constexpr double kResolution = 0.05;  // m/pixel of every benchmark map (SOURCES.md)
     const std::string dir = dataDir + "/";
     const GroundTruthRooms truth = groundTruthRooms(readGrey(dir + base + "_gt_segmentation.png"));
     const cv::Mat baseFree = freeOf(readGrey(dir + base + ".png"));
@@ -207,10 +210,11 @@ std::vector<RoomBenchmarkCase> bormannCases(const std::string& dataDir, const st
     for (const double angle : rotationsDeg) {
         const cv::Mat labels = rotateNearest(truth.labels, angle, 0);
         const cv::Mat free = rotateNearest(baseFree, angle, 0);
-        cases.push_back(drawnCase("bormann", base, false, angle, free, free, labels, kResolution));
+        cases.push_back(
+            drawnCase("bormann", base, false, angle, free, free, labels, kBenchmarkMapResolution));
         cases.push_back(drawnCase("bormann", base + "_furnitures", true, angle,
                                   rotateNearest(furnishedFree, angle, 0), free, labels,
-                                  kResolution));
+                                  kBenchmarkMapResolution));
     }
     return cases;
 }

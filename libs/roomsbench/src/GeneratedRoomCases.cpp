@@ -1,3 +1,4 @@
+#include <toposlam/rooms/RoomBenchmarkCase.h>
 #include <toposlam/roomsbench/GeneratedRoomCases.h>
 #include <toposlam/simulation/FloorPlanGenerator.h>
 
@@ -36,8 +37,9 @@ std::vector<rooms::RoomBenchmarkCase> generatedCases(unsigned seed,
     const simulation::GeneratedFloorPlan plan = simulation::generateFloorPlan(seed);
     std::vector<rooms::RoomBenchmarkCase> cases;
     for (const double angle : rotationsDeg) {
-        for (auto& c : casesOfDrawing(simulation::drawFloorPlan(plan, 0.05, angle),
-                                      generatedPlanName(seed))) {
+        for (auto& c :
+             casesOfDrawing(simulation::drawFloorPlan(plan, rooms::kBenchmarkMapResolution, angle),
+                            generatedPlanName(seed))) {
             cases.push_back(std::move(c));
         }
     }

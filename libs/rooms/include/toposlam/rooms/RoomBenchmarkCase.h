@@ -62,6 +62,13 @@ cv::Mat rotationOfImage(const cv::Size& size, double degrees, cv::Size& rotatedS
 /// elsewhere: what a drawn map hands over.
 mrpt::maps::COccupancyGridMap2D gridOfFreeImage(const cv::Mat& free, double resolution);
 
+/// Metres per pixel of Bormann's maps and of the drawn B4-gen plans (SOURCES.md).
+constexpr double kBenchmarkMapResolution = 0.05;
+
+/// How many cells of `resolution` (m) span one of `cellSize` (m): a whole number from 1 to 100.
+/// Throws std::invalid_argument, naming both sizes, for any other cell size.
+int poolingFactor(double cellSize, double resolution);
+
 /// `free` (CV_8U, map-image layout, non-zero = free) in cells of `factor` x `factor` pixels
 /// aligned to its lower-left corner (a grid's origin): a cell is free (255) when every pixel in
 /// it is free, and not free (0) when any is not or it reaches past the image, as a laser grid
@@ -74,7 +81,7 @@ cv::Mat poolFreeImage(const cv::Mat& free, int factor);
 /// ground truth, each cell's label carried to its pixels and on into the pixels along the
 /// walls that only the drawn plan has free (the nearest label within a cell's reach).
 /// cellSize equal to the resolution returns the case as it is. Throws std::invalid_argument
-/// for any other cell size, or for a case that is not drawn.
+/// for a cell size poolingFactor() refuses, or for a case that is not drawn.
 RoomBenchmarkCase pooledCase(const RoomBenchmarkCase& drawn, double cellSize);
 
 /// Bormann's map `base` in `dataDir` (<base>.png, <base>_furnitures.png,

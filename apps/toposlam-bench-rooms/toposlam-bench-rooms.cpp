@@ -18,6 +18,7 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFile.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -34,14 +35,16 @@ const char* const kDescription =
     "Benchmark B4: room segmentation scored against ground-truth rooms and doors (metrics: "
     "shared/BENCHMARKS.md, B4) by the virtual-door segmenter (vdoor: TopoSLAM's default; "
     "vdoor-paper: the paper's method as published) and the morphological (morph) and "
-    "distance-transform (dist) baselines of ipa_room_segmentation, on up to three sets:\n"
+    "distance-transform (dist) baselines of ipa_room_segmentation, on up to four sets:\n"
     "  bormann  the 20 maps of Bormann et al. (ICRA 2016), unfurnished and furnished;\n"
     "  gen      B4-gen: generated furnished office buildings with exact ground truth "
     "(--gen-seeds);\n"
+    "  flats    B4-flats: generated furnished flats, rooms opening into rooms, no corridor "
+    "(--flat-seeds);\n"
     "  slam     end to end: a simulated robot tours generated plans and Bormann maps, "
     "toposlam's SLAM maps the log, the SLAM grid and trajectory are segmented and scored in "
     "the plan's frame (beside the same plans as drawn, set 'drawn'). Slow: minutes per plan.\n"
-    "--rotations turns every bormann and gen map (and its ground truth) by each angle; "
+    "--rotations turns every bormann, gen and flats map (and its ground truth) by each angle; "
     "--cell-size maps them in coarser cells. Prints "
     "one row per map and method, then the averages per set, method, furnishing and angle, and "
     "writes them as JSON. Every method runs single-threaded; times are wall-clock medians over "
@@ -51,7 +54,8 @@ const char* const kDescription =
     "  toposlam-bench-rooms --sets bormann,gen --rotations 0,10,17,30,45 -r 1 -o b4-rot.json\n"
     "  toposlam-bench-rooms --sets bormann --cell-size 0.1 -m vdoor -r 1 -o b4-10cm.json\n"
     "  toposlam-bench-rooms --sets slam -r 1 --images b4-slam-png -o b4-slam.json\n"
-    "  toposlam-bench-rooms --write-plans gen-maps   # B4-gen as Bormann-format files";
+    "  toposlam-bench-rooms --write-plans gen-maps   # B4-gen and B4-flats as Bormann-format "
+    "files";
 
 std::vector<std::string> splitList(const std::string& s) {
     std::vector<std::string> out;
@@ -89,22 +93,23 @@ std::vector<double> angleList(const std::string& text) {
     return angles;
 }
 
-// B4-gen as files in Bormann's layout, one folder per set of angles.
-int writePlans(const std::string& dir, const std::vector<unsigned>& seeds,
-               const std::vector<double>& angles) {
+// B4-gen or B4-flats as files in Bormann's layout.
+std::size_t writePlans(const std::string& dir, const std::vector<unsigned>& seeds,
+                       const std::vector<double>& angles, simulation::BuildingStyle style) {
+    simulation::FloorPlanGeneratorOptions options;
+    options.style = style;
     for (const unsigned seed : seeds) {
-        const auto plan = simulation::generateFloorPlan(seed);
-        std::cout << roomsbench::generatedPlanName(seed) << ": " << plan.summary << "\n";
+        const auto plan = simulation::generateFloorPlan(seed, options);
+        std::cout << roomsbench::generatedPlanName(seed, style) << ": " << plan.summary << "\n";
         for (const double angle : angles) {
-            std::string name = roomsbench::generatedPlanName(seed);
+            std::string name = roomsbench::generatedPlanName(seed, style);
             if (angle != 0)
                 name += "_rot" + std::to_string(static_cast<int>(std::lround(angle)));
             simulation::saveFloorPlanImages(
                 simulation::drawFloorPlan(plan, rooms::kBenchmarkMapResolution, angle), dir, name);
         }
     }
-    std::cerr << "wrote " << seeds.size() * angles.size() << " plans to " << dir << "\n";
-    return 0;
+    return seeds.size() * angles.size();
 }
 
 struct Arguments {
@@ -143,8 +148,12 @@ struct Arguments {
         false, "",        "list",
         cmd};
     TCLAP::ValueArg<std::string> sets{
-        "",    "sets",        "comma-separated subset of bormann,gen,slam (default: bormann,gen)",
-        false, "bormann,gen", "list",
+        "",
+        "sets",
+        "comma-separated subset of bormann,gen,flats,slam (default: bormann,gen,flats)",
+        false,
+        "bormann,gen,flats",
+        "list",
         cmd};
     TCLAP::ValueArg<std::string> maps{
         "",    "maps", "comma-separated subset of the 20 Bormann base map names (default: all)",
@@ -153,7 +162,8 @@ struct Arguments {
     TCLAP::ValueArg<std::string> rotations{
         "",
         "rotations",
-        "comma-separated angles (deg, counter-clockwise) to turn every bormann and gen map by, "
+        "comma-separated angles (deg, counter-clockwise) to turn every bormann, gen and flats "
+        "map by, "
         "nearest neighbour (default: 0)",
         false,
         "0",
@@ -172,6 +182,10 @@ struct Arguments {
     TCLAP::ValueArg<std::string> genSeeds{
         "",    "gen-seeds", "B4-gen plans: seeds and ranges, e.g. 1-20 or 3,7 (default: 1-20)",
         false, "1-20",      "list",
+        cmd};
+    TCLAP::ValueArg<std::string> flatSeeds{
+        "",    "flat-seeds", "B4-flats plans: seeds and ranges, e.g. 1-20 or 3,7 (default: 1-20)",
+        false, "1-20",       "list",
         cmd};
     TCLAP::ValueArg<std::string> slamSeeds{
         "",     "slam-seeds", "end to end: generated plans to tour (default: 1-4)", false, "1-4",
@@ -210,8 +224,9 @@ struct Arguments {
     TCLAP::ValueArg<std::string> writePlans{
         "",
         "write-plans",
-        "write the B4-gen plans (--gen-seeds, at --rotations) into this folder in Bormann's "
-        "format (<name>.png, _furnitures.png, _gt_segmentation.png, _doors.json) and exit",
+        "write the B4-gen and B4-flats plans of --sets (--gen-seeds, --flat-seeds, at "
+        "--rotations) into this folder in Bormann's format (<name>.png, _furnitures.png, "
+        "_gt_segmentation.png, _doors.json) and exit",
         false,
         "",
         "dir",
@@ -250,8 +265,8 @@ roomsbench::RoomBenchmarkSuiteOptions suiteOptions(
     const auto sets = splitList(a.sets.getValue());
     auto has = [&](const char* s) { return std::find(sets.begin(), sets.end(), s) != sets.end(); };
     for (const auto& s : sets) {
-        if (s != "bormann" && s != "gen" && s != "slam")
-            throw cli::UsageError("--sets: unknown set '" + s + "' (bormann, gen, slam)");
+        if (s != "bormann" && s != "gen" && s != "flats" && s != "slam")
+            throw cli::UsageError("--sets: unknown set '" + s + "' (bormann, gen, flats, slam)");
     }
     const bool haveData = std::filesystem::is_directory(o.bench.dataDir);
     if (!haveData && (has("bormann") || has("slam")))
@@ -260,6 +275,8 @@ roomsbench::RoomBenchmarkSuiteOptions suiteOptions(
     o.bormann = has("bormann") && haveData;
     if (has("gen"))
         o.generatedSeeds = seedList(a.genSeeds.getValue(), "--gen-seeds");
+    if (has("flats"))
+        o.flatSeeds = seedList(a.flatSeeds.getValue(), "--flat-seeds");
     if (has("slam")) {
         o.endToEndSeeds = seedList(a.slamSeeds.getValue(), "--slam-seeds");
         if (haveData)
@@ -283,13 +300,27 @@ int run(int argc, char** argv) {
             throw io::InputError(file, "no such config file");
     }
     if (!a.writePlans.getValue().empty()) {
-        return writePlans(a.writePlans.getValue(), seedList(a.genSeeds.getValue(), "--gen-seeds"),
-                          angleList(a.rotations.getValue()));
+        const auto sets = splitList(a.sets.getValue());
+        const auto has = [&](const char* s) {
+            return std::find(sets.begin(), sets.end(), s) != sets.end();
+        };
+        const auto angles = angleList(a.rotations.getValue());
+        std::size_t written = 0;
+        if (has("gen"))
+            written +=
+                writePlans(a.writePlans.getValue(), seedList(a.genSeeds.getValue(), "--gen-seeds"),
+                           angles, simulation::BuildingStyle::Office);
+        if (has("flats"))
+            written += writePlans(a.writePlans.getValue(),
+                                  seedList(a.flatSeeds.getValue(), "--flat-seeds"), angles,
+                                  simulation::BuildingStyle::Flat);
+        std::cerr << "wrote " << written << " plans to " << a.writePlans.getValue() << "\n";
+        return 0;
     }
     std::unique_ptr<mrpt::config::CConfigFile> slamIni;
     const auto options = suiteOptions(a, slamIni);
-    if (!options.bormann && options.generatedSeeds.empty() && options.endToEndSeeds.empty() &&
-        options.endToEndBormannMaps.empty()) {
+    if (!options.bormann && options.generatedSeeds.empty() && options.flatSeeds.empty() &&
+        options.endToEndSeeds.empty() && options.endToEndBormannMaps.empty()) {
         return 0;  // nothing left to run (the reason was printed)
     }
     io::ProgressDisplay progress("B4 room segmentation", "maps");

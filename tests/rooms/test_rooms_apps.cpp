@@ -170,21 +170,24 @@ TEST(ToposlamBenchRooms, SkipsWithAMessageWithoutData) {
 TEST(ToposlamBenchRooms, RunsGeneratedPlansAtTwoAnglesAndWritesThem) {
     const TempDir dir;
     auto r = runApp("toposlam-bench-rooms",
-                    "--sets gen --gen-seeds 1 -m vdoor,morph -r 1 "
+                    "--sets gen,flats --gen-seeds 1 --flat-seeds 1 -m vdoor,morph -r 1 "
                     "--rotations 0,17 -o '" +
                         dir.file("gen.json") + "'");
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    for (const char* row : {"| gen | gen01_furnitures | 17 | vdoor |",
-                            "| gen | gen01 | 0 | morph |", "| gen | vdoor | furnished | all |"}) {
+    for (const char* row :
+         {"| gen | gen01_furnitures | 17 | vdoor |", "| gen | gen01 | 0 | morph |",
+          "| gen | vdoor | furnished | all |", "| flats | flat01_furnitures | 17 | vdoor |",
+          "| flats | morph | unfurnished | all |"}) {
         EXPECT_NE(r.output.find(row), std::string::npos) << row << "\n" << r.output;
     }
     EXPECT_TRUE(std::filesystem::is_regular_file(dir.file("gen.json")));
 
-    r = runApp("toposlam-bench-rooms",
-               "--write-plans '" + dir.file("plans") + "' --gen-seeds 2 --rotations 0,30");
+    r = runApp("toposlam-bench-rooms", "--write-plans '" + dir.file("plans") +
+                                           "' --gen-seeds 2 --flat-seeds 3 --rotations 0,30");
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    for (const char* file : {"gen02.png", "gen02_furnitures.png", "gen02_gt_segmentation.png",
-                             "gen02_doors.json", "gen02_rot30_furnitures.png"}) {
+    for (const char* file :
+         {"gen02.png", "gen02_furnitures.png", "gen02_gt_segmentation.png", "gen02_doors.json",
+          "gen02_rot30_furnitures.png", "flat03.png", "flat03_rot30_gt_segmentation.png"}) {
         EXPECT_TRUE(std::filesystem::is_regular_file(dir.file("plans/" + std::string(file))))
             << file;
     }
@@ -199,6 +202,7 @@ TEST(ToposlamBenchRooms, RejectsBadOptions) {
                                                   {"--rotations 1e999", 2},
                                                   {"--rotations 400", 2},
                                                   {"--gen-seeds x", 2},
+                                                  {"--sets flats --flat-seeds 1-x", 2},
                                                   {"-c missing.ini", 1}}) {
         const auto r = runApp("toposlam-bench-rooms", bad + " -o '" + dir.file("b.json") + "'");
         EXPECT_EQ(r.exitCode, status) << bad << "\n" << r.output;

@@ -1,6 +1,7 @@
-// The furnished floor-plan generator of B4-gen and its drawings: the same seed gives the same
-// plan; every plan is a closed building whose rooms are all reachable, doors join two rooms
-// and stay clear of furniture; drawings at an angle keep every room's area and the doors.
+// The furnished floor-plan generator of B4-gen (offices) and B4-flats and its drawings: the same
+// seed gives the same plan; every plan is a closed building whose rooms are all reachable, doors
+// join two rooms and stay clear of furniture; drawings at an angle keep every room's area and
+// the doors.
 #include <toposlam/simulation/FloorPlanGenerator.h>
 #include <toposlam/simulation/FloorPlanImages.h>
 
@@ -52,6 +53,74 @@ TEST(FloorPlanGenerator, SameSeedSamePlan) {
     EXPECT_EQ(a.plan.doors().size(), b.plan.doors().size());
     EXPECT_NE(a.summary, c.summary);
     EXPECT_TRUE(a.unfurnished.furnitureBoxes().empty());
+}
+
+// Every room of `plan` is reached through doors only in the furnished building, every room is
+// larger than the segmenters' smallest room, every door joins two rooms, is at least
+// `narrowest` (m) wide and free of furniture, and nothing is free on the image's border.
+void expectUsableBuilding(const GeneratedFloorPlan& plan, double narrowest) {
+    const auto images = drawFloorPlan(plan);
+    const auto areas = roomAreas(images.rooms);
+    EXPECT_EQ(static_cast<int>(areas.size()), plan.roomCount);
+    for (const auto& [room, pixels] : areas)
+        EXPECT_GT(pixels * 0.05 * 0.05, 2.0) << "room " << room;
+    const cv::Mat reached = largestRegion(images.furnished == 255);
+    std::set<int> reachedRooms;
+    for (int r = 0; r < reached.rows; ++r) {
+        for (int c = 0; c < reached.cols; ++c) {
+            if (reached.at<std::uint8_t>(r, c) != 0 && images.rooms.at<int>(r, c) > 0)
+                reachedRooms.insert(images.rooms.at<int>(r, c));
+        }
+    }
+    EXPECT_EQ(static_cast<int>(reachedRooms.size()), plan.roomCount);
+    for (const auto& d : images.doors) {
+        EXPECT_NE(d.roomA, d.roomB);
+        EXPECT_GE(d.width, narrowest - 1e-9);
+        const cv::Point middle(cvRound(0.5f * (d.jambA.x + d.jambB.x)),
+                               cvRound(0.5f * (d.jambA.y + d.jambB.y)));
+        EXPECT_EQ(images.furnished.at<std::uint8_t>(middle), 255);
+    }
+    EXPECT_EQ(cv::countNonZero(images.map.row(0) == 255), 0);
+    EXPECT_EQ(cv::countNonZero(images.map.col(0) == 255), 0);
+}
+
+FloorPlanGeneratorOptions flats() {
+    FloorPlanGeneratorOptions o;
+    o.style = BuildingStyle::Flat;
+    return o;
+}
+
+TEST(FloorPlanGenerator, FlatsAreClosedAndEveryRoomIsReachable) {
+    std::set<std::string> kinds;
+    int lShaped = 0, wideOpenings = 0;
+    for (unsigned seed = 1; seed <= 20; ++seed) {
+        SCOPED_TRACE("flat seed " + std::to_string(seed));
+        const auto plan = generateFloorPlan(seed, flats());
+        EXPECT_GE(plan.roomCount, 3);
+        EXPECT_EQ(plan.plan.rooms().size(), static_cast<std::size_t>(plan.roomCount));
+        expectUsableBuilding(plan, 0.7);
+        // A flat has a living room and a bathroom, and no corridor.
+        int living = 0, bathrooms = 0;
+        for (const auto& room : plan.plan.rooms()) {
+            kinds.insert(room.kind);
+            living += room.kind == "living";
+            bathrooms += room.kind == "bathroom";
+            EXPECT_NE(room.kind, "corridor");
+        }
+        EXPECT_EQ(living, 1);
+        EXPECT_GE(bathrooms, 1);
+        lShaped += plan.summary.find("L-shaped") != std::string::npos;
+        for (const auto& d : plan.plan.doors())
+            wideOpenings += d.width > 1.6;
+    }
+    // The set holds what it claims: L-shaped flats, open kitchens, halls, kitchens, bedrooms.
+    EXPECT_GT(lShaped, 0);
+    EXPECT_GT(wideOpenings, 0);
+    for (const char* kind : {"hall", "kitchen", "bedroom", "bathroom"})
+        EXPECT_TRUE(kinds.count(kind)) << kind;
+    const auto a = generateFloorPlan(7, flats()), b = generateFloorPlan(7, flats());
+    EXPECT_EQ(a.summary, b.summary);
+    EXPECT_EQ(a.plan.furnitureBoxes().size(), b.plan.furnitureBoxes().size());
 }
 
 TEST(FloorPlanGenerator, RoomsAreReachableAndDoorsClear) {

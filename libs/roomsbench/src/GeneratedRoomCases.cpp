@@ -16,30 +16,39 @@ const std::vector<unsigned>& b4GenSeeds() {
     return seeds;
 }
 
-std::string generatedPlanName(unsigned seed) {
+std::string generatedSetName(simulation::BuildingStyle style) {
+    return style == simulation::BuildingStyle::Flat ? "flats" : "gen";
+}
+
+std::string generatedPlanName(unsigned seed, simulation::BuildingStyle style) {
     char buf[32];
-    std::snprintf(buf, sizeof buf, "gen%02u", seed);
+    std::snprintf(buf, sizeof buf, "%s%02u",
+                  style == simulation::BuildingStyle::Flat ? "flat" : "gen", seed);
     return buf;
 }
 
 std::vector<rooms::RoomBenchmarkCase> casesOfDrawing(const simulation::FloorPlanImages& images,
-                                                     const std::string& name) {
+                                                     const std::string& name,
+                                                     const std::string& set) {
     const cv::Mat free = images.map == 255;
     const cv::Mat furnished = images.furnished == 255;
-    return {rooms::drawnCase("gen", name, false, images.rotationDeg, free, free, images.rooms,
+    return {rooms::drawnCase(set, name, false, images.rotationDeg, free, free, images.rooms,
                              images.resolution),
-            rooms::drawnCase("gen", name + "_furnitures", true, images.rotationDeg, furnished, free,
+            rooms::drawnCase(set, name + "_furnitures", true, images.rotationDeg, furnished, free,
                              images.rooms, images.resolution)};
 }
 
 std::vector<rooms::RoomBenchmarkCase> generatedCases(unsigned seed,
-                                                     const std::vector<double>& rotationsDeg) {
-    const simulation::GeneratedFloorPlan plan = simulation::generateFloorPlan(seed);
+                                                     const std::vector<double>& rotationsDeg,
+                                                     simulation::BuildingStyle style) {
+    simulation::FloorPlanGeneratorOptions options;
+    options.style = style;
+    const simulation::GeneratedFloorPlan plan = simulation::generateFloorPlan(seed, options);
     std::vector<rooms::RoomBenchmarkCase> cases;
     for (const double angle : rotationsDeg) {
         for (auto& c :
              casesOfDrawing(simulation::drawFloorPlan(plan, rooms::kBenchmarkMapResolution, angle),
-                            generatedPlanName(seed))) {
+                            generatedPlanName(seed, style), generatedSetName(style))) {
             cases.push_back(std::move(c));
         }
     }

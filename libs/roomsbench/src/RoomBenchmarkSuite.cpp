@@ -17,8 +17,9 @@ RoomBenchmarkSuiteResult runRoomBenchmarkSuite(const RoomBenchmarkSuiteOptions& 
     const auto& o = bench.options();
     const std::size_t bormann = options.bormann ? o.maps.size() : 0;
     const std::size_t generated = options.generatedSeeds.size();
+    const std::size_t flats = options.flatSeeds.size();
     const std::size_t endToEnd = options.endToEndSeeds.size() + options.endToEndBormannMaps.size();
-    const std::size_t total = bormann + generated + endToEnd;
+    const std::size_t total = bormann + generated + flats + endToEnd;
     if (total == 0)
         throw std::invalid_argument(
             "nothing to run: no Bormann map, generated plan or end-to-end plan");
@@ -45,6 +46,13 @@ RoomBenchmarkSuiteResult runRoomBenchmarkSuite(const RoomBenchmarkSuiteOptions& 
             return bench.atCellSize(generatedCases(options.generatedSeeds[i], o.rotationsDeg));
         },
         part(bormann, generated)));
+    append(bench.runCases(
+        flats,
+        [&](std::size_t i) {
+            return bench.atCellSize(generatedCases(options.flatSeeds[i], o.rotationsDeg,
+                                                   simulation::BuildingStyle::Flat));
+        },
+        part(bormann + generated, flats)));
     if (endToEnd > 0) {
         const auto plans =
             plansToTour(options.endToEndSeeds, options.endToEndBormannMaps, o.dataDir);
@@ -59,7 +67,7 @@ RoomBenchmarkSuiteResult runRoomBenchmarkSuite(const RoomBenchmarkSuiteOptions& 
                 cases.push_back(std::move(slam));
                 return cases;
             },
-            part(bormann + generated, endToEnd)));
+            part(bormann + generated + flats, endToEnd)));
     }
     result.summary = rooms::RoomBenchmark::summarize(result.scores);
     return result;
@@ -200,6 +208,7 @@ std::string suiteJson(const RoomBenchmarkSuiteResult& result,
     io::Json j = io::parseJson(
         rooms::RoomBenchmark::json(result.scores, result.summary, options.bench), "B4 report");
     j["generated_seeds"] = options.generatedSeeds;
+    j["flat_seeds"] = options.flatSeeds;
     j["end_to_end"] = io::Json::array();
     for (const auto& e : result.endToEnd) {
         j["end_to_end"].push_back(

@@ -1,6 +1,8 @@
 #include <toposlam/simulation/FloorPlanGenerator.h>
 #include <toposlam/simulation/FurniturePlacer.h>
 
+#include "FlatFloorPlan.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <map>
@@ -242,6 +244,8 @@ GeneratedFloorPlan Builder::build(unsigned seed) {
 }  // namespace
 
 GeneratedFloorPlan generateFloorPlan(unsigned seed, const FloorPlanGeneratorOptions& options) {
+    if (options.style == BuildingStyle::Flat)
+        return generateFlatPlan(seed, options);
     return Builder(seed, options).build(seed);
 }
 

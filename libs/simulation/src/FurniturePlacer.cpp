@@ -225,6 +225,14 @@ void FurniturePlacer::furnish(const FloorRoom& room) {
         openPlan(room);
     else if (room.kind == "corridor")
         corridor(room);
+    else if (room.kind == "living")
+        living(room);
+    else if (room.kind == "bedroom")
+        bedroom(room);
+    else if (room.kind == "bathroom")
+        bathroom(room);
+    else if (room.kind == "hall")
+        hall(room);
     else
         shelves(room, 2);
 }
@@ -428,6 +436,191 @@ void FurniturePlacer::corridor(const FloorRoom& room) {
                 disc({0.5 * (b.xMin + b.xMax), 0.5 * (b.yMin + b.yMax)}, radius);
         } else if (againstWall(room, side, uniform(0.8, 1.2), uniform(0.35, 0.45), 0.0, b)) {
             solid(b);  // cabinet, bench or coat rack
+            ++pieces_;
+        }
+    }
+}
+
+namespace {
+/// The wall across the room from `side` (0 south, 1 north, 2 west, 3 east).
+int opposite(int side) {
+    return side ^ 1;
+}
+}  // namespace
+
+void FurniturePlacer::beside(const FloorRoom& room, const Box& next, int side, bool high,
+                             double size) {
+    const Box& r = room.floor;
+    constexpr double gap = 0.05;
+    Box b;
+    if (side < 2) {  // along x
+        const double x0 = high ? next.xMax + gap : next.xMin - gap - size;
+        b = side == 0 ? Box{x0, r.yMin, x0 + size, r.yMin + size}
+                      : Box{x0, r.yMax - size, x0 + size, r.yMax};
+    } else {
+        const double y0 = high ? next.yMax + gap : next.yMin - gap - size;
+        b = side == 2 ? Box{r.xMin, y0, r.xMin + size, y0 + size}
+                      : Box{r.xMax - size, y0, r.xMax, y0 + size};
+    }
+    if (reserve(room, b)) {
+        solid(b);
+        ++pieces_;
+    }
+}
+
+void FurniturePlacer::living(const FloorRoom& room) {
+    const Box& f = room.floor;
+    const std::vector<int> sides = sidesByLength(f);
+    const int side = sides[static_cast<std::size_t>(std::uniform_int_distribution<>(0, 1)(rng_))];
+    Box sofa;
+    if (againstWall(room, side, uniform(1.8, 2.4), uniform(0.85, 0.95), uniform(0.0, 0.1), sofa)) {
+        solid(sofa);
+        ++pieces_;
+        // The coffee table in front of it, on legs.
+        const double away = uniform(0.35, 0.5), length = uniform(0.9, 1.2),
+                     depth = uniform(0.5, 0.6);
+        const double cx = 0.5 * (sofa.xMin + sofa.xMax), cy = 0.5 * (sofa.yMin + sofa.yMax);
+        Box table;
+        switch (side) {
+            case 0:
+                table = {cx - length / 2, sofa.yMax + away, cx + length / 2,
+                         sofa.yMax + away + depth};
+                break;
+            case 1:
+                table = {cx - length / 2, sofa.yMin - away - depth, cx + length / 2,
+                         sofa.yMin - away};
+                break;
+            case 2:
+                table = {sofa.xMax + away, cy - length / 2, sofa.xMax + away + depth,
+                         cy + length / 2};
+                break;
+            default:
+                table = {sofa.xMin - away - depth, cy - length / 2, sofa.xMin - away,
+                         cy + length / 2};
+                break;
+        }
+        if (reserve(room, table)) {
+            legs(table);
+            ++pieces_;
+        }
+        if (chance(0.5))
+            beside(room, sofa, side, chance(0.5), uniform(0.75, 0.85));  // an armchair
+        Box tv;
+        if (againstWall(room, opposite(side), uniform(1.2, 1.8), uniform(0.4, 0.5), 0.0, tv)) {
+            solid(tv);
+            ++pieces_;
+        }
+    }
+    // A dining table with chairs round it in a large room.
+    if (f.area() > 16 && chance(0.6)) {
+        for (int attempt = 0; attempt < 10; ++attempt) {
+            const double w = uniform(1.2, 1.8), h = uniform(0.8, 0.9);
+            const double x = uniform(f.xMin + 0.8, f.xMax - 0.8 - w),
+                         y = uniform(f.yMin + 0.8, f.yMax - 0.8 - h);
+            const Box table{x, y, x + w, y + h};
+            if (!reserve(room, table))
+                continue;
+            legs(table);
+            ++pieces_;
+            for (double t = 0.35; t < w; t += 0.6) {
+                chair({x + t, y - 0.3});
+                chair({x + t, y + h + 0.3});
+            }
+            break;
+        }
+    }
+    shelves(room, 1 + (chance(0.5) ? 1 : 0));
+    if (chance(0.6))
+        cornerPlant(room);
+}
+
+void FurniturePlacer::bedroom(const FloorRoom& room) {
+    const Box& f = room.floor;
+    const bool dbl = f.area() >= 10 && chance(0.7);
+    const double width = dbl ? uniform(1.4, 1.8) : uniform(0.9, 1.0), length = uniform(2.0, 2.1);
+    // The head against a wall, the long walls tried first.
+    std::vector<int> sides = sidesByLength(f);
+    if (chance(0.5))
+        std::swap(sides[0], sides[1]);
+    Box bed;
+    int side = -1;
+    for (int s : sides) {
+        if (againstWall(room, s, width, length, 0.0, bed)) {
+            side = s;
+            break;
+        }
+    }
+    if (side >= 0) {
+        solid(bed);  // frame and mattress: solid at 0.3 m
+        ++pieces_;
+        for (const bool high : {false, true}) {
+            if (chance(dbl ? 0.8 : 0.5))
+                beside(room, bed, side, high, uniform(0.4, 0.5));  // night stands
+        }
+    }
+    Box wardrobe;
+    const int other =
+        side >= 0 && chance(0.6) ? opposite(side) : std::uniform_int_distribution<>(0, 3)(rng_);
+    if (againstWall(room, other, uniform(1.0, 2.4), uniform(0.55, 0.65), 0.0, wardrobe)) {
+        solid(wardrobe);
+        ++pieces_;
+    }
+    if (chance(0.4)) {
+        const int s = std::uniform_int_distribution<>(0, 3)(rng_);
+        Box d;
+        if (againstWall(room, s, uniform(1.0, 1.4), 0.6, 0.0, d)) {
+            desk(d);
+            chairInFront(d, s);
+        }
+    }
+    if (chance(0.3))
+        cornerPlant(room);
+}
+
+void FurniturePlacer::bathroom(const FloorRoom& room) {
+    const Box& f = room.floor;
+    const std::vector<int> sides = sidesByLength(f);
+    if (lengthOf(f, sides[0]) >= 1.7 && chance(0.6)) {
+        Box tub;
+        if (againstWall(
+                room, sides[static_cast<std::size_t>(std::uniform_int_distribution<>(0, 1)(rng_))],
+                uniform(1.6, 1.75), uniform(0.7, 0.8), 0.0, tub)) {
+            solid(tub);
+            ++pieces_;
+        }
+    }
+    Box toilet;
+    if (againstWall(room, std::uniform_int_distribution<>(0, 3)(rng_), 0.38, 0.62, 0.0, toilet)) {
+        solid(toilet);
+        ++pieces_;
+    }
+    const int s = std::uniform_int_distribution<>(0, 3)(rng_);
+    Box basin;
+    if (chance(0.5)) {  // a vanity unit
+        if (againstWall(room, s, uniform(0.5, 0.9), uniform(0.45, 0.5), 0.0, basin)) {
+            solid(basin);
+            ++pieces_;
+        }
+    } else if (againstWall(room, s, 0.2, 0.2, 0.15, basin)) {  // a basin on a pedestal
+        disc({0.5 * (basin.xMin + basin.xMax), 0.5 * (basin.yMin + basin.yMax)}, 0.1);
+    }
+    Box washer;
+    if (chance(0.3) &&
+        againstWall(room, std::uniform_int_distribution<>(0, 3)(rng_), 0.6, 0.6, 0.0, washer)) {
+        solid(washer);
+        ++pieces_;
+    }
+}
+
+void FurniturePlacer::hall(const FloorRoom& room) {
+    const std::vector<int> sides = sidesByLength(room.floor);
+    const int n = std::uniform_int_distribution<>(0, 2)(rng_);
+    for (int k = 0; k < n; ++k) {
+        Box b;  // a shoe cabinet, a coat stand, a chest of drawers
+        if (againstWall(
+                room, sides[static_cast<std::size_t>(std::uniform_int_distribution<>(0, 1)(rng_))],
+                uniform(0.6, 1.2), uniform(0.3, 0.4), 0.0, b)) {
+            solid(b);
             ++pieces_;
         }
     }

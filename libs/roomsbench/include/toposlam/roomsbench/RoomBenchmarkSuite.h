@@ -1,7 +1,7 @@
 #pragma once
 // Everything toposlam-bench-rooms runs, as a library: B4 on Bormann's maps at any angle,
-// B4-gen on generated furnished plans at any angle, and rooms on grids built by our SLAM end to
-// end, every method in one run; the report as Markdown and JSON.
+// B4-gen and B4-flats on generated furnished offices and flats at any angle, and rooms on grids
+// built by our SLAM end to end, every method in one run; the report as Markdown and JSON.
 #include <toposlam/io/ProgressCallback.h>
 #include <toposlam/rooms/RoomBenchmark.h>
 #include <toposlam/roomsbench/EndToEndRoomCases.h>
@@ -16,6 +16,7 @@ struct RoomBenchmarkSuiteOptions {
     rooms::RoomBenchmarkOptions bench;
     bool bormann = true;                   ///< B4 on Bormann's maps
     std::vector<unsigned> generatedSeeds;  ///< B4-gen plans (empty: none)
+    std::vector<unsigned> flatSeeds;       ///< B4-flats plans (empty: none)
     /// End to end (empty lists: none): generated plans and Bormann maps toured, mapped by SLAM,
     /// segmented, scored; and the same plans as drawn (dataset "drawn") for comparison.
     std::vector<unsigned> endToEndSeeds;
@@ -35,8 +36,8 @@ struct RoomBenchmarkSuiteResult {
     std::vector<EndToEndRecord> endToEnd;
 };
 
-/// Runs the selected sets in the order Bormann, B4-gen, end to end. Throws io::InputError for
-/// a missing map, std::invalid_argument for bad options.
+/// Runs the selected sets in the order Bormann, B4-gen, B4-flats, end to end. Throws io::InputError
+/// for a missing map, std::invalid_argument for bad options.
 RoomBenchmarkSuiteResult runRoomBenchmarkSuite(const RoomBenchmarkSuiteOptions& options,
                                                const io::ProgressCallback& progress = {});
 

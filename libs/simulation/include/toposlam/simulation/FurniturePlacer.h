@@ -2,7 +2,9 @@
 // Furnishes the rooms of a FloorPlan the way people furnish them (FloorPlanGenerator): by the
 // room's kind, desks against walls with their chairs, shelves and cabinets along walls, plants
 // in corners, meeting tables with chairs all round, kitchen counters, rows of lab benches,
-// islands of desks in open-plan areas, a few things along corridor walls. Furniture never
+// islands of desks in open-plan areas, a few things along corridor walls; in flats a sofa with
+// its coffee table and a TV unit across the room, a dining table, beds with their heads to a
+// wall and night stands beside them, wardrobes, bathtubs, toilets and wash basins. Furniture never
 // blocks a door (a zone as wide as the door plus 0.3 m and 1.1 m deep on both sides stays
 // clear, as people keep it) and pieces do not overlap each other or the walls; otherwise
 // positions, sizes and gaps (to walls, between desks) are random.
@@ -24,7 +26,8 @@ class FurniturePlacer {
     FurniturePlacer(FloorPlan& plan, std::mt19937& rng);
 
     /// Furnishes `room` by its kind: "office", "meeting", "kitchen", "storage", "lab",
-    /// "open plan", "corridor" (other kinds get a few pieces along the walls).
+    /// "open plan", "corridor", "living", "bedroom", "bathroom", "hall" (other kinds get a few
+    /// pieces along the walls).
     void furnish(const FloorRoom& room);
 
     /// Pieces of furniture placed so far (a desk with its legs is one piece).
@@ -59,6 +62,13 @@ class FurniturePlacer {
     void lab(const FloorRoom& room);
     void openPlan(const FloorRoom& room);
     void corridor(const FloorRoom& room);
+    void living(const FloorRoom& room);
+    void bedroom(const FloorRoom& room);
+    void bathroom(const FloorRoom& room);
+    void hall(const FloorRoom& room);
+    /// A solid piece `size` across, against the wall `side` right beside `next` (a bed's
+    /// night stand, an armchair by the sofa), on its low or high end.
+    void beside(const FloorRoom& room, const Box& next, int side, bool high, double size);
 
     FloorPlan& plan_;
     std::mt19937& rng_;

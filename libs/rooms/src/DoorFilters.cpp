@@ -226,17 +226,19 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
     // The wall the door is in: from the jamb, away from the opening, the obstacle goes on for
     // wallEndProbe (past the corner of the jamb), and there it is a wall: free space on both
     // sides of it at most maxWallThickness apart (an inner wall; not a desk), or on one side
-    // only with nothing free within twice that on the other (the edge of the mapped space). A
-    // wall across the door line walked through instead runs on to both sides there: no wall end.
+    // only with nothing free within edgeDepth on the other (the edge of the mapped space, not a
+    // bed or a sofa against an inner wall, with the next room behind it). A wall across the door
+    // line walked through instead runs on to both sides there: no wall end.
     const double thickness = detail::toCells(options_.maxWallThickness, space.frame.resolution);
+    const double edgeDepth =
+        std::max(2 * thickness, detail::toCells(options_.edgeDepth, space.frame.resolution));
     const double length =
         std::max(extent, detail::toCells(options_.wallEndProbe, space.frame.resolution));
-    auto toFree = [&](const cv::Point& from, double ux, double uy) {
+    auto toFree = [&](const cv::Point& from, double ux, double uy, double reach) {
         cv::Point hit;
-        const bool found =
-            detail::withMaskReader(space.free, from, 2 * thickness + 1, [&](const auto& isFree) {
-                return detail::walkRay(from, ux, uy, 2 * thickness, isFree, hit);
-            });
+        const bool found = detail::withMaskReader(
+            space.free, from, reach + 1,
+            [&](const auto& isFree) { return detail::walkRay(from, ux, uy, reach, isFree, hit); });
         return found ? detail::cellDistance(hit.x - from.x, hit.y - from.y) : 1e9;
     };
     const WallThickness* measured = options_.wallThicknessFromMap ? wallThickness : nullptr;
@@ -247,13 +249,18 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
         const cv::Point probe(cvRound(jamb.x + ux * at), cvRound(jamb.y + uy * at));
         if (detail::isSet(open, probe.x, probe.y))
             return false;  // the run went on through a gap in a wall at an angle, not along it
-        const double a = toFree(probe, -uy, ux), b = toFree(probe, uy, -ux);
+        const double a = toFree(probe, -uy, ux, 2 * thickness),
+                     b = toFree(probe, uy, -ux, 2 * thickness);
         if (a <= thickness && b <= thickness) {
             // a + b - 1 obstacle cells across: as thick as the building's walls?
             return a + b <= thickness + 1.0 &&
                    (measured == nullptr || measured->isWallThickness(a + b - 1.0));
         }
-        return std::min(a, b) <= thickness && std::max(a, b) > 2 * thickness;
+        if (!(std::min(a, b) <= thickness && std::max(a, b) > 2 * thickness))
+            return false;
+        return edgeDepth <= 2 * thickness ||
+               (a > b ? toFree(probe, -uy, ux, edgeDepth) : toFree(probe, uy, -ux, edgeDepth)) >
+                   edgeDepth;
     };
     // Probed a third of the way in, past the corner of the jamb: where the wall the door is in
     // goes on (a wall stub beside a corner door meets the other wall farther on). Probing at

@@ -368,6 +368,10 @@ void RoomSegmenter::Options::declare(config::OptionsSchema& s) {
            "one jamb must be the end of a wall (deviation)");
     s.real("max_wall_thickness", filters.maxWallThickness, "m", "thickest wall end").above(0);
     s.real("wall_end_probe", filters.wallEndProbe, "m", "probe length along the wall").above(0);
+    s.real("edge_depth", filters.edgeDepth, "m",
+           "a wall end free on one side only is the map's edge when nothing is free this deep "
+           "behind it")
+        .atLeast(0);
     s.flag(
         "reject_corridor_cuts", filters.rejectCorridorCuts,
         "no door with both jambs on walls going on to one side of it: a corridor's cross-section "

@@ -95,6 +95,11 @@ class DoorFilters {
         /// m: how far from a wall-end jamb, along the door line, the wall must go on and is
         /// measured for its thickness (and the reach of the wide openings' framing test).
         double wallEndProbe = 0.55;
+        /// m: a wall end with free space on one side only is the edge of the mapped space when
+        /// nothing is free within this on the other side; furniture against an inner wall has
+        /// the next room behind it (a bed of up to 2.1 m with its head to a wall up to 0.3 m
+        /// thick). At most twice maxWallThickness: the check of that reach alone (off).
+        double edgeDepth = 2.4;
         /// Part of the wall-end test: the wall end must also be as thick as the building's
         /// walls are, measured on the map (WallThickness.h), so that a cabinet, a fridge or a
         /// shelf standing against a wall is no wall end.

@@ -1,0 +1,74 @@
+// B4-flats: the virtual-door segmenter on generated flats (simulation::generateFloorPlan,
+// BuildingStyle::Flat), scored against their exact ground truth like Bormann's maps. No corridor:
+// rooms open into rooms, doors sit next to corners, and beds, wardrobes and sofas stand against
+// inner walls.
+#include <toposlam/rooms/RoomBenchmark.h>
+#include <toposlam/roomsbench/GeneratedRoomCases.h>
+
+#include <gtest/gtest.h>
+
+#include <cstddef>
+
+using namespace toposlam;
+using rooms::RoomBenchmarkScore;
+
+namespace {
+
+struct FlatTotals {
+    std::size_t trueDoors = 0, matchedTrue = 0, virtualDoors = 0, matchedVirtual = 0;
+    double recallSum = 0;
+    std::size_t maps = 0;
+    std::size_t falseDoors() const { return virtualDoors - matchedVirtual; }
+};
+
+// The 20 B4-flats plans, furnished or not, segmented by vdoor with `options`.
+FlatTotals flats(bool furnished, const rooms::RoomSegmenter::Options& options) {
+    rooms::RoomBenchmarkOptions o;
+    o.repeats = 1;
+    o.methods = {"vdoor"};
+    o.virtualDoor = options;
+    const rooms::RoomBenchmark bench(o);
+    FlatTotals t;
+    for (const unsigned seed : roomsbench::b4GenSeeds()) {
+        for (const auto& c :
+             roomsbench::generatedCases(seed, {0}, simulation::BuildingStyle::Flat)) {
+            if (c.furnished != furnished)
+                continue;
+            for (const RoomBenchmarkScore& s : bench.score(c)) {
+                t.trueDoors += s.doors.trueDoors;
+                t.matchedTrue += s.doors.matchedTrue;
+                t.virtualDoors += s.doors.virtualDoors;
+                t.matchedVirtual += s.doors.matchedVirtual;
+                t.recallSum += s.pr.recall;
+                ++t.maps;
+            }
+        }
+    }
+    return t;
+}
+
+}  // namespace
+
+// Walls only: every room is found whole and no door is invented (a door beside a corner, an
+// open kitchen up to 2.4 m wide, rooms reached only through other rooms).
+TEST(Flats, UnfurnishedFlatsAreSegmentedRoomForRoom) {
+    const FlatTotals t = flats(false, rooms::RoomSegmenter::Options::improved());
+    ASSERT_EQ(t.maps, 20u);
+    EXPECT_GE(t.recallSum / double(t.maps), 0.99);
+    EXPECT_EQ(t.falseDoors(), 0u);
+    EXPECT_GE(double(t.matchedTrue), 0.9 * double(t.trueDoors));
+}
+
+// A bed with its head to an inner wall, seen from its side, is an obstacle with free space on
+// one side only within twice the thickest wall: it used to pass for the end of an outer wall
+// (the edge of the mapped space) and frame false doors in the gaps beside it. With edge_depth the
+// next room behind it shows, and those doors go; no true door goes with them.
+TEST(Flats, FurnitureAgainstAnInnerWallIsNoWallEnd) {
+    rooms::RoomSegmenter::Options withDepth = rooms::RoomSegmenter::Options::improved();
+    rooms::RoomSegmenter::Options without = withDepth;
+    without.filters.edgeDepth = 0;  // at most 2 x max_wall_thickness: off
+    const FlatTotals a = flats(true, withDepth), b = flats(true, without);
+    EXPECT_LT(2 * a.falseDoors(), b.falseDoors());
+    EXPECT_GE(a.matchedTrue, b.matchedTrue);
+    EXPECT_GT(a.recallSum, b.recallSum);
+}

@@ -172,7 +172,8 @@ struct Arguments {
     cli::NumberArg<double> cellSize{
         "",
         "cell-size",
-        "segment every bormann and gen map in cells of this size (m; a whole multiple of the "
+        "segment every bormann, gen and flats map in cells of this size (m; a whole multiple of "
+        "the "
         "drawn 0.05 m): a cell is free when every drawn pixel in it is, as a laser grid marks a "
         "cell a beam ended in; scored in the drawn ground truth (default: 0 = as drawn)",
         0.0,

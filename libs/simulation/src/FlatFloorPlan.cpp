@@ -242,12 +242,13 @@ bool FlatBuilder::addDoor(const SharedWall& w, double width) {
     width = std::min(width, w.length() - 2 * kJambMargin);
     if (width < kMinDoor)
         return false;
+    const double first = w.from + kJambMargin, last = w.to - kJambMargin - width;
     double start = 0;
     if (chance(0.45)) {  // a hand's width from a corner, as most doors are
         const double gap = uniform(kJambMargin, 0.25);
-        start = chance(0.5) ? w.from + gap : w.to - gap - width;
+        start = std::clamp(chance(0.5) ? w.from + gap : w.to - gap - width, first, last);
     } else {
-        start = uniform(w.from + kJambMargin, w.to - kJambMargin - width);
+        start = uniform(first, last);
     }
     const TPoint2D a = w.vertical ? TPoint2D{w.line, start} : TPoint2D{start, w.line};
     const TPoint2D b =

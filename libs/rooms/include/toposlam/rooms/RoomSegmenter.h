@@ -68,8 +68,9 @@ class RoomSegmenter {
         double maxSliverArea = 0.25;
         /// m; furniture against a room's walls (non-free pockets inside the room's box along
         /// the main directions, touching no other room, up to this long both ways) takes the
-        /// room's id, as islands do (deviation, FurniturePockets.h); 0 = off.
-        double maxFurnitureSize = 2.0;
+        /// room's id, as islands do (deviation, FurniturePockets.h); 0 = off. 2.5: a wardrobe
+        /// of up to 2.4 m, a bed of 2.1 m.
+        double maxFurnitureSize = 2.5;
         /// With a trajectory, search from the medial axis too (deviation: the paper searches
         /// the trajectory only, assuming the robot went through every door; a tour that visits
         /// every room need not, e.g. through the second door of a room).

@@ -162,8 +162,12 @@ class MidpointBuckets {
     }
 
   private:
+    // Buckets left of or above the image are negative: shifted as unsigned (a negative value
+    // shifted left is undefined).
     static long long keyOf(int bx, int by) {
-        return (static_cast<long long>(bx) << 32) ^ static_cast<unsigned>(by);
+        return static_cast<long long>(
+            (static_cast<unsigned long long>(static_cast<unsigned>(bx)) << 32) |
+            static_cast<unsigned>(by));
     }
     cv::Point bucketOf(const VirtualDoor& d) const {
         const cv::Point2d m = 0.5 * (cv::Point2d(d.jambA) + cv::Point2d(d.jambB));

@@ -98,6 +98,16 @@ bool FurniturePlacer::againstWall(const FloorRoom& room, int side, double length
     return false;
 }
 
+bool FurniturePlacer::solidAgainstWall(const FloorRoom& room, int side, double length, double depth,
+                                       double gap) {
+    Box b;
+    if (!againstWall(room, side, length, depth, gap, b))
+        return false;
+    solid(b);
+    ++pieces_;
+    return true;
+}
+
 void FurniturePlacer::solid(const Box& b) {
     plan_.addFurniture(b);
 }
@@ -201,12 +211,8 @@ void FurniturePlacer::cornerPlant(const FloorRoom& room) {
 void FurniturePlacer::shelves(const FloorRoom& room, int count) {
     for (int k = 0; k < count; ++k) {
         const int side = std::uniform_int_distribution<>(0, 3)(rng_);
-        Box b;
-        if (againstWall(room, side, uniform(0.8, 2.0), uniform(0.35, 0.45),
-                        chance(0.7) ? 0.0 : uniform(0.01, 0.05), b)) {
-            solid(b);
-            ++pieces_;
-        }
+        solidAgainstWall(room, side, uniform(0.8, 2.0), uniform(0.35, 0.45),
+                         chance(0.7) ? 0.0 : uniform(0.01, 0.05));
     }
 }
 
@@ -283,12 +289,9 @@ void FurniturePlacer::meeting(const FloorRoom& room) {
             }
         }
     }
-    Box b;
-    if (chance(0.5) &&
-        againstWall(room, sidesByLength(f)[std::uniform_int_distribution<>(0, 3)(rng_)],
-                    uniform(1.2, 2.4), 0.45, 0.0, b)) {
-        solid(b);  // sideboard
-        ++pieces_;
+    if (chance(0.5)) {  // a sideboard
+        solidAgainstWall(room, sidesByLength(f)[std::uniform_int_distribution<>(0, 3)(rng_)],
+                         uniform(1.2, 2.4), 0.45, 0.0);
     }
     if (chance(0.6))
         cornerPlant(room);
@@ -297,19 +300,11 @@ void FurniturePlacer::meeting(const FloorRoom& room) {
 void FurniturePlacer::kitchen(const FloorRoom& room) {
     const std::vector<int> sides = sidesByLength(room.floor);
     const int side = sides[std::uniform_int_distribution<>(0, 1)(rng_)];
-    Box counter;
-    if (againstWall(room, side, uniform(0.6, 0.9) * lengthOf(room.floor, side), 0.6, 0.0,
-                    counter)) {
-        solid(counter);
-        ++pieces_;
-    }
-    Box fridge;
-    if (againstWall(
-            room, sides[static_cast<std::size_t>(2 + std::uniform_int_distribution<>(0, 1)(rng_))],
-            0.65, 0.65, 0.02, fridge)) {
-        solid(fridge);
-        ++pieces_;
-    }
+    solidAgainstWall(room, side, uniform(0.6, 0.9) * lengthOf(room.floor, side), 0.6,
+                     0.0);  // the counter
+    solidAgainstWall(       // the fridge
+        room, sides[static_cast<std::size_t>(2 + std::uniform_int_distribution<>(0, 1)(rng_))],
+        0.65, 0.65, 0.02);
     // A small table with chairs somewhere in the middle.
     const Box& f = room.floor;
     for (int attempt = 0; attempt < 10; ++attempt) {
@@ -331,11 +326,9 @@ void FurniturePlacer::kitchen(const FloorRoom& room) {
 
 void FurniturePlacer::storage(const FloorRoom& room) {
     for (int side = 0; side < 4; ++side) {
-        Box b;
-        if (chance(0.8) && againstWall(room, side, uniform(0.6, 0.95) * lengthOf(room.floor, side),
-                                       uniform(0.4, 0.6), 0.0, b)) {
-            solid(b);
-            ++pieces_;
+        if (chance(0.8)) {
+            solidAgainstWall(room, side, uniform(0.6, 0.95) * lengthOf(room.floor, side),
+                             uniform(0.4, 0.6), 0.0);
         }
     }
     const Box& f = room.floor;
@@ -410,11 +403,9 @@ void FurniturePlacer::openPlan(const FloorRoom& room) {
         }
     }
     shelves(room, 2 + std::uniform_int_distribution<>(0, 2)(rng_));
-    Box sofa;
-    if (chance(0.4) && againstWall(room, std::uniform_int_distribution<>(0, 3)(rng_),
-                                   uniform(1.6, 2.2), 0.85, 0.05, sofa)) {
-        solid(sofa);
-        ++pieces_;
+    if (chance(0.4)) {  // a sofa
+        solidAgainstWall(room, std::uniform_int_distribution<>(0, 3)(rng_), uniform(1.6, 2.2), 0.85,
+                         0.05);
     }
     for (int p = 0; p < 2; ++p) {
         if (chance(0.6))
@@ -434,9 +425,8 @@ void FurniturePlacer::corridor(const FloorRoom& room) {
             const double radius = uniform(0.15, 0.3);
             if (againstWall(room, side, 2 * radius, 2 * radius, 0.05, b))
                 disc({0.5 * (b.xMin + b.xMax), 0.5 * (b.yMin + b.yMax)}, radius);
-        } else if (againstWall(room, side, uniform(0.8, 1.2), uniform(0.35, 0.45), 0.0, b)) {
-            solid(b);  // cabinet, bench or coat rack
-            ++pieces_;
+        } else {  // a cabinet, bench or coat rack
+            solidAgainstWall(room, side, uniform(0.8, 1.2), uniform(0.35, 0.45), 0.0);
         }
     }
 }
@@ -505,11 +495,8 @@ void FurniturePlacer::living(const FloorRoom& room) {
         }
         if (chance(0.5))
             beside(room, sofa, side, chance(0.5), uniform(0.75, 0.85));  // an armchair
-        Box tv;
-        if (againstWall(room, opposite(side), uniform(1.2, 1.8), uniform(0.4, 0.5), 0.0, tv)) {
-            solid(tv);
-            ++pieces_;
-        }
+        solidAgainstWall(room, opposite(side), uniform(1.2, 1.8), uniform(0.4, 0.5),
+                         0.0);  // a TV unit
     }
     // A dining table with chairs round it in a large room.
     if (f.area() > 16 && chance(0.6)) {
@@ -558,13 +545,9 @@ void FurniturePlacer::bedroom(const FloorRoom& room) {
                 beside(room, bed, side, high, uniform(0.4, 0.5));  // night stands
         }
     }
-    Box wardrobe;
     const int other =
         side >= 0 && chance(0.6) ? opposite(side) : std::uniform_int_distribution<>(0, 3)(rng_);
-    if (againstWall(room, other, uniform(1.0, 2.4), uniform(0.55, 0.65), 0.0, wardrobe)) {
-        solid(wardrobe);
-        ++pieces_;
-    }
+    solidAgainstWall(room, other, uniform(1.0, 2.4), uniform(0.55, 0.65), 0.0);  // a wardrobe
     if (chance(0.4)) {
         const int s = std::uniform_int_distribution<>(0, 3)(rng_);
         Box d;
@@ -581,48 +564,29 @@ void FurniturePlacer::bathroom(const FloorRoom& room) {
     const Box& f = room.floor;
     const std::vector<int> sides = sidesByLength(f);
     if (lengthOf(f, sides[0]) >= 1.7 && chance(0.6)) {
-        Box tub;
-        if (againstWall(
-                room, sides[static_cast<std::size_t>(std::uniform_int_distribution<>(0, 1)(rng_))],
-                uniform(1.6, 1.75), uniform(0.7, 0.8), 0.0, tub)) {
-            solid(tub);
-            ++pieces_;
-        }
+        solidAgainstWall(  // a bathtub
+            room, sides[static_cast<std::size_t>(std::uniform_int_distribution<>(0, 1)(rng_))],
+            uniform(1.6, 1.75), uniform(0.7, 0.8), 0.0);
     }
-    Box toilet;
-    if (againstWall(room, std::uniform_int_distribution<>(0, 3)(rng_), 0.38, 0.62, 0.0, toilet)) {
-        solid(toilet);
-        ++pieces_;
-    }
+    solidAgainstWall(room, std::uniform_int_distribution<>(0, 3)(rng_), 0.38, 0.62,
+                     0.0);  // a toilet
     const int s = std::uniform_int_distribution<>(0, 3)(rng_);
     Box basin;
-    if (chance(0.5)) {  // a vanity unit
-        if (againstWall(room, s, uniform(0.5, 0.9), uniform(0.45, 0.5), 0.0, basin)) {
-            solid(basin);
-            ++pieces_;
-        }
-    } else if (againstWall(room, s, 0.2, 0.2, 0.15, basin)) {  // a basin on a pedestal
+    if (chance(0.5))  // a vanity unit
+        solidAgainstWall(room, s, uniform(0.5, 0.9), uniform(0.45, 0.5), 0.0);
+    else if (againstWall(room, s, 0.2, 0.2, 0.15, basin))  // a basin on a pedestal
         disc({0.5 * (basin.xMin + basin.xMax), 0.5 * (basin.yMin + basin.yMax)}, 0.1);
-    }
-    Box washer;
-    if (chance(0.3) &&
-        againstWall(room, std::uniform_int_distribution<>(0, 3)(rng_), 0.6, 0.6, 0.0, washer)) {
-        solid(washer);
-        ++pieces_;
-    }
+    if (chance(0.3))  // a washing machine
+        solidAgainstWall(room, std::uniform_int_distribution<>(0, 3)(rng_), 0.6, 0.6, 0.0);
 }
 
 void FurniturePlacer::hall(const FloorRoom& room) {
     const std::vector<int> sides = sidesByLength(room.floor);
     const int n = std::uniform_int_distribution<>(0, 2)(rng_);
     for (int k = 0; k < n; ++k) {
-        Box b;  // a shoe cabinet, a coat stand, a chest of drawers
-        if (againstWall(
-                room, sides[static_cast<std::size_t>(std::uniform_int_distribution<>(0, 1)(rng_))],
-                uniform(0.6, 1.2), uniform(0.3, 0.4), 0.0, b)) {
-            solid(b);
-            ++pieces_;
-        }
+        solidAgainstWall(  // a shoe cabinet, a coat stand, a chest of drawers
+            room, sides[static_cast<std::size_t>(std::uniform_int_distribution<>(0, 1)(rng_))],
+            uniform(0.6, 1.2), uniform(0.3, 0.4), 0.0);
     }
 }
 

@@ -44,6 +44,9 @@ class FurniturePlacer {
     bool againstWall(const FloorRoom& room, int side, double length, double depth, double gap,
                      Box& out);
     bool reserve(const FloorRoom& room, const Box& footprint);
+    /// One solid piece (a cabinet, a wardrobe, a bathtub) placed as againstWall places it;
+    /// false when it does not fit.
+    bool solidAgainstWall(const FloorRoom& room, int side, double length, double depth, double gap);
 
     void solid(const Box& b);
     void legs(const Box& b);

@@ -1,6 +1,6 @@
 #include "FlatFloorPlan.h"
 
-#include <toposlam/simulation/FurniturePlacer.h>
+#include "GeneratedBuilding.h"
 
 #include <algorithm>
 #include <cmath>
@@ -303,13 +303,10 @@ void FlatBuilder::connect(const std::vector<SharedWall>& walls) {
 GeneratedFloorPlan FlatBuilder::build(unsigned seed) {
     const double width = uniform(o_.minFlatWidth, o_.maxFlatWidth);
     const double depth = uniform(o_.minFlatDepth, o_.maxFlatDepth);
-    tOuter_ = std::vector<double>{0.2, 0.25, 0.3}[std::uniform_int_distribution<>(0, 2)(rng_)];
-    tInner_ = std::vector<double>{0.1, 0.12, 0.15}[std::uniform_int_distribution<>(0, 2)(rng_)];
-    const double h = tOuter_ / 2;
-    plan_.addWall({-h, -h}, {width + h, -h}, tOuter_);
-    plan_.addWall({-h, depth + h}, {width + h, depth + h}, tOuter_);
-    plan_.addWall({-h, -h}, {-h, depth + h}, tOuter_);
-    plan_.addWall({width + h, -h}, {width + h, depth + h}, tOuter_);
+    const detail::WallThicknesses thicknesses = detail::drawWallThicknesses(rng_);
+    tOuter_ = thicknesses.outer;
+    tInner_ = thicknesses.inner;
+    detail::addOuterWalls(plan_, width, depth, tOuter_);
     partition(width, depth);
     assignKinds(sharedWalls());
     // A piece that no wall long enough for a door joins to the living room (a sliver between
@@ -348,13 +345,7 @@ GeneratedFloorPlan FlatBuilder::build(unsigned seed) {
     out.groundTruthRoom.assign(plan_.rooms().size() + 1, 0);
     for (const FloorRoom& r : plan_.rooms())
         out.groundTruthRoom[static_cast<std::size_t>(r.id)] = ++out.roomCount;
-    std::size_t furniture = 0;
-    if (o_.furnish) {
-        FurniturePlacer placer(plan_, rng_);
-        for (const FloorRoom& room : plan_.rooms())
-            placer.furnish(room);
-        furniture = placer.pieces();
-    }
+    const std::size_t furniture = o_.furnish ? detail::furnishRooms(plan_, rng_) : 0;
     out.plan = plan_;
     const bool lShaped =
         std::any_of(pieces_.begin(), pieces_.end(), [](const Piece& p) { return p.outside; });
@@ -363,9 +354,7 @@ GeneratedFloorPlan FlatBuilder::build(unsigned seed) {
                   "seed %u: %s flat %.1f x %.1f m, %zu rooms, %zu doors, %zu furniture pieces;",
                   seed, lShaped ? "L-shaped" : "rectangular", width, depth, plan_.rooms().size(),
                   plan_.doors().size(), furniture);
-    out.summary = line;
-    for (const auto& [kind, n] : kinds_)
-        out.summary += " " + std::to_string(n) + " " + kind;
+    out.summary = line + detail::kindCounts(kinds_);
     return out;
 }
 

@@ -1,7 +1,7 @@
 #include <toposlam/simulation/FloorPlanGenerator.h>
-#include <toposlam/simulation/FurniturePlacer.h>
 
 #include "FlatFloorPlan.h"
+#include "GeneratedBuilding.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -196,13 +196,10 @@ void Builder::fillBlock(const Block& b) {
 GeneratedFloorPlan Builder::build(unsigned seed) {
     const double width = uniform(o_.minWidth, o_.maxWidth);
     const double depth = uniform(o_.minDepth, o_.maxDepth);
-    tOuter_ = std::vector<double>{0.2, 0.25, 0.3}[std::uniform_int_distribution<>(0, 2)(rng_)];
-    tInner_ = std::vector<double>{0.1, 0.12, 0.15}[std::uniform_int_distribution<>(0, 2)(rng_)];
-    const double h = tOuter_ / 2;
-    plan_.addWall({-h, -h}, {width + h, -h}, tOuter_);
-    plan_.addWall({-h, depth + h}, {width + h, depth + h}, tOuter_);
-    plan_.addWall({-h, -h}, {-h, depth + h}, tOuter_);
-    plan_.addWall({width + h, -h}, {width + h, depth + h}, tOuter_);
+    const detail::WallThicknesses walls = detail::drawWallThicknesses(rng_);
+    tOuter_ = walls.outer;
+    tInner_ = walls.inner;
+    detail::addOuterWalls(plan_, width, depth, tOuter_);
     std::vector<Block> blocks;
     layoutCorridors(width, depth, blocks);
     for (const Block& b : blocks)
@@ -223,21 +220,13 @@ GeneratedFloorPlan Builder::build(unsigned seed) {
         if (r.kind == "corridor")
             out.groundTruthRoom[static_cast<std::size_t>(r.id)] = corridorRoom;
     }
-    std::size_t pieces = 0;
-    if (o_.furnish) {
-        FurniturePlacer placer(plan_, rng_);
-        for (const FloorRoom& room : plan_.rooms())
-            placer.furnish(room);
-        pieces = placer.pieces();
-    }
+    const std::size_t pieces = o_.furnish ? detail::furnishRooms(plan_, rng_) : 0;
     out.plan = plan_;
     char line[256];
     std::snprintf(line, sizeof line,
                   "seed %u: %.1f x %.1f m, %zu room boxes, %zu doors, %zu furniture pieces;", seed,
                   width, depth, plan_.rooms().size(), plan_.doors().size(), pieces);
-    out.summary = line;
-    for (const auto& [kind, n] : kinds_)
-        out.summary += " " + std::to_string(n) + " " + kind;
+    out.summary = line + detail::kindCounts(kinds_);
     return out;
 }
 

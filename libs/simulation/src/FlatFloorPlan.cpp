@@ -308,10 +308,10 @@ GeneratedFloorPlan FlatBuilder::build(unsigned seed) {
     tInner_ = thicknesses.inner;
     detail::addOuterWalls(plan_, width, depth, tOuter_);
     partition(width, depth);
-    assignKinds(sharedWalls());
+    std::vector<SharedWall> walls = sharedWalls();
+    assignKinds(walls);
     // A piece that no wall long enough for a door joins to the living room (a sliver between
     // T-junctions, rare) is left out of the flat, as a shaft would be.
-    std::vector<SharedWall> walls = sharedWalls();
     std::vector<char> reachable(pieces_.size(), 0);
     reachable[static_cast<std::size_t>(std::find(kind_.begin(), kind_.end(), "living") -
                                        kind_.begin())] = 1;
@@ -326,7 +326,10 @@ GeneratedFloorPlan FlatBuilder::build(unsigned seed) {
         if (!reachable[i])
             pieces_[i].outside = true, kind_[i] = "outside";
     }
-    walls = sharedWalls();
+    walls.erase(
+        std::remove_if(walls.begin(), walls.end(),
+                       [&](const SharedWall& w) { return !reachable[w.a] || !reachable[w.b]; }),
+        walls.end());
     room_.assign(pieces_.size(), 0);
     for (std::size_t i = 0; i < pieces_.size(); ++i) {
         if (pieces_[i].outside)

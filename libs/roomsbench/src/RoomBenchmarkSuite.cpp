@@ -40,19 +40,18 @@ RoomBenchmarkSuiteResult runRoomBenchmarkSuite(const RoomBenchmarkSuiteOptions& 
     };
     if (bormann > 0)
         append(bench.run(part(0, bormann)));
-    append(bench.runCases(
-        generated,
-        [&](std::size_t i) {
-            return bench.atCellSize(generatedCases(options.generatedSeeds[i], o.rotationsDeg));
-        },
-        part(bormann, generated)));
-    append(bench.runCases(
-        flats,
-        [&](std::size_t i) {
-            return bench.atCellSize(generatedCases(options.flatSeeds[i], o.rotationsDeg,
-                                                   simulation::BuildingStyle::Flat));
-        },
-        part(bormann + generated, flats)));
+    // A generated set: its plans at every angle, in coarser cells when asked.
+    auto runGenerated = [&](const std::vector<unsigned>& seeds, simulation::BuildingStyle style,
+                            std::size_t before) {
+        append(bench.runCases(
+            seeds.size(),
+            [&](std::size_t i) {
+                return bench.atCellSize(generatedCases(seeds[i], o.rotationsDeg, style));
+            },
+            part(before, seeds.size())));
+    };
+    runGenerated(options.generatedSeeds, simulation::BuildingStyle::Office, bormann);
+    runGenerated(options.flatSeeds, simulation::BuildingStyle::Flat, bormann + generated);
     if (endToEnd > 0) {
         const auto plans =
             plansToTour(options.endToEndSeeds, options.endToEndBormannMaps, o.dataDir);

@@ -19,6 +19,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <stdexcept>
 
+#include "GreyImage.h"
 #include "GzipInputStream.h"
 #include "LookaheadStream.h"
 #include "MrptErrorText.h"
@@ -127,7 +128,9 @@ void limitOpenCvImageSize() {
     });
 }
 
-cv::Mat readGreyImage(const std::string& path) {
+}  // namespace
+
+cv::Mat detail::readGreyImage(const std::string& path) {
     if (!fs::is_regular_file(path))
         throw InputError(path, "file not found");
     limitOpenCvImageSize();
@@ -151,6 +154,8 @@ cv::Mat readGreyImage(const std::string& path) {
         image.convertTo(image, CV_8U);
     return image;
 }
+
+namespace {
 
 COccupancyGridMap2D gridFromImage(const cv::Mat& grey, const RosMapMetadata& meta) {
     COccupancyGridMap2D grid =
@@ -186,16 +191,37 @@ std::optional<RosMapMetadata> sidecarOf(const std::string& imagePath) {
     return std::nullopt;
 }
 
-COccupancyGridMap2D loadImageMap(const std::string& path, RosMapMetadata meta,
+// True when every pixel is one of ROS map_saver's three greys (occupied 0, unknown 205, free
+// 254): its picture, whose unknown grey read as p(free) = 205 / 255 would sit on the free
+// threshold.
+bool isMapSaverPicture(const cv::Mat& grey) {
+    for (int row = 0; row < grey.rows; ++row) {
+        const auto* pixels = grey.ptr<unsigned char>(row);
+        for (int c = 0; c < grey.cols; ++c)
+            if (pixels[c] != 0 && pixels[c] != 205 && pixels[c] != 254)
+                return false;
+    }
+    return true;
+}
+
+// `meta`: the sidecar's, or nullopt for a bare picture: p(free) = grey / 255, except a
+// map_saver picture, read with map_saver's own metadata (trinary, thresholds 0.65 / 0.196).
+COccupancyGridMap2D loadImageMap(const std::string& path, std::optional<RosMapMetadata> meta,
                                  const std::optional<GridMapGeometry>& geometry) {
+    const cv::Mat grey = detail::readGreyImage(path);
+    if (!meta) {
+        meta.emplace();
+        if (!isMapSaverPicture(grey))
+            meta->mode = RosMapMetadata::Mode::Scale;
+    }
     if (geometry) {
         if (!(geometry->resolution > 0))
             throw InputError(path, "resolution must be > 0");
-        meta.resolution = geometry->resolution;
-        meta.originX = geometry->originX;
-        meta.originY = geometry->originY;
+        meta->resolution = geometry->resolution;
+        meta->originX = geometry->originX;
+        meta->originY = geometry->originY;
     }
-    return gridFromImage(readGreyImage(path), meta);
+    return gridFromImage(grey, *meta);
 }
 
 // MRPT's reader passes the stored limits through setSize(), which rounds them to multiples of
@@ -400,9 +426,7 @@ COccupancyGridMap2D loadGridMap(const std::string& path,
         case MapFormat::OtherImage: {
             if (!fs::is_regular_file(path))
                 throw InputError(path, "file not found");
-            RosMapMetadata bare;
-            bare.mode = RosMapMetadata::Mode::Scale;  // p(free) = grey / 255
-            grid = loadImageMap(path, sidecarOf(path).value_or(bare), geometry);
+            grid = loadImageMap(path, sidecarOf(path), geometry);
             break;
         }
         case MapFormat::Unknown:
@@ -414,6 +438,17 @@ COccupancyGridMap2D loadGridMap(const std::string& path,
     if (countFreeCells(grid) == 0)
         throw InputError(path, "map has no free cells");
     return grid;
+}
+
+bool isBareMapImage(const std::string& path) {
+    switch (formatOf(path)) {
+        case MapFormat::Png:
+        case MapFormat::Pgm:
+        case MapFormat::OtherImage:
+            return !sidecarOf(path);
+        default:
+            return false;
+    }
 }
 
 void saveGridMap(const COccupancyGridMap2D& map, const std::string& path) {

@@ -23,7 +23,10 @@
 //                           YAML's geometry and p(free) = grey / 255); otherwise the image is
 //                           bare: p(free) = grey / 255 (colour and alpha images are read as
 //                           grey), with the geometry given by the caller (default 0.05 m/cell,
-//                           origin (0,0)).
+//                           origin (0,0)); a bare picture of map_saver's three greys alone
+//                           (0, 205, 254) is read as map_server reads it with map_saver's
+//                           YAML (205: unknown). Whether a bare picture is a grid at all or a
+//                           drawn floor plan is the caller's to decide (MapImageKind.h).
 // Size limits: at most kMaxGridMapCells cells, checked before they are allocated (from a
 // .gridmap's stored limits, an image's header).
 // Reading ROS metadata: mode trinary (the default) follows map_server exactly
@@ -67,6 +70,11 @@ struct GridMapGeometry {
 /// ("map has no free cells").
 mrpt::maps::COccupancyGridMap2D loadGridMap(
     const std::string& path, const std::optional<GridMapGeometry>& geometry = std::nullopt);
+
+/// True when loadGridMap reads `path` as a bare picture: an image format without the .yaml
+/// sidecar that states its geometry and how its greys are meant (see above). Such a picture
+/// may be a grid (grey = p(free)) or a drawn floor plan: see MapImageKind.h.
+bool isBareMapImage(const std::string& path);
 
 /// Saves `map`, choosing the format from the extension (.gridmap, .gridmap.gz, .png, .yaml,
 /// .yml, .pgm). Image formats also write the ROS pair (.png: "<stem>.yaml" + "<stem>.pgm";

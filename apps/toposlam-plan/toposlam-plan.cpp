@@ -1,7 +1,9 @@
 // toposlam-plan: a room-to-room path on a topological map (toposlam-rooms output) and its
 // occupancy grid. The planning lives in libs/planning.
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/cli/MapReadingArgs.h>
 #include <toposlam/cli/NumberArg.h>
+#include <toposlam/io/GridMapIO.h>
 #include <toposlam/planning/RoomPlanRequest.h>
 
 #include <iostream>
@@ -59,8 +61,10 @@ int run(int argc, char** argv) {
     cli::NumberArg<double> freeThresholdArg(
         "", "free-threshold",
         "cells with p(free) above this are free; everything else (occupied, unknown) is an "
-        "obstacle. Default 0.6 (use 0.98 for Bormann-style PNGs, where grey < 250 is not free)",
+        "obstacle. Default 0.6, or 0.98 for a map read as a drawn plan (--drawn)",
         0.6, cli::NumberRange<double>::closed(0.5, 0.999), "p", cmd);
+    const cli::MapReadingArgs mapReading(
+        cmd, "Use the picture the rooms were segmented from, read the same way.");
     cli::NumberArg<int> attemptsArg(
         "", "attempts",
         "independent OMPL solves per leg, the shortest kept (RRT-Connect picks a random side "
@@ -80,6 +84,8 @@ int run(int argc, char** argv) {
     request.to = toArg.getValue();
     request.robotRadius = radiusArg.getValue();
     request.freeThreshold = freeThresholdArg.getValue();
+    if (mapReading.readAsDrawnPlan(request.gridFile) && !freeThresholdArg.isSet())
+        request.freeThreshold = io::kDrawnPlanFreeAbove;
     request.ompl.planner = plannerArg.getValue();
     request.ompl.timeLimit = timeArg.getValue();
     request.ompl.attempts = attemptsArg.getValue();

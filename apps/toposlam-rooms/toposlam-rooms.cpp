@@ -3,6 +3,7 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <toposlam/cli/CommandLine.h>
 #include <toposlam/cli/ImageMemoryReuse.h>
+#include <toposlam/cli/MapReadingArgs.h>
 #include <toposlam/cli/NumberArg.h>
 #include <toposlam/io/GridMapIO.h>
 #include <toposlam/rooms/RoomSegmentationJob.h>
@@ -25,7 +26,9 @@ const char* const kDescription =
     "without a .yaml sidecar; see share/doc/file-formats.md) and, when known, the robot's "
     "trajectory while mapping ('timestamp x y yaw' lines, m and rad in the map frame, as "
     "toposlam-slam writes it). Without a trajectory the medial axis of the free space is "
-    "searched instead.\n"
+    "searched instead. A bare picture (no .yaml beside it) is read as a drawn floor plan or "
+    "as an occupancy grid, whichever its greys show (a note on stderr says which; --drawn, "
+    "--grid).\n"
     "Output, in the folder -o: rooms.json (everything, incl. the label image; schema in "
     "share/doc/file-formats.md), rooms.graphml (the graph), rooms.png (rooms coloured, doors red, "
     "room ids), "
@@ -34,8 +37,8 @@ const char* const kDescription =
     "Examples:\n"
     "  toposlam-rooms office.gridmap.gz --trajectory office.traj.txt -o office-rooms\n"
     "  toposlam-rooms map.yaml -c config_ini/rooms.ini -o rooms\n"
-    "  toposlam-rooms office_a.png --drawn -o rooms   # a drawn plan (Bormann PNG): grey < 250 "
-    "is not free, every non-free pixel a wall\n"
+    "  toposlam-rooms office_a.png -o rooms   # a drawn plan (Bormann PNG), read as one: grey "
+    "< 250 is not free, every non-free pixel a wall\n"
     "Exit status: 0 on success; 1 with 'error: ...' on stderr for bad input (a missing or "
     "corrupt map, a map without free cells, a malformed trajectory); 2 for bad options (an "
     "unknown option, a value out of range). Nothing is written unless the segmentation "
@@ -45,8 +48,8 @@ int run(int argc, char** argv) {
     TCLAP::CmdLine cmd(kDescription, ' ', "0.1");
     TCLAP::UnlabeledValueArg<std::string> input(
         "map",
-        "Grid map: .gridmap, .gridmap.gz, .yaml/.yml, .png, .pgm (image: p(free) = "
-        "grey/255 unless its .yaml sidecar says otherwise)",
+        "Grid map: .gridmap, .gridmap.gz, .yaml/.yml, .png, .pgm (a picture: p(free) = "
+        "grey/255 as its .yaml sidecar says, or, without one, see --drawn and --grid)",
         true, "", "map", cmd);
     TCLAP::ValueArg<std::string> output("o", "output", "Output folder (created if needed)", true,
                                         "", "dir", cmd);
@@ -78,16 +81,13 @@ int run(int argc, char** argv) {
     cli::NumberArg<double> freeThreshold(
         "", "free-threshold",
         "A cell is free when p(free) exceeds this. Default: 0.8 (ROS map_server's free "
-        "threshold; MRPT grids: unknown = 0.5). 0.98 with --drawn: maps drawn with grey < 250 = "
-        "not free (Bormann et al.'s benchmark)",
+        "threshold; MRPT grids: unknown = 0.5). 0.98 when read as a drawn plan (--drawn): grey "
+        "< 250 is not free, as in Bormann et al.'s benchmark",
         0.8, cli::NumberRange<double>::closed(0.5, 0.999), "p", cmd);
-    TCLAP::SwitchArg drawn(
-        "", "drawn",
-        "The map is a drawn floor plan or a scanned one, not a SLAM grid: grey below 250 is not "
-        "free (--free-threshold 0.98 unless given) and every non-free pixel is a wall "
-        "(occupied_threshold = 1), as toposlam-bench-rooms reads Bormann et al.'s maps. Without "
-        "it, mid-grey pixels read as unknown space, and walls drawn in grey are no walls",
-        cmd);
+    const cli::MapReadingArgs mapReading(
+        cmd,
+        "Every non-free pixel is a wall (--free-threshold 0.98 unless given, occupied_threshold "
+        "= 1), as toposlam-bench-rooms reads Bormann et al.'s maps.");
     cli::NumberArg<double> resolution(
         "", "resolution",
         "Cell size in m of a bare input image (overrides its .yaml sidecar). "
@@ -114,7 +114,7 @@ int run(int argc, char** argv) {
         job.options.door.doorWidthTolerance = doorTolerance.getValue();
     if (minRoomArea.isSet())
         job.options.filters.minRoomArea = minRoomArea.getValue();
-    if (drawn.getValue()) {
+    if (mapReading.readAsDrawnPlan(input.getValue())) {
         job.options.freeSpace.freeThreshold = io::kDrawnPlanFreeAbove;
         job.options.freeSpace.occupiedThreshold = 1;
     }

@@ -4,6 +4,7 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/core/bits_math.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/cli/MapReadingArgs.h>
 #include <toposlam/cli/NumberArg.h>
 #include <toposlam/config/IniFile.h>
 #include <toposlam/io/GridMapIO.h>
@@ -195,14 +196,11 @@ struct Arguments {
         "",
         "x,y",
         cmd};
-    TCLAP::SwitchArg drawnArg{
-        "", "drawn",
-        "The map is a drawn or scanned floor plan, not a SLAM grid: only white pixels (grey "
-        "250 and above, p(free) > 0.98) are free, every other pixel is an obstacle, so grey "
-        "furniture stops the laser and a grey background around the building is no free space "
-        "to tour ([Simulation] occupied_below = free_above = 0.98; as toposlam-rooms --drawn). "
-        "Without it a pixel's grey is p(free): light greys are free.",
-        cmd, false};
+    const cli::MapReadingArgs mapReading{
+        cmd,
+        "Grey furniture stops the laser and a grey background around the building is no free "
+        "space to tour ([Simulation] occupied_below = free_above = 0.98; as toposlam-rooms "
+        "--drawn)."};
     TCLAP::SwitchArg quietArg{"q", "quiet", "No progress display and no summary.", cmd, false};
 };
 
@@ -242,7 +240,7 @@ SimulatorConfig configuration(Arguments& a) {
         config.format = parseRawlogFormat(a.formatArg.getValue());
     if (a.startArg.isSet())
         config.tour.start = parseStart(a.startArg.getValue());
-    if (a.drawnArg.isSet())
+    if (a.mapArg.isSet() && a.mapReading.readAsDrawnPlan(a.mapArg.getValue()))
         config.log.world.thresholds = {io::kDrawnPlanFreeAbove, io::kDrawnPlanFreeAbove};
     validate(config);
     return config;

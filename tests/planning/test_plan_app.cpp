@@ -5,8 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <sstream>
 #include <string>
 
 using toposlam::test::runApp;
@@ -101,4 +106,50 @@ TEST(PlanApp, EachFailureHasItsExitStatusAndWritesNothing) {
         EXPECT_NE(p.output.find(c.expected), std::string::npos) << c.options << "\n" << p.output;
         EXPECT_FALSE(std::filesystem::exists(p.folder)) << c.options << ": wrote output";
     }
+}
+
+TEST(PlanApp, ABarePlanPictureIsReadAsTheRoomsWereAndThePathKeepsToWhite) {
+    // Two white rooms behind light-grey walls (211: p(free) 0.83, free at the planner's 0.6
+    // were the picture read as a grid) in a grey background, joined by a 1 m door, given bare.
+    // toposlam-rooms and toposlam-plan both take it for a drawn plan: the path goes through
+    // the door, every point of it on white.
+    const TempDir dir;
+    cv::Mat plan(100, 200, CV_8U, cv::Scalar(180));
+    cv::rectangle(plan, cv::Rect(10, 10, 180, 80), cv::Scalar(211), cv::FILLED);
+    cv::rectangle(plan, cv::Rect(14, 14, 172, 72), cv::Scalar(255), cv::FILLED);
+    cv::rectangle(plan, cv::Rect(98, 14, 4, 72), cv::Scalar(211), cv::FILLED);
+    cv::rectangle(plan, cv::Rect(98, 64, 4, 20), cv::Scalar(255), cv::FILLED);  // off the line
+    const std::string picture = dir.file("plan.png");
+    ASSERT_TRUE(cv::imwrite(picture, plan));
+    auto r = runApp("toposlam-rooms", quoted(picture) + " -q -o " + quoted(dir.file("rooms")));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    r = runApp("toposlam-plan", quoted(picture) + " " + quoted(dir.file("rooms/rooms.json")) +
+                                    " --from 1 --to 2 -o " + quoted(dir.file("plan")));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("read as a drawn floor plan"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("route: room 1 -> door 1 -> room 2"), std::string::npos) << r.output;
+    std::istringstream path(readFile(dir.file("plan/path.txt")));
+    std::vector<cv::Point2d> points;
+    for (std::string line; std::getline(path, line);) {
+        double x = 0, y = 0;
+        if (!line.empty() && line[0] != '#' && std::istringstream(line) >> x >> y)
+            points.emplace_back(x, y);
+    }
+    ASSERT_GE(points.size(), 2u);
+    for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+        // Along each leg every centimetre (cells of 5 cm, origin at the lower left).
+        const int steps = static_cast<int>(std::ceil(cv::norm(points[i + 1] - points[i]) / 0.01));
+        for (int k = 0; k <= steps; ++k) {
+            const cv::Point2d p = points[i] + (points[i + 1] - points[i]) * (double(k) / steps);
+            const int col = static_cast<int>(std::floor(p.x / 0.05));
+            const int row = plan.rows - 1 - static_cast<int>(std::floor(p.y / 0.05));
+            ASSERT_TRUE(col >= 0 && col < plan.cols && row >= 0 && row < plan.rows);
+            EXPECT_EQ(plan.at<unsigned char>(row, col), 255) << "(" << p.x << ", " << p.y << ")";
+        }
+    }
+    r = runApp("toposlam-plan", quoted(picture) + " " + quoted(dir.file("rooms/rooms.json")) +
+                                    " --from 1 --to 2 --drawn --grid -o " +
+                                    quoted(dir.file("both")));
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("both")));
 }

@@ -35,21 +35,63 @@ TEST(ToposlamRooms, SegmentsADrawnOfficeAndWritesEveryOutput) {
     EXPECT_EQ(toposlam::rooms::loadTopologicalMap(dir.file("out/rooms.graphml")).doors.size(), 6u);
 }
 
-TEST(ToposlamRooms, DrawnPlanWithGreyWallsNeedsDrawn) {
-    // Walls drawn in mid-grey (p(free) = 0.63): read as a SLAM grid they are unknown space,
-    // far from any occupied cell, so no wall frames a door; --drawn makes them walls.
+TEST(ToposlamRooms, DrawnPlanWithGreyWallsIsReadAsDrawn) {
+    // Walls drawn in mid-grey (p(free) = 0.63): read as a SLAM grid (--grid) they are unknown
+    // space, far from any occupied cell, so no wall frames a door. A picture of white and mid
+    // grey alone is taken for a drawn plan (no occupied cell: nothing would bound the rooms),
+    // as --drawn reads it, and a note says so.
     const TempDir dir;
     const auto drawn = toposlam::rooms::test::office();
     cv::Mat grey = drawn.image.clone();
     grey.setTo(160, drawn.image == 0);
     ASSERT_TRUE(cv::imwrite(dir.file("office.png"), grey));
+    for (const char* reading : {" --drawn", ""}) {
+        const auto r = runApp("toposlam-rooms", "'" + dir.file("office.png") + "'" + reading +
+                                                    " -o '" + dir.file("drawn") + "'");
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        EXPECT_NE(r.output.find("6 rooms, 6 doors"), std::string::npos) << r.output;
+        EXPECT_EQ(r.output.find("read as a drawn floor plan") != std::string::npos,
+                  *reading == '\0')
+            << r.output;  // the note only when the reading was guessed
+    }
     auto r = runApp("toposlam-rooms",
-                    "'" + dir.file("office.png") + "' --drawn -o '" + dir.file("drawn") + "'");
-    ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_NE(r.output.find("6 rooms, 6 doors"), std::string::npos) << r.output;
-    r = runApp("toposlam-rooms", "'" + dir.file("office.png") + "' -o '" + dir.file("grid") + "'");
+                    "'" + dir.file("office.png") + "' --grid -o '" + dir.file("grid") + "'");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_LT(toposlam::rooms::loadTopologicalMap(dir.file("grid/rooms.json")).rooms.size(), 6u);
+    r = runApp("toposlam-rooms",
+               "'" + dir.file("office.png") + "' --grid --drawn -o '" + dir.file("both") + "'");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("--drawn and --grid"), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("both"))) << "nothing written on bad usage";
+}
+
+TEST(ToposlamRooms, PublicMapPicturesAreReadAsWhatTheyAre) {
+    // Pictures of the room-segmentation benchmark's folder, given bare, as a user would. Read
+    // as grids (p(free) = grey / 255, as every bare picture was before the guess), intel_map's
+    // light-grey background (230) and Freiburg52_scan's light-grey walls (211) are free space
+    // and each map is one room; freiburg_building101 is a SLAM map (mid-grey unknown, black
+    // walls). Bormann et al.'s ground truth has 10 rooms for Freiburg52_scan.
+    TOPOSLAM_SHARED_DATA_OR_SKIP(intel, "rooms/intel_map.png");
+    TOPOSLAM_SHARED_DATA_OR_SKIP(freiburg52, "rooms/Freiburg52_scan.png");
+    TOPOSLAM_SHARED_DATA_OR_SKIP(building101, "rooms/freiburg_building101.png");
+    const TempDir dir;
+    const auto rooms = [&](const std::string& map, const std::string& options) {
+        const auto r = runApp("toposlam-rooms",
+                              "'" + map + "' " + options + " -q -o '" + dir.file("out") + "'");
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        return std::make_pair(
+            toposlam::rooms::loadTopologicalMap(dir.file("out/rooms.json")).rooms.size(), r.output);
+    };
+    for (const std::string& map : {intel, freiburg52}) {
+        const auto [guessed, note] = rooms(map, "");
+        EXPECT_NE(note.find("read as a drawn floor plan"), std::string::npos) << note;
+        EXPECT_GE(guessed, 8u) << map;
+        EXPECT_EQ(rooms(map, "--drawn").first, guessed) << map;
+        EXPECT_EQ(rooms(map, "--grid").first, 1u) << map;
+    }
+    const auto [guessed, note] = rooms(building101, "");
+    EXPECT_NE(note.find("read as an occupancy grid"), std::string::npos) << note;
+    EXPECT_EQ(rooms(building101, "--grid").first, guessed);
 }
 
 TEST(ToposlamRooms, UsesTheTrajectory) {

@@ -120,20 +120,23 @@ void writeDrawnPlan(const std::string& path) {
     ASSERT_TRUE(cv::imwrite(path, image));
 }
 
-TEST(ToposlamSim, DrawnPlanToursTheBuildingAndItsFurnitureStopsTheLaser) {
+TEST(ToposlamSim, DrawnPlanIsReadAsOneToursTheBuildingAndItsFurnitureStopsTheLaser) {
     TempDir dir;
     writeDrawnPlan(dir.file("plan.png"));
     const std::string plan = quoted(dir.file("plan.png"));
-    // Read as p(free) = grey / 255 the background is free: with the west room it is one area
-    // open to the map's edge, so the tour keeps to the east room and says why.
-    auto r = runApp("toposlam-sim", plan + " --tour -o " + quoted(dir.file("grey.rawlog")));
+    // Read as p(free) = grey / 255 (--grid) the background is free: with the west room it is
+    // one area open to the map's edge, so the tour keeps to the east room and says why.
+    auto r = runApp("toposlam-sim", plan + " --tour --grid -o " + quoted(dir.file("grey.rawlog")));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("warning: the tour drives only"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("try --drawn"), std::string::npos) << r.output;
 
-    r = runApp("toposlam-sim", plan + " --tour --drawn -o " + quoted(dir.file("drawn.rawlog")));
+    // Without --grid or --drawn the picture, white rooms in grey walls and background, is taken
+    // for a drawn plan, and says so.
+    r = runApp("toposlam-sim", plan + " --tour -o " + quoted(dir.file("drawn.rawlog")));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("read as a drawn floor plan"), std::string::npos) << r.output;
     bool west = false, east = false;
     for (const auto& p : io::loadTrajectory(dir.file("drawn_gt.txt"))) {
         ASSERT_TRUE(p.pose.x > 4.1 && p.pose.x < 12.1 && p.pose.y > 4.1 && p.pose.y < 7.1)
@@ -144,19 +147,21 @@ TEST(ToposlamSim, DrawnPlanToursTheBuildingAndItsFurnitureStopsTheLaser) {
     EXPECT_TRUE(west && east) << "both rooms";
 
     // The laser (0.2 m ahead of the robot) looks from x = 9.5 m straight at the table, 1.0 m
-    // ahead: with --drawn it stops there; read as grey / 255 it sees through to the east wall.
+    // ahead: read as a drawn plan it stops there (--drawn, or the guess without an option);
+    // read as grey / 255 (--grid) it sees through to the east wall.
     writeText(dir.file("pose.txt"), "1 9.3 4.9 0\n2 9.3 4.9 0\n");
-    for (const bool drawn : {true, false}) {
-        const std::string out = dir.file(drawn ? "table.rawlog" : "through.rawlog");
+    for (const char* reading : {" --drawn", "", " --grid"}) {
+        const bool drawn = std::string(reading) != " --grid";
+        const std::string out = dir.file("table" + std::string(reading) + ".rawlog");
         r = runApp("toposlam-sim", plan + " --poses " + quoted(dir.file("pose.txt")) +
                                        " --exact-odometry --range-noise 0 --bearing-noise-deg 0" +
-                                       (drawn ? " --drawn" : "") + " -o " + quoted(out));
+                                       reading + " -o " + quoted(out));
         ASSERT_EQ(r.exitCode, 0) << r.output;
         const auto records = io::LaserLogReader::readAll(out);
         ASSERT_EQ(records.size(), 2u);
         const auto& scan = *records[0].scan;
         const float ahead = scan.getScanRange(scan.getScanSize() / 2);
-        EXPECT_NEAR(ahead, drawn ? 1.0 : 2.6, 0.06) << (drawn ? "--drawn" : "grey / 255");
+        EXPECT_NEAR(ahead, drawn ? 1.0 : 2.6, 0.06) << "reading:" << reading;
     }
 }
 

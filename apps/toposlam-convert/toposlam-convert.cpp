@@ -4,6 +4,7 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <toposlam/classes/TopoSlamClasses.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/cli/MapReadingArgs.h>
 #include <toposlam/cli/NumberArg.h>
 #include <toposlam/io/LogConversion.h>
 #include <toposlam/io/MapConversion.h>
@@ -39,7 +40,9 @@ const char* const kDescription =
     ".jpg, .tif), -o writes it in the format of its extension: .gridmap[.gz] (MRPT), .yaml or "
     ".pgm (the ROS map_server pair: YAML with mode trinary + trinary PGM, as map_saver writes "
     "it), .png (a grey picture of p(free), plus that ROS pair as <stem>.yaml + <stem>.pgm). Bare "
-    "images take --resolution and --origin.\n"
+    "images take --resolution and --origin, and are read as a drawn floor plan (written with "
+    "every non-white cell occupied) or as a grid as their greys show (a note on stderr; "
+    "--drawn, --grid).\n"
     "Examples:\n"
     "  toposlam-convert intel.clf -o intel.rawlog --odometry-trajectory intel.odometry.txt\n"
     "  toposlam-convert intel.clf -o intel_sf.rawlog.gz --format sf\n"
@@ -65,6 +68,7 @@ struct Arguments {
     cli::NumberArg<std::size_t> maxScans;
     cli::NumberArg<double> resolution;
     TCLAP::ValueArg<std::string> origin;
+    cli::MapReadingArgs mapReading;
     TCLAP::SwitchArg quiet;
 };
 
@@ -108,6 +112,9 @@ Arguments::Arguments()
              "Maps: world position x,y (m) of the lower-left corner of an input image "
              "(overrides its sidecar). Default: the sidecar's, else 0,0",
              false, "", "x,y", cmd),
+      mapReading(cmd,
+                 "Maps: the grid written has every non-white cell occupied (p(free) 0), walls, "
+                 "furniture and background alike, and the white cells as they are."),
       quiet("q", "quiet", "No progress display and no summary", cmd) {}
 
 int convertMap(Arguments& a) {
@@ -124,13 +131,17 @@ int convertMap(Arguments& a) {
             geometry->originY = xy[1];
         }
     }
-    const auto summary = io::convertGridMap(a.input.getValue(), a.output.getValue(), geometry);
+    const bool drawn = a.mapReading.readAsDrawnPlan(a.input.getValue());
+    const auto summary =
+        io::convertGridMap(a.input.getValue(), a.output.getValue(), geometry, drawn);
     if (!a.quiet.getValue())
         std::printf("%s\n", io::describe(summary, a.input.getValue(), a.output.getValue()).c_str());
     return EXIT_SUCCESS;
 }
 
 io::LogConversionOptions logOptions(Arguments& a) {
+    if (a.mapReading.given())
+        throw cli::UsageError("--drawn and --grid are for grid maps, not laser logs");
     if (a.output.getValue().empty() && a.odometryTrajectory.getValue().empty())
         throw cli::UsageError("nothing to do: give -o and/or --odometry-trajectory");
     io::LogConversionOptions options;

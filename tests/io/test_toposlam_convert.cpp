@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 #include <sstream>
 
 #include "TestSupport.h"
@@ -198,6 +200,38 @@ TEST(ToposlamConvert, GridMapsBetweenFormats) {
     EXPECT_EQ(e.getResolution(), 0.2f);
     EXPECT_EQ(e.getXMin(), 5.0f);
     EXPECT_EQ(e.getYMax(), 0.0f);
+}
+
+TEST(ToposlamConvert, ABarePlanPictureBecomesAGridWithItsGreyWallsOccupied) {
+    // A white room behind light-grey walls (211, p(free) 0.83) in a grey background (180):
+    // read as the drawn plan it is, the walls and the background are written occupied; read
+    // as a grid (--grid) they stay as light as they are, and a grid reader takes the walls for
+    // free space.
+    TempDir dir;
+    cv::Mat plan(40, 60, CV_8U, cv::Scalar(180));
+    plan(cv::Rect(10, 10, 40, 20)).setTo(211);
+    plan(cv::Rect(12, 12, 36, 16)).setTo(255);
+    ASSERT_TRUE(cv::imwrite(dir.file("plan.png"), plan));
+    auto r = runApp("toposlam-convert", dir.file("plan.png") + " -o " + dir.file("plan.gridmap"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("read as a drawn floor plan"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(std::to_string(36 * 16) + " free cells"), std::string::npos)
+        << r.output;
+    const auto drawn = toposlam::io::loadGridMap(dir.file("plan.gridmap"));
+    // Image row 0 is the top: cell (x, 39 - row).
+    EXPECT_LT(drawn.getCell(11, 20), 0.01f) << "wall";
+    EXPECT_LT(drawn.getCell(2, 2), 0.01f) << "background";
+    EXPECT_GT(drawn.getCell(30, 20), 0.98f) << "room";
+    r = runApp("toposlam-convert", dir.file("plan.png") + " --grid -o " + dir.file("grid.gridmap"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto grid = toposlam::io::loadGridMap(dir.file("grid.gridmap"));
+    EXPECT_NEAR(grid.getCell(11, 20), 211 / 255.0, 0.02) << "wall, as light as drawn";
+    // The two readings are for maps only.
+    r = runApp("toposlam-convert", toposlam::test::shareDir() +
+                                       "/office/office.rawlog --drawn -o " + dir.file("x.rawlog"));
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("--drawn and --grid are for grid maps"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir.file("x.rawlog")));
 }
 
 TEST(ToposlamConvert, BadMapsFailCleanly) {

@@ -19,8 +19,15 @@ bool isGridMapPath(const std::string& path) {
 }
 
 MapConversionSummary convertGridMap(const std::string& inputPath, const std::string& outputPath,
-                                    const std::optional<GridMapGeometry>& geometry) {
-    const auto map = loadGridMap(inputPath, geometry);
+                                    const std::optional<GridMapGeometry>& geometry,
+                                    bool drawnPlan) {
+    auto map = loadGridMap(inputPath, geometry);
+    if (drawnPlan) {
+        for (unsigned cy = 0; cy < map.getSizeY(); ++cy)
+            for (unsigned cx = 0; cx < map.getSizeX(); ++cx)
+                if (!(map.getCell(cx, cy) > kDrawnPlanFreeAbove))
+                    map.setCell(cx, cy, 0.0f);
+    }
     saveGridMap(map, outputPath);
     MapConversionSummary s;
     s.sizeX = map.getSizeX();

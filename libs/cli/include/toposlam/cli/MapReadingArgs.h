@@ -21,6 +21,9 @@ class MapReadingArgs {
     /// guessed to be one. Prints the note for a guessed reading to stderr. Throws UsageError
     /// for --drawn with --grid, io::InputError for an unreadable picture.
     bool readAsDrawnPlan(const std::string& mapPath) const;
+    /// --drawn or --grid was given (an app whose input may be something else refuses them
+    /// then).
+    bool given() const { return drawn_.isSet() || grid_.isSet(); }
 
   private:
     mutable TCLAP::SwitchArg drawn_, grid_;  // MRPT's TCLAP: getValue() is not const

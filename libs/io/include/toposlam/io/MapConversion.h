@@ -21,10 +21,14 @@ struct MapConversionSummary {
 };
 
 /// Loads `inputPath` (with `geometry` for bare images, see loadGridMap) and saves it as
-/// `outputPath`. Throws InputError for bad input, std::runtime_error when the output cannot be
-/// written; no output file is left then.
+/// `outputPath`. `drawnPlan`: the input is a drawn floor plan (MapImageKind.h), whose cells are
+/// free only where white (p(free) > kDrawnPlanFreeAbove) and are written occupied (p(free) 0)
+/// everywhere else, walls, furniture and background alike, so that a grid reader sees the plan
+/// as it is meant. Throws InputError for bad input, std::runtime_error when the output cannot
+/// be written; no output file is left then.
 MapConversionSummary convertGridMap(const std::string& inputPath, const std::string& outputPath,
-                                    const std::optional<GridMapGeometry>& geometry);
+                                    const std::optional<GridMapGeometry>& geometry,
+                                    bool drawnPlan = false);
 
 /// One line: "<input>: W x H cells of R m, origin (x, y) m, N free cells -> <output>".
 std::string describe(const MapConversionSummary& summary, const std::string& inputPath,

@@ -53,7 +53,8 @@ constexpr unsigned long long kMaxGridMapCells = 1ULL << 28;
 
 /// p(free) above which a pixel of a drawn or scanned floor plan read as p(free) = grey / 255 is
 /// free: grey >= 250 (249 / 255 = 0.976, 250 / 255 = 0.980), the reading of Bormann et al.'s
-/// room segmentation benchmark. The `--drawn` options of toposlam-rooms and toposlam-sim use it.
+/// room segmentation benchmark. Every app that reads a map as a drawn plan uses it (--drawn,
+/// cli::MapReadingArgs).
 constexpr double kDrawnPlanFreeAbove = 0.98;
 
 /// Geometry for image maps that carry none themselves.

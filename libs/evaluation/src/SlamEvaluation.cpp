@@ -61,6 +61,7 @@ MethodEvaluation evaluateMethod(const std::string& name, const std::string& sour
         });
         m.byTurn.push_back(bin);
     }
+    m.bestFrame = fitFrameOffset(estimate, relations, m.relative);
     if (separations) {
         if (separations->size() != relations.size()) {
             throw std::invalid_argument("evaluateMethod: one separation per relation expected");
@@ -135,6 +136,27 @@ void appendMountingTable(std::ostringstream& out, const SlamEvaluation& ev) {
             << formatFixed(k.residualRms, 4) << " |\n";
     }
 }
+
+// The frame along the heading that fits the relations clearly better than the poses as scored,
+// for each method where there is one.
+void appendFrameOffsets(std::ostringstream& out, const std::vector<MethodEvaluation>& methods) {
+    bool header = false;
+    for (const MethodEvaluation& m : methods) {
+        const FrameOffsetFit& f = m.bestFrame;
+        if (!(f.gain() >= kFrameOffsetNote * f.meanErrorAsIs && f.gain() > 0))
+            continue;
+        if (!header) {
+            out << "\nThe frame on the robot that fits the relations best, along the heading "
+                   "(score it with --frame-offset; a frame off the reference's shows as error "
+                   "growing with the turn, above):\n";
+            header = true;
+        }
+        out << "- " << m.name << ": " << formatFixed(std::abs(f.offset), 3) << " m "
+            << (f.offset >= 0 ? "ahead of" : "behind") << " the poses scored, mean translational "
+            << "error " << formatFixed(f.meanErrorAsIs, 4) << " -> " << formatFixed(f.meanError, 4)
+            << " m\n";
+    }
+}
 }  // namespace
 
 std::string formatEvaluationTable(const SlamEvaluation& ev) {
@@ -197,6 +219,7 @@ std::string formatEvaluationTable(const SlamEvaluation& ev) {
         ev.methods, &MethodEvaluation::byTurn, [](const TurnErrors& t) {
             return formatFixed(t.minTurnDeg, 0) + "–" + formatFixed(t.maxTurnDeg, 0) + "°";
         });
+    appendFrameOffsets(out, ev.methods);
     appendBreakdownTable(
         out,
         "Translational error (m) by relation separation (travelled path), mean ± std "
@@ -252,7 +275,10 @@ io::Json methodJson(const MethodEvaluation& m) {
                     {"translation_m", jsonStats(r.translation)},
                     {"rotation_deg", jsonStats(r.rotation)},
                     {"translation_squared_m2", jsonStats(r.translationSquared)},
-                    {"rotation_squared_deg2", jsonStats(r.rotationSquared)}};
+                    {"rotation_squared_deg2", jsonStats(r.rotationSquared)},
+                    {"best_frame_offset",
+                     {{"offset_m", jsonNumber(m.bestFrame.offset)},
+                      {"mean_translation_m", jsonNumber(m.bestFrame.meanError)}}}};
     if (m.absolute) {
         const AbsoluteTrajectoryErrorResult& a = *m.absolute;
         out["ate"] = {{"matched_poses", a.matchedPoses},

@@ -3,6 +3,7 @@
 // file, or a ground-truth trajectory and the relations derived from it), with the result as a
 // table for people and as JSON for scripts.
 #include <toposlam/evaluation/AbsoluteTrajectoryError.h>
+#include <toposlam/evaluation/FrameOffsetFit.h>
 #include <toposlam/evaluation/GroundTruthRelations.h>
 #include <toposlam/evaluation/RelationFile.h>
 #include <toposlam/evaluation/RelativePoseError.h>
@@ -36,6 +37,10 @@ struct TurnErrors {
     ErrorStatistics rotation;               ///< degrees
 };
 
+/// Share of its mean translational error that scoring another frame must save before the table
+/// names that frame (a trajectory in the reference's frame gains next to nothing).
+inline constexpr double kFrameOffsetNote = 0.1;
+
 /// Bin edges of MethodEvaluation::byTurn, degrees.
 inline constexpr double kTurnBinEdgesDeg[] = {0, 45, 90, 135, 180};
 
@@ -50,6 +55,9 @@ struct MethodEvaluation {
     std::vector<SeparationErrors> bySeparation;
     /// Always: one entry per bin of kTurnBinEdgesDeg.
     std::vector<TurnErrors> byTurn;
+    /// Always: the frame along the heading that fits the relations best (FrameOffsetFit.h),
+    /// relative to the poses scored.
+    FrameOffsetFit bestFrame;
     /// Its worst relations, when asked for (SlamEvaluationRequest::worstRelations).
     std::vector<WorstRelation> worst;
     /// Where its poses sit on the robot as the odometry sees it, when asked for
@@ -87,7 +95,9 @@ MethodEvaluation evaluateMethod(const std::string& name, const std::string& sour
 
 /// A Markdown table (readable in a terminal, pasteable into a README), one row per method,
 /// preceded by a line that names the reference; then the translational error by the
-/// relations' turn and, with a ground-truth reference, by relation separation; then the
+/// relations' turn, and the frame that fits the relations best for each method whose mean
+/// error it lowers by kFrameOffsetNote or more; with a ground-truth reference, by relation
+/// separation; then the
 /// estimated sensor mountings, if asked for; then each method's worst relations, if any
 /// (formatWorstRelations).
 std::string formatEvaluationTable(const SlamEvaluation& evaluation);

@@ -1,0 +1,29 @@
+#pragma once
+// Which frame on the robot a relation file was made in, as far as a trajectory can tell: the
+// point d m ahead of each estimated pose (along its heading) whose motions fit the reference
+// motions best, by the mean translational error of the relation metric (RelativePoseError.h).
+// A trajectory of the laser's poses scored against relations of the robot's centre (or the
+// reverse) is off by the mounting, and the error it adds grows with the turn of each relation
+// (2·d·sin(θ/2)); fitting d finds it, and toposlam-eval-slam --frame-offset d scores there.
+// The search scans [-maxOffset, maxOffset] in 1 cm steps, then refines the best step by golden
+// section to 0.1 mm: the mean error is not convex in d far from its minimum, but is near it.
+#include <toposlam/evaluation/RelationFile.h>
+#include <toposlam/evaluation/RelativePoseError.h>
+#include <toposlam/io/Trajectory.h>
+
+namespace toposlam::evaluation {
+
+struct FrameOffsetFit {
+    double offset = 0;         ///< m ahead of the poses scored (negative: behind)
+    double meanError = 0;      ///< m, mean translational error there
+    double meanErrorAsIs = 0;  ///< m, the same at offset 0 (the poses as scored)
+    double gain() const { return meanErrorAsIs - meanError; }  ///< m, >= 0
+};
+
+/// The best offset for `estimate` against `relations`, over the relations `scored` matched
+/// (evaluateRelativePoseError of the same estimate and relations). All zero when it matched
+/// none.
+FrameOffsetFit fitFrameOffset(const io::Trajectory2D& estimate, const PoseRelations& relations,
+                              const RelativePoseErrorResult& scored, double maxOffset = 0.5);
+
+}  // namespace toposlam::evaluation

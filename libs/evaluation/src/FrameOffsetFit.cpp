@@ -29,37 +29,22 @@ FrameOffsetFit fitFrameOffset(const io::Trajectory2D& estimate, const PoseRelati
     FrameOffsetFit fit;
     if (scored.errors.empty())
         return fit;
-    const auto f = [&](double d) { return meanErrorAt(d, estimate, relations, scored); };
-    fit.meanErrorAsIs = f(0);
+    fit.meanErrorAsIs = meanErrorAt(0, estimate, relations, scored);
     fit.meanError = fit.meanErrorAsIs;
-    const double step = 0.01;
-    const int steps = static_cast<int>(std::round(maxOffset / step));
-    for (int k = -steps; k <= steps; ++k) {
-        const double value = f(k * step);
-        if (value < fit.meanError) {
-            fit.meanError = value;
-            fit.offset = k * step;
+    // Every `step` within `half` of `centre`, the lowest kept.
+    const auto scan = [&](double centre, double half, double step) {
+        const int steps = static_cast<int>(std::round(half / step));
+        for (int k = -steps; k <= steps; ++k) {
+            const double d = centre + k * step;
+            const double value = meanErrorAt(d, estimate, relations, scored);
+            if (value < fit.meanError) {
+                fit.meanError = value;
+                fit.offset = d;
+            }
         }
-    }
-    // Golden section within the best step's neighbours.
-    const double ratio = 0.5 * (std::sqrt(5.0) - 1);
-    double a = fit.offset - step, b = fit.offset + step;
-    double c = b - ratio * (b - a), d = a + ratio * (b - a);
-    double fc = f(c), fd = f(d);
-    while (b - a > 1e-4) {
-        if (fc < fd) {
-            b = d, d = c, fd = fc;
-            c = b - ratio * (b - a), fc = f(c);
-        } else {
-            a = c, c = d, fc = fd;
-            d = a + ratio * (b - a), fd = f(d);
-        }
-    }
-    const double best = 0.5 * (a + b), value = f(best);
-    if (value < fit.meanError) {
-        fit.meanError = value;
-        fit.offset = best;
-    }
+    };
+    scan(0, maxOffset, 0.01);      // 1 cm steps over the whole range
+    scan(fit.offset, 0.01, 1e-4);  // 0.1 mm steps around the best of them
     return fit;
 }
 

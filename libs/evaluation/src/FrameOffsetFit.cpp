@@ -9,20 +9,21 @@ namespace {
 // Mean translational error of the matched relations with every pose moved `d` m ahead.
 double meanErrorAt(double d, const io::Trajectory2D& estimate, const PoseRelations& relations,
                    const RelativePoseErrorResult& scored) {
-    const auto ahead = [d](const mrpt::math::TPose2D& p) {
-        return mrpt::math::TPose2D(p.x + d * std::cos(p.phi), p.y + d * std::sin(p.phi), p.phi);
-    };
     double sum = 0;
     for (const RelationError& e : scored.errors) {
         const mrpt::math::TPose2D err =
-            relativePoseError(ahead(estimate[e.fromPose].pose), ahead(estimate[e.toPose].pose),
-                              relations[e.relation].motion);
+            relativePoseError(poseAhead(estimate[e.fromPose].pose, d),
+                              poseAhead(estimate[e.toPose].pose, d), relations[e.relation].motion);
         sum += std::hypot(err.x, err.y);
     }
     return sum / static_cast<double>(scored.errors.size());
 }
 
 }  // namespace
+
+mrpt::math::TPose2D poseAhead(const mrpt::math::TPose2D& pose, double d) {
+    return {pose.x + d * std::cos(pose.phi), pose.y + d * std::sin(pose.phi), pose.phi};
+}
 
 FrameOffsetFit fitFrameOffset(const io::Trajectory2D& estimate, const PoseRelations& relations,
                               const RelativePoseErrorResult& scored, double maxOffset) {

@@ -170,10 +170,8 @@ SlamEvaluationRun runSlamEvaluation(const SlamEvaluationRequest& request,
         std::optional<SensorMounting> mounting;
         if (mountingOdometry)
             mounting = estimateSensorMounting(*mountingOdometry, estimate, ev.stampTolerance);
-        for (io::TimedPose2D& p : estimate) {  // the frame the relations were made in
-            p.pose.x += request.frameOffset * std::cos(p.pose.phi);
-            p.pose.y += request.frameOffset * std::sin(p.pose.phi);
-        }
+        for (io::TimedPose2D& p : estimate)  // the frame the relations were made in
+            p.pose = poseAhead(p.pose, request.frameOffset);
         try {
             ev.methods.push_back(evaluateMethod(t.name, source, estimate, run.relations,
                                                 groundTruth, ev.stampTolerance,

@@ -198,7 +198,8 @@ bool isMapSaverPicture(const cv::Mat& grey) {
     for (int row = 0; row < grey.rows; ++row) {
         const auto* pixels = grey.ptr<unsigned char>(row);
         for (int c = 0; c < grey.cols; ++c)
-            if (pixels[c] != 0 && pixels[c] != 205 && pixels[c] != 254)
+            if (pixels[c] != kMapSaverOccupiedGrey && pixels[c] != kMapSaverUnknownGrey &&
+                pixels[c] != kMapSaverFreeGrey)
                 return false;
     }
     return true;
@@ -305,10 +306,10 @@ unsigned char greyOfFreeProbability(float pFree) {
 unsigned char trinaryGrey(float pFree, const RosMapMetadata& meta) {
     const double pOccupied = 1.0 - pFree;
     if (pOccupied > meta.occupiedThresh)
-        return 0;
+        return kMapSaverOccupiedGrey;
     if (pOccupied < meta.freeThresh)
-        return 254;
-    return 205;
+        return kMapSaverFreeGrey;
+    return kMapSaverUnknownGrey;
 }
 
 template <typename GreyOf>

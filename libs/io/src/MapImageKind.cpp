@@ -1,3 +1,4 @@
+#include <toposlam/io/GridMapIO.h>
 #include <toposlam/io/MapImageKind.h>
 
 #include "GreyImage.h"
@@ -5,6 +6,10 @@
 #include <cstdio>
 
 namespace toposlam::io {
+
+// White is what a drawn plan reads as free: grey >= kWhiteGrey <=> p(free) > kDrawnPlanFreeAbove.
+static_assert(kWhiteGrey / 255.0 > kDrawnPlanFreeAbove &&
+              (kWhiteGrey - 1) / 255.0 <= kDrawnPlanFreeAbove);
 
 double MapImageKindGuess::midGreyShare() const {
     return nonWhitePixels == 0 ? 0.0 : double(midGreyPixels) / double(nonWhitePixels);

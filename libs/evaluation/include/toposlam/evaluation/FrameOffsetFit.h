@@ -8,6 +8,7 @@
 // The search scans [-maxOffset, maxOffset] in 1 cm steps, then the 2 cm around the best of
 // them in 0.1 mm steps: a plain scan, since the mean error need not be convex in d far from its
 // minimum (300 evaluations of the metric; fr079's 1685 relations take a few milliseconds).
+#include <mrpt/math/TPose2D.h>
 #include <toposlam/evaluation/RelationFile.h>
 #include <toposlam/evaluation/RelativePoseError.h>
 #include <toposlam/io/Trajectory.h>
@@ -20,6 +21,10 @@ struct FrameOffsetFit {
     double meanErrorAsIs = 0;  ///< m, the same at offset 0 (the poses as scored)
     double gain() const { return meanErrorAsIs - meanError; }  ///< m, >= 0
 };
+
+/// `pose` moved `d` m along its heading (m, rad): the frame d m ahead of it (negative: behind).
+/// What --frame-offset scores and what the fit below tries.
+mrpt::math::TPose2D poseAhead(const mrpt::math::TPose2D& pose, double d);
 
 /// The best offset for `estimate` against `relations`, over the relations `scored` matched
 /// (evaluateRelativePoseError of the same estimate and relations). All zero when it matched

@@ -57,6 +57,11 @@ constexpr unsigned long long kMaxGridMapCells = 1ULL << 28;
 /// cli::MapReadingArgs).
 constexpr double kDrawnPlanFreeAbove = 0.98;
 
+/// The greys of ROS map_saver's trinary picture, which saveGridMap writes too.
+constexpr unsigned char kMapSaverOccupiedGrey = 0;
+constexpr unsigned char kMapSaverUnknownGrey = 205;
+constexpr unsigned char kMapSaverFreeGrey = 254;
+
 /// Geometry for image maps that carry none themselves.
 struct GridMapGeometry {
     double resolution = 0.05;  ///< m per cell

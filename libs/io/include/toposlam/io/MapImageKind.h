@@ -26,18 +26,18 @@ namespace toposlam::io {
 enum class MapImageKind { OccupancyGrid, DrawnPlan };
 
 /// Grey levels of the guess (8-bit grey; p(free) = grey / 255 in a grid).
-constexpr int kWhiteGrey = 250;            ///< and above: white, free in either reading
-constexpr int kMidGreyFirst = 90;          ///< p(free) 0.35 ...
-constexpr int kMidGreyLast = 165;          ///< ... to 0.65: unknown space in a grid
-constexpr int kMapSaverUnknownGrey = 205;  ///< unknown space in ROS map_saver's pictures
-constexpr double kMinDarkShare = 1e-3;     ///< of the non-white pixels, for a grid
+constexpr int kWhiteGrey = 250;         ///< and above: white, free in either reading
+constexpr int kMidGreyFirst = 90;       ///< p(free) 0.35 ...
+constexpr int kMidGreyLast = 165;       ///< ... to 0.65: unknown space in a grid
+constexpr double kMinDarkShare = 1e-3;  ///< of the non-white pixels, for a grid
 
 /// What guessMapImageKind counted, and what it decided.
 struct MapImageKindGuess {
     MapImageKind kind = MapImageKind::OccupancyGrid;
     std::size_t nonWhitePixels = 0;  ///< grey < kWhiteGrey
-    std::size_t midGreyPixels = 0;   ///< grey kMidGreyFirst..kMidGreyLast or 205
-    std::size_t darkPixels = 0;      ///< grey < kMidGreyFirst (occupied in a grid)
+    /// grey kMidGreyFirst..kMidGreyLast, or map_saver's unknown (GridMapIO.h, 205)
+    std::size_t midGreyPixels = 0;
+    std::size_t darkPixels = 0;  ///< grey < kMidGreyFirst (occupied in a grid)
 
     /// Share of the non-white pixels that are mid grey (0 when all are white).
     double midGreyShare() const;

@@ -117,8 +117,8 @@ std::string validArguments(const std::string& app, const std::string& out) {
     if (app == "toposlam-sim")
         return map + " --tour -o " + o + "s.rawlog' -q";
     if (app == "toposlam-slam")
-        return "'" + toposlam::test::shareDir() + "/../config_ini/toposlam-slam.ini' " + log +
-               " -o " + o + "slam'";
+        return "'" + toposlam::test::configIni("toposlam-slam.ini") + "' " + log + " -o " + o +
+               "slam'";
     ADD_FAILURE() << "no arguments for " << app;
     return "";
 }
@@ -161,8 +161,6 @@ void expectBadUsage(const std::string& app, const std::string& option, const std
 }
 
 class EveryApp : public testing::TestWithParam<std::string> {};
-
-}  // namespace
 
 TEST_P(EveryApp, RefusesEveryOutOfRangeNumber) {
     const std::string app = GetParam();
@@ -217,3 +215,5 @@ INSTANTIATE_TEST_SUITE_P(Apps, EveryApp,
                                  c = c == '-' ? '_' : c;
                              return name;
                          });
+
+}  // namespace

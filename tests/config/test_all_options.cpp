@@ -72,7 +72,7 @@ TEST(AllOptions, ShippedFilesSpellOutTheDefaults) {
     // These files document every key with its default: loading one changes nothing.
     for (const std::string name :
          {"features.ini", "graph-matcher.ini", "rooms.ini", "sim-office.ini"}) {
-        const std::string path = test::shareDir() + "/../config_ini/" + name;
+        const std::string path = test::configIni(name);
         SCOPED_TRACE(path);
         auto ini = config::openIniFile(path);
         std::vector<std::string> sections;

@@ -173,7 +173,7 @@ std::vector<std::string> badValues(const config::Field& f) {
 TEST(IniSweep, EveryShippedIniFileWorksAsShipped) {
     test::TempDir dir;
     for (const IniUse& use : iniUses(dir))
-        runWith(use, fileText(share() + "/../config_ini/" + use.file), true, dir);
+        runWith(use, fileText(test::configIni(use.file)), true, dir);
 }
 
 TEST(IniSweep, GarbageIsAnErrorNamingTheFile) {
@@ -188,7 +188,7 @@ TEST(IniSweep, GarbageIsAnErrorNamingTheFile) {
         }
         // Text that is no ini file, and the real file cut in the middle of a section header.
         runWith(use, "this is not an ini file\n", false, dir);
-        const std::string text = fileText(share() + "/../config_ini/" + use.file);
+        const std::string text = fileText(test::configIni(use.file));
         runWith(use, text.substr(0, text.find("\n[") + 4) + "\n", false, dir);
     }
 }
@@ -213,7 +213,7 @@ TEST(IniSweep, MisspelledKeysAndBadValuesAreErrorsNamingTheKey) {
     // value of every 8th key.
     test::TempDir dir;
     for (const IniUse& use : iniUses(dir)) {
-        const std::string path = share() + "/../config_ini/" + use.file;
+        const std::string path = test::configIni(use.file);
         const std::string text = fileText(path);
         auto ini = config::openIniFile(path);
         std::vector<std::string> sections;

@@ -117,7 +117,7 @@ TEST(ChildProcess, FindExecutable) {
 
 TEST(IniWithSettings, CopyReadsLikeTheOriginalExceptTheChangedKeys) {
     TempDir dir;
-    const std::string source = toposlam::test::shareDir() + "/../config_ini/toposlam-slam.ini";
+    const std::string source = toposlam::test::configIni("toposlam-slam.ini");
     const std::string copy = dir.file("icp.ini");
     writeIniWithSettings(source, copy,
                          {{"Slam", "engine", "icp"}, {"NewSection", "new_key", "42"}});

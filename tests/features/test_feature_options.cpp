@@ -15,7 +15,7 @@ using namespace toposlam::features;
 using toposlam::config::ConfigError;
 
 TEST(FeatureOptions, ShippedIniHoldsTheDefaults) {
-    const std::string ini = toposlam::test::shareDir() + "/../config_ini/features.ini";
+    const std::string ini = toposlam::test::configIni("features.ini");
     mrpt::config::CConfigFile cfg(ini);
     for (const std::string& name : featureExtractorNames()) {
         // Presets (corners-ls, ...) are applied after the file: they too keep their defaults.

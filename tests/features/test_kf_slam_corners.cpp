@@ -110,7 +110,7 @@ TEST(KfSlamCorners, KfSlamProcessesEveryStepAndPutsItsLandmarksOnTheCorners) {
     ASSERT_EQ(annotate.exitCode, 0) << annotate.output;
 
     // The project's ini with the output folder moved and the final map dumped.
-    std::ifstream iniIn(test::shareDir() + "/../config_ini/kf-slam-corners.ini");
+    std::ifstream iniIn(test::configIni("kf-slam-corners.ini"));
     ASSERT_TRUE(iniIn) << "config_ini/kf-slam-corners.ini";
     std::stringstream ini;
     ini << iniIn.rdbuf();
@@ -176,7 +176,7 @@ TEST(KfSlamCorners, RunsToTheEndOfIntelsFirst2000Scans) {
         test::runApp("toposlam-annotate-features", "'" + intel + "' -o '" + dir.file("sf.rawlog") +
                                                        "' --format sf --max-scans 2000 -q");
     ASSERT_EQ(annotate.exitCode, 0) << annotate.output;
-    std::ifstream iniIn(test::shareDir() + "/../config_ini/kf-slam-corners.ini");
+    std::ifstream iniIn(test::configIni("kf-slam-corners.ini"));
     std::stringstream ini;
     ini << iniIn.rdbuf();
     std::string text = std::regex_replace(ini.str(), std::regex("logOutput_dir = .*"),

@@ -103,8 +103,6 @@ std::string nameOf(const testing::TestParamInfo<Finding>& info) {
     return name;
 }
 
-}  // namespace
-
 TEST_P(FuzzFinding, EndsWithAClearErrorQuicklyInBoundedMemory) {
     const Finding& f = GetParam();
     toposlam::test::TempDir dir;
@@ -134,3 +132,5 @@ TEST_P(FuzzFinding, EndsWithAClearErrorQuicklyInBoundedMemory) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Findings, FuzzFinding, testing::ValuesIn(kFindings), nameOf);
+
+}  // namespace

@@ -17,8 +17,7 @@ namespace {
 // config_ini/toposlam-slam.ini with the contested-loop rule on (loop_contested_support = 4),
 // whose guards against look-alike places these tours exercise.
 std::string slamIniWithContestedLoops() {
-    const std::string text =
-        test::readFile(std::string(TOPOSLAM_TEST_SOURCE_DIR) + "/config_ini/toposlam-slam.ini");
+    const std::string text = test::readFile(test::configIni("toposlam-slam.ini"));
     return std::regex_replace(text, std::regex("\nloop_contested_support = [0-9]+"),
                               "\nloop_contested_support = 4");
 }
@@ -57,9 +56,8 @@ TEST(EndToEndTours, NoLoopIntoAParallelLookAlikeCorridor) {
     // (data/gen13_lookalike_corridor_tour.txt): today's tours pass the corridor otherwise.
     const auto plans = roomsbench::plansToTour({13}, {}, "");
     ASSERT_EQ(plans.size(), 1u);
-    const io::Trajectory2D poses =
-        io::loadTrajectory(std::string(TOPOSLAM_TEST_SOURCE_DIR) +
-                           "/tests/mapping/data/gen13_lookalike_corridor_tour.txt");
+    const io::Trajectory2D poses = io::loadTrajectory(
+        test::sourceDir() + "/tests/mapping/data/gen13_lookalike_corridor_tour.txt");
     ASSERT_GT(poses.size(), 1000u);
     roomsbench::EndToEndRun run;
     ASSERT_NO_FATAL_FAILURE(tourWithContestedLoops(plans.front(), run, poses));
@@ -94,8 +92,7 @@ TEST(EndToEndTours, ICPDoesNotSlideAlongACorridorWithoutEvidence) {
     // (along_heading_check): 23 mm.
     const auto plans = roomsbench::plansToTour({20}, {}, "");
     ASSERT_EQ(plans.size(), 1u);
-    const std::string ini =
-        test::readFile(std::string(TOPOSLAM_TEST_SOURCE_DIR) + "/config_ini/toposlam-slam.ini");
+    const std::string ini = test::readFile(test::configIni("toposlam-slam.ini"));
     ASSERT_NE(ini.find("\nalong_heading_check = 0.1"), std::string::npos);
     roomsbench::EndToEndRun run;
     ASSERT_NO_FATAL_FAILURE(tour(plans.front(), ini, run, false));

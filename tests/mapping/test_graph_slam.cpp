@@ -32,8 +32,6 @@ using namespace toposlam;
 
 namespace {
 
-const std::string kConfig = std::string(TOPOSLAM_TEST_SOURCE_DIR) + "/config_ini/toposlam-slam.ini";
-
 /// toposlam-sim's tour of the project's office (share/office) with `config`, written into
 /// `dir` (office.rawlog and its ground truth office_gt.txt).
 simulation::SimulationJob simulateOfficeTour(const simulation::SimulatorConfig& config,
@@ -64,7 +62,7 @@ struct SlamRun {
 /// `loopThreads`: 0 keeps the file's setting; `adjust` changes the options after loading.
 SlamRun runSlam(const test::SimulatedDrive& drive, std::size_t loopThreads = 0,
                 const std::function<void(mapping::GraphSlamOptions&)>& adjust = {}) {
-    const mrpt::config::CConfigFile ini(kConfig);
+    const mrpt::config::CConfigFile ini(test::configIni("toposlam-slam.ini"));
     mapping::GraphSlamOptions options;
     options.loadFromConfigFile(ini, "GraphSlam");
     if (loopThreads > 0)
@@ -495,8 +493,8 @@ TEST(GraphSlam, NoHalfTurnFromALookAlikeMatchAmongPeople) {
     // jumped, a correction it would have counted as a jump is no registration.
     const test::TempDir dir;
     const simulation::SimulationJob job = simulateOfficeTourWithPeople(dir.path());
-    const mapping::MappingResult result =
-        mapping::mapLog(job.rawlogPath, mrpt::config::CConfigFile(kConfig));
+    const mapping::MappingResult result = mapping::mapLog(
+        job.rawlogPath, mrpt::config::CConfigFile(test::configIni("toposlam-slam.ini")));
     const io::Trajectory2D truth = io::loadTrajectory(job.groundTruthPath);
     ASSERT_GT(truth.size(), 300u);
     ASSERT_EQ(result.trajectory.size(), truth.size());
@@ -525,7 +523,7 @@ TEST(GraphSlam, APersonWalkingAheadDoesNotHoldTheRobotBack) {
     const simulation::SimulationJob job = simulateOfficeTourWithPeople(dir.path());
     const io::Trajectory2D truth = io::loadTrajectory(job.groundTruthPath);
     const auto mapWith = [&](const std::function<void(mrpt::config::CConfigFileBase&)>& adjust) {
-        mrpt::config::CConfigFileMemory ini(test::readFile(kConfig));
+        mrpt::config::CConfigFileMemory ini(test::readFile(test::configIni("toposlam-slam.ini")));
         adjust(ini);
         return mapping::mapLog(job.rawlogPath, ini);
     };
@@ -558,8 +556,8 @@ TEST(GraphSlam, WithoutThePersonAheadICPDoesNotSlideAlongTheCorridor) {
     config.log.people.count = 10;
     config.log.seed = 2;
     const simulation::SimulationJob job = simulateOfficeTour(config, dir.path());
-    const mapping::MappingResult result =
-        mapping::mapLog(job.rawlogPath, mrpt::config::CConfigFile(kConfig));
+    const mapping::MappingResult result = mapping::mapLog(
+        job.rawlogPath, mrpt::config::CConfigFile(test::configIni("toposlam-slam.ini")));
     const io::Trajectory2D truth = io::loadTrajectory(job.groundTruthPath);
     ASSERT_EQ(result.trajectory.size(), truth.size());
     const auto ate = evaluation::evaluateAbsoluteTrajectoryError(result.trajectory, truth);
@@ -581,7 +579,7 @@ TEST(GraphSlam, ANarrowLaserIsReportedAsAWeakFrontEnd) {
         }
         config.log.seed = 3;
         return mapping::mapLog(simulateOfficeTour(config, dir.path()).rawlogPath,
-                               mrpt::config::CConfigFile(kConfig));
+                               mrpt::config::CConfigFile(test::configIni("toposlam-slam.ini")));
     };
     const mapping::MappingResult narrow = mapWith(true);
     ASSERT_TRUE(narrow.statistics);
@@ -624,8 +622,8 @@ TEST(GraphSlam, ARobotLaserLogMapsTheRobotNotItsLaser) {
         }
         std::fclose(f);
     }
-    const mapping::MappingResult result =
-        mapping::mapLog(dir.file("office.clf"), mrpt::config::CConfigFile(kConfig));
+    const mapping::MappingResult result = mapping::mapLog(
+        dir.file("office.clf"), mrpt::config::CConfigFile(test::configIni("toposlam-slam.ini")));
     const io::Trajectory2D truth = io::loadTrajectory(office + "_gt.txt");
     ASSERT_EQ(result.trajectory.size(), truth.size());
     const auto ate = evaluation::evaluateAbsoluteTrajectoryError(result.trajectory, truth);
@@ -642,7 +640,7 @@ TEST(GraphSlam, IntelHoldsTogetherWhenLoopsAreSearchedLessOften) {
     // intel with them: 0.015 / 0.13 m (shipped settings: 0.014 / 0.10 m).
     TOPOSLAM_SHARED_DATA_OR_SKIP(log, "slam/intel.clf");
     TOPOSLAM_SHARED_DATA_OR_SKIP(relations, "slam/intel.relations");
-    const std::string shipped = test::readFile(kConfig);
+    const std::string shipped = test::readFile(test::configIni("toposlam-slam.ini"));
     const std::string text = std::regex_replace(shipped, std::regex("\nloop_search_every = [0-9]+"),
                                                 "\nloop_search_every = 3");
     ASSERT_NE(text, shipped);
@@ -678,7 +676,7 @@ TEST(GraphSlam, IntelHoldsTogetherWhenLoopsAreSearchedLessOften) {
 
 TEST(GraphSlam, BadLogsGiveClearErrors) {
     test::TempDir dir;
-    const mrpt::config::CConfigFile ini(kConfig);
+    const mrpt::config::CConfigFile ini(test::configIni("toposlam-slam.ini"));
     // No scans at all.
     test::SimulatedDrive empty;
     test::writeRawlog(empty, dir.file("empty.rawlog"));
@@ -707,8 +705,9 @@ TEST(GraphSlam, BadLogsGiveClearErrors) {
     }
     EXPECT_THROW(mapping::mapLog(dir.file("cut.rawlog.gz"), ini), io::InputError);
     // And the app says so and writes nothing.
-    const auto r = test::runApp("toposlam-slam", "'" + kConfig + "' '" + dir.file("blind.rawlog") +
-                                                     "' -o '" + dir.file("out") + "'");
+    const auto r = test::runApp("toposlam-slam", "'" + test::configIni("toposlam-slam.ini") +
+                                                     "' '" + dir.file("blind.rawlog") + "' -o '" +
+                                                     dir.file("out") + "'");
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find("blind.rawlog"), std::string::npos) << r.output;
     EXPECT_FALSE(std::ifstream(dir.file("out/trajectory.txt")).good());

@@ -30,8 +30,6 @@ using namespace toposlam;
 
 namespace {
 
-const std::string kConfig = std::string(TOPOSLAM_TEST_SOURCE_DIR) + "/config_ini/toposlam-slam.ini";
-
 /// A room with a cabinet and a pillar, and a path round it that ends where it began.
 test::SimulatedDrive roomTour() {
     simulation::PolygonWorld w;
@@ -52,7 +50,7 @@ test::SimulatedDrive roomTour() {
 TEST(CGraphSlamBuilder, DrivenByActionsAndSensoryFramesLikeMrptBuilders) {
     const auto drive = roomTour();
     mapping::CGraphSlamBuilder builder;
-    builder.loadFromConfigFile(mrpt::config::CConfigFile(kConfig));
+    builder.loadFromConfigFile(mrpt::config::CConfigFile(test::configIni("toposlam-slam.ini")));
     builder.initialize();
     for (std::size_t i = 0; i < drive.scans.size(); ++i) {
         mrpt::obs::CActionCollection actions;
@@ -106,7 +104,8 @@ TEST(CGraphSlamBuilder, MapsTheFirstLaserAndSkipsOthersKeepingTheirOdometry) {
     const auto drive = roomTour();
     const auto run = [&](bool withOther) {
         auto builder = std::make_unique<mapping::CGraphSlamBuilder>();
-        builder->loadFromConfigFile(mrpt::config::CConfigFile(kConfig));
+        builder->loadFromConfigFile(
+            mrpt::config::CConfigFile(test::configIni("toposlam-slam.ini")));
         builder->initialize();
         for (std::size_t i = 0; i < drive.scans.size(); ++i) {
             auto odometry = mrpt::obs::CObservationOdometry::Create();
@@ -142,8 +141,9 @@ TEST(CGraphSlamBuilder, AppOutputsAreReadByMrpt) {
     const test::TempDir dir;
     const auto drive = roomTour();
     test::writeRawlog(drive, dir.file("tour.rawlog"));
-    const auto run = test::runApp("toposlam-slam", "'" + kConfig + "' '" + dir.file("tour.rawlog") +
-                                                       "' -o '" + dir.file("out") + "'");
+    const auto run = test::runApp("toposlam-slam", "'" + test::configIni("toposlam-slam.ini") +
+                                                       "' '" + dir.file("tour.rawlog") + "' -o '" +
+                                                       dir.file("out") + "'");
     ASSERT_EQ(run.exitCode, 0) << run.output;
     const auto summary = io::loadJsonFile(dir.file("out/summary.json"));
     const std::size_t keyframes = summary.at("keyframes").get<std::size_t>();
@@ -170,7 +170,7 @@ TEST(CGraphSlamBuilder, AppOutputsAreReadByMrpt) {
 TEST(CGraphSlamBuilder, SummarySaysWhichLoopRulesRan) {
     const test::TempDir dir;
     test::writeRawlog(roomTour(), dir.file("tour.rawlog"));
-    std::string ini = test::readFile(kConfig);
+    std::string ini = test::readFile(test::configIni("toposlam-slam.ini"));
     for (const auto& [from, to] :
          {std::pair<std::string, std::string>{"\nglobal_search_every = 0",
                                               "\nglobal_search_every = 10"},
@@ -183,9 +183,10 @@ TEST(CGraphSlamBuilder, SummarySaysWhichLoopRulesRan) {
     std::ofstream(dir.file("rules-on.ini")) << ini;
     for (const bool on : {false, true}) {
         const std::string out = dir.file(on ? "on" : "off");
-        const auto run =
-            test::runApp("toposlam-slam", "'" + (on ? dir.file("rules-on.ini") : kConfig) + "' '" +
-                                              dir.file("tour.rawlog") + "' -o '" + out + "'");
+        const auto run = test::runApp(
+            "toposlam-slam",
+            "'" + (on ? dir.file("rules-on.ini") : test::configIni("toposlam-slam.ini")) + "' '" +
+                dir.file("tour.rawlog") + "' -o '" + out + "'");
         ASSERT_EQ(run.exitCode, 0) << run.output;
         const std::string text = test::readFile(out + "/summary.txt");
         const auto loops = io::loadJsonFile(out + "/summary.json").at("loops");

@@ -114,14 +114,12 @@ double finalPositionError(const CPose2D& firstTruth, const CPose2D& lastTruth,
     return std::hypot(t.x() - e.x(), t.y() - e.y());
 }
 
-const std::string kConfig = std::string(TOPOSLAM_TEST_SOURCE_DIR) + "/config_ini/toposlam-slam.ini";
-
 }  // namespace
 
 TEST(LogMapper, CorrectsOdometryDriftOnSimulatedLog) {
     test::TempDir dir;
     const SimulatedLog log = writeLog(dir.file("sim.rawlog"));
-    const mrpt::config::CConfigFile ini(kConfig);
+    const mrpt::config::CConfigFile ini(test::configIni("toposlam-slam.ini"));
     const mapping::MappingResult result = mapping::mapLog(dir.file("sim.rawlog"), ini);
 
     ASSERT_EQ(result.trajectory.size(), log.truth.size());
@@ -152,7 +150,7 @@ TEST(LogMapper, CorrectsOdometryDriftOnSimulatedLog) {
 TEST(LogMapper, TurnsTheMapToLineUpTheWalls) {
     test::TempDir dir;
     const SimulatedLog log = writeLog(dir.file("sim.rawlog"));
-    const mrpt::config::CConfigFile ini(kConfig);
+    const mrpt::config::CConfigFile ini(test::configIni("toposlam-slam.ini"));
     const mapping::MappingResult result = mapping::mapLog(dir.file("sim.rawlog"), ini);
     // The map starts in the frame of the first pose, which faces atan(0.25) = 14.04 deg off
     // the (axis-aligned) walls; turning by that much lines them up again. Tolerance: the
@@ -173,7 +171,7 @@ TEST(LogMapper, MapsWithOneLaserOfSeveral) {
     // not have is an error naming it.
     test::TempDir dir;
     const SimulatedLog log = writeLog(dir.file("two.rawlog"), true);
-    std::string text = test::readFile(kConfig);
+    std::string text = test::readFile(test::configIni("toposlam-slam.ini"));
     const mapping::MappingResult front =
         mapping::mapLog(dir.file("two.rawlog"), mrpt::config::CConfigFileMemory(text));
     EXPECT_EQ(front.laserLabel, "FRONT") << "auto: the first scan's laser";
@@ -207,24 +205,25 @@ TEST(LogMapper, MapsWithOneLaserOfSeveral) {
 }
 
 TEST(LogMapper, MissingLogIsAnInputError) {
-    const mrpt::config::CConfigFile ini(kConfig);
+    const mrpt::config::CConfigFile ini(test::configIni("toposlam-slam.ini"));
     EXPECT_THROW(mapping::mapLog("/nonexistent/log.rawlog", ini), io::InputError);
 }
 
 TEST(LogMapper, AppWritesOutputsAndRejectsBadInput) {
     test::TempDir dir;
     writeLog(dir.file("sim.rawlog"));
-    const auto ok = test::runApp("toposlam-slam", "'" + kConfig + "' '" + dir.file("sim.rawlog") +
-                                                      "' -o '" + dir.file("out") + "'");
+    const auto ok = test::runApp("toposlam-slam", "'" + test::configIni("toposlam-slam.ini") +
+                                                      "' '" + dir.file("sim.rawlog") + "' -o '" +
+                                                      dir.file("out") + "'");
     ASSERT_EQ(ok.exitCode, 0) << ok.output;
     for (const char* f : {"trajectory.txt", "map.gridmap.gz", "map.png", "map.yaml"}) {
         EXPECT_TRUE(std::ifstream(dir.file("out/") + f).good()) << f;
     }
 
     std::ofstream(dir.file("corrupt.rawlog")) << "this is not a rawlog";
-    const auto bad =
-        test::runApp("toposlam-slam", "'" + kConfig + "' '" + dir.file("corrupt.rawlog") +
-                                          "' -o '" + dir.file("out2") + "'");
+    const auto bad = test::runApp("toposlam-slam", "'" + test::configIni("toposlam-slam.ini") +
+                                                       "' '" + dir.file("corrupt.rawlog") +
+                                                       "' -o '" + dir.file("out2") + "'");
     EXPECT_NE(bad.exitCode, 0);
     EXPECT_NE(bad.output.find("corrupt.rawlog"), std::string::npos) << bad.output;
     EXPECT_FALSE(std::ifstream(dir.file("out2/trajectory.txt")).good()) << "no partial output";
@@ -239,7 +238,7 @@ TEST(LogMapper, AppWritesOutputsAndRejectsBadInput) {
 TEST(LogMapper, MrptSimulatedHallMatchesItsGroundTruth) {
     TOPOSLAM_SHARED_DATA_OR_SKIP(log, "rawlog/simul.rawlog");
     TOPOSLAM_SHARED_DATA_OR_SKIP(truthFile, "rawlog/simul.rawlog.GT.txt");
-    const mrpt::config::CConfigFile ini(kConfig);
+    const mrpt::config::CConfigFile ini(test::configIni("toposlam-slam.ini"));
     const mapping::MappingResult result = mapping::mapLog(log, ini);
     const io::Trajectory2D truth = io::loadTrajectory(truthFile);
     const auto ate = evaluation::evaluateAbsoluteTrajectoryError(result.trajectory, truth);
@@ -267,7 +266,7 @@ TEST(LogMapper, OdometryCutsTheJitterOfANoisyLaserBetweenKeyframes) {
     test::writeRawlog(test::simulateDrive(world, truth, errors, 5, laser),
                       dir.file("noisy.rawlog"));
 
-    std::string text = test::readFile(kConfig);
+    std::string text = test::readFile(test::configIni("toposlam-slam.ini"));
     const mapping::MappingResult smoothed =
         mapping::mapLog(dir.file("noisy.rawlog"), mrpt::config::CConfigFileMemory(text));
     const std::string on = "\nsmooth_scans = true", off = "\nsmooth_scans = false";

@@ -12,7 +12,7 @@ using toposlam::matching::GraphMatcherOptions;
 
 namespace {
 std::string configFile(const std::string& name) {
-    return toposlam::test::shareDir() + "/../config_ini/" + name;
+    return toposlam::test::configIni(name);
 }
 }  // namespace
 

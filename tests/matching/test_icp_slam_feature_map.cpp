@@ -139,7 +139,7 @@ TEST(IcpSlamFeatureMap, OfficeFeatureMapMatchesTheDrawnPlan) {
     toposlam::test::TempDir dir;
     const std::string share = toposlam::test::shareDir();
     const std::string log = share + "/office/office.rawlog";
-    std::ifstream iniIn(share + "/../config_ini/icp-slam-feature-map.ini");
+    std::ifstream iniIn(toposlam::test::configIni("icp-slam-feature-map.ini"));
     ASSERT_TRUE(iniIn);
     std::stringstream ini;
     ini << iniIn.rdbuf();

@@ -16,8 +16,7 @@ TEST(EndToEndRooms, OnTheOpenFloorTheSlamGridsRoomsAreThePlansRooms) {
     // must be the drawn plan's, up to what 1 cm range noise and a few cm of pose error move.
     const auto plans = roomsbench::plansToTour({3}, {}, "");
     ASSERT_EQ(plans.size(), 1u);
-    const mrpt::config::CConfigFile ini(std::string(TOPOSLAM_TEST_SOURCE_DIR) +
-                                        "/config_ini/toposlam-slam.ini");
+    const mrpt::config::CConfigFile ini(test::configIni("toposlam-slam.ini"));
     const test::TempDir dir;
     roomsbench::EndToEndOptions options;
     options.slamConfig = &ini;

@@ -113,8 +113,6 @@ void expectExact(const TopologicalMap& map, const OfficeTruth& truth) {
     }
 }
 
-}  // namespace
-
 class OfficeRooms : public ::testing::Test {
   protected:
     void SetUp() override {
@@ -144,3 +142,5 @@ TEST_F(OfficeRooms, PaperExactFromTheTrajectory) {
     expectExact(RoomSegmenter(RoomSegmenter::Options::paperExact()).segment(grid_, tour_).map,
                 truth_);
 }
+
+}  // namespace

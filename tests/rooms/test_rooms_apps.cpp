@@ -130,9 +130,8 @@ TEST(ToposlamRooms, OfficesMappedFromTheCorridorOnlyAreRoomsOnTheSlamGrid) {
         runApp("toposlam-sim", "'" + dir.file("ring.png") + "' --poses '" + dir.file("drive.txt") +
                                    "' -q -o '" + dir.file("ring.rawlog") + "'");
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    r = runApp("toposlam-slam", "'" + std::string(TOPOSLAM_TEST_SOURCE_DIR) +
-                                    "/config_ini/toposlam-slam.ini' '" + dir.file("ring.rawlog") +
-                                    "' -o '" + dir.file("slam") + "'");
+    r = runApp("toposlam-slam", "'" + toposlam::test::configIni("toposlam-slam.ini") + "' '" +
+                                    dir.file("ring.rawlog") + "' -o '" + dir.file("slam") + "'");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     r = runApp("toposlam-rooms", "'" + dir.file("slam/map.gridmap.gz") + "' -t '" +
                                      dir.file("slam/trajectory.txt") + "' -o '" +

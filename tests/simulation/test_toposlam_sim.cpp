@@ -290,9 +290,8 @@ TEST(ShareOffice, IsTheOfficeAndItsToursGroundTruth) {
 
 TEST(ShareOffice, IsReproducedBitForBitByMakeOffice) {
     TempDir dir;
-    const auto r = runApp("toposlam-sim",
-                          "--make-office " + quoted(dir.path()) + " -q -c " +
-                              quoted(toposlam::test::shareDir() + "/../config_ini/sim-office.ini"));
+    const auto r = runApp("toposlam-sim", "--make-office " + quoted(dir.path()) + " -q -c " +
+                                              quoted(toposlam::test::configIni("sim-office.ini")));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const std::string share = toposlam::test::shareDir() + "/office";
     std::size_t compared = 0;

@@ -27,8 +27,16 @@ std::string sharedDataFile(const std::string& relative) {
     return fs::exists(p) ? p.string() : std::string();
 }
 
+std::string sourceDir() {
+    return TOPOSLAM_SOURCE_DIR;
+}
+
 std::string shareDir() {
-    return std::string(TOPOSLAM_SOURCE_DIR) + "/share";
+    return sourceDir() + "/share";
+}
+
+std::string configIni(const std::string& name) {
+    return sourceDir() + "/config_ini/" + name;
 }
 
 std::string binDir() {

@@ -11,8 +11,12 @@ namespace toposlam::test {
 std::string sharedDataDir();
 /// Absolute path of `relative` under ../shared/data, or "" when that file is absent.
 std::string sharedDataFile(const std::string& relative);
+/// The project's source tree (the folder holding CMakeLists.txt, libs/, config_ini/ ...).
+std::string sourceDir();
 /// The project's share/ folder (bundled sample data).
 std::string shareDir();
+/// The path of config_ini/<name>, the shipped configuration files.
+std::string configIni(const std::string& name);
 /// build/<preset>/bin, where the apps are.
 std::string binDir();
 

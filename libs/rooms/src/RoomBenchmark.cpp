@@ -26,10 +26,6 @@ double median(std::vector<double> v) {
     return v.empty() ? 0 : v[v.size() / 2];
 }
 
-double ratio(std::size_t a, std::size_t b) {
-    return b == 0 ? 0.0 : static_cast<double>(a) / static_cast<double>(b);
-}
-
 // Every method single-threaded while a benchmark runs (OpenCV would otherwise parallelise some
 // of its calls); the previous setting comes back at the end.
 struct SingleThreaded {
@@ -64,11 +60,11 @@ RoomBenchmarkSummary summarizeGroup(const std::vector<const RoomBenchmarkScore*>
         add(m.doors, s->doors);
         add(m.doors1m, s->doors1m);
         if (s->doors.virtualDoors > 0) {
-            m.doorPrecisionMeanOfMaps += ratio(s->doors.matchedVirtual, s->doors.virtualDoors);
+            m.doorPrecisionMeanOfMaps += s->doors.precision();
             ++precisionMaps;
         }
         if (s->doors.trueDoors > 0) {
-            m.doorRecallMeanOfMaps += ratio(s->doors.matchedTrue, s->doors.trueDoors);
+            m.doorRecallMeanOfMaps += s->doors.recall();
             ++recallMaps;
         }
     }

@@ -10,10 +10,6 @@ namespace toposlam::rooms {
 
 namespace {
 
-double ratio(std::size_t a, std::size_t b) {
-    return b == 0 ? 0.0 : static_cast<double>(a) / static_cast<double>(b);
-}
-
 std::string pct(double v) {
     char buf[16];
     std::snprintf(buf, sizeof buf, "%.1f", 100.0 * v);
@@ -29,12 +25,9 @@ std::string angleText(const std::optional<double>& angle) {
 }
 
 io::Json doorJson(const DoorMatchCounts& d) {
-    return {{"virtual_doors", d.virtualDoors},
-            {"matched_virtual", d.matchedVirtual},
-            {"true_doors", d.trueDoors},
-            {"matched_true", d.matchedTrue},
-            {"precision", ratio(d.matchedVirtual, d.virtualDoors)},
-            {"recall", ratio(d.matchedTrue, d.trueDoors)}};
+    return {{"virtual_doors", d.virtualDoors}, {"matched_virtual", d.matchedVirtual},
+            {"true_doors", d.trueDoors},       {"matched_true", d.matchedTrue},
+            {"precision", d.precision()},      {"recall", d.recall()}};
 }
 
 io::Json scoreJson(const RoomBenchmarkScore& s) {
@@ -111,13 +104,11 @@ std::string RoomBenchmark::summaryTable(const std::vector<RoomBenchmarkSummary>&
             pct(m.recallMean).c_str(), pct(m.recallSd).c_str(), pct(m.precisionMean).c_str(),
             pct(m.precisionSd).c_str(), pct(m.recallPixels).c_str(), pct(m.precisionPixels).c_str(),
             m.secondsMean, m.secondsMax, m.minSecondsMean, m.cpuSecondsMean, m.segments,
-            m.groundTruthRooms, pct(ratio(m.doors.matchedVirtual, m.doors.virtualDoors)).c_str(),
-            m.doors.matchedVirtual, m.doors.virtualDoors,
-            pct(ratio(m.doors.matchedTrue, m.doors.trueDoors)).c_str(), m.doors.matchedTrue,
+            m.groundTruthRooms, pct(m.doors.precision()).c_str(), m.doors.matchedVirtual,
+            m.doors.virtualDoors, pct(m.doors.recall()).c_str(), m.doors.matchedTrue,
             m.doors.trueDoors, pct(m.doorPrecisionMeanOfMaps).c_str(),
-            pct(m.doorRecallMeanOfMaps).c_str(),
-            pct(ratio(m.doors1m.matchedVirtual, m.doors1m.virtualDoors)).c_str(),
-            pct(ratio(m.doors1m.matchedTrue, m.doors1m.trueDoors)).c_str());
+            pct(m.doorRecallMeanOfMaps).c_str(), pct(m.doors1m.precision()).c_str(),
+            pct(m.doors1m.recall()).c_str());
         o << buf;
     }
     return o.str();
@@ -136,11 +127,9 @@ std::string RoomBenchmark::table(const std::vector<RoomBenchmarkScore>& scores,
                       "%.3f | %.3f |\n",
                       s.dataset.c_str(), s.map.c_str(), s.rotationDeg, s.method.c_str(),
                       pct(s.pr.recall).c_str(), pct(s.pr.precision).c_str(), s.segments,
-                      s.groundTruthRooms,
-                      pct(ratio(s.doors.matchedVirtual, s.doors.virtualDoors)).c_str(),
-                      s.doors.matchedVirtual, s.doors.virtualDoors,
-                      pct(ratio(s.doors.matchedTrue, s.doors.trueDoors)).c_str(),
-                      s.doors.matchedTrue, s.doors.trueDoors, s.seconds, s.cpuSeconds);
+                      s.groundTruthRooms, pct(s.doors.precision()).c_str(), s.doors.matchedVirtual,
+                      s.doors.virtualDoors, pct(s.doors.recall()).c_str(), s.doors.matchedTrue,
+                      s.doors.trueDoors, s.seconds, s.cpuSeconds);
         o << buf;
     }
     o << "\n" << summaryTable(summary);

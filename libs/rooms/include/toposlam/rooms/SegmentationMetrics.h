@@ -90,6 +90,16 @@ struct DoorMatchCounts {
     std::size_t matchedVirtual = 0;  ///< virtual doors matching some true door
     std::size_t trueDoors = 0;       ///< |T|
     std::size_t matchedTrue = 0;     ///< true doors matched by some virtual door
+
+    /// Share of the virtual doors that match a true door (0 when there is none).
+    double precision() const { return share(matchedVirtual, virtualDoors); }
+    /// Share of the true doors that some virtual door matches (0 when there is none).
+    double recall() const { return share(matchedTrue, trueDoors); }
+
+  private:
+    static double share(std::size_t part, std::size_t whole) {
+        return whole == 0 ? 0.0 : static_cast<double>(part) / static_cast<double>(whole);
+    }
 };
 /// Step 6-7: v matches t when v's representative point is within `tolerancePixels` of a pixel
 /// of t (no one-to-one constraint).

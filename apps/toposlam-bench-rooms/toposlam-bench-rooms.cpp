@@ -172,10 +172,11 @@ struct Arguments {
     cli::NumberArg<double> cellSize{
         "",
         "cell-size",
-        "segment every bormann, gen and flats map in cells of this size (m; a whole multiple of "
-        "the "
-        "drawn 0.05 m): a cell is free when every drawn pixel in it is, as a laser grid marks a "
-        "cell a beam ended in; scored in the drawn ground truth (default: 0 = as drawn)",
+        "segment every bormann, gen and flats map in cells of this size (m), scored in the drawn "
+        "ground truth (default: 0 = as drawn). A whole multiple of the drawn 0.05 m: a cell is "
+        "free when every drawn pixel in it is, as a laser grid marks a cell a beam ended in. A "
+        "whole fraction of it (0.025, 0.0125): every pixel split into cells of its own state, as "
+        "a finer grid shows the same walls",
         0.0,
         cli::NumberRange<double>::nonNegative(5),
         "m",
@@ -256,7 +257,7 @@ roomsbench::RoomBenchmarkSuiteOptions suiteOptions(
     o.bench.cellSize = a.cellSize.getValue();
     if (o.bench.cellSize > 0) {
         try {
-            rooms::poolingFactor(o.bench.cellSize, rooms::kBenchmarkMapResolution);
+            rooms::checkCellSize(o.bench.cellSize, rooms::kBenchmarkMapResolution);
         } catch (const std::invalid_argument& e) {
             throw cli::UsageError(std::string("--cell-size: ") + e.what());
         }

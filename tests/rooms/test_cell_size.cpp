@@ -1,8 +1,8 @@
 // The segmentation does not depend on the grid's cell size: a drawn plan mapped in 0.10 m and
-// 0.15 m cells (pooled as a laser grid marks them: a cell with any wall in it is not free) gives
-// the same rooms as in its drawn 0.05 m pixels (IoU >= 0.9 once each cell's label is carried back
-// to the pixels) and finds every drawn door; and B4's pooled cases are built and scored in the
-// drawn ground truth's frame.
+// 0.15 m cells (pooled as a laser grid marks them: a cell with any wall in it is not free), or in
+// 0.025 m and 0.0125 m cells (each pixel split), gives the same rooms as in its drawn 0.05 m
+// pixels (IoU >= 0.9 once each cell's label is carried back to the pixels) and finds every drawn
+// door; and B4's pooled and split cases are built and scored in the drawn ground truth's frame.
 #include <toposlam/rooms/RoomBenchmark.h>
 #include <toposlam/rooms/RoomBenchmarkCase.h>
 #include <toposlam/rooms/RoomSegmenter.h>
@@ -37,11 +37,12 @@ void expectSameAsDrawn(const DrawnMap& map, double cellSize) {
     const auto reference = segmenter.segment(gridOfFreeImage(free, kResolution));
     ASSERT_EQ(reference.map.rooms.size(), map.rooms.size());
 
-    const RoomBenchmarkCase pooled = pooledCase(drawnCaseOf(map, reference.map.labels), cellSize);
-    EXPECT_NEAR(pooled.grid.getResolution(), cellSize, 1e-6);  // MRPT keeps it as a float
-    const auto result = segmenter.segment(pooled.grid);
+    const RoomBenchmarkCase mapped =
+        caseAtCellSize(drawnCaseOf(map, reference.map.labels), cellSize);
+    EXPECT_NEAR(mapped.grid.getResolution(), cellSize, 1e-6);  // MRPT keeps it as a float
+    const auto result = segmenter.segment(mapped.grid);
     EXPECT_EQ(result.map.rooms.size(), map.rooms.size());
-    const cv::Mat labels = pooled.toTruthFrame(result.map.labels);
+    const cv::Mat labels = mapped.toTruthFrame(result.map.labels);
     ASSERT_EQ(labels.size(), free.size());
     std::set<int> seen;
     for (const auto& p : map.rooms) {
@@ -57,7 +58,7 @@ void expectSameAsDrawn(const DrawnMap& map, double cellSize) {
             << "room at (" << p.x << ", " << p.y << ")";
     }
     // Every drawn door is found: within half the wall, a cell of pooling and a cell of the
-    // door's own quantisation of the drawn middle.
+    // door's own quantisation of the drawn middle (finer cells: closer).
     EXPECT_EQ(result.map.doors.size(), map.doors.size());
     for (const auto& truth : map.doors) {
         EXPECT_LT(toposlam::rooms::test::distanceToNearestDoor(result.map, truth.middle),
@@ -66,11 +67,42 @@ void expectSameAsDrawn(const DrawnMap& map, double cellSize) {
     }
 }
 
+// The drawn office as B4 hands it over, its ground truth the segmentation of its pixels.
+RoomBenchmarkCase officeCase() {
+    const DrawnMap office = toposlam::rooms::test::office();
+    const auto reference =
+        RoomSegmenter().segment(gridOfFreeImage(office.image == 255, kResolution));
+    return drawnCaseOf(office, reference.map.labels);
+}
+
+// B4 scores the case (the office in other cells) in the drawn ground truth about as the drawn
+// plan: rooms within 3 %, and every door matched within 0.5 m of the drawn plan's pixels, not
+// of the cells.
+void expectScoredAsDrawn(const RoomBenchmarkCase& mapped) {
+    RoomBenchmarkOptions options;
+    options.methods = {"vdoor"};
+    options.repeats = 1;
+    const auto scores = RoomBenchmark(options).score(mapped);
+    ASSERT_EQ(scores.size(), 1u);
+    EXPECT_GE(scores[0].pr.recall, 0.97);
+    EXPECT_GE(scores[0].pr.precision, 0.97);
+    EXPECT_EQ(scores[0].doors.matchedTrue, scores[0].doors.trueDoors);
+    EXPECT_EQ(scores[0].doors.matchedVirtual, scores[0].doors.virtualDoors);
+}
+
 }  // namespace
 
 TEST(CellSize, OfficeIsTheSameInCoarserCells) {
     const DrawnMap office = toposlam::rooms::test::office();
     for (const double cellSize : {0.10, 0.15})
+        expectSameAsDrawn(office, cellSize);
+}
+
+TEST(CellSize, OfficeIsTheSameInFinerCells) {
+    // The thresholds in cells (a wall's thickness counted within a cell, WallThickness) must
+    // not tighten on a finer grid.
+    const DrawnMap office = toposlam::rooms::test::office();
+    for (const double cellSize : {0.025, 0.0125})
         expectSameAsDrawn(office, cellSize);
 }
 
@@ -95,10 +127,7 @@ TEST(CellSize, PoolingMarksACellWithAnyWallInIt) {
 }
 
 TEST(CellSize, PooledCaseIsScoredInTheDrawnGroundTruth) {
-    const DrawnMap office = toposlam::rooms::test::office();
-    const auto reference =
-        RoomSegmenter().segment(gridOfFreeImage(office.image == 255, kResolution));
-    const RoomBenchmarkCase drawn = drawnCaseOf(office, reference.map.labels);
+    const RoomBenchmarkCase drawn = officeCase();
     const RoomBenchmarkCase pooled = pooledCase(drawn, 0.1);
     EXPECT_EQ(pooled.inputFree.cols, (drawn.inputFree.cols + 1) / 2);
     EXPECT_EQ(pooled.inputFree.rows, (drawn.inputFree.rows + 1) / 2);
@@ -117,19 +146,28 @@ TEST(CellSize, PooledCaseIsScoredInTheDrawnGroundTruth) {
     EXPECT_GT(cv::countNonZero(drawn.inputFree != 0), cv::countNonZero(cellsFree != 0) + 1000);
     EXPECT_EQ(cv::countNonZero((labels == 0) & (drawn.inputFree != 0)), 0);
 
-    RoomBenchmarkOptions options;
-    options.methods = {"vdoor"};
-    options.repeats = 1;
-    const auto scores = RoomBenchmark(options).score(pooled);
-    ASSERT_EQ(scores.size(), 1u);
-    EXPECT_GE(scores[0].pr.recall, 0.97);
-    EXPECT_GE(scores[0].pr.precision, 0.97);
-    // Doors are matched within 0.5 m of the drawn plan's pixels, not of the cells: all found.
-    EXPECT_EQ(scores[0].doors.matchedTrue, scores[0].doors.trueDoors);
-    EXPECT_EQ(scores[0].doors.matchedVirtual, scores[0].doors.virtualDoors);
+    expectScoredAsDrawn(pooled);
 
     // The drawn resolution itself: the case as it is.
     EXPECT_EQ(pooledCase(drawn, kResolution).inputFree.data, drawn.inputFree.data);
+}
+
+TEST(CellSize, SplitCaseIsScoredInTheDrawnGroundTruth) {
+    const RoomBenchmarkCase drawn = officeCase();
+    const RoomBenchmarkCase split = splitCase(drawn, 0.025);
+    EXPECT_EQ(split.inputFree.size(), drawn.inputFree.size() * 2);
+    EXPECT_NEAR(split.truthResolution, kResolution, 1e-6);
+    // A label image in cells comes back with each pixel's majority: the 2 x 2 cells of pixel
+    // (0, 0) hold 7, 7, 7 and 9.
+    cv::Mat cells(split.inputFree.size(), CV_32S, cv::Scalar(3));
+    cells.at<int>(0, 0) = cells.at<int>(0, 1) = cells.at<int>(1, 0) = 7;
+    cells.at<int>(1, 1) = 9;
+    const cv::Mat back = split.toTruthFrame(cells);
+    ASSERT_EQ(back.size(), drawn.inputFree.size());
+    EXPECT_EQ(back.at<int>(0, 0), 7);
+    EXPECT_EQ(back.at<int>(1, 1), 3);
+
+    expectScoredAsDrawn(split);
 }
 
 TEST(CellSize, RejectsACellSizeThatIsNoWholeMultiple) {
@@ -139,7 +177,13 @@ TEST(CellSize, RejectsACellSizeThatIsNoWholeMultiple) {
     EXPECT_THROW(pooledCase(drawn, 0.07), std::invalid_argument);
     EXPECT_THROW(pooledCase(drawn, 0.025), std::invalid_argument);
     EXPECT_THROW(pooledCase(drawn, 0), std::invalid_argument);
+    EXPECT_THROW(splitCase(drawn, 0.03), std::invalid_argument);
+    EXPECT_THROW(splitCase(drawn, 0.05 / 9), std::invalid_argument);
+    EXPECT_THROW(checkCellSize(0.07, kResolution), std::invalid_argument);
+    EXPECT_NO_THROW(checkCellSize(0.025, kResolution));
+    EXPECT_NO_THROW(checkCellSize(0.15, kResolution));
     RoomBenchmarkCase mapped = drawn;
     mapped.toTruthFrame = [](const cv::Mat& labels) { return labels; };
     EXPECT_THROW(pooledCase(mapped, 0.1), std::invalid_argument);
+    EXPECT_THROW(splitCase(mapped, 0.025), std::invalid_argument);
 }

@@ -339,6 +339,38 @@ TEST(WallThickness, RunsThroughUnknownCellsOnlyAreNoWalls) {
     EXPECT_EQ(walls.mostFrequent(), 1);
 }
 
+TEST(WallThickness, ToleratesTheSameCentimetresOnAFinerGrid) {
+    // A 12 x 8 m plan drawn in 5 cm cells: walls 0.25 m thick, one 0.30 m; door gaps join the
+    // rooms. The same plan in 2.5 cm cells must find the same walls: counted per cell, the
+    // 0.30 m wall was two cells off the 0.25 m ones there, and no wall.
+    cv::Mat coarse(160, 240, CV_8U, cv::Scalar(255));
+    cv::rectangle(coarse, {0, 0}, {239, 159}, 0, 4);
+    cv::rectangle(coarse, {80, 0}, {84, 159}, 0, cv::FILLED);    // 0.25 m
+    cv::rectangle(coarse, {160, 0}, {164, 159}, 0, cv::FILLED);  // 0.25 m
+    cv::rectangle(coarse, {0, 80}, {79, 84}, 0, cv::FILLED);     // 0.25 m
+    cv::rectangle(coarse, {185, 80}, {239, 85}, 0, cv::FILLED);  // 0.30 m
+    for (const cv::Rect door : {cv::Rect(80, 30, 5, 20), cv::Rect(80, 110, 5, 20),
+                                cv::Rect(160, 30, 5, 20), cv::Rect(160, 110, 5, 20)}) {
+        coarse(door) = 255;
+    }
+    cv::Mat fine;
+    cv::resize(coarse, fine, {}, 2, 2, cv::INTER_NEAREST);
+    for (const double res : {0.05, 0.025}) {
+        SCOPED_TRACE(res);
+        const cv::Mat& image = res == 0.05 ? coarse : fine;
+        GridImageFrame frame = toposlam::rooms::test::frameOf(image);
+        frame.resolution = res;
+        const FreeSpace space = FreeSpaceBinarizer().binarize(image, frame);
+        WallThickness walls;
+        walls.measure(space, Clearance(space.free), 0.65);
+        const auto cells = [res](double metres) { return metres / res; };
+        EXPECT_NEAR(walls.mostFrequent(), cells(0.25), 0.5);
+        EXPECT_TRUE(walls.isWallThickness(cells(0.25)));
+        EXPECT_TRUE(walls.isWallThickness(cells(0.30)));
+        EXPECT_FALSE(walls.isWallThickness(cells(0.60)));  // a cabinet against a wall
+    }
+}
+
 TEST(FreeSpaceBinarizer, KeepsTheLargestFreeRegionAboveTheThreshold) {
     cv::Mat img(30, 40, CV_8U, cv::Scalar(128));
     img(cv::Rect(2, 2, 20, 20)) = 255;  // 400 cells

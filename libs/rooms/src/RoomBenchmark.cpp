@@ -127,7 +127,7 @@ std::vector<RoomBenchmarkCase> RoomBenchmark::atCellSize(
     std::vector<RoomBenchmarkCase> cases) const {
     if (options_.cellSize > 0) {
         for (RoomBenchmarkCase& c : cases)
-            c = pooledCase(c, options_.cellSize);
+            c = caseAtCellSize(c, options_.cellSize);
     }
     return cases;
 }

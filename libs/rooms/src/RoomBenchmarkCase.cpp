@@ -82,18 +82,36 @@ mrpt::maps::COccupancyGridMap2D gridOfFreeImage(const cv::Mat& free, double reso
     return grid;
 }
 
-int poolingFactor(double cellSize, double resolution) {
-    const double ratio = cellSize / resolution;
+namespace {
+
+// `ratio` as a whole number from `least` to `most`; otherwise std::invalid_argument(`message`),
+// formatted with the map's and the requested cell sizes.
+int wholeFactor(double ratio, long least, long most, const char* message, double resolution,
+                double cellSize) {
     const long factor = std::isfinite(ratio) ? std::lround(ratio) : 0;
-    if (factor < 1 || factor > 100 ||
+    if (factor < least || factor > most ||
         std::abs(ratio - static_cast<double>(factor)) > 1e-6 * ratio) {
         char buf[160];
-        std::snprintf(buf, sizeof buf,
-                      "the cell size must be a whole multiple of the map's %g m cells (got %g m)",
-                      resolution, cellSize);
+        std::snprintf(buf, sizeof buf, message, resolution, cellSize);
         throw std::invalid_argument(buf);
     }
     return static_cast<int>(factor);
+}
+
+// Throws std::invalid_argument unless `c` is a drawn case (gridOfFreeImage: no trajectory,
+// origin (0, 0), in its ground truth's frame): only those can be `done` (pooled, split).
+void requireDrawn(const RoomBenchmarkCase& c, const char* done) {
+    if (c.toTruthFrame || !c.trajectory.empty() || c.grid.getXMin() != 0 || c.grid.getYMin() != 0)
+        throw std::invalid_argument(std::string("only a drawn map can be ") + done + " ('" +
+                                    c.name() + "')");
+}
+
+}  // namespace
+
+int poolingFactor(double cellSize, double resolution) {
+    return wholeFactor(cellSize / resolution, 1, 100,
+                       "the cell size must be a whole multiple of the map's %g m cells (got %g m)",
+                       resolution, cellSize);
 }
 
 cv::Mat poolFreeImage(const cv::Mat& free, int factor) {
@@ -167,9 +185,7 @@ cv::Mat labelsAtPixels(const cv::Mat& cellLabels, int factor, const cv::Mat& fre
 }  // namespace
 
 RoomBenchmarkCase pooledCase(const RoomBenchmarkCase& drawn, double cellSize) {
-    if (drawn.toTruthFrame || !drawn.trajectory.empty() || drawn.grid.getXMin() != 0 ||
-        drawn.grid.getYMin() != 0)
-        throw std::invalid_argument("only a drawn map can be pooled ('" + drawn.name() + "')");
+    requireDrawn(drawn, "pooled");
     const double resolution = drawn.grid.getResolution();
     const int k = poolingFactor(cellSize, resolution);
     if (k == 1)
@@ -182,6 +198,60 @@ RoomBenchmarkCase pooledCase(const RoomBenchmarkCase& drawn, double cellSize) {
         return labelsAtPixels(labels, k, free);
     };
     return c;
+}
+
+int splittingFactor(double cellSize, double resolution) {
+    return wholeFactor(resolution / cellSize, 2, 8,
+                       "a finer cell size must split the map's %g m cells into 2 to 8 (got %g m)",
+                       resolution, cellSize);
+}
+
+RoomBenchmarkCase splitCase(const RoomBenchmarkCase& drawn, double cellSize) {
+    requireDrawn(drawn, "split");
+    const double resolution = drawn.grid.getResolution();
+    const int k = splittingFactor(cellSize, resolution);
+    RoomBenchmarkCase c = drawn;
+    cv::resize(drawn.inputFree, c.inputFree, {}, k, k, cv::INTER_NEAREST);
+    c.grid = gridOfFreeImage(c.inputFree, cellSize);  // same origin: the same world frame
+    c.truthResolution = resolution;
+    c.toTruthFrame = [k](const cv::Mat& labels) {
+        CV_Assert(labels.type() == CV_32S);
+        cv::Mat out(labels.rows / k, labels.cols / k, CV_32S);
+        std::vector<int> cells(static_cast<std::size_t>(k * k));
+        for (int r = 0; r < out.rows; ++r) {
+            for (int c = 0; c < out.cols; ++c) {
+                for (int dr = 0; dr < k; ++dr) {
+                    const int* row = labels.ptr<int>(r * k + dr) + c * k;
+                    std::copy(row, row + k, cells.begin() + dr * k);
+                }
+                // The most frequent label of the pixel's cells; a tie goes to the first in
+                // raster order.
+                int best = cells[0], bestCount = 0;
+                for (const int label : cells) {
+                    const auto count = std::count(cells.begin(), cells.end(), label);
+                    if (count > bestCount) {
+                        best = label;
+                        bestCount = static_cast<int>(count);
+                    }
+                }
+                out.at<int>(r, c) = best;
+            }
+        }
+        return out;
+    };
+    return c;
+}
+
+RoomBenchmarkCase caseAtCellSize(const RoomBenchmarkCase& drawn, double cellSize) {
+    return cellSize < drawn.grid.getResolution() ? splitCase(drawn, cellSize)
+                                                 : pooledCase(drawn, cellSize);
+}
+
+void checkCellSize(double cellSize, double resolution) {
+    if (cellSize < resolution)
+        splittingFactor(cellSize, resolution);
+    else
+        poolingFactor(cellSize, resolution);
 }
 
 RoomBenchmarkCase drawnCase(std::string dataset, std::string map, bool furnished,

@@ -19,7 +19,8 @@ void WallThickness::measure(const FreeSpace& space, const Clearance& clearance,
     const cv::Mat& d = clearance.distances();
     const int cap =
         static_cast<int>(std::ceil(detail::toCells(maxThickness, space.frame.resolution))) + 2;
-    counts_.assign(static_cast<std::size_t>(cap) + 2, 0.0);
+    stepCells_ = std::max(1.0, detail::toCells(kThicknessStep, space.frame.resolution));
+    counts_.assign(static_cast<std::size_t>(std::lround(cap / stepCells_)) + 2, 0.0);
     for (int r = 1; r + 1 < free.rows; ++r) {
         const auto* row = free.ptr<std::uint8_t>(r);
         const float* dist = d.ptr<float>(r);
@@ -52,7 +53,7 @@ void WallThickness::measure(const FreeSpace& space, const Clearance& clearance,
             const double run =
                 detail::cellDistance(hit.x - c, hit.y - r) - 1.0;  // obstacle cells crossed
             if (run >= 0.5)  // shorter: a diagonal gap, not an obstacle
-                counts_[static_cast<std::size_t>(std::lround(run))] += 1.0;
+                counts_[static_cast<std::size_t>(std::lround(run / stepCells_))] += 1.0;
         }
     }
     mode_ = 0;
@@ -65,7 +66,7 @@ void WallThickness::measure(const FreeSpace& space, const Clearance& clearance,
     }
 }
 
-double WallThickness::smoothed(int k) const {
+double WallThickness::smoothed(int k) const {  // k in steps
     auto at = [&](int i) {
         return i >= 0 && i < static_cast<int>(counts_.size()) ? counts_[static_cast<std::size_t>(i)]
                                                               : 0.0;
@@ -76,7 +77,7 @@ double WallThickness::smoothed(int k) const {
 bool WallThickness::isWallThickness(double cells, double minShare) const {
     if (mode_ == 0)
         return true;
-    const int k = static_cast<int>(std::lround(cells));
+    const int k = static_cast<int>(std::lround(cells / stepCells_));
     if (std::abs(k - mode_) <= 1)
         return true;
     return smoothed(k) >= minShare * smoothed(mode_);

@@ -84,6 +84,26 @@ cv::Mat poolFreeImage(const cv::Mat& free, int factor);
 /// for a cell size poolingFactor() refuses, or for a case that is not drawn.
 RoomBenchmarkCase pooledCase(const RoomBenchmarkCase& drawn, double cellSize);
 
+/// How many cells of `cellSize` (m) split one of `resolution` (m) along each axis: a whole
+/// number from 2 to 8. Throws std::invalid_argument, naming both sizes, for any other size.
+int splittingFactor(double cellSize, double resolution);
+
+/// A drawn case mapped at a finer cell size, `cellSize` = resolution / k (splittingFactor):
+/// each pixel split into k x k cells of its own state, as a finer grid shows the same walls;
+/// the segmentation is scored in the drawn ground truth, each pixel taking the label most of
+/// its cells have. Throws std::invalid_argument for another cell size, or for a case that is
+/// not drawn.
+RoomBenchmarkCase splitCase(const RoomBenchmarkCase& drawn, double cellSize);
+
+/// The drawn case at `cellSize`: pooledCase when it is coarser than the drawn pixels,
+/// splitCase when it is finer. Throws std::invalid_argument when it is neither a whole
+/// multiple nor a whole fraction of them.
+RoomBenchmarkCase caseAtCellSize(const RoomBenchmarkCase& drawn, double cellSize);
+
+/// Throws std::invalid_argument unless `cellSize` is a whole multiple of `resolution` (1 to
+/// 100 times) or a whole fraction of it (1/2 to 1/8).
+void checkCellSize(double cellSize, double resolution);
+
 /// Bormann's map `base` in `dataDir` (<base>.png, <base>_furnitures.png,
 /// <base>_gt_segmentation.png; grey >= 250 free), unfurnished then furnished, at each of
 /// `rotationsDeg`: the maps, their ground-truth rooms and the free space of the unfurnished map

@@ -16,9 +16,12 @@ namespace {
 // Union-find over 0..n-1 (union by rank, path compression).
 using DisjointSets = boost::disjoint_sets_with_storage<>;
 
+// m across a wall within which a jamb still counts as on it (onWall in DoorFilters::wallJambs).
+constexpr double kOnWallSlack = 0.1;
+
 // Length (pixels, capped at `cap`) of the obstacle that starts at `jamb` in direction (ux, uy).
-// A free cell ends it only when its neighbours across the walking direction, up to `slack` (1 or
-// 2) cells to either side, are free too: a thin wall drawn as a digital line at an angle is
+// A free cell ends it only when its neighbours across the walking direction, up to `slack`
+// cells to either side, are free too: a thin wall drawn as a digital line at an angle is
 // followed to its end instead of being left through the steps of its staircase.
 double wallRun(const cv::Mat& free, const cv::Point& jamb, double ux, double uy, double cap,
                int slack = 1) {
@@ -27,10 +30,14 @@ double wallRun(const cv::Mat& free, const cv::Point& jamb, double ux, double uy,
     // The ray's cells lie within cap + 1 of the jamb, the cells beside them `slack` more.
     const bool ended = detail::withMaskReader(free, jamb, cap + 1 + slack, [&](const auto& isFree) {
         auto open = [&](int x, int y) {
-            if (!isFree(x, y) || !isFree(x + side.x, y + side.y) || !isFree(x - side.x, y - side.y))
+            if (!isFree(x, y))
                 return false;
-            return slack < 2 || (isFree(x + 2 * side.x, y + 2 * side.y) &&
-                                 isFree(x - 2 * side.x, y - 2 * side.y));
+            for (int k = 1; k <= slack; ++k) {
+                if (!isFree(x + k * side.x, y + k * side.y) ||
+                    !isFree(x - k * side.x, y - k * side.y))
+                    return false;
+            }
+            return true;
         };
         return detail::walkRay(jamb, ux, uy, cap, open, hit);
     });
@@ -214,18 +221,20 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
                            !detail::isSet(open, jamb.x, jamb.y));
     };
     // Along the door line (both ways: one leads back into the opening and stops at once) and
-    // across it, with two cells of slack: where a wall runs a few degrees off the door line (at
-    // an angle to the building's main directions, the two wall ends of a doorway lie a cell or
-    // two apart across the wall), a jamb on its face is left after a few cells with one. The
-    // wall-end test and the walls across the door line keep one cell: with two there as well,
-    // B4-gen's furnished plans at 30 degrees gained two false doors (one from a shelf drawn at
-    // an angle that passed for the end of a wall).
-    constexpr int kOnWallSlack = 2;
+    // across it, with kOnWallSlack of slack (two cells of 5 cm; as many cells as make 0.1 m on
+    // finer grids, where the same offset is more cells): where a wall runs a few degrees off the
+    // door line (at an angle to the building's main directions, the two wall ends of a doorway
+    // lie a cell or two apart across the wall), a jamb on its face is left after a few cells with
+    // one. The wall-end test and the walls across the door line keep one cell: with two there as
+    // well, B4-gen's furnished plans at 30 degrees gained two false doors (one from a shelf drawn
+    // at an angle that passed for the end of a wall).
+    const int onWallSlack = std::max(
+        2, static_cast<int>(std::lround(detail::toCells(kOnWallSlack, space.frame.resolution))));
     auto onWall = [&](const cv::Point& jamb, double ux, double uy) {
-        return wallRun(open, jamb, ux, uy, extent, kOnWallSlack) >= extent ||
-               wallRun(open, jamb, -ux, -uy, extent, kOnWallSlack) >= extent ||
-               wallRun(open, jamb, -uy, ux, extent, kOnWallSlack) >= extent ||
-               wallRun(open, jamb, uy, -ux, extent, kOnWallSlack) >= extent;
+        return wallRun(open, jamb, ux, uy, extent, onWallSlack) >= extent ||
+               wallRun(open, jamb, -ux, -uy, extent, onWallSlack) >= extent ||
+               wallRun(open, jamb, -uy, ux, extent, onWallSlack) >= extent ||
+               wallRun(open, jamb, uy, -ux, extent, onWallSlack) >= extent;
     };
     // The wall the door is in: from the jamb, away from the opening, the obstacle goes on for
     // wallEndProbe (past the corner of the jamb), and there it is a wall: free space on both

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <stdexcept>
 #include <utility>
@@ -217,24 +218,32 @@ RoomBenchmarkCase splitCase(const RoomBenchmarkCase& drawn, double cellSize) {
     c.toTruthFrame = [k](const cv::Mat& labels) {
         CV_Assert(labels.type() == CV_32S);
         cv::Mat out(labels.rows / k, labels.cols / k, CV_32S);
-        std::vector<int> cells(static_cast<std::size_t>(k * k));
+        std::vector<std::pair<int, int>> cells(static_cast<std::size_t>(k * k));  // label, index
         for (int r = 0; r < out.rows; ++r) {
             for (int c = 0; c < out.cols; ++c) {
                 for (int dr = 0; dr < k; ++dr) {
-                    const int* row = labels.ptr<int>(r * k + dr) + c * k;
-                    std::copy(row, row + k, cells.begin() + dr * k);
+                    const int* row = labels.ptr<int>(r * k + dr);
+                    for (int dc = 0; dc < k; ++dc)
+                        cells[static_cast<std::size_t>(dr * k + dc)] = {row[c * k + dc],
+                                                                        dr * k + dc};
                 }
-                // The most frequent label of the pixel's cells; a tie goes to the first in
-                // raster order.
-                int best = cells[0], bestCount = 0;
-                for (const int label : cells) {
-                    const auto count = std::count(cells.begin(), cells.end(), label);
-                    if (count > bestCount) {
-                        best = label;
-                        bestCount = static_cast<int>(count);
+                // The most frequent label of the pixel's cells (runs of the sorted labels); a
+                // tie goes to the label found first in raster order.
+                std::sort(cells.begin(), cells.end());
+                std::pair<std::ptrdiff_t, int> best{0, 0};  // count, -first index
+                int bestLabel = cells.front().first;
+                for (auto run = cells.begin(); run != cells.end();) {
+                    auto end = run;
+                    while (end != cells.end() && end->first == run->first)
+                        ++end;
+                    const std::pair<std::ptrdiff_t, int> score{end - run, -run->second};
+                    if (score > best) {
+                        best = score;
+                        bestLabel = run->first;
                     }
+                    run = end;
                 }
-                out.at<int>(r, c) = best;
+                out.at<int>(r, c) = bestLabel;
             }
         }
         return out;

@@ -40,14 +40,12 @@ class WallThickness {
     int mostFrequent() const { return static_cast<int>(std::lround(mode_ * stepCells_)); }
     /// Runs per thickness step (index = obstacle cells crossed / cells per step, rounded).
     const std::vector<double>& counts() const { return counts_; }
-    /// Cells per step: 1 on grids of 5 cm cells or coarser.
-    double stepCells() const { return stepCells_; }
 
   private:
     double smoothed(int step) const;
     std::vector<double> counts_;
-    int mode_ = 0;  // in steps
-    double stepCells_ = 1;
+    int mode_ = 0;          // in steps
+    double stepCells_ = 1;  // cells per step: 1 on grids of 5 cm cells or coarser
 };
 
 }  // namespace toposlam::rooms

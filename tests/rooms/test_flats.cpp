@@ -22,23 +22,22 @@ struct FlatTotals {
 };
 
 // The 20 B4-flats plans, furnished or not, segmented by vdoor with `options`, in cells of
-// `cellSize` m (0: as drawn; rooms::caseAtCellSize).
+// `cellSize` m (0: as drawn), as the benchmark maps them (RoomBenchmark::atCellSize).
 FlatTotals flats(bool furnished, const rooms::RoomSegmenter::Options& options,
                  double cellSize = 0) {
     rooms::RoomBenchmarkOptions o;
     o.repeats = 1;
     o.methods = {"vdoor"};
     o.virtualDoor = options;
+    o.cellSize = cellSize;
     const rooms::RoomBenchmark bench(o);
     FlatTotals t;
     for (const unsigned seed : roomsbench::b4GenSeeds()) {
-        for (const auto& c :
-             roomsbench::generatedCases(seed, {0}, simulation::BuildingStyle::Flat)) {
+        for (const auto& c : bench.atCellSize(
+                 roomsbench::generatedCases(seed, {0}, simulation::BuildingStyle::Flat))) {
             if (c.furnished != furnished)
                 continue;
-            const rooms::RoomBenchmarkCase mapped =
-                cellSize > 0 ? rooms::caseAtCellSize(c, cellSize) : c;
-            for (const RoomBenchmarkScore& s : bench.score(mapped)) {
+            for (const RoomBenchmarkScore& s : bench.score(c)) {
                 t.trueDoors += s.doors.trueDoors;
                 t.matchedTrue += s.doors.matchedTrue;
                 t.virtualDoors += s.doors.virtualDoors;

@@ -90,7 +90,8 @@ class RoomBenchmark {
         const std::function<std::vector<RoomBenchmarkCase>(std::size_t)>& makeCases,
         const io::ProgressCallback& progress = {}) const;
 
-    /// `cases` (drawn maps) at options().cellSize (pooledCase); as they are when it is 0.
+    /// `cases` (drawn maps) at options().cellSize (caseAtCellSize: pooled when coarser, split
+    /// when finer); as they are when it is 0.
     std::vector<RoomBenchmarkCase> atCellSize(std::vector<RoomBenchmarkCase> cases) const;
 
     /// Every selected method on one case (the images of options().imageDir included).

@@ -244,6 +244,8 @@ TEST(ToposlamBenchRooms, RejectsBadOptions) {
                                                   {"--rotations 400", 2},
                                                   {"--gen-seeds x", 2},
                                                   {"--sets flats --flat-seeds 1-x", 2},
+                                                  {"--cell-size 0.07", 2},  // no whole multiple
+                                                  {"--cell-size 0.03", 2},  // no whole fraction
                                                   {"-c missing.ini", 1}}) {
         const auto r = runApp("toposlam-bench-rooms", bad + " -o '" + dir.file("b.json") + "'");
         EXPECT_EQ(r.exitCode, status) << bad << "\n" << r.output;

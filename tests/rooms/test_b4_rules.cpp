@@ -1,6 +1,7 @@
-// Rules of the virtual-door segmenter that only show on real plans turned to an angle, scored
-// against Bormann's ground truth (needs ../shared/data/rooms; skipped without it). The drawn
-// test plans are too clean to need them: at 0 degrees none of these rules changes a door.
+// Rules of the virtual-door segmenter that only show on real plans turned to an angle or split
+// into finer cells, scored against Bormann's ground truth (needs ../shared/data/rooms; skipped
+// without it). The drawn test plans are too clean to need them: at 0 degrees in 5 cm pixels none
+// of these rules changes a door.
 #include <toposlam/rooms/RoomBenchmark.h>
 
 #include "TestSupport.h"
@@ -13,10 +14,12 @@ using namespace toposlam::rooms;
 
 namespace {
 
-// The furnished map `base`, turned by `degrees`, segmented by `vdoor` with `options`.
+// The furnished map `base`, turned by `degrees`, segmented by `vdoor` with `options` (in cells
+// of `cellSize` m; 0: the drawn pixels).
 RoomBenchmarkScore furnishedScore(const std::string& base, double degrees,
-                                  const RoomSegmenter::Options& options) {
+                                  const RoomSegmenter::Options& options, double cellSize = 0) {
     RoomBenchmarkOptions o;
+    o.cellSize = cellSize;
     o.dataDir = toposlam::test::sharedDataDir() + "/rooms";
     o.repeats = 1;
     o.methods = {"vdoor"};
@@ -68,4 +71,21 @@ TEST(B4Rules, DoorsInWallsAtAnAngleToTheMainDirectionsAreFound) {
     EXPECT_EQ(s.doors.trueDoors, 64u);
     EXPECT_GE(s.doors.matchedTrue, 52u);
     EXPECT_EQ(falseDoors(s), 0u);
+}
+
+// lab_a's wall ends are probed for their thickness a third of wall_end_probe (0.55 m) from the
+// jamb: 4 cells of 5 cm. Rounded to cells of 2.5 cm the third became 7 cells, 0.175 m, short
+// of where the drawn plan probes, and 4 of its true doors were lost in finer cells. Counted in
+// 5 cm steps (as wall thicknesses are) the probe lies 0.2 m in on any grid of 5 cm or finer, and
+// at most one is lost (31 of the drawn plan's 32 in both finer grids).
+TEST(B4Rules, WallEndsAreProbedAtTheSameDepthInFinerCells) {
+    TOPOSLAM_SHARED_DATA_OR_SKIP(plan, "rooms/lab_a_scan_furnitures.png");
+    const auto options = RoomSegmenter::Options::improved();
+    const RoomBenchmarkScore drawn = furnishedScore("lab_a_scan", 0, options);
+    for (const double cellSize : {0.025, 0.0125}) {
+        SCOPED_TRACE("cells of " + std::to_string(cellSize) + " m");
+        const RoomBenchmarkScore finer = furnishedScore("lab_a_scan", 0, options, cellSize);
+        EXPECT_EQ(finer.doors.trueDoors, drawn.doors.trueDoors);
+        EXPECT_GE(finer.doors.matchedTrue + 1, drawn.doors.matchedTrue);
+    }
 }

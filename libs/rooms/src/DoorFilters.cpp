@@ -280,9 +280,15 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
     // the end of the run instead took a line that crosses a cabinet and the wall behind it for
     // a wall end: there it reaches the wall's face, where a wall at an angle to the grid
     // measures a cell or two across along its staircase.
+    // The depth is counted in whole steps of WallThickness::kThicknessStep (a cell on coarser
+    // grids): a third of wallEndProbe is 0.2 m on a 5 cm grid, and on a finer one a third
+    // rounded to its own cells fell short of the corner of a jamb that the 5 cm grid probes past.
+    const double stepCells =
+        std::max(1.0, detail::toCells(WallThickness::kThicknessStep, space.frame.resolution));
+    const double probeDepth = std::round(std::round(length / 3 / stepCells) * stepCells);
     auto wallEnd = [&](const cv::Point& jamb, double ux, double uy) {
         return wallRun(open, jamb, ux, uy, length) >= length &&
-               wallAcross(jamb, ux, uy, std::round(length / 3));
+               wallAcross(jamb, ux, uy, probeDepth);
     };
     // The sides of the door line (bit 0: (-uy, ux), bit 1: the other) to which a wall goes on
     // from the jamb across the door line.

@@ -39,6 +39,9 @@
 // is mostly open to unobserved space that reaches the edge of the map (maxOpenBoundary,
 // RegionBoundary.h), so it is not known to be enclosed: the pocket between two cabinets whose
 // back the laser never saw.
+//
+// Each filter is in the source file named after it: DoorFilters.cpp (distance, adjacency),
+// DoorFiltersWallJambs.cpp, DoorFiltersConstriction.cpp and DoorFiltersMinimumArea.cpp.
 #include <toposlam/rooms/FreeSpaceBinarizer.h>
 #include <toposlam/rooms/LineSegment.h>
 #include <toposlam/rooms/RegionBoundary.h>

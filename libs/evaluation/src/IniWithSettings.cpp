@@ -33,7 +33,7 @@ void writeIniWithSettings(const std::string& source, const std::string& destinat
         out << "# " << source << " with settings changed by the benchmark\n" << content;
         out.close();
         if (!out)
-            throw std::runtime_error(tmp + ": cannot write");
+            throw std::runtime_error(destination + ": cannot write the file");
     });
 }
 

@@ -1,11 +1,17 @@
 #include <toposlam/io/AtomicFile.h>
 
+#include <sys/statvfs.h>
 #include <unistd.h>
+#include <zlib.h>
 
+#include <array>
 #include <atomic>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <system_error>
+#include <vector>
 
 namespace toposlam::io {
 
@@ -27,6 +33,64 @@ std::string temporaryNameFor(const std::string& path) {
     return (p.parent_path() / tmp).string();
 }
 
+bool endsWith(const std::string& s, const char* suffix) {
+    const std::size_t n = std::strlen(suffix);
+    return s.size() >= n && s.compare(s.size() - n, n, suffix) == 0;
+}
+
+// A PNG ends with its IEND chunk (empty, so its length and CRC are fixed).
+bool pngIsComplete(const std::string& file) {
+    static constexpr std::array<char, 12> kIend = {0,   0,   0,      0,   'I', 'E',
+                                                   'N', 'D', '\xAE', 'B', '`', '\x82'};
+    std::ifstream in(file, std::ios::binary | std::ios::ate);
+    if (!in || in.tellg() < static_cast<std::streamoff>(kIend.size()))
+        return false;
+    std::array<char, 12> tail{};
+    in.seekg(-static_cast<std::streamoff>(tail.size()), std::ios::end);
+    in.read(tail.data(), static_cast<std::streamsize>(tail.size()));
+    return in && tail == kIend;
+}
+
+// A gzip file starts with its magic bytes and decompresses to its end (zlib checks each
+// member's CRC and length, and reports a stream cut short).
+bool gzipIsComplete(const std::string& file) {
+    {
+        std::ifstream in(file, std::ios::binary);
+        std::array<unsigned char, 2> magic{};
+        in.read(reinterpret_cast<char*>(magic.data()), 2);
+        if (!in || magic[0] != 0x1f || magic[1] != 0x8b)
+            return false;
+    }
+    gzFile gz = gzopen(file.c_str(), "rb");
+    if (gz == nullptr)
+        return false;
+    std::vector<char> buffer(1 << 16);
+    int n = 0;
+    while ((n = gzread(gz, buffer.data(), static_cast<unsigned>(buffer.size()))) > 0) {
+    }
+    int code = Z_OK;
+    gzerror(gz, &code);
+    gzclose_r(gz);
+    return n == 0 && code == Z_OK;
+}
+
+bool deviceFull(const std::string& file) {
+    struct statvfs device {};
+    return ::statvfs(file.c_str(), &device) == 0 && device.f_bfree == 0;
+}
+
+// cv::imwrite and MRPT's gzip stream close their files without checking, so a full disk leaves
+// a truncated file that they report as written. What is on disk is checked before the rename.
+void checkWritten(const std::string& tmp, const std::string& path) {
+    if (deviceFull(tmp))
+        throw std::runtime_error(path + ": cannot write the file (no space left on the device)");
+    if (endsWith(path, ".png") && !pngIsComplete(tmp))
+        throw std::runtime_error(path + ": cannot write the file (the PNG came out truncated)");
+    if (endsWith(path, ".gz") && !gzipIsComplete(tmp))
+        throw std::runtime_error(path +
+                                 ": cannot write the file (the gzip data came out truncated)");
+}
+
 }  // namespace
 
 TemporaryOutputFile::TemporaryOutputFile(std::string path)
@@ -40,6 +104,13 @@ TemporaryOutputFile::~TemporaryOutputFile() {
 }
 
 void TemporaryOutputFile::commit() {
+    try {
+        checkWritten(tmpPath_, path_);
+    } catch (...) {
+        std::error_code ignored;
+        fs::remove(tmpPath_, ignored);
+        throw;
+    }
     std::error_code ec;
     fs::rename(tmpPath_, path_, ec);
     if (ec) {
@@ -50,10 +121,28 @@ void TemporaryOutputFile::commit() {
     committed_ = true;
 }
 
+void rethrowWriteError(const std::string& path) {
+    try {
+        throw;
+    } catch (const std::exception& e) {
+        // MRPT's streams report a failed write(2) so, with a call stack and no file name.
+        if (std::string(e.what()).find("Cannot write bytes to stream") == std::string::npos)
+            throw;
+        const fs::path directory = fs::path(path).parent_path();
+        const bool full = deviceFull(directory.empty() ? "." : directory.string());
+        throw std::runtime_error(path + ": cannot write the file (" +
+                                 (full ? "no space left on the device" : "write error") + ")");
+    }
+}
+
 void writeFileAtomically(const std::string& path,
                          const std::function<void(const std::string& tmpPath)>& writeTo) {
     TemporaryOutputFile out(path);
-    writeTo(out.temporaryPath());
+    try {
+        writeTo(out.temporaryPath());
+    } catch (...) {
+        rethrowWriteError(path);
+    }
     out.commit();
 }
 

@@ -51,6 +51,14 @@ void RawlogWriter::write(const LaserLogRecord& record) {
         throw std::logic_error("RawlogWriter::write() after commit()");
     if (!record.scan)
         throw std::invalid_argument("RawlogWriter::write(): record without scan");
+    try {
+        writeRecord(record);
+    } catch (...) {
+        rethrowWriteError(impl_->file.path());
+    }
+}
+
+void RawlogWriter::writeRecord(const LaserLogRecord& record) {
     auto archive = mrpt::serialization::archiveFrom(*impl_->stream);
     if (impl_->format == RawlogFormat::Observations) {
         if (record.hasOdometry) {

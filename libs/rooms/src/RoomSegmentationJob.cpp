@@ -59,7 +59,7 @@ std::vector<std::string> writeRoomSegmentationFiles(const RoomSegmenter::Result&
     const cv::Mat steps = renderDiagnostics(result, free);
     io::writeFileAtomically(files[3], [&](const std::string& tmp) {
         if (!cv::imwrite(tmp, steps))
-            throw std::runtime_error(tmp + ": cannot write the PNG");
+            throw std::runtime_error(files[3] + ": cannot write the PNG");
     });
     io::writeFileAtomically(files[4], [&](const std::string& tmp) {
         mrpt::io::CFileGZOutputStream out(tmp);

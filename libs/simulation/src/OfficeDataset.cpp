@@ -41,7 +41,7 @@ OfficeDataset writeOfficeDataset(const std::string& dir, const SimulatorConfig& 
     }
     io::writeFileAtomically(file("office_rooms.png"), [&](const std::string& tmp) {
         if (!cv::imwrite(tmp, labelImage))
-            throw std::runtime_error("cannot write " + tmp);
+            throw std::runtime_error(file("office_rooms.png") + ": cannot write the PNG");
     });
     io::saveTextFile(plan.toJson(grid, "office.gridmap.gz", "office_rooms.png"),
                      file("office_rooms.json"));

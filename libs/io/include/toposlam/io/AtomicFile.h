@@ -11,8 +11,15 @@ namespace toposlam::io {
 /// rename fails, the temporary file is removed and the exception propagates (rename failure:
 /// std::runtime_error naming `path`). The temporary name keeps the destination's extension
 /// (e.g. "map.tmp123.gridmap.gz"), so writers that pick a format by extension still work.
+/// Not every library reports a failed write (cv::imwrite and MRPT's gzip stream close their
+/// files unchecked), so before the rename the file on disk is checked: a full device, a PNG
+/// without its IEND chunk and a gzip stream cut short are errors naming `path`.
 void writeFileAtomically(const std::string& path,
                          const std::function<void(const std::string& tmpPath)>& writeTo);
+
+/// Inside a catch block: rethrows the exception being handled, an MRPT stream's failed write
+/// ("Cannot write bytes to stream!") as std::runtime_error naming `path` and the reason.
+[[noreturn]] void rethrowWriteError(const std::string& path);
 
 /// The same guarantee for output written incrementally (streams that stay open while a log
 /// is converted): write to temporaryPath(), then commit(). Destroyed without commit() (an
@@ -27,8 +34,8 @@ class TemporaryOutputFile {
     /// Where to write: same directory and extension as the destination.
     const std::string& temporaryPath() const { return tmpPath_; }
     const std::string& path() const { return path_; }
-    /// Renames the temporary file to path(). Throws std::runtime_error naming path() if the
-    /// rename fails (the temporary file is then removed).
+    /// Checks the temporary file as writeFileAtomically does and renames it to path(). Throws
+    /// std::runtime_error naming path() if either fails (the temporary file is then removed).
     void commit();
     bool committed() const { return committed_; }
 

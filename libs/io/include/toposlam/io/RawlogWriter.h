@@ -46,6 +46,8 @@ class RawlogWriter {
     RawlogFormat format() const;
 
   private:
+    void writeRecord(const LaserLogRecord& record);
+
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

@@ -268,6 +268,45 @@ TEST(RawlogBadInput, TruncatedStreamIsAnErrorNotAnEnd) {
     }
 }
 
+// A distance or an odometry pose that is NaN or infinite is corrupt data, as in a CARMEN log:
+// MRPT stores it without complaint (and its grid asserts on it much later), the reader names
+// the object.
+TEST(RawlogBadInput, NonFiniteReadingsAndOdometryAreErrors) {
+    toposlam::test::TempDir dir;
+    const auto corrupt = [&](const std::string& name, auto change, std::size_t record) {
+        auto records = syntheticRecords(5);
+        change(records[record]);
+        RawlogWriter w(dir.file(name), RawlogFormat::Observations);
+        for (const auto& r : records)
+            w.write(r);
+        w.commit();
+        return readError(dir.file(name));
+    };
+    const std::string nanRange = corrupt(
+        "nan.rawlog", [](LaserLogRecord& r) { r.scan->setScanRange(3, NAN); }, 2);
+    // Objects: odometry, scan, odometry, scan, ...: the third scan is object #5.
+    EXPECT_NE(nanRange.find("nan.rawlog: object #5, a CObservation2DRangeScan: reading 3 is nan"),
+              std::string::npos)
+        << nanRange;
+    const std::string infRange = corrupt(
+        "inf.rawlog", [](LaserLogRecord& r) { r.scan->setScanRange(1, -INFINITY); }, 0);
+    EXPECT_NE(infRange.find("reading 1 is -inf"), std::string::npos) << infRange;
+    const std::string nanOdometry = corrupt(
+        "odo.rawlog", [](LaserLogRecord& r) { r.odometry.x(NAN); }, 1);
+    EXPECT_NE(nanOdometry.find("odo.rawlog: object #2, a CObservationOdometry: the odometry pose "
+                               "is not finite"),
+              std::string::npos)
+        << nanOdometry;
+    // An invalid reading may hold anything.
+    const auto records = syntheticRecords(3);
+    records[1].scan->setScanRange(7, NAN);  // beam 7 is invalid
+    RawlogWriter w(dir.file("ok.rawlog"), RawlogFormat::Observations);
+    for (const auto& r : records)
+        w.write(r);
+    w.commit();
+    EXPECT_EQ(readError(dir.file("ok.rawlog")), "");
+}
+
 // Objects of classes the reader's check does not know (here a CObservationComment) are read
 // after a dry run in a child process: a sound one is skipped, one whose string length claims
 // 2 GB is an error, and the reader itself never allocates that.

@@ -9,6 +9,7 @@
 #include <toposlam/io/InputError.h>
 
 #include <cctype>
+#include <cmath>
 #include <exception>
 
 #include "MrptErrorText.h"
@@ -155,9 +156,27 @@ mrpt::serialization::CSerializable::Ptr RawlogScanSource::readObject() {
     }
 }
 
+void RawlogScanSource::checkFinite(const mrpt::poses::CPose2D& pose, const char* className) const {
+    if (!(std::isfinite(pose.x()) && std::isfinite(pose.y()) && std::isfinite(pose.phi()))) {
+        throw InputError(path_, "object #" + std::to_string(objectsRead_ - 1) + ", a " + className +
+                                    ": the odometry pose is not finite (" + pose.asString() + ")");
+    }
+}
+
 void RawlogScanSource::addScan(const mrpt::obs::CObservation2DRangeScan::Ptr& scan) {
     if (!options_.scanLabel.empty() && scan->sensorLabel != options_.scanLabel)
         return;
+    // A NaN, infinite or negative distance marked valid is corrupt data, as in a CARMEN log:
+    // MRPT serializes it without complaint, and the grid's insertion asserts on it later.
+    for (std::size_t i = 0; i < scan->getScanSize(); ++i) {
+        const float r = scan->getScanRange(i);
+        if (scan->getScanRangeValidity(i) && !(std::isfinite(r) && r >= 0)) {
+            throw InputError(path_, "object #" + std::to_string(objectsRead_ - 1) +
+                                        ", a CObservation2DRangeScan: reading " +
+                                        std::to_string(i) + " is " + std::to_string(r) +
+                                        ", marked valid");
+        }
+    }
     pending_.push_back({scan, accumulatedActions_, nullptr, false});
 }
 
@@ -190,6 +209,7 @@ void RawlogScanSource::consume(const mrpt::serialization::CSerializable::Ptr& ob
             movement->estimationMethod == CActionRobotMovement2D::emOdometry
                 ? movement->rawOdometryIncrementReading
                 : movement->poseChange->getMeanVal();
+        checkFinite(increment, "CActionCollection");
         accumulatedActions_ = accumulatedActions_ ? *accumulatedActions_ + increment : increment;
     } else if (const auto frame = std::dynamic_pointer_cast<CSensoryFrame>(object)) {
         for (const auto& observation : *frame)
@@ -205,6 +225,7 @@ void RawlogScanSource::consumeObservation(const mrpt::obs::CObservation::Ptr& ob
     if (auto scan = std::dynamic_pointer_cast<CObservation2DRangeScan>(observation)) {
         addScan(scan);
     } else if (const auto odometry = std::dynamic_pointer_cast<CObservationOdometry>(observation)) {
+        checkFinite(odometry->odometry, "CObservationOdometry");
         if (format_ == LaserLogFormat::RawlogObservations) {
             odometry_.push_back({mrpt::Clock::toDouble(odometry->timestamp), odometry->odometry});
         }

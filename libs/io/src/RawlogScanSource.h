@@ -49,6 +49,8 @@ class RawlogScanSource : public ScanSource {
     std::string position() const;
     InputError objectError(const std::string& className, const std::string& cause) const;
     InputError unregisteredClassError(const std::string& className) const;
+    /// Throws InputError naming the object just read when `pose` (odometry) is not finite.
+    void checkFinite(const mrpt::poses::CPose2D& pose, const char* className) const;
     void addScan(const mrpt::obs::CObservation2DRangeScan::Ptr& scan);
     void consumeObservation(const mrpt::obs::CObservation::Ptr& observation);
     void attachFeatures(const mrpt::obs::CObservation::Ptr& features);

@@ -6,6 +6,7 @@
 #include <toposlam/cli/CommandLine.h>
 #include <toposlam/cli/MapReadingArgs.h>
 #include <toposlam/cli/NumberArg.h>
+#include <toposlam/io/GridMapIO.h>
 #include <toposlam/io/LogConversion.h>
 #include <toposlam/io/MapConversion.h>
 #include <toposlam/io/ProgressDisplay.h>
@@ -104,10 +105,13 @@ Arguments::Arguments()
                   false, "", "x,y,yaw", cmd),
       maxScans("", "max-scans", "Convert only the first N scans. Default: 0 = all", 0,
                cli::NumberRange<std::size_t>::nonNegative(1000000000), "N", cmd),
-      resolution("", "resolution",
-                 "Maps: cell size in m for an input image (overrides its .yaml sidecar). "
-                 "Default: the sidecar's, else 0.05",
-                 0.05, cli::NumberRange<double>::positive(100), "m", cmd),
+      resolution(
+          "", "resolution",
+          "Maps: cell size in m for an input image (overrides its .yaml sidecar). "
+          "Default: the sidecar's, else 0.05",
+          0.05,
+          cli::NumberRange<double>::closed(toposlam::io::kMinCellSize, toposlam::io::kMaxCellSize),
+          "m", cmd),
       origin("", "origin",
              "Maps: world position x,y (m) of the lower-left corner of an input image "
              "(overrides its sidecar). Default: the sidecar's, else 0,0",

@@ -92,7 +92,9 @@ int run(int argc, char** argv) {
         "", "resolution",
         "Cell size in m of a bare input image (overrides its .yaml sidecar). "
         "Default: the sidecar's, else 0.05",
-        0.05, cli::NumberRange<double>::positive(100), "m", cmd);
+        0.05,
+        cli::NumberRange<double>::closed(toposlam::io::kMinCellSize, toposlam::io::kMaxCellSize),
+        "m", cmd);
     TCLAP::ValueArg<std::string> origin(
         "", "origin",
         "World x,y (m) of the lower-left corner of a bare input image. Default: "

@@ -184,7 +184,7 @@ struct Arguments {
         "resolution",
         "Image maps without metadata: metres per pixel. Default: 0.05.",
         0.05,
-        cli::NumberRange<double>::positive(100),
+        cli::NumberRange<double>::closed(io::kMinCellSize, io::kMaxCellSize),
         "m",
         cmd};
     TCLAP::ValueArg<std::string> originArg{

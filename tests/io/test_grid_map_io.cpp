@@ -271,6 +271,18 @@ TEST(GridMapIO, BadInputIsReportedWithTheFileName) {
               std::string::npos);
     EXPECT_NE(loadError(dir.file("unknown.pgm"), GridMapGeometry{0.0, 0, 0}).find("resolution"),
               std::string::npos);
+    // A cell size the grid's float cannot hold (1e-300 becomes 0), an origin beyond any map.
+    writeText(dir.file("tiny.yaml"),
+              "image: unknown.pgm\nresolution: 1e-300\norigin: [0, 0, 0]\n"
+              "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n");
+    EXPECT_NE(loadError(dir.file("tiny.yaml"))
+                  .find("tiny.yaml: resolution 1e-300 m is out of range: a number in [0.001, 100]"),
+              std::string::npos);
+    writeText(dir.file("far.yaml"),
+              "image: unknown.pgm\nresolution: 0.05\norigin: [1e300, 0, 0]\n"
+              "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n");
+    EXPECT_NE(loadError(dir.file("far.yaml")).find("far.yaml: origin 1e+300, 0 is out of range"),
+              std::string::npos);
 }
 
 TEST(GridMapIO, SaveIsAtomicAndRejectsUnknownFormats) {

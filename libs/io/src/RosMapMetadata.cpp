@@ -1,5 +1,6 @@
 #include "RosMapMetadata.h"
 
+#include <toposlam/io/GridMapIO.h>
 #include <toposlam/io/InputError.h>
 #include <yaml-cpp/yaml.h>
 
@@ -20,6 +21,13 @@ std::string shortest(double v) {
     // Limits are floats in COccupancyGridMap2D: printing the float keeps "-10.025" readable.
     std::array<char, 32> buf{};
     const auto res = std::to_chars(buf.data(), buf.data() + buf.size(), static_cast<float>(v));
+    return std::string(buf.data(), res.ptr);
+}
+
+// A value out of range, as written (no float rounding: 1e-300 is not 0).
+std::string asWritten(double v) {
+    std::array<char, 32> buf{};
+    const auto res = std::to_chars(buf.data(), buf.data() + buf.size(), v);
     return std::string(buf.data(), res.ptr);
 }
 
@@ -91,14 +99,21 @@ RosMapMetadata readRosMapMetadata(const std::string& yamlPath) {
     if (meta.image.empty())
         throw InputError(yamlPath, "key 'image' is empty");
     meta.resolution = number(required("resolution"), "resolution");
-    if (!(meta.resolution > 0))
-        throw InputError(yamlPath, "resolution must be > 0");
+    // The grid keeps it as a float, and a cell under a millimetre is no map anyone drew.
+    if (!(meta.resolution >= kMinCellSize && meta.resolution <= kMaxCellSize))
+        throw InputError(yamlPath, "resolution " + asWritten(meta.resolution) +
+                                       " m is out of range: a number in [0.001, 100]");
     const YAML::Node origin = required("origin");
     if (!origin.IsSequence() || origin.size() != 3)
         throw InputError(yamlPath, "origin must be [x, y, yaw]");
     meta.originX = number(origin[0], "origin");
     meta.originY = number(origin[1], "origin");
     meta.originYaw = number(origin[2], "origin");
+    if (std::abs(meta.originX) > kMaxMapOrigin || std::abs(meta.originY) > kMaxMapOrigin) {
+        throw InputError(yamlPath, "origin " + asWritten(meta.originX) + ", " +
+                                       asWritten(meta.originY) +
+                                       " is out of range: each within +-1e6 m");
+    }
     if (meta.originYaw != 0.0) {
         throw InputError(yamlPath, "origin yaw " + shortest(meta.originYaw) +
                                        " is not supported (only axis-aligned maps, yaw 0)");

@@ -51,6 +51,12 @@ namespace toposlam::io {
 /// 5 cm is a few million). Checked before the cells are allocated.
 constexpr unsigned long long kMaxGridMapCells = 1ULL << 28;
 
+/// Cell sizes (m) a map may have: grids keep the resolution as a float, and a cell under a
+/// millimetre is no map anyone drew (a 1e-300 m cell became 0 and failed an MRPT assertion).
+constexpr double kMinCellSize = 0.001, kMaxCellSize = 100;
+/// Largest |x| or |y| (m) of a map's origin.
+constexpr double kMaxMapOrigin = 1e6;
+
 /// p(free) above which a pixel of a drawn or scanned floor plan read as p(free) = grey / 255 is
 /// free: grey >= 250 (249 / 255 = 0.976, 250 / 255 = 0.980), the reading of Bormann et al.'s
 /// room segmentation benchmark. Every app that reads a map as a drawn plan uses it (--drawn,

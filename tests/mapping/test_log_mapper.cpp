@@ -17,7 +17,11 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <map>
+#include <regex>
+#include <utility>
+#include <vector>
 
 #include "SimulatedDrive.h"
 #include "TestSupport.h"
@@ -207,6 +211,42 @@ TEST(LogMapper, MapsWithOneLaserOfSeveral) {
 TEST(LogMapper, MissingLogIsAnInputError) {
     const mrpt::config::CConfigFile ini(test::configIni("toposlam-slam.ini"));
     EXPECT_THROW(mapping::mapLog("/nonexistent/log.rawlog", ini), io::InputError);
+}
+
+// The icp engine's [ICP] and [MappingApplication] keys are MRPT's, which reads them unchecked:
+// maxIterations = -5 became 4294967291 iterations, a run that never ended.
+TEST(LogMapper, IcpEngineKeysOutOfRangeAreConfigErrors) {
+    test::TempDir dir;
+    writeLog(dir.file("sim.rawlog"));
+    std::ifstream in(test::configIni("toposlam-slam.ini"));
+    const std::string shipped((std::istreambuf_iterator<char>(in)), {});
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"[ICP]", "maxIterations = -5"},
+        {"[ICP]", "thresholdDist = 0"},
+        {"[ICP]", "ALFA = 1.5"},
+        {"[MappingApplication]", "minICPgoodnessToAccept = 7"},
+        {"[MappingApplication]", "insertionLinDistance = nan"}};
+    for (const auto& [section, line] : cases) {
+        SCOPED_TRACE(line);
+        // The shipped ini with the engine and the key changed.
+        const std::string key = line.substr(0, line.find(' '));
+        std::string text =
+            std::regex_replace(shipped, std::regex("\nengine = graph"), "\nengine = icp");
+        const std::regex keyLine("\n" + key + " = [^\n]*");
+        ASSERT_TRUE(std::regex_search(text, keyLine)) << key;
+        text = std::regex_replace(text, keyLine, "\n" + line);
+        std::ofstream(dir.file("icp.ini")) << text;
+        const mrpt::config::CConfigFile ini(dir.file("icp.ini"));
+        try {
+            mapping::mapLog(dir.file("sim.rawlog"), ini);
+            ADD_FAILURE() << "accepted";
+        } catch (const std::invalid_argument& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find("icp.ini: " + section + " " + key + " = "), std::string::npos)
+                << what;
+            EXPECT_NE(what.find("out of range"), std::string::npos) << what;
+        }
+    }
 }
 
 TEST(LogMapper, AppWritesOutputsAndRejectsBadInput) {

@@ -1,9 +1,66 @@
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/poses/CPose3DPDF.h>
 #include <toposlam/mapping/IcpSlam.h>
 
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
 namespace toposlam::mapping {
+
+namespace {
+
+// MRPT reads these sections unchecked: maxIterations = -5 becomes 4294967291 iterations (a run
+// that never ends), a threshold of 0 or "abc" (read as 0) matches nothing. Checked here, naming
+// the file, the section and the key.
+class IcpKeyCheck {
+  public:
+    IcpKeyCheck(const mrpt::config::CConfigFileBase& ini, std::string section)
+        : section_(std::move(section)) {
+        if (const auto* file = dynamic_cast<const mrpt::config::CConfigFile*>(&ini))
+            file_ = file->getAssociatedFile() + ": ";
+    }
+    void inRange(const char* key, double value, double min, double max, bool excludeMin) const {
+        const bool ok =
+            std::isfinite(value) && (excludeMin ? value > min : value >= min) && value <= max;
+        if (!ok) {
+            std::ostringstream what;
+            what.precision(12);
+            what << file_ << "[" << section_ << "] " << key << " = " << value
+                 << " is out of range: a number in " << (excludeMin ? "(" : "[") << min << ", "
+                 << max << "]";
+            throw std::invalid_argument(what.str());
+        }
+    }
+
+  private:
+    std::string section_, file_;
+};
+
+void checkIcpKeys(const mrpt::config::CConfigFileBase& ini, const std::string& mappingSection,
+                  const std::string& icpSection, const mrpt::slam::CMetricMapBuilderICP& b) {
+    const IcpKeyCheck icp(ini, icpSection), mapping(ini, mappingSection);
+    const auto& p = b.ICP_params;
+    icp.inRange("maxIterations", p.maxIterations, 1, 100000, false);
+    icp.inRange("thresholdDist", p.thresholdDist, 0, 1000, true);
+    icp.inRange("thresholdAng", p.thresholdAng, 0, M_PI, false);
+    icp.inRange("ALFA", p.ALFA, 0, 1, true);
+    icp.inRange("smallestThresholdDist", p.smallestThresholdDist, 0, 1000, true);
+    icp.inRange("minAbsStep_trans", p.minAbsStep_trans, 0, 1000, false);
+    icp.inRange("minAbsStep_rot", p.minAbsStep_rot, 0, M_PI, false);
+    icp.inRange("corresponding_points_decimation", p.corresponding_points_decimation, 1, 100000,
+                false);
+    const auto& o = b.ICP_options;
+    mapping.inRange("insertionLinDistance", o.insertionLinDistance, 0, 1000, false);
+    mapping.inRange("insertionAngDistance", o.insertionAngDistance, 0, 2 * M_PI, false);
+    mapping.inRange("localizationLinDistance", o.localizationLinDistance, 0, 1000, false);
+    mapping.inRange("localizationAngDistance", o.localizationAngDistance, 0, 2 * M_PI, false);
+    mapping.inRange("minICPgoodnessToAccept", o.minICPgoodnessToAccept, 0, 1, false);
+}
+
+}  // namespace
 
 IcpSlam::IcpSlam(const mrpt::config::CConfigFileBase& ini, const std::string& mappingSection,
                  const std::string& icpSection) {
@@ -12,6 +69,7 @@ IcpSlam::IcpSlam(const mrpt::config::CConfigFileBase& ini, const std::string& ma
         mappingSection, "verbosity", mrpt::system::LVL_ERROR));
     builder_.ICP_options.loadFromConfigFile(ini, mappingSection);
     builder_.ICP_params.loadFromConfigFile(ini, icpSection);
+    checkIcpKeys(ini, mappingSection, icpSection, builder_);
     builder_.initialize();  // builds the maps listed in the ini; throws if there is none usable
 }
 

@@ -266,6 +266,11 @@ int run(int argc, char** argv) {
     Arguments a;
     if (const auto exitCode = cli::parseCommandLine(a.cmd, argc, argv))
         return *exitCode;
+    cli::requireExtension({"-o", a.output.getValue()}, {".rawlog", ".rawlog.gz"});
+    cli::requireOutputsOfTheirOwn({{"", a.input.getValue()},
+                                   {"--config", a.config.getValue()},
+                                   {"--poses", a.poses.getValue()}},
+                                  {{"-o", a.output.getValue()}});
 
     std::unique_ptr<mrpt::config::CConfigFile> ini;
     if (a.config.isSet()) {

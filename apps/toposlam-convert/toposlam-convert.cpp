@@ -164,6 +164,7 @@ io::LogConversionOptions logOptions(Arguments& a) {
 }
 
 int convertLog(Arguments& a) {
+    cli::requireExtension({"-o", a.output.getValue()}, {".rawlog", ".rawlog.gz"});
     io::LogConversionOptions options = logOptions(a);
     const std::string& input = a.input.getValue();
     io::ProgressDisplay progress("reading " + std::filesystem::path(input).filename().string(),
@@ -187,6 +188,10 @@ int run(int argc, char** argv) {
     Arguments arguments;
     if (const auto exitCode = cli::parseCommandLine(arguments.cmd, argc, argv))
         return *exitCode;
+    cli::requireOutputsOfTheirOwn(
+        {{"", arguments.input.getValue()}},
+        {{"-o", arguments.output.getValue()},
+         {"--odometry-trajectory", arguments.odometryTrajectory.getValue()}});
     // Rawlogs may hold TopoSLAM's own objects (scan features, ...): make them readable.
     classes::registerTopoSlamClasses();
     if (io::isGridMapPath(arguments.input.getValue()))

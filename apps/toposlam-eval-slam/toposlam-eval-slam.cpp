@@ -183,6 +183,17 @@ int run(int argc, char** argv) {
     request.rawlog = rawlog.getValue();
     request.scanStamps = scanStamps.getValue();
     request.keepEstimates = plot.isSet();
+    cli::requireExtension({"--plot", plot.getValue()}, {".png"});
+    std::vector<cli::FileArgument> inputs = {{"--relations", request.relationsFile},
+                                             {"--ground-truth", request.groundTruthFile},
+                                             {"--mounting-from", request.mountingLog},
+                                             {"--rawlog", request.rawlog},
+                                             {"--scan-stamps", request.scanStamps}};
+    for (const auto& t : request.trajectories)
+        inputs.push_back({"", t.file});
+    cli::requireOutputsOfTheirOwn(inputs, {{"--write-relations", writeRelations.getValue()},
+                                           {"--plot", plot.getValue()},
+                                           {"--json", json.getValue()}});
     return evaluate(request, {writeRelations.getValue(), plot.getValue(), json.getValue()});
 }
 

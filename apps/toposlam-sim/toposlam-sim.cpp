@@ -277,6 +277,11 @@ SimulationJob simulationJob(Arguments& a) {
     job.rawlogPath = a.outArg.getValue();
     job.groundTruthPath = a.gtArg.isSet() ? a.gtArg.getValue() : groundTruthPathFor(job.rawlogPath);
     job.plotPath = a.plotArg.getValue();
+    cli::requireExtension({"-o", job.rawlogPath}, {".rawlog", ".rawlog.gz"});
+    cli::requireExtension({"--plot", job.plotPath}, {".png"});
+    cli::requireOutputsOfTheirOwn(
+        {{"", job.mapPath}, {"--poses", job.posesPath}, {"-c", a.configArg.getValue()}},
+        {{"-o", job.rawlogPath}, {"--gt", job.groundTruthPath}, {"--plot", job.plotPath}});
     if (a.resolutionArg.isSet() || a.originArg.isSet()) {
         job.imageGeometry = io::GridMapGeometry{};
         job.imageGeometry->resolution = a.resolutionArg.getValue();

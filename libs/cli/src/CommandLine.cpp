@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -104,6 +105,63 @@ std::vector<double> parseNumberList(const std::string& text, std::size_t count,
                          " comma-separated numbers, got '" + text + "'");
     }
     return values;
+}
+
+namespace {
+
+bool sameFile(const std::string& a, const std::string& b) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::exists(a, ec) && fs::exists(b, ec)) {
+        const bool same = fs::equivalent(a, b, ec);
+        if (!ec)
+            return same;
+    }
+    const fs::path ca = fs::weakly_canonical(fs::absolute(a, ec), ec);
+    const fs::path cb = fs::weakly_canonical(fs::absolute(b, ec), ec);
+    return ca == cb;
+}
+
+std::string named(const FileArgument& f) {
+    return (f.option.empty() ? std::string("'") : f.option + " '") + f.path + "'";
+}
+
+}  // namespace
+
+void requireOutputsOfTheirOwn(const std::vector<FileArgument>& inputs,
+                              const std::vector<FileArgument>& outputs) {
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+        const FileArgument& out = outputs[i];
+        if (out.path.empty())
+            continue;
+        for (const FileArgument& in : inputs) {
+            if (!in.path.empty() && sameFile(out.path, in.path)) {
+                throw UsageError(named(out) + ": the same file as the input " + named(in) +
+                                 " (it would be overwritten)");
+            }
+        }
+        for (std::size_t j = 0; j < i; ++j) {
+            if (!outputs[j].path.empty() && sameFile(out.path, outputs[j].path)) {
+                throw UsageError(named(out) + ": the same file as the output " + named(outputs[j]));
+            }
+        }
+    }
+}
+
+void requireExtension(const FileArgument& file, const std::vector<std::string>& extensions) {
+    if (file.path.empty())
+        return;
+    std::string lower = file.path;
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    for (const std::string& e : extensions) {
+        if (lower.size() > e.size() && lower.compare(lower.size() - e.size(), e.size(), e) == 0)
+            return;
+    }
+    std::string list;
+    for (std::size_t i = 0; i < extensions.size(); ++i)
+        list += (i == 0 ? "" : i + 1 == extensions.size() ? " or " : ", ") + extensions[i];
+    throw UsageError(named(file) + ": must end in " + list);
 }
 
 int runReportingErrors(int (*run)(int, char**), int argc, char** argv) {

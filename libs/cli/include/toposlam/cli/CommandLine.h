@@ -26,6 +26,23 @@ std::vector<double> parseNumberList(
     const std::string& text, std::size_t count, const std::string& option,
     const NumberRange<double>& range = NumberRange<double>::closed(-1e6, 1e6));
 
+/// A file named on the command line: the option that named it ("" for a positional argument)
+/// and its path ("": not given).
+struct FileArgument {
+    std::string option, path;
+};
+/// Throws UsageError unless every output given is a file of its own: not one of the inputs
+/// (toposlam-convert a.clf -o a.clf replaced the log with its conversion) and not another
+/// output (one would silently replace the other). Paths are compared as the files they name:
+/// "a.clf", "./a.clf" and a link to it are one file.
+void requireOutputsOfTheirOwn(const std::vector<FileArgument>& inputs,
+                              const std::vector<FileArgument>& outputs);
+
+/// Throws UsageError unless `file` (when given) ends with one of `extensions` (".png",
+/// ".rawlog.gz"; case-insensitive): a rawlog written as "map.png", or a plot as "p.txt",
+/// fails late or is no file of the kind its name says.
+void requireExtension(const FileArgument& file, const std::vector<std::string>& extensions);
+
 /// An app's main(): returns run(argc, argv). An exception escaping it is printed to stderr as
 /// "error: <what>" and gives the exit status: 2 for a UsageError (bad command line), 1 for
 /// anything else (bad input names its file, see io::InputError).

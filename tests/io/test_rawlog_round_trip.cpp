@@ -249,6 +249,15 @@ TEST(RawlogBadInput, MissingEmptyGarbage) {
     writeBytes(dir.file("garbage.rawlog"), std::string("\x01\x02\x03\xff\xfe garbage", 13));
     EXPECT_NE(readError(dir.file("garbage.rawlog")).find("neither a CARMEN log nor an MRPT rawlog"),
               std::string::npos);
+    // A PNG: MRPT reads its first bytes as a class name, NUL and control characters included;
+    // shown escaped (a NUL cut the message short).
+    writeBytes(dir.file("image.rawlog"),
+               std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\0\0\x01\0\0\0\x01", 24));
+    const std::string png = readError(dir.file("image.rawlog"));
+    EXPECT_NE(png.find("image.rawlog: neither a CARMEN log nor an MRPT rawlog"), std::string::npos)
+        << png;
+    EXPECT_EQ(png.find('\0'), std::string::npos) << png;
+    EXPECT_EQ(png.find('\r'), std::string::npos) << png;
 }
 
 TEST(RawlogBadInput, TruncatedStreamIsAnErrorNotAnEnd) {

@@ -10,6 +10,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 
 #include "MrptErrorText.h"
@@ -119,7 +120,27 @@ mrpt::serialization::CSerializable::Ptr RawlogScanSource::deserialize(const Obje
 }
 
 InputError RawlogScanSource::unregisteredClassError(const std::string& className) const {
-    return InputError(path_, position() + ": class '" + className +
+    // A class name is an identifier; anything else read where one should be (the bytes of a
+    // PNG, a NUL that would cut the message short) is shown escaped, and at most 60 of them.
+    std::string shown;
+    for (const char c : className.substr(0, 60)) {
+        if (std::isprint(static_cast<unsigned char>(c)) != 0) {
+            shown += c;
+        } else {
+            char hex[5];
+            std::snprintf(hex, sizeof hex, "\\x%02x", static_cast<unsigned char>(c));
+            shown += hex;
+        }
+    }
+    if (className.size() > 60)
+        shown += "...";
+    // The first object of a file that is no rawlog at all (an image, a text file).
+    if (objectsRead_ == 0 && !mrpt::rtti::findRegisteredClass(className))
+        return InputError(path_,
+                          "neither a CARMEN log nor an MRPT rawlog (the first object's "
+                          "class would be '" +
+                              shown + "')");
+    return InputError(path_, position() + ": class '" + shown +
                                  "' is not registered with MRPT (it is defined by a library or "
                                  "plugin this program does not load); the rest of the rawlog "
                                  "cannot be read");

@@ -122,6 +122,9 @@ TEST(AtomicFile, ATruncatedPngIsNotRenamedIntoPlace) {
     writeFileAtomically(out, [](const std::string& tmp) { writeBytes(tmp, kPng, kPng.size()); });
     EXPECT_EQ(fs::file_size(out), kPng.size());
     fs::remove(out);
+    expectRefused(
+        dir, dir.file("ROOMS.PNG"), [&](const std::string& tmp) { writeBytes(tmp, kPng, 40); },
+        "truncated");
     for (const std::size_t cut : {std::size_t{0}, std::size_t{40}, kPng.size() - 1}) {
         SCOPED_TRACE(cut);
         expectRefused(

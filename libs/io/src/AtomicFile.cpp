@@ -6,6 +6,7 @@
 
 #include <array>
 #include <atomic>
+#include <cctype>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -33,9 +34,17 @@ std::string temporaryNameFor(const std::string& path) {
     return (p.parent_path() / tmp).string();
 }
 
-bool endsWith(const std::string& s, const char* suffix) {
+// Case-insensitive: "MAP.PNG" is a PNG too.
+bool hasExtension(const std::string& s, const char* suffix) {
     const std::size_t n = std::strlen(suffix);
-    return s.size() >= n && s.compare(s.size() - n, n, suffix) == 0;
+    if (s.size() < n)
+        return false;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (std::tolower(static_cast<unsigned char>(s[s.size() - n + i])) !=
+            std::tolower(static_cast<unsigned char>(suffix[i])))
+            return false;
+    }
+    return true;
 }
 
 // A PNG ends with its IEND chunk (empty, so its length and CRC are fixed).
@@ -74,9 +83,11 @@ bool gzipIsComplete(const std::string& file) {
     return n == 0 && code == Z_OK;
 }
 
+// No block left (root's reserve included). Filesystems that report no blocks at all (some FUSE
+// and pseudo filesystems) are not judged.
 bool deviceFull(const std::string& file) {
     struct statvfs device {};
-    return ::statvfs(file.c_str(), &device) == 0 && device.f_bfree == 0;
+    return ::statvfs(file.c_str(), &device) == 0 && device.f_blocks > 0 && device.f_bfree == 0;
 }
 
 // cv::imwrite and MRPT's gzip stream close their files without checking, so a full disk leaves
@@ -84,9 +95,9 @@ bool deviceFull(const std::string& file) {
 void checkWritten(const std::string& tmp, const std::string& path) {
     if (deviceFull(tmp))
         throw std::runtime_error(path + ": cannot write the file (no space left on the device)");
-    if (endsWith(path, ".png") && !pngIsComplete(tmp))
+    if (hasExtension(path, ".png") && !pngIsComplete(tmp))
         throw std::runtime_error(path + ": cannot write the file (the PNG came out truncated)");
-    if (endsWith(path, ".gz") && !gzipIsComplete(tmp))
+    if (hasExtension(path, ".gz") && !gzipIsComplete(tmp))
         throw std::runtime_error(path +
                                  ": cannot write the file (the gzip data came out truncated)");
 }

@@ -1,9 +1,11 @@
 #include <mrpt/config/CConfigFile.h>
+#include <mrpt/core/bits_math.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/poses/CPose3DPDF.h>
 #include <toposlam/mapping/IcpSlam.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -23,8 +25,9 @@ class IcpKeyCheck {
             file_ = file->getAssociatedFile() + ": ";
     }
     void inRange(const char* key, double value, double min, double max, bool excludeMin) const {
-        const bool ok =
-            std::isfinite(value) && (excludeMin ? value > min : value >= min) && value <= max;
+        // A hair of slack at the top: 360 degrees read and converted back may exceed 360.
+        const bool ok = std::isfinite(value) && (excludeMin ? value > min : value >= min) &&
+                        value <= max + 1e-9 * std::max(1.0, std::abs(max));
         if (!ok) {
             std::ostringstream what;
             what.precision(12);
@@ -45,7 +48,8 @@ void checkIcpKeys(const mrpt::config::CConfigFileBase& ini, const std::string& m
     const auto& p = b.ICP_params;
     icp.inRange("maxIterations", p.maxIterations, 1, 100000, false);
     icp.inRange("thresholdDist", p.thresholdDist, 0, 1000, true);
-    icp.inRange("thresholdAng", p.thresholdAng, 0, M_PI, false);
+    // Keys MRPT reads in degrees are checked (and reported) in degrees.
+    icp.inRange("thresholdAng_DEG", mrpt::RAD2DEG(p.thresholdAng), 0, 180, false);
     icp.inRange("ALFA", p.ALFA, 0, 1, true);
     icp.inRange("smallestThresholdDist", p.smallestThresholdDist, 0, 1000, true);
     icp.inRange("minAbsStep_trans", p.minAbsStep_trans, 0, 1000, false);
@@ -54,9 +58,10 @@ void checkIcpKeys(const mrpt::config::CConfigFileBase& ini, const std::string& m
                 false);
     const auto& o = b.ICP_options;
     mapping.inRange("insertionLinDistance", o.insertionLinDistance, 0, 1000, false);
-    mapping.inRange("insertionAngDistance", o.insertionAngDistance, 0, 2 * M_PI, false);
+    mapping.inRange("insertionAngDistance", mrpt::RAD2DEG(o.insertionAngDistance), 0, 360, false);
     mapping.inRange("localizationLinDistance", o.localizationLinDistance, 0, 1000, false);
-    mapping.inRange("localizationAngDistance", o.localizationAngDistance, 0, 2 * M_PI, false);
+    mapping.inRange("localizationAngDistance", mrpt::RAD2DEG(o.localizationAngDistance), 0, 360,
+                    false);
     mapping.inRange("minICPgoodnessToAccept", o.minICPgoodnessToAccept, 0, 1, false);
 }
 

@@ -134,6 +134,7 @@ int run(int argc, char** argv) {
         }
     }
 
+    cli::requireWritableOutputFolder({"-o", output.getValue()});
     const auto result = rooms::runRoomSegmentationJob(job);
     rooms::writeRoomSegmentationFiles(result, output.getValue(), scale.getValue());
     if (!quiet.getValue()) {

@@ -41,6 +41,8 @@ int run(int argc, char** argv) {
     if (const auto exitCode = toposlam::cli::parseCommandLine(cmd, argc, argv))
         return *exitCode;
     toposlam::classes::registerTopoSlamClasses();  // logs may hold TopoSLAM's objects
+    toposlam::cli::requireWritableOutputFolder(
+        {"-o", outArg.getValue()});  // before the run, not after
 
     // A file that is no .ini file at all is an error here, not defaults (config/IniFile.h).
     const auto ini = toposlam::config::openIniFile(configArg.getValue());

@@ -65,3 +65,21 @@ TEST(OutputFiles, ExtensionsAreRequiredCaseInsensitively) {
     }
     EXPECT_THROW(requireExtension({"--plot", ".png"}, {".png"}), UsageError);  // no name
 }
+
+TEST(OutputFiles, TheOutputFolderIsCheckedBeforeTheWork) {
+    toposlam::test::TempDir dir;
+    EXPECT_NO_THROW(requireWritableOutputFolder({"-o", dir.file("a/b")}));
+    EXPECT_FALSE(fs::exists(dir.file("a"))) << "nothing is created";
+    EXPECT_NO_THROW(requireWritableOutputFolder({"-o", dir.path()}));  // already there
+    std::ofstream(dir.file("file")) << "x";
+    try {
+        requireWritableOutputFolder({"-o", dir.file("file/out")});
+        ADD_FAILURE() << "a folder under a file was accepted";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find(dir.file("file/out") + ": cannot create the output"),
+                  std::string::npos)
+            << e.what();
+    }
+    EXPECT_THROW(requireWritableOutputFolder({"-o", dir.file("file")}), std::runtime_error);
+    EXPECT_THROW(requireWritableOutputFolder({"-o", ""}), UsageError);
+}

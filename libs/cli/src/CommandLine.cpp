@@ -1,9 +1,12 @@
 #include <toposlam/cli/CommandLine.h>
 #include <toposlam/cli/UsageError.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -162,6 +165,26 @@ void requireExtension(const FileArgument& file, const std::vector<std::string>& 
     for (std::size_t i = 0; i < extensions.size(); ++i)
         list += (i == 0 ? "" : i + 1 == extensions.size() ? " or " : ", ") + extensions[i];
     throw UsageError(named(file) + ": must end in " + list);
+}
+
+void requireWritableOutputFolder(const FileArgument& folder) {
+    namespace fs = std::filesystem;
+    if (folder.path.empty())
+        throw UsageError(folder.option + ": the output folder is empty");
+    // Nothing is created here (a run that fails later leaves nothing behind): the folder, or
+    // the nearest of its parents that exists, must be a folder the app can make files in.
+    std::error_code ec;
+    fs::path existing = fs::absolute(folder.path, ec);
+    while (!fs::exists(existing, ec) && existing.has_relative_path())
+        existing = existing.parent_path();
+    if (!fs::is_directory(existing, ec)) {
+        throw std::runtime_error(folder.path + ": cannot create the output folder (" +
+                                 existing.string() + " is not a folder)");
+    }
+    if (::access(existing.c_str(), W_OK | X_OK) != 0) {
+        throw std::runtime_error(folder.path + ": cannot create the output folder (" +
+                                 existing.string() + ": " + std::strerror(errno) + ")");
+    }
 }
 
 int runReportingErrors(int (*run)(int, char**), int argc, char** argv) {

@@ -43,6 +43,12 @@ void requireOutputsOfTheirOwn(const std::vector<FileArgument>& inputs,
 /// fails late or is no file of the kind its name says.
 void requireExtension(const FileArgument& file, const std::vector<std::string>& extensions);
 
+/// Throws, before an app does its work, unless the output folder `folder` names can be made
+/// and written: it, or the nearest of its parents that exists, is a folder the app may create
+/// files in (std::runtime_error "<folder>: cannot create the output folder (...)": exit 1; an
+/// empty path is a UsageError). Nothing is created, so a run that fails later leaves nothing.
+void requireWritableOutputFolder(const FileArgument& folder);
+
 /// An app's main(): returns run(argc, argv). An exception escaping it is printed to stderr as
 /// "error: <what>" and gives the exit status: 2 for a UsageError (bad command line), 1 for
 /// anything else (bad input names its file, see io::InputError).

@@ -1,5 +1,6 @@
 #include <toposlam/cli/CommandLine.h>
 #include <toposlam/cli/UsageError.h>
+#include <toposlam/io/FileExtension.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -154,11 +155,8 @@ void requireOutputsOfTheirOwn(const std::vector<FileArgument>& inputs,
 void requireExtension(const FileArgument& file, const std::vector<std::string>& extensions) {
     if (file.path.empty())
         return;
-    std::string lower = file.path;
-    std::transform(lower.begin(), lower.end(), lower.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     for (const std::string& e : extensions) {
-        if (lower.size() > e.size() && lower.compare(lower.size() - e.size(), e.size(), e) == 0)
+        if (io::hasExtension(file.path, e))
             return;
     }
     std::string list;

@@ -9,6 +9,7 @@
 #include <toposlam/features/CornerBearingRange.h>
 #include <toposlam/features/LogAnnotation.h>
 #include <toposlam/io/AtomicFile.h>
+#include <toposlam/io/FileExtension.h>
 #include <toposlam/io/InputError.h>
 
 #include <chrono>
@@ -59,7 +60,7 @@ mrpt::obs::CActionRobotMovement2D::TMotionModelOptions MotionNoise::toMrpt() con
 namespace {
 
 std::unique_ptr<mrpt::io::CStream> openOutput(const std::string& path, const std::string& tmp) {
-    const bool gz = path.size() >= 3 && path.compare(path.size() - 3, 3, ".gz") == 0;
+    const bool gz = io::hasExtension(path, ".gz");
     if (gz) {
         auto f = std::make_unique<mrpt::io::CFileGZOutputStream>();
         if (!f->open(tmp))

@@ -1,4 +1,5 @@
 #include <toposlam/io/AtomicFile.h>
+#include <toposlam/io/FileExtension.h>
 
 #include <sys/statvfs.h>
 #include <unistd.h>
@@ -6,8 +7,6 @@
 
 #include <array>
 #include <atomic>
-#include <cctype>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -32,19 +31,6 @@ std::string temporaryNameFor(const std::string& path) {
     const std::string tmp =
         stem + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ext;
     return (p.parent_path() / tmp).string();
-}
-
-// Case-insensitive: "MAP.PNG" is a PNG too.
-bool hasExtension(const std::string& s, const char* suffix) {
-    const std::size_t n = std::strlen(suffix);
-    if (s.size() < n)
-        return false;
-    for (std::size_t i = 0; i < n; ++i) {
-        if (std::tolower(static_cast<unsigned char>(s[s.size() - n + i])) !=
-            std::tolower(static_cast<unsigned char>(suffix[i])))
-            return false;
-    }
-    return true;
 }
 
 // A PNG ends with its IEND chunk (empty, so its length and CRC are fixed).

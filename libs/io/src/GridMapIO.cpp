@@ -2,13 +2,13 @@
 #include <mrpt/io/CFileOutputStream.h>
 #include <mrpt/serialization/CArchive.h>
 #include <toposlam/io/AtomicFile.h>
+#include <toposlam/io/FileExtension.h>
 #include <toposlam/io/GridMapIO.h>
 #include <toposlam/io/InputError.h>
 #include <toposlam/io/TextFile.h>
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -35,31 +35,17 @@ namespace {
 
 enum class MapFormat { Serialized, RosYaml, Png, Pgm, OtherImage, Unknown };
 
-std::string lowercase(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return s;
-}
-
-bool endsWith(const std::string& s, const std::string& suffix) {
-    return s.size() >= suffix.size() &&
-           s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 MapFormat formatOf(const std::string& path) {
-    const std::string p = lowercase(path);
-    if (endsWith(p, ".gridmap") || endsWith(p, ".gridmap.gz"))
+    if (hasAnyExtension(path, {".gridmap", ".gridmap.gz"}))
         return MapFormat::Serialized;
-    if (endsWith(p, ".yaml") || endsWith(p, ".yml"))
+    if (hasAnyExtension(path, {".yaml", ".yml"}))
         return MapFormat::RosYaml;
-    if (endsWith(p, ".png"))
+    if (hasExtension(path, ".png"))
         return MapFormat::Png;
-    if (endsWith(p, ".pgm"))
+    if (hasExtension(path, ".pgm"))
         return MapFormat::Pgm;
-    for (const char* ext : {".bmp", ".jpg", ".jpeg", ".tif", ".tiff"}) {
-        if (endsWith(p, ext))
-            return MapFormat::OtherImage;
-    }
+    if (hasAnyExtension(path, {".bmp", ".jpg", ".jpeg", ".tif", ".tiff"}))
+        return MapFormat::OtherImage;
     return MapFormat::Unknown;
 }
 
@@ -365,7 +351,7 @@ void saveSerializedMap(const COccupancyGridMap2D& grid, const std::string& path)
                                  ": MRPT could not read this map back as .gridmap (its origin "
                                  "is not a multiple of the resolution); save it as .png or .yaml");
     }
-    const bool gz = endsWith(lowercase(path), ".gz");
+    const bool gz = hasExtension(path, ".gz");
     writeFileAtomically(path, [&](const std::string& tmp) {
         if (gz) {
             mrpt::io::CFileGZOutputStream out;
@@ -439,6 +425,10 @@ COccupancyGridMap2D loadGridMap(const std::string& path,
     if (countFreeCells(grid) == 0)
         throw InputError(path, "map has no free cells");
     return grid;
+}
+
+bool isGridMapPath(const std::string& path) {
+    return formatOf(path) != MapFormat::Unknown;
 }
 
 bool isBareMapImage(const std::string& path) {

@@ -1,22 +1,8 @@
 #include <toposlam/io/MapConversion.h>
 
-#include <algorithm>
-#include <cctype>
 #include <cstdio>
 
 namespace toposlam::io {
-
-bool isGridMapPath(const std::string& path) {
-    std::string p = path;
-    std::transform(p.begin(), p.end(), p.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    for (const std::string ext : {".gridmap", ".gridmap.gz", ".yaml", ".yml", ".png", ".pgm",
-                                  ".bmp", ".jpg", ".jpeg", ".tif", ".tiff"}) {
-        if (p.size() >= ext.size() && p.compare(p.size() - ext.size(), ext.size(), ext) == 0)
-            return true;
-    }
-    return false;
-}
 
 MapConversionSummary convertGridMap(const std::string& inputPath, const std::string& outputPath,
                                     const std::optional<GridMapGeometry>& geometry,

@@ -6,6 +6,7 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
 #include <toposlam/io/AtomicFile.h>
+#include <toposlam/io/FileExtension.h>
 #include <toposlam/io/RawlogWriter.h>
 
 #include <optional>
@@ -26,7 +27,7 @@ struct RawlogWriter::Impl {
 
     Impl(const std::string& path, RawlogFormat f) : file(path), format(f) {
         const std::string& tmp = file.temporaryPath();
-        const bool gz = path.size() >= 3 && path.compare(path.size() - 3, 3, ".gz") == 0;
+        const bool gz = hasExtension(path, ".gz");
         if (gz) {
             auto out = std::make_unique<mrpt::io::CFileGZOutputStream>();
             if (!out->open(tmp))

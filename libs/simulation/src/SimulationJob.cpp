@@ -1,3 +1,4 @@
+#include <toposlam/io/FileExtension.h>
 #include <toposlam/io/InputError.h>
 #include <toposlam/simulation/ClearanceMap.h>
 #include <toposlam/simulation/LogSimulator.h>
@@ -5,16 +6,15 @@
 #include <toposlam/simulation/TrajectoryImage.h>
 
 #include <stdexcept>
+#include <string_view>
 
 namespace toposlam::simulation {
 
 std::string groundTruthPathFor(const std::string& rawlogPath) {
     std::string stem = rawlogPath;
-    for (const std::string ext : {".gz", ".rawlog"}) {
-        if (stem.size() > ext.size() &&
-            stem.compare(stem.size() - ext.size(), ext.size(), ext) == 0) {
+    for (const std::string_view ext : {".gz", ".rawlog"}) {
+        if (io::hasExtension(stem, ext))
             stem.erase(stem.size() - ext.size());
-        }
     }
     return stem + "_gt.txt";
 }

@@ -83,6 +83,10 @@ struct GridMapGeometry {
 mrpt::maps::COccupancyGridMap2D loadGridMap(
     const std::string& path, const std::optional<GridMapGeometry>& geometry = std::nullopt);
 
+/// Whether `path` names a grid map by its extension (.gridmap, .gridmap.gz, .yaml, .yml, .png,
+/// .pgm, .bmp, .jpg, .jpeg, .tif, .tiff; any case), rather than a laser log.
+bool isGridMapPath(const std::string& path);
+
 /// True when loadGridMap reads `path` as a bare picture: an image format without the .yaml
 /// sidecar that states its geometry and how its greys are meant (see above). Such a picture
 /// may be a grid (grey = p(free)) or a drawn floor plan: see MapImageKind.h.

@@ -9,10 +9,6 @@
 
 namespace toposlam::io {
 
-/// Whether `path` names a grid map by its extension (.gridmap, .gridmap.gz, .yaml, .yml, .png,
-/// .pgm, .bmp, .jpg, .jpeg, .tif, .tiff; any case), rather than a laser log.
-bool isGridMapPath(const std::string& path);
-
 struct MapConversionSummary {
     unsigned sizeX = 0, sizeY = 0;    ///< cells
     double resolution = 0;            ///< m per cell

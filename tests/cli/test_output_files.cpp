@@ -19,12 +19,7 @@ namespace {
 
 std::string usageError(const std::vector<FileArgument>& inputs,
                        const std::vector<FileArgument>& outputs) {
-    try {
-        requireOutputsOfTheirOwn(inputs, outputs);
-    } catch (const UsageError& e) {
-        return e.what();
-    }
-    return "";
+    return toposlam::test::errorOf<UsageError>([&] { requireOutputsOfTheirOwn(inputs, outputs); });
 }
 
 }  // namespace

@@ -198,13 +198,10 @@ std::string loadError(const std::string& iniText, const std::string& section,
                       const test::TempDir& dir) {
     const std::string path = dir.file("in-process.ini");
     std::ofstream(path, std::ios::binary) << iniText;
-    try {
+    return test::errorOf<config::ConfigError>([&] {
         test::sectionStructs().at(section)()->loadFromConfigFile(*config::openIniFile(path),
                                                                  section);
-    } catch (const config::ConfigError& e) {
-        return e.what();
-    }
-    return "";
+    });
 }
 
 TEST(IniSweep, MisspelledKeysAndBadValuesAreErrorsNamingTheKey) {

@@ -22,12 +22,8 @@ std::string writeFile(const TempDir& dir, const std::string& name, const std::st
 // The InputError message of loading `text` as a relation file ("" if it loads).
 std::string loadError(const std::string& text) {
     TempDir dir;
-    try {
-        loadRelations(writeFile(dir, "bad.relations", text));
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return toposlam::test::errorOf<InputError>(
+        [&] { loadRelations(writeFile(dir, "bad.relations", text)); });
 }
 
 }  // namespace

@@ -51,12 +51,7 @@ TEST(FeatureOptions, NanNegativeAndMisspelledKeysAreErrors) {
                           const std::string& value) -> std::string {
         mrpt::config::CConfigFileMemory cfg;
         cfg.write(defaultConfigSection(method), key, value);
-        try {
-            makeFeatureExtractor(method, &cfg);
-        } catch (const ConfigError& e) {
-            return e.what();
-        }
-        return "";
+        return toposlam::test::errorOf<ConfigError>([&] { makeFeatureExtractor(method, &cfg); });
     };
     EXPECT_EQ(error("corners", "dk_th", "nan"),
               "[CornerExtractor] dk_th = nan: must be a finite number");

@@ -42,12 +42,7 @@ double beamDirection(const mrpt::obs::CObservation2DRangeScan& scan, std::size_t
 }
 
 std::string readError(const std::string& path) {
-    try {
-        LaserLogReader::readAll(path);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return toposlam::test::errorOf<InputError>([&] { LaserLogReader::readAll(path); });
 }
 
 }  // namespace

@@ -61,12 +61,7 @@ int trinaryClass(float pFree) {
 
 std::string loadError(const std::string& path,
                       const std::optional<GridMapGeometry>& geometry = std::nullopt) {
-    try {
-        loadGridMap(path, geometry);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return toposlam::test::errorOf<InputError>([&] { loadGridMap(path, geometry); });
 }
 
 void writeText(const std::string& path, const std::string& text) {

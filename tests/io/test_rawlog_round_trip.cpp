@@ -220,12 +220,7 @@ TEST(RawlogRoundTrip, ObservationsOdometryIsInterpolatedAtScanTime) {
 namespace {
 
 std::string readError(const std::string& path) {
-    try {
-        LaserLogReader::readAll(path);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return toposlam::test::errorOf<InputError>([&] { LaserLogReader::readAll(path); });
 }
 
 std::string fileBytes(const std::string& path) {

@@ -21,12 +21,7 @@ void writeText(const std::string& path, const std::string& text) {
 
 // The InputError message of loading `path`, or "" if it loads.
 std::string loadError(const std::string& path) {
-    try {
-        loadTrajectory(path);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return toposlam::test::errorOf<InputError>([&] { loadTrajectory(path); });
 }
 
 }  // namespace

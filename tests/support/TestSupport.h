@@ -46,6 +46,18 @@ CommandResult runApp(const std::string& app, const std::string& args);
 /// The whole content of the file at `path` ("" when it cannot be read).
 std::string readFile(const std::string& path);
 
+/// The message of the `Error` that `call()` throws, or "" when it returns normally. Any other
+/// exception propagates and fails the test.
+template <class Error, class Call>
+std::string errorOf(Call&& call) {
+    try {
+        call();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
 }  // namespace toposlam::test
 
 /// Skips the current test, with a message, when ../shared/data/<relative> is absent;

@@ -177,11 +177,16 @@ mrpt::serialization::CSerializable::Ptr RawlogScanSource::readObject() {
     }
 }
 
+InputError RawlogScanSource::invalidContentError(const char* className,
+                                                 const std::string& problem) const {
+    return InputError(
+        path_, "object #" + std::to_string(objectsRead_ - 1) + ", a " + className + ": " + problem);
+}
+
 void RawlogScanSource::checkFinite(const mrpt::poses::CPose2D& pose, const char* className) const {
-    if (!(std::isfinite(pose.x()) && std::isfinite(pose.y()) && std::isfinite(pose.phi()))) {
-        throw InputError(path_, "object #" + std::to_string(objectsRead_ - 1) + ", a " + className +
-                                    ": the odometry pose is not finite (" + pose.asString() + ")");
-    }
+    if (!(std::isfinite(pose.x()) && std::isfinite(pose.y()) && std::isfinite(pose.phi())))
+        throw invalidContentError(className,
+                                  "the odometry pose is not finite (" + pose.asString() + ")");
 }
 
 void RawlogScanSource::addScan(const mrpt::obs::CObservation2DRangeScan::Ptr& scan) {
@@ -192,10 +197,9 @@ void RawlogScanSource::addScan(const mrpt::obs::CObservation2DRangeScan::Ptr& sc
     for (std::size_t i = 0; i < scan->getScanSize(); ++i) {
         const float r = scan->getScanRange(i);
         if (scan->getScanRangeValidity(i) && !(std::isfinite(r) && r >= 0)) {
-            throw InputError(path_, "object #" + std::to_string(objectsRead_ - 1) +
-                                        ", a CObservation2DRangeScan: reading " +
-                                        std::to_string(i) + " is " + std::to_string(r) +
-                                        ", marked valid");
+            throw invalidContentError(
+                "CObservation2DRangeScan",
+                "reading " + std::to_string(i) + " is " + std::to_string(r) + ", marked valid");
         }
     }
     pending_.push_back({scan, accumulatedActions_, nullptr, false});

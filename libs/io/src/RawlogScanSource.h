@@ -49,6 +49,9 @@ class RawlogScanSource : public ScanSource {
     std::string position() const;
     InputError objectError(const std::string& className, const std::string& cause) const;
     InputError unregisteredClassError(const std::string& className) const;
+    /// "object #N, a <class>: <problem>" for the object just read, whole but with invalid
+    /// content (MRPT serializes what it is given).
+    InputError invalidContentError(const char* className, const std::string& problem) const;
     /// Throws InputError naming the object just read when `pose` (odometry) is not finite.
     void checkFinite(const mrpt::poses::CPose2D& pose, const char* className) const;
     void addScan(const mrpt::obs::CObservation2DRangeScan::Ptr& scan);

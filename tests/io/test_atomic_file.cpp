@@ -4,8 +4,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "TestSupport.h"
@@ -159,4 +161,91 @@ TEST(AtomicFile, AnMrptWriteFailureNamesTheFile) {
                 "==== MRPT exception ====\nMessage:  Cannot write bytes to stream!\n");
         },
         "(");
+}
+
+namespace {
+
+void writeText(const std::string& path, const std::string& text) {
+    writeFileAtomically(path, [&](const std::string& tmp) { std::ofstream(tmp) << text; });
+}
+
+std::size_t filesIn(const std::string& dir) {
+    return static_cast<std::size_t>(
+        std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
+}
+
+}  // namespace
+
+TEST(OutputGroup, AFailurePartWayKeepsEveryPreviousFile) {
+    using toposlam::io::OutputGroup;
+    toposlam::test::TempDir dir;
+    const std::string a = dir.file("trajectory.txt"), b = dir.file("map.png");
+    writeText(a, "previous run");
+    try {
+        OutputGroup group;
+        writeText(a, "this run");
+        EXPECT_EQ(toposlam::test::readFile(a), "previous run") << "renamed only on commit";
+        writeFileAtomically(b, [](const std::string&) { throw std::runtime_error("disk full"); });
+        group.commit();
+        ADD_FAILURE() << "the second write should have thrown";
+    } catch (const std::runtime_error&) {
+    }
+    EXPECT_EQ(toposlam::test::readFile(a), "previous run");
+    EXPECT_FALSE(fs::exists(b));
+    EXPECT_EQ(filesIn(dir.path()), 1u) << "no temporary file left behind";
+}
+
+TEST(OutputGroup, CommitRenamesAllIncludingWritesFromAnotherThread) {
+    using toposlam::io::OutputGroup;
+    toposlam::test::TempDir dir;
+    const std::string a = dir.file("a.txt"), b = dir.file("b.txt");
+    OutputGroup group;
+    std::thread worker([&] {
+        const auto member = group.joinFromThisThread();
+        writeText(b, "from the worker");
+    });
+    worker.join();
+    writeText(a, "first");
+    writeText(a, "second");  // the later version of a file replaces the earlier one
+    EXPECT_FALSE(fs::exists(a));
+    EXPECT_FALSE(fs::exists(b));
+    group.commit();
+    EXPECT_EQ(toposlam::test::readFile(a), "second");
+    EXPECT_EQ(toposlam::test::readFile(b), "from the worker");
+    EXPECT_EQ(filesIn(dir.path()), 2u);
+    writeText(dir.file("c.txt"), "after");  // the group is closed: renamed at once
+    EXPECT_TRUE(fs::exists(dir.file("c.txt")));
+}
+
+TEST(OutputGroup, AnInnerGroupCommitsIntoTheOuterOne) {
+    using toposlam::io::OutputGroup;
+    toposlam::test::TempDir dir;
+    {
+        OutputGroup outer;
+        {
+            OutputGroup inner;
+            writeText(dir.file("inner.txt"), "x");
+            inner.commit();
+        }
+        EXPECT_FALSE(fs::exists(dir.file("inner.txt")));
+    }  // the outer group is abandoned
+    EXPECT_EQ(filesIn(dir.path()), 0u);
+}
+
+TEST(OutputGroup, AFolderInTheWayIsFoundBeforeAnythingIsRenamed) {
+    using toposlam::io::OutputGroup;
+    toposlam::test::TempDir dir;
+    fs::create_directory(dir.file("b.txt"));
+    OutputGroup group;
+    writeText(dir.file("a.txt"), "x");
+    writeText(dir.file("b.txt"), "y");
+    try {
+        group.commit();
+        ADD_FAILURE() << "commit should have thrown";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("b.txt: cannot write the output file (a folder"),
+                  std::string::npos)
+            << e.what();
+    }
+    EXPECT_FALSE(fs::exists(dir.file("a.txt")));
 }

@@ -35,6 +35,29 @@ TEST(ToposlamRooms, SegmentsADrawnOfficeAndWritesEveryOutput) {
     EXPECT_EQ(toposlam::rooms::loadTopologicalMap(dir.file("out/rooms.graphml")).doors.size(), 6u);
 }
 
+TEST(ToposlamRooms, AFailedWriteLeavesThePreviousRunsFilesAsTheyWere) {
+    const TempDir dir;
+    ASSERT_TRUE(cv::imwrite(dir.file("office.png"), toposlam::rooms::test::office().image));
+    const std::string args = "'" + dir.file("office.png") + "' -o '" + dir.file("out") + "'";
+    ASSERT_EQ(runApp("toposlam-rooms", args).exitCode, 0);
+    const std::string previousJson = toposlam::test::readFile(dir.file("out/rooms.json"));
+    // The last of the five outputs cannot be written: a folder has its name.
+    std::filesystem::remove(dir.file("out/rooms.topomap.gz"));
+    std::filesystem::create_directory(dir.file("out/rooms.topomap.gz"));
+    std::filesystem::remove(dir.file("out/rooms.png"));
+    const auto r = runApp("toposlam-rooms", args + " --door-width 1.2");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("rooms.topomap.gz: cannot write the output file"), std::string::npos)
+        << r.output;
+    EXPECT_EQ(toposlam::test::readFile(dir.file("out/rooms.json")), previousJson);
+    EXPECT_FALSE(std::filesystem::exists(dir.file("out/rooms.png"))) << "none of this run's files";
+    std::size_t files = 0;
+    for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir.file("out")))
+        ++files;
+    EXPECT_EQ(files, 4u)
+        << "the previous json, graphml, steps picture and the folder; no temporary";
+}
+
 TEST(ToposlamRooms, DrawnPlanWithGreyWallsIsReadAsDrawn) {
     // Walls drawn in mid-grey (p(free) = 0.63): read as a SLAM grid (--grid) they are unknown
     // space, far from any occupied cell, so no wall frames a door. A picture of white and mid

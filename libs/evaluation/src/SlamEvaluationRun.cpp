@@ -3,6 +3,7 @@
 #include <toposlam/evaluation/LogOdometry.h>
 #include <toposlam/evaluation/RelationFile.h>
 #include <toposlam/evaluation/SlamEvaluationRun.h>
+#include <toposlam/io/AtomicFile.h>
 #include <toposlam/io/InputError.h>
 
 #include <algorithm>
@@ -196,6 +197,7 @@ SlamEvaluationRun runSlamEvaluation(const SlamEvaluationRequest& request,
 }
 
 void saveSlamEvaluationOutputs(const SlamEvaluationRun& run, const SlamEvaluationOutputs& out) {
+    io::OutputGroup files;  // all that were asked for, or none
     if (!out.relations.empty())
         saveRelations(run.relations, out.relations);
     if (!out.plot.empty()) {
@@ -204,6 +206,7 @@ void saveSlamEvaluationOutputs(const SlamEvaluationRun& run, const SlamEvaluatio
     }
     if (!out.json.empty())
         saveEvaluationJson(run.evaluation, out.json);
+    files.commit();
 }
 
 }  // namespace toposlam::evaluation

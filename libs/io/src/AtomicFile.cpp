@@ -19,6 +19,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The group that writes on this thread belong to (nullptr: rename each file when written).
+thread_local OutputGroup* tActiveGroup = nullptr;
+
 // "dir/map.gridmap.gz" -> "dir/map.tmp-<pid>-<n>.gridmap.gz": same directory (rename stays
 // atomic, same filesystem) and same compound extension (writers that look at it still work).
 std::string temporaryNameFor(const std::string& path) {
@@ -108,6 +111,11 @@ void TemporaryOutputFile::commit() {
         fs::remove(tmpPath_, ignored);
         throw;
     }
+    if (tActiveGroup) {
+        tActiveGroup->add(tmpPath_, path_);
+        committed_ = true;  // the group owns the temporary file now
+        return;
+    }
     std::error_code ec;
     fs::rename(tmpPath_, path_, ec);
     if (ec) {
@@ -116,6 +124,71 @@ void TemporaryOutputFile::commit() {
         throw std::runtime_error(path_ + ": cannot write the output file (" + ec.message() + ")");
     }
     committed_ = true;
+}
+
+OutputGroup::OutputGroup() : outer_(tActiveGroup) {
+    tActiveGroup = this;
+}
+
+OutputGroup::~OutputGroup() {
+    tActiveGroup = outer_;
+    if (committed_)
+        return;
+    std::error_code ignored;
+    for (const auto& file : files_)
+        fs::remove(file.first, ignored);
+}
+
+void OutputGroup::add(std::string temporaryPath, std::string path) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    for (auto& file : files_) {
+        if (file.second == path) {
+            std::error_code ignored;
+            fs::remove(file.first, ignored);
+            file.first = std::move(temporaryPath);
+            return;
+        }
+    }
+    files_.emplace_back(std::move(temporaryPath), std::move(path));
+}
+
+void OutputGroup::commit() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    tActiveGroup = outer_;
+    if (!outer_) {
+        // rename(2) cannot replace a folder: find that before the first rename, not after.
+        for (const auto& file : files_) {
+            std::error_code ec;
+            if (fs::is_directory(file.second, ec))
+                throw std::runtime_error(file.second +
+                                         ": cannot write the output file (a folder has that name)");
+        }
+    }
+    committed_ = true;
+    for (std::size_t i = 0; i < files_.size(); ++i) {
+        const auto& [temporaryPath, path] = files_[i];
+        if (outer_) {
+            outer_->add(temporaryPath, path);
+            continue;
+        }
+        std::error_code ec;
+        fs::rename(temporaryPath, path, ec);
+        if (ec) {
+            std::error_code ignored;
+            for (std::size_t j = i; j < files_.size(); ++j)
+                fs::remove(files_[j].first, ignored);
+            throw std::runtime_error(path + ": cannot write the output file (" + ec.message() +
+                                     ")");
+        }
+    }
+}
+
+OutputGroup::ThreadMembership::ThreadMembership(OutputGroup& group) : previous_(tActiveGroup) {
+    tActiveGroup = &group;
+}
+
+OutputGroup::ThreadMembership::~ThreadMembership() {
+    tActiveGroup = previous_;
 }
 
 void rethrowWriteError(const std::string& path) {

@@ -209,9 +209,12 @@ std::vector<std::string> saveMappingOutputs(const MappingResult& result,
     files.push_back((out / "map.pgm").string());
     const std::string graphFile = result.graph ? path("keyframes.graph") : "";
     const std::string keyframesFile = !result.keyframes.empty() ? path("keyframes.simplemap") : "";
+    // All the files or none: a folder never holds one run's map beside another's trajectory.
+    io::OutputGroup outputs;
     // The keyframe outputs (compressing the simplemap is the slowest write) go on a second
     // thread while this one writes the grid files: a shorter run on a machine with two cores.
     std::future<void> keyframeOutputs = std::async(std::launch::async, [&] {
+        const auto inGroup = outputs.joinFromThisThread();
         if (result.graph)
             result.graph->save(graphFile);
         if (!result.keyframes.empty()) {
@@ -227,6 +230,7 @@ std::vector<std::string> saveMappingOutputs(const MappingResult& result,
     keyframeOutputs.get();  // rethrows its error, if any
     io::saveTextFile(formatSummary(result), path("summary.txt"));
     io::saveJsonFile(summaryJson(result), path("summary.json"));
+    outputs.commit();
     return files;
 }
 

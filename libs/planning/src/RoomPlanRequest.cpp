@@ -1,4 +1,5 @@
 #include <ompl/util/RandomNumbers.h>
+#include <toposlam/io/AtomicFile.h>
 #include <toposlam/io/GridMapIO.h>
 #include <toposlam/io/InputError.h>
 #include <toposlam/planning/PathRendering.h>
@@ -145,8 +146,10 @@ std::vector<std::string> saveRoomPlan(const RoomPlan& plan, const std::string& f
     const std::filesystem::path out(folder);
     std::filesystem::create_directories(out);
     const std::string text = (out / "path.txt").string(), png = (out / "path.png").string();
+    io::OutputGroup files;  // both or neither
     savePath(plan.path, text);
     saveRoomPathPng(plan.map, plan.path, png);
+    files.commit();
     return {text, png};
 }
 

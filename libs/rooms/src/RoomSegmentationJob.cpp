@@ -47,6 +47,7 @@ std::vector<std::string> writeRoomSegmentationFiles(const RoomSegmenter::Result&
     const std::vector<std::string> files = {path("rooms.json"), path("rooms.graphml"),
                                             path("rooms.png"), path("rooms-steps.png"),
                                             path("rooms.topomap.gz")};
+    io::OutputGroup outputs;  // all five files, or none (a folder never mixes two runs)
     saveTopologicalMapJson(result.map, files[0]);
     saveTopologicalMapGraphML(result.map, files[1]);
     RenderOptions render;
@@ -65,6 +66,7 @@ std::vector<std::string> writeRoomSegmentationFiles(const RoomSegmenter::Result&
         mrpt::io::CFileGZOutputStream out(tmp);
         mrpt::serialization::archiveFrom(out) << CTopologicalMap(result.map);
     });
+    outputs.commit();
     return files;
 }
 

@@ -1,10 +1,10 @@
 #include <mrpt/core/Clock.h>
 #include <mrpt/math/wrap2pi.h>
+#include <toposlam/io/AtomicFile.h>
 #include <toposlam/simulation/LogSimulator.h>
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <optional>
 #include <stdexcept>
 
@@ -109,15 +109,10 @@ std::size_t simulateLogToFiles(const mrpt::maps::COccupancyGridMap2D& map,
         if (progress)
             progress(static_cast<double>(written) / static_cast<double>(sim.size()), written);
     }
-    // Both files or neither: the writer deletes its temporary file unless committed.
+    io::OutputGroup files;  // both files or neither
     io::saveTrajectory(sim.groundTruth(), groundTruthPath);
-    try {
-        writer.commit();
-    } catch (...) {
-        std::error_code ec;
-        std::filesystem::remove(groundTruthPath, ec);
-        throw;
-    }
+    writer.commit();
+    files.commit();
     return written;
 }
 

@@ -1,3 +1,4 @@
+#include <toposlam/io/AtomicFile.h>
 #include <toposlam/io/FileExtension.h>
 #include <toposlam/io/InputError.h>
 #include <toposlam/simulation/ClearanceMap.h>
@@ -70,6 +71,7 @@ std::size_t runSimulation(const SimulationPlan& plan, const SimulatorConfig& con
                           const SimulationJob& job, const io::ProgressCallback& progress) {
     const std::string gtPath =
         job.groundTruthPath.empty() ? groundTruthPathFor(job.rawlogPath) : job.groundTruthPath;
+    io::OutputGroup files;  // the log, its ground truth and the plot, or none of them
     std::size_t scans = 0;
     try {
         scans = simulateLogToFiles(plan.map, plan.poses, config.log, job.rawlogPath, config.format,
@@ -79,6 +81,7 @@ std::size_t runSimulation(const SimulationPlan& plan, const SimulatorConfig& con
     }
     if (!job.plotPath.empty())
         saveTrajectoryImage(plan.map, plan.poses, plan.marks, job.plotPath);
+    files.commit();
     return scans;
 }
 

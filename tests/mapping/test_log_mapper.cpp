@@ -4,6 +4,7 @@
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/system/datetime.h>
+#include <toposlam/config/ConfigError.h>
 #include <toposlam/evaluation/AbsoluteTrajectoryError.h>
 #include <toposlam/io/InputError.h>
 #include <toposlam/io/RawlogWriter.h>
@@ -247,6 +248,24 @@ TEST(LogMapper, IcpEngineKeysOutOfRangeAreConfigErrors) {
             EXPECT_NE(what.find("out of range"), std::string::npos) << what;
         }
     }
+}
+
+TEST(LogMapper, AMisspeltSectionIsAConfigErrorButMrptMapSectionsAreNot) {
+    test::TempDir dir;
+    writeLog(dir.file("sim.rawlog"));
+    std::ofstream(dir.file("typo.ini"))
+        << "[Slam]\nengine = graph\n[GrahpSlam]\nkeyframe_distance = 0.5\n";
+    const mrpt::config::CConfigFile typo(dir.file("typo.ini"));
+    const std::string what =
+        test::errorOf<config::ConfigError>([&] { mapping::mapLog(dir.file("sim.rawlog"), typo); });
+    EXPECT_NE(what.find("typo.ini: [GrahpSlam]: unknown section; did you mean [GraphSlam]?"),
+              std::string::npos)
+        << what;
+    // An icp-slam ini as MRPT ships them: its map definitions are MRPT's sections.
+    const mrpt::config::CConfigFile icpSlam(test::configIni("icp-slam-carmen.ini"));
+    EXPECT_EQ(test::errorOf<config::ConfigError>(
+                  [&] { mapping::mapLog(dir.file("sim.rawlog"), icpSlam); }),
+              "");
 }
 
 TEST(LogMapper, AppWritesOutputsAndRejectsBadInput) {

@@ -1,6 +1,7 @@
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/poses/CPose3DPDF.h>
 #include <mrpt/system/datetime.h>
+#include <toposlam/config/IniFile.h>
 #include <toposlam/io/CpuTime.h>
 #include <toposlam/io/InputError.h>
 #include <toposlam/io/LaserLogReader.h>
@@ -13,6 +14,8 @@
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace toposlam::mapping {
 
@@ -124,6 +127,28 @@ void alignWithWalls(const OccupancyGridOptions& options, std::vector<PosedScan>&
     for (std::size_t i = 0; i < result.keyframes.size(); ++i)
         result.keyframes.getAsPair(i).pose->changeCoordinatesReference(mrpt::poses::CPose3D(turn));
 }
+/// A misspelt section ([GrahpSlam]) would otherwise be ignored without a word, leaving its
+/// settings at their defaults. MRPT's map definitions ([MappingApplication_<map>_<NN>_<opts>],
+/// read by engine = icp) are MRPT's to check.
+void requireSlamSections(const mrpt::config::CConfigFileBase& ini) {
+    std::vector<std::string> known = {"Slam",
+                                      "GraphSlam",
+                                      "GraphScanMatcher",
+                                      "CornerExtractor",
+                                      "SegmentExtractor",
+                                      "SplitAndMergeExtractor",
+                                      "OccupancyGrid",
+                                      "MappingApplication",
+                                      "ICP"};
+    std::vector<std::string> sections;
+    ini.getAllSections(sections);
+    for (const std::string& s : sections) {
+        if (s.rfind("MappingApplication_", 0) == 0)
+            known.push_back(s);
+    }
+    config::requireKnownSections(ini, known);
+}
+
 }  // namespace
 
 MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFileBase& ini,
@@ -131,6 +156,7 @@ MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFile
     const auto start = std::chrono::steady_clock::now();
     const double cpuStart = io::processCpuSeconds();
     MappingResult result;
+    requireSlamSections(ini);
     SlamEngineOptions engine;
     engine.loadFromConfigFile(ini, "Slam");
     result.engine = engine.engine;

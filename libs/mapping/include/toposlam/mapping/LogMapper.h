@@ -72,7 +72,10 @@ struct MappingResult {
 /// the map to its dominant walls, ManhattanAlignment.h; a bad value there is a
 /// config::ConfigError naming the file when `ini` is an mrpt::config::CConfigFile). Reports
 /// progress through `progress` (fraction of the file read, scans). Throws io::InputError for
-/// unreadable or malformed logs and for a log without scans, config::ConfigError for bad settings.
+/// unreadable or malformed logs and for a log without scans, config::ConfigError for bad
+/// settings and for a section no engine reads (the features' sections, CornerExtractor,
+/// SegmentExtractor and SplitAndMergeExtractor, are known; so is MRPT's
+/// [MappingApplication_*]).
 MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFileBase& ini,
                      const io::ProgressCallback& progress = {});
 

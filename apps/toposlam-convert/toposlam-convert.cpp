@@ -20,6 +20,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -121,7 +122,23 @@ Arguments::Arguments()
                  "furniture and background alike, and the white cells as they are."),
       quiet("q", "quiet", "No progress display and no summary", cmd) {}
 
+// On a grid map these would be ignored without a word: bad usage instead.
+void refuseLogOptions(const Arguments& a) {
+    const std::pair<bool, const char*> logOptions[] = {
+        {a.format.isSet(), "--format"},
+        {a.odometryTrajectory.isSet(), "--odometry-trajectory"},
+        {a.label.isSet(), "--label"},
+        {a.maxRange.isSet(), "--carmen-max-range"},
+        {a.laserOffset.isSet(), "--laser-offset"},
+        {a.maxScans.isSet(), "--max-scans"}};
+    for (const auto& [set, name] : logOptions) {
+        if (set)
+            throw cli::UsageError(std::string(name) + " is for laser logs, not grid maps");
+    }
+}
+
 int convertMap(Arguments& a) {
+    refuseLogOptions(a);
     if (a.output.getValue().empty())
         throw cli::UsageError("-o/--output is required for grid maps");
     std::optional<io::GridMapGeometry> geometry;
@@ -144,8 +161,10 @@ int convertMap(Arguments& a) {
 }
 
 io::LogConversionOptions logOptions(Arguments& a) {
-    if (a.mapReading.given())
-        throw cli::UsageError("--drawn and --grid are for grid maps, not laser logs");
+    if (a.mapReading.given() || a.resolution.isSet() || a.origin.isSet()) {
+        throw cli::UsageError(
+            "--drawn, --grid, --resolution and --origin are for grid maps, not laser logs");
+    }
     if (a.output.getValue().empty() && a.odometryTrajectory.getValue().empty())
         throw cli::UsageError("nothing to do: give -o and/or --odometry-trajectory");
     io::LogConversionOptions options;

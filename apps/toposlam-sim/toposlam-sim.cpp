@@ -16,6 +16,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -77,6 +79,8 @@ struct Arguments {
         "",
         "file",
         cmd};
+    std::vector<std::string> formatNames{"obs", "sf"};
+    TCLAP::ValuesConstraint<std::string> formatValues{formatNames};
     TCLAP::ValueArg<std::string> formatArg{
         "",
         "format",
@@ -84,7 +88,7 @@ struct Arguments {
         "graphslam-engine); sf = actions + sensory frames (icp-slam, rbpf-slam). Default: obs.",
         false,
         "",
-        "sf|obs",
+        &formatValues,
         cmd};
     TCLAP::ValueArg<std::string> gtArg{
         "",

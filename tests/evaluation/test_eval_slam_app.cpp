@@ -241,6 +241,12 @@ TEST(EvalSlamApp, BadInputExitsNonZeroAndWritesNoJson) {
                                                " --ground-truth " + f.trajectory)
                   .exitCode,
               2);
+    // An option that only qualifies one that is not given would be ignored: a usage error.
+    const auto lone = runApp("toposlam-eval-slam", f.trajectory + " --relations " + f.relations +
+                                                       " --rawlog " + f.trajectory);
+    EXPECT_EQ(lone.exitCode, 2) << lone.output;
+    EXPECT_TRUE(contains(lone.output, "--rawlog stamps --icp-slam-path lines, and none is given"))
+        << lone.output;
 }
 
 TEST(EvalSlamApp, OdometryOfALogAndIcpSlamPathWithTheLogsStamps) {

@@ -161,6 +161,16 @@ TEST(AnnotateFeaturesApp, BadInputIsAnErrorAndLeavesNoOutput) {
     EXPECT_FALSE(std::filesystem::exists(out));
     run = test::runApp("toposlam-annotate-features", "x -o y -e nonsense");
     EXPECT_NE(run.exitCode, 0);
+    // A label the log does not have: the message names the labels it has.
+    run = test::runApp(
+        "toposlam-annotate-features",
+        "'" + test::shareDir() + "/office/office.rawlog' --label NOPE -o '" + out + "'");
+    EXPECT_EQ(run.exitCode, 1) << run.output;
+    EXPECT_NE(run.output.find("office.rawlog: no laser scans labelled 'NOPE' in the log (it has "
+                              "LASER: "),
+              std::string::npos)
+        << run.output;
+    EXPECT_FALSE(std::filesystem::exists(out));
 }
 
 // --format sf: what kf-slam and rbpf-slam read. Every entry is an (actions, sensory frame)

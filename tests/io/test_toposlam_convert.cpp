@@ -148,7 +148,9 @@ TEST(ToposlamConvert, BadLogsFailCleanly) {
     r = runApp("toposlam-convert",
                dir.file("ok.clf") + " --label RLASER -o " + dir.file("out.rawlog"));
     EXPECT_EQ(r.exitCode, 1);
-    EXPECT_NE(r.output.find("no laser scans labelled 'RLASER'"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("no laser scans labelled 'RLASER' in the log (it has FLASER: "),
+              std::string::npos)
+        << r.output;
 
     // Bad options: bad usage, exit status 2.
     r = runApp("toposlam-convert", dir.file("ok.clf") + " --format xyz -o " + dir.file("o.rawlog"));
@@ -230,8 +232,24 @@ TEST(ToposlamConvert, ABarePlanPictureBecomesAGridWithItsGreyWallsOccupied) {
     r = runApp("toposlam-convert", toposlam::test::shareDir() +
                                        "/office/office.rawlog --drawn -o " + dir.file("x.rawlog"));
     EXPECT_EQ(r.exitCode, 2) << r.output;
-    EXPECT_NE(r.output.find("--drawn and --grid are for grid maps"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("--drawn, --grid, --resolution and --origin are for grid maps"),
+              std::string::npos)
+        << r.output;
     EXPECT_FALSE(fs::exists(dir.file("x.rawlog")));
+    r = runApp("toposlam-convert", toposlam::test::shareDir() +
+                                       "/office/office.rawlog --resolution 0.1 -o " +
+                                       dir.file("x.rawlog"));
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_FALSE(fs::exists(dir.file("x.rawlog")));
+    // And the log options are for logs only: on a map they would be ignored.
+    for (const char* option : {"--label FLASER", "--format sf", "--max-scans 3"}) {
+        r = runApp("toposlam-convert",
+                   dir.file("plan.png") + " " + option + " -o " + dir.file("y.gridmap"));
+        EXPECT_EQ(r.exitCode, 2) << option << ": " << r.output;
+        EXPECT_NE(r.output.find(" is for laser logs, not grid maps"), std::string::npos)
+            << r.output;
+    }
+    EXPECT_FALSE(fs::exists(dir.file("y.gridmap")));
 }
 
 TEST(ToposlamConvert, BadMapsFailCleanly) {

@@ -38,6 +38,8 @@ void SlamEvaluationRequest::validate() const {
         [](const TrajectoryToScore& t) { return t.source == TrajectorySource::IcpSlamPath; });
     if (icpSlam && rawlog.empty())
         throw std::invalid_argument("--icp-slam-path needs --rawlog (the rawlog icp-slam ran on)");
+    if (!icpSlam && !rawlog.empty())  // it would be read for nothing and ignored
+        throw std::invalid_argument("--rawlog stamps --icp-slam-path lines, and none is given");
     if (!scanStamps.empty() && rawlog.empty())
         throw std::invalid_argument("--scan-stamps replaces the stamps of --rawlog's scans");
     if (!(stampTolerance >= 0) || !std::isfinite(stampTolerance))

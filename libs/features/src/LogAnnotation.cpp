@@ -188,7 +188,7 @@ LogAnnotationSummary annotateLog(const std::string& inputPath, const std::string
                 options.progress(reader.fractionRead(), summary.scans);
         }
         if (summary.scans == 0)
-            throw io::InputError(inputPath, "no laser scans in the log");
+            throw io::InputError(inputPath, reader.noScansProblem());
         if (summary.corners > 0) {
             const double n = static_cast<double>(summary.corners);
             summary.cornerRangeStd = std::sqrt(writer.rangeVariance / n);

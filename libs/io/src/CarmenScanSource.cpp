@@ -356,8 +356,10 @@ bool CarmenScanSource::next(LaserLogRecord& out) {
         const std::string_view name = tokens_[0];
         if (isLaser(name)) {
             const std::size_t laserIndex = laserLine_++;
-            if (!options_.scanLabel.empty() && name != options_.scanLabel)
+            if (!options_.scanLabel.empty() && name != options_.scanLabel) {
+                countOtherLabel(name);
                 continue;
+            }
             if (isOldLaser(name)) {
                 parseFlaser(out, name == "FLASER");
             } else {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <string>
 
 #include "CarmenScanSource.h"
 #include "GzipInputStream.h"
@@ -124,6 +125,18 @@ const std::string& LaserLogReader::laserLabel() const {
 
 const std::map<std::string, std::size_t>& LaserLogReader::otherLaserScans() const {
     return impl_->others;
+}
+
+std::string LaserLogReader::noScansProblem() const {
+    const auto& others = impl_->source->scansOfOtherLabels();
+    if (impl_->oneLaser || impl_->label.empty() || others.empty())
+        return "no laser scans in the log";
+    std::string list;
+    for (const auto& [label, count] : others) {
+        list += (list.empty() ? "" : ", ") + (label.empty() ? std::string("''") : label) + ": " +
+                std::to_string(count);
+    }
+    return "no laser scans labelled '" + impl_->label + "' in the log (it has " + list + ")";
 }
 
 std::vector<LaserLogRecord> LaserLogReader::readAll(const std::string& path,

@@ -35,12 +35,8 @@ LogConversionSummary convertLaserLog(const std::string& inputPath,
         if (options.progress)
             options.progress(reader.fractionRead(), summary.scans);
     }
-    if (summary.scans == 0) {
-        throw InputError(
-            inputPath, options.read.scanLabel.empty()
-                           ? "no laser scans in the log"
-                           : "no laser scans labelled '" + options.read.scanLabel + "' in the log");
-    }
+    if (summary.scans == 0)
+        throw InputError(inputPath, reader.noScansProblem());
     summary.adjustedTimestamps = reader.adjustedTimestamps();
     // The trajectory first: if it cannot be written, the rawlog is not committed either.
     if (!options.odometryTrajectoryPath.empty()) {

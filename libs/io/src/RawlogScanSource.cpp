@@ -190,8 +190,10 @@ void RawlogScanSource::checkFinite(const mrpt::poses::CPose2D& pose, const char*
 }
 
 void RawlogScanSource::addScan(const mrpt::obs::CObservation2DRangeScan::Ptr& scan) {
-    if (!options_.scanLabel.empty() && scan->sensorLabel != options_.scanLabel)
+    if (!options_.scanLabel.empty() && scan->sensorLabel != options_.scanLabel) {
+        countOtherLabel(scan->sensorLabel);
         return;
+    }
     // A NaN, infinite or negative distance marked valid is corrupt data, as in a CARMEN log:
     // MRPT serializes it without complaint, and the grid's insertion asserts on it later.
     for (std::size_t i = 0; i < scan->getScanSize(); ++i) {

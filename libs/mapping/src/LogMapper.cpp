@@ -48,8 +48,7 @@ void readLog(const std::string& logPath, const SlamEngineOptions& engine,
             progress(reader.fractionRead(), n);
     }
     if (n == 0 && !automatic)
-        throw io::InputError(
-            logPath, "no laser scans labelled '" + engine.scanLabel + "' ([Slam] scan_label)");
+        throw io::InputError(logPath, reader.noScansProblem() + " ([Slam] scan_label)");
     result.laserLabel = reader.laserLabel();
     result.otherLaserScans = reader.otherLaserScans();
 }

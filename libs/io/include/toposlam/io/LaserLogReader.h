@@ -159,6 +159,10 @@ class LaserLogReader {
     const std::string& laserLabel() const;
     /// With oneLaser: the scans left out so far, by sensor label.
     const std::map<std::string, std::size_t>& otherLaserScans() const;
+    /// Why the log gave no scan, for an error message once next() returned false at once:
+    /// "no laser scans in the log", or with scanLabel "no laser scans labelled 'X' in the log
+    /// (it has FLASER: 5000, RLASER: 4998)".
+    std::string noScansProblem() const;
 
     /// Reads the whole log. Throws like next().
     static std::vector<LaserLogRecord> readAll(const std::string& path,

@@ -93,3 +93,19 @@ TEST(IniFile, MissingFilesAndSections) {
     EXPECT_NO_THROW(toposlam::config::requireKnownSections(*ini, {"Laser", "Odometry", "People"}));
     EXPECT_THROW(toposlam::config::requireKnownSections(*ini, {"Laser", "People"}), ConfigError);
 }
+
+TEST(IniFile, NumbersWrittenForAnotherLibraryAreReadAsWritten) {
+    toposlam::test::TempDir dir;
+    const std::string path =
+        write(dir, "[ICP]\nmaxIterations = -5\nthresholdDist = abc\nALFA = nan\nepsilon = 1e-6\n");
+    const auto ini = openIniFile(path);
+    using toposlam::config::readWrittenNumber;
+    EXPECT_EQ(readWrittenNumber(*ini, "ICP", "maxIterations"), -5.0);
+    EXPECT_EQ(readWrittenNumber(*ini, "ICP", "epsilon"), 1e-6);
+    EXPECT_EQ(readWrittenNumber(*ini, "ICP", "absent"), std::nullopt);
+    EXPECT_EQ(toposlam::test::errorOf<ConfigError>(
+                  [&] { readWrittenNumber(*ini, "ICP", "thresholdDist"); }),
+              path + ": [ICP] thresholdDist = abc: not a number");
+    EXPECT_EQ(toposlam::test::errorOf<ConfigError>([&] { readWrittenNumber(*ini, "ICP", "ALFA"); }),
+              path + ": [ICP] ALFA = nan: must be a finite number");
+}

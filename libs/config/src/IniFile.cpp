@@ -131,6 +131,16 @@ void requireSection(const mrpt::config::CConfigFileBase& config, const std::stri
     throw ConfigError(configFileName(config), section, "", "", problem);
 }
 
+std::optional<double> readWrittenNumber(const mrpt::config::CConfigFileBase& config,
+                                        const std::string& section, const std::string& key) {
+    if (!config.keyExists(section, key))
+        return std::nullopt;
+    const std::string text = detail::trim(config.read_string(section, key, "", false));
+    if (const std::optional<double> value = detail::parseReal(text))
+        return value;
+    throw ConfigError(configFileName(config), section, key, text, detail::notANumberProblem(text));
+}
+
 void requireKnownSections(const mrpt::config::CConfigFileBase& config,
                           const std::vector<std::string>& known) {
     std::vector<std::string> sections;

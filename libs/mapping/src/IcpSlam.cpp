@@ -3,43 +3,51 @@
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/poses/CPose3DPDF.h>
+#include <toposlam/config/ConfigError.h>
+#include <toposlam/config/IniFile.h>
+#include <toposlam/config/Options.h>
 #include <toposlam/mapping/IcpSlam.h>
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
-#include <stdexcept>
+#include <string>
 
 namespace toposlam::mapping {
 
 namespace {
 
 // MRPT reads these sections unchecked: maxIterations = -5 becomes 4294967291 iterations (a run
-// that never ends), a threshold of 0 or "abc" (read as 0) matches nothing. Checked here, naming
-// the file, the section and the key.
+// that never ends), a threshold of 0 or "abc" (read as 0) matches nothing. Checked here as
+// written, naming the file, the section and the key.
 class IcpKeyCheck {
   public:
     IcpKeyCheck(const mrpt::config::CConfigFileBase& ini, std::string section)
-        : section_(std::move(section)) {
-        if (const auto* file = dynamic_cast<const mrpt::config::CConfigFile*>(&ini))
-            file_ = file->getAssociatedFile() + ": ";
-    }
+        : ini_(ini), section_(std::move(section)) {}
+    /// `value`: as MRPT read it, in the unit of `min` and `max` (a key written in degrees is
+    /// checked in degrees).
     void inRange(const char* key, double value, double min, double max, bool excludeMin) const {
+        // Text that is no number is an error of its own (MRPT read it as 0).
+        const std::optional<double> written = config::readWrittenNumber(ini_, section_, key);
         // A hair of slack at the top: 360 degrees read and converted back may exceed 360.
         const bool ok = std::isfinite(value) && (excludeMin ? value > min : value >= min) &&
                         value <= max + 1e-9 * std::max(1.0, std::abs(max));
-        if (!ok) {
-            std::ostringstream what;
-            what.precision(12);
-            what << file_ << "[" << section_ << "] " << key << " = " << value
-                 << " is out of range: a number in " << (excludeMin ? "(" : "[") << min << ", "
-                 << max << "]";
-            throw std::invalid_argument(what.str());
-        }
+        if (ok)
+            return;
+        std::ostringstream text, range;
+        text.precision(12);
+        range.precision(12);
+        text << (written ? *written : value);
+        range << "out of range: a number in " << (excludeMin ? "(" : "[") << min << ", " << max
+              << "]";
+        throw config::ConfigError(config::configFileName(ini_), section_, key, text.str(),
+                                  range.str());
     }
 
   private:
-    std::string section_, file_;
+    const mrpt::config::CConfigFileBase& ini_;
+    std::string section_;
 };
 
 void checkIcpKeys(const mrpt::config::CConfigFileBase& ini, const std::string& mappingSection,

@@ -8,6 +8,7 @@
 #include <mrpt/config/CConfigFile.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,5 +23,11 @@ void requireSection(const mrpt::config::CConfigFileBase& config, const std::stri
 /// Throws ConfigError for a section of `config` not in `known` (naming the nearest known one).
 void requireKnownSections(const mrpt::config::CConfigFileBase& config,
                           const std::vector<std::string>& known);
+
+/// The finite number written for `key` in [section] of a file that another library reads
+/// (MRPT reads "abc" as 0 without a word), or nullopt when the key is absent. Throws
+/// ConfigError naming the file, section, key and text when the text is no finite number.
+std::optional<double> readWrittenNumber(const mrpt::config::CConfigFileBase& config,
+                                        const std::string& section, const std::string& key);
 
 }  // namespace toposlam::config

@@ -16,7 +16,9 @@ namespace toposlam::mapping {
 class IcpSlam {
   public:
     /// Reads CMetricMapBuilderICP::TConfigParams (incl. the map definitions) from
-    /// `mappingSection` and CICP::TConfigParams from `icpSection` of `ini`.
+    /// `mappingSection` and CICP::TConfigParams from `icpSection` of `ini`. MRPT reads them
+    /// unchecked: a value that is no number or out of range (maxIterations = -5) is a
+    /// config::ConfigError naming the file, the section, the key and the value as written.
     explicit IcpSlam(const mrpt::config::CConfigFileBase& ini,
                      const std::string& mappingSection = "MappingApplication",
                      const std::string& icpSection = "ICP");

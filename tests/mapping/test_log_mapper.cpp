@@ -16,7 +16,10 @@
 
 #include <mrpt/poses/CPoint2D.h>
 
+#include <sys/stat.h>
+
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -28,6 +31,7 @@
 #include "TestSupport.h"
 
 using mrpt::poses::CPose2D;
+namespace fs = std::filesystem;
 using namespace toposlam;
 
 namespace {
@@ -291,6 +295,31 @@ TEST(LogMapper, AppWritesOutputsAndRejectsBadInput) {
     EXPECT_NE(bad.exitCode, 0);
     EXPECT_NE(bad.output.find("corrupt.rawlog"), std::string::npos) << bad.output;
     EXPECT_FALSE(std::ifstream(dir.file("out2/trajectory.txt")).good()) << "no partial output";
+
+    // A rerun into the same folder whose last file cannot be written: none of its files
+    // replaces the first run's, not even the keyframes written on a second thread (a file
+    // replaced by rename gets a new inode, even with the same bytes).
+    const auto inode = [&](const char* name) {
+        struct stat st {};
+        return ::stat(dir.file(std::string("out/") + name).c_str(), &st) == 0 ? st.st_ino : 0;
+    };
+    const auto keyframesInode = inode("keyframes.simplemap"),
+               trajectoryInode = inode("trajectory.txt");
+    ASSERT_NE(keyframesInode, 0u);
+    fs::remove(dir.file("out/summary.json"));
+    fs::create_directory(dir.file("out/summary.json"));
+    fs::remove(dir.file("out/map.png"));
+    const auto blocked = test::runApp("toposlam-slam", "'" + test::configIni("toposlam-slam.ini") +
+                                                           "' '" + dir.file("sim.rawlog") +
+                                                           "' -o '" + dir.file("out") + "'");
+    EXPECT_EQ(blocked.exitCode, 1) << blocked.output;
+    EXPECT_NE(blocked.output.find("summary.json: cannot write the output file"), std::string::npos)
+        << blocked.output;
+    EXPECT_EQ(inode("keyframes.simplemap"), keyframesInode);
+    EXPECT_EQ(inode("trajectory.txt"), trajectoryInode);
+    EXPECT_FALSE(fs::exists(dir.file("out/map.png"))) << "no file of the failed run";
+    for (const auto& entry : fs::directory_iterator(dir.file("out")))
+        EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
 }
 
 // MRPT's own simulated sample log (../shared/data/rawlog/simul.rawlog, with the ground truth

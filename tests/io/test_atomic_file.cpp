@@ -165,7 +165,7 @@ TEST(AtomicFile, AnMrptWriteFailureNamesTheFile) {
 
 namespace {
 
-void writeText(const std::string& path, const std::string& text) {
+void writeAtomically(const std::string& path, const std::string& text) {
     writeFileAtomically(path, [&](const std::string& tmp) { std::ofstream(tmp) << text; });
 }
 
@@ -180,10 +180,10 @@ TEST(OutputGroup, AFailurePartWayKeepsEveryPreviousFile) {
     using toposlam::io::OutputGroup;
     toposlam::test::TempDir dir;
     const std::string a = dir.file("trajectory.txt"), b = dir.file("map.png");
-    writeText(a, "previous run");
+    writeAtomically(a, "previous run");
     try {
         OutputGroup group;
-        writeText(a, "this run");
+        writeAtomically(a, "this run");
         EXPECT_EQ(toposlam::test::readFile(a), "previous run") << "renamed only on commit";
         writeFileAtomically(b, [](const std::string&) { throw std::runtime_error("disk full"); });
         group.commit();
@@ -202,18 +202,18 @@ TEST(OutputGroup, CommitRenamesAllIncludingWritesFromAnotherThread) {
     OutputGroup group;
     std::thread worker([&] {
         const auto member = group.joinFromThisThread();
-        writeText(b, "from the worker");
+        writeAtomically(b, "from the worker");
     });
     worker.join();
-    writeText(a, "first");
-    writeText(a, "second");  // the later version of a file replaces the earlier one
+    writeAtomically(a, "first");
+    writeAtomically(a, "second");  // the later version of a file replaces the earlier one
     EXPECT_FALSE(fs::exists(a));
     EXPECT_FALSE(fs::exists(b));
     group.commit();
     EXPECT_EQ(toposlam::test::readFile(a), "second");
     EXPECT_EQ(toposlam::test::readFile(b), "from the worker");
     EXPECT_EQ(filesIn(dir.path()), 2u);
-    writeText(dir.file("c.txt"), "after");  // the group is closed: renamed at once
+    writeAtomically(dir.file("c.txt"), "after");  // the group is closed: renamed at once
     EXPECT_TRUE(fs::exists(dir.file("c.txt")));
 }
 
@@ -224,7 +224,7 @@ TEST(OutputGroup, AnInnerGroupCommitsIntoTheOuterOne) {
         OutputGroup outer;
         {
             OutputGroup inner;
-            writeText(dir.file("inner.txt"), "x");
+            writeAtomically(dir.file("inner.txt"), "x");
             inner.commit();
         }
         EXPECT_FALSE(fs::exists(dir.file("inner.txt")));
@@ -237,8 +237,8 @@ TEST(OutputGroup, AFolderInTheWayIsFoundBeforeAnythingIsRenamed) {
     toposlam::test::TempDir dir;
     fs::create_directory(dir.file("b.txt"));
     OutputGroup group;
-    writeText(dir.file("a.txt"), "x");
-    writeText(dir.file("b.txt"), "y");
+    writeAtomically(dir.file("a.txt"), "x");
+    writeAtomically(dir.file("b.txt"), "y");
     try {
         group.commit();
         ADD_FAILURE() << "commit should have thrown";

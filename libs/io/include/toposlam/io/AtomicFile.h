@@ -54,6 +54,7 @@ class TemporaryOutputFile {
 /// temporary name; commit() then renames them all. Destroyed without commit() (a later
 /// output failed), the group removes them, so the destination keeps what it held before
 /// instead of a mix of two runs. Groups nest: an inner group commits into the outer one.
+/// Open, commit and destroy a group on one thread; other threads join it explicitly.
 class OutputGroup {
   public:
     OutputGroup();

@@ -97,12 +97,22 @@ TEST(IniFile, MissingFilesAndSections) {
 TEST(IniFile, NumbersWrittenForAnotherLibraryAreReadAsWritten) {
     toposlam::test::TempDir dir;
     const std::string path =
-        write(dir, "[ICP]\nmaxIterations = -5\nthresholdDist = abc\nALFA = nan\nepsilon = 1e-6\n");
+        write(dir,
+              "[ICP]\nmaxIterations = -5\nthresholdDist = abc\nALFA = nan\nepsilon = 1e-6\n"
+              "decimation = 2   # comment\nsmallest = 0.05\t; comment\nslack = 3 // comment\n"
+              "glued = 4#5\n");
     const auto ini = openIniFile(path);
     using toposlam::config::readWrittenNumber;
     EXPECT_EQ(readWrittenNumber(*ini, "ICP", "maxIterations"), -5.0);
     EXPECT_EQ(readWrittenNumber(*ini, "ICP", "epsilon"), 1e-6);
     EXPECT_EQ(readWrittenNumber(*ini, "ICP", "absent"), std::nullopt);
+    // Comments after the number, as in MRPT's own ini files.
+    EXPECT_EQ(readWrittenNumber(*ini, "ICP", "decimation"), 2.0);
+    EXPECT_EQ(readWrittenNumber(*ini, "ICP", "smallest"), 0.05);
+    EXPECT_EQ(readWrittenNumber(*ini, "ICP", "slack"), 3.0);
+    EXPECT_EQ(
+        toposlam::test::errorOf<ConfigError>([&] { readWrittenNumber(*ini, "ICP", "glued"); }),
+        path + ": [ICP] glued = 4#5: not a number (comments go on a line of their own)");
     EXPECT_EQ(toposlam::test::errorOf<ConfigError>(
                   [&] { readWrittenNumber(*ini, "ICP", "thresholdDist"); }),
               path + ": [ICP] thresholdDist = abc: not a number");

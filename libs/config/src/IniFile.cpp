@@ -4,6 +4,7 @@
 #include <toposlam/config/Options.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -135,7 +136,17 @@ std::optional<double> readWrittenNumber(const mrpt::config::CConfigFileBase& con
                                         const std::string& section, const std::string& key) {
     if (!config.keyExists(section, key))
         return std::nullopt;
-    const std::string text = detail::trim(config.read_string(section, key, "", false));
+    std::string text = config.read_string(section, key, "", false);
+    // MRPT strips a "//" comment itself; "#" and ";" after a blank are comments to it too
+    // (it reads the number before them).
+    for (std::size_t i = 1; i < text.size(); ++i) {
+        if ((text[i] == '#' || text[i] == ';' || text.compare(i, 2, "//") == 0) &&
+            std::isspace(static_cast<unsigned char>(text[i - 1]))) {
+            text.erase(i);
+            break;
+        }
+    }
+    text = detail::trim(text);
     if (const std::optional<double> value = detail::parseReal(text))
         return value;
     throw ConfigError(configFileName(config), section, key, text, detail::notANumberProblem(text));

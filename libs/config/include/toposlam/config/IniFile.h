@@ -25,8 +25,10 @@ void requireKnownSections(const mrpt::config::CConfigFileBase& config,
                           const std::vector<std::string>& known);
 
 /// The finite number written for `key` in [section] of a file that another library reads
-/// (MRPT reads "abc" as 0 without a word), or nullopt when the key is absent. Throws
-/// ConfigError naming the file, section, key and text when the text is no finite number.
+/// (MRPT reads "abc" as 0 without a word), or nullopt when the key is absent. A comment after
+/// the number ("0.8   # share", "80 // iterations") is ignored, as MRPT ignores it: icp-slam's
+/// ini files have them. Throws ConfigError naming the file, section, key and text when the
+/// text is no finite number.
 std::optional<double> readWrittenNumber(const mrpt::config::CConfigFileBase& config,
                                         const std::string& section, const std::string& key);
 

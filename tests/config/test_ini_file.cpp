@@ -103,13 +103,15 @@ TEST(IniFile, NumbersWrittenForAnotherLibraryAreReadAsWritten) {
               "glued = 4#5\n");
     const auto ini = openIniFile(path);
     using toposlam::config::readWrittenNumber;
-    EXPECT_EQ(readWrittenNumber(*ini, "ICP", "maxIterations"), -5.0);
-    EXPECT_EQ(readWrittenNumber(*ini, "ICP", "epsilon"), 1e-6);
+    EXPECT_EQ(readWrittenNumber(*ini, "ICP", "maxIterations")->value, -5.0);
+    EXPECT_EQ(readWrittenNumber(*ini, "ICP", "epsilon")->value, 1e-6);
+    EXPECT_EQ(readWrittenNumber(*ini, "ICP", "epsilon")->text, "1e-6");  // as written
     EXPECT_EQ(readWrittenNumber(*ini, "ICP", "absent"), std::nullopt);
     // Comments after the number, as in MRPT's own ini files.
-    EXPECT_EQ(readWrittenNumber(*ini, "ICP", "decimation"), 2.0);
-    EXPECT_EQ(readWrittenNumber(*ini, "ICP", "smallest"), 0.05);
-    EXPECT_EQ(readWrittenNumber(*ini, "ICP", "slack"), 3.0);
+    EXPECT_EQ(readWrittenNumber(*ini, "ICP", "decimation")->value, 2.0);
+    EXPECT_EQ(readWrittenNumber(*ini, "ICP", "smallest")->value, 0.05);
+    EXPECT_EQ(readWrittenNumber(*ini, "ICP", "slack")->value, 3.0);
+    EXPECT_EQ(readWrittenNumber(*ini, "ICP", "slack")->text, "3");
     EXPECT_EQ(
         toposlam::test::errorOf<ConfigError>([&] { readWrittenNumber(*ini, "ICP", "glued"); }),
         path + ": [ICP] glued = 4#5: not a number (comments go on a line of their own)");

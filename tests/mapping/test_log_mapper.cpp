@@ -232,6 +232,7 @@ TEST(LogMapper, IcpEngineKeysOutOfRangeAreConfigErrors) {
     const std::vector<std::pair<std::string, std::string>> cases = {
         {"[ICP]", "maxIterations = -5"},
         {"[ICP]", "thresholdDist = 0"},
+        {"[ICP]", "thresholdDist = -1e-6"},
         {"[ICP]", "ALFA = 1.5"},
         {"[MappingApplication]", "minICPgoodnessToAccept = 7"},
         {"[MappingApplication]", "insertionLinDistance = nan"},
@@ -249,7 +250,7 @@ TEST(LogMapper, IcpEngineKeysOutOfRangeAreConfigErrors) {
         const mrpt::config::CConfigFile ini(dir.file("icp.ini"));
         const std::string what = test::errorOf<config::ConfigError>(
             [&] { mapping::mapLog(dir.file("sim.rawlog"), ini); });
-        // As written: MRPT read -5 iterations as 4294967291, and "abc" as 0.
+        // As written: MRPT read -5 iterations as 4294967291, and "abc" as 0; -1e-6 is not -1e-06.
         EXPECT_NE(what.find("icp.ini: " + section + " " + line + ": "), std::string::npos) << what;
         EXPECT_NE(what.find(line.find("abc") != std::string::npos   ? "not a number"
                             : line.find("nan") != std::string::npos ? "finite number"

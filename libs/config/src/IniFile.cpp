@@ -132,8 +132,8 @@ void requireSection(const mrpt::config::CConfigFileBase& config, const std::stri
     throw ConfigError(configFileName(config), section, "", "", problem);
 }
 
-std::optional<double> readWrittenNumber(const mrpt::config::CConfigFileBase& config,
-                                        const std::string& section, const std::string& key) {
+std::optional<WrittenNumber> readWrittenNumber(const mrpt::config::CConfigFileBase& config,
+                                               const std::string& section, const std::string& key) {
     if (!config.keyExists(section, key))
         return std::nullopt;
     std::string text = config.read_string(section, key, "", false);
@@ -148,7 +148,7 @@ std::optional<double> readWrittenNumber(const mrpt::config::CConfigFileBase& con
     }
     text = detail::trim(text);
     if (const std::optional<double> value = detail::parseReal(text))
-        return value;
+        return WrittenNumber{*value, text};
     throw ConfigError(configFileName(config), section, key, text, detail::notANumberProblem(text));
 }
 

@@ -29,7 +29,8 @@ class IcpKeyCheck {
     /// checked in degrees).
     void inRange(const char* key, double value, double min, double max, bool excludeMin) const {
         // Text that is no number is an error of its own (MRPT read it as 0).
-        const std::optional<double> written = config::readWrittenNumber(ini_, section_, key);
+        const std::optional<config::WrittenNumber> written =
+            config::readWrittenNumber(ini_, section_, key);
         // A hair of slack at the top: 360 degrees read and converted back may exceed 360.
         const bool ok = std::isfinite(value) && (excludeMin ? value > min : value >= min) &&
                         value <= max + 1e-9 * std::max(1.0, std::abs(max));
@@ -38,7 +39,10 @@ class IcpKeyCheck {
         std::ostringstream text, range;
         text.precision(12);
         range.precision(12);
-        text << (written ? *written : value);
+        if (written)
+            text << written->text;
+        else
+            text << value;
         range << "out of range: a number in " << (excludeMin ? "(" : "[") << min << ", " << max
               << "]";
         throw config::ConfigError(config::configFileName(ini_), section_, key, text.str(),

@@ -24,12 +24,19 @@ void requireSection(const mrpt::config::CConfigFileBase& config, const std::stri
 void requireKnownSections(const mrpt::config::CConfigFileBase& config,
                           const std::vector<std::string>& known);
 
+/// A number as another library's file has it: its value and its text (for messages: "1e-6",
+/// not the "1e-06" the value would print as).
+struct WrittenNumber {
+    double value = 0;
+    std::string text;
+};
+
 /// The finite number written for `key` in [section] of a file that another library reads
 /// (MRPT reads "abc" as 0 without a word), or nullopt when the key is absent. A comment after
 /// the number ("0.8   # share", "80 // iterations") is ignored, as MRPT ignores it: icp-slam's
 /// ini files have them. Throws ConfigError naming the file, section, key and text when the
 /// text is no finite number.
-std::optional<double> readWrittenNumber(const mrpt::config::CConfigFileBase& config,
-                                        const std::string& section, const std::string& key);
+std::optional<WrittenNumber> readWrittenNumber(const mrpt::config::CConfigFileBase& config,
+                                               const std::string& section, const std::string& key);
 
 }  // namespace toposlam::config

@@ -7,6 +7,7 @@
 #include <mrpt/poses/CPosePDF.h>
 #include <toposlam/mapping/CGraphSlamBuilder.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace toposlam::mapping {
@@ -20,10 +21,20 @@ CGraphSlamBuilder::CGraphSlamBuilder() {
 CGraphSlamBuilder::~CGraphSlamBuilder() = default;
 
 void CGraphSlamBuilder::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg) {
-    slamOptions.loadFromConfigFile(cfg, "GraphSlam");
-    matcherOptions.loadFromConfigFile(cfg, "GraphScanMatcher");
-    gridOptions.loadFromConfigFile(cfg, "OccupancyGrid");
+    slamOptions.loadFromConfigFile(cfg, kSlamSection);
+    matcherOptions.loadFromConfigFile(cfg, kMatcherSection);
+    gridOptions.loadFromConfigFile(cfg, kGridSection);
     extractor_ = features::makeFeatureExtractor(slamOptions.extractor, &cfg);
+}
+
+std::vector<std::string> CGraphSlamBuilder::configSections() {
+    std::vector<std::string> sections = {kSlamSection, kMatcherSection, kGridSection};
+    for (const std::string& name : features::featureExtractorNames()) {
+        const std::string section = features::defaultConfigSection(name);
+        if (std::find(sections.begin(), sections.end(), section) == sections.end())
+            sections.push_back(section);
+    }
+    return sections;
 }
 
 void CGraphSlamBuilder::initialize(const mrpt::maps::CSimpleMap& initialMap,

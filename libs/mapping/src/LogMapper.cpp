@@ -29,6 +29,9 @@ void SlamEngineOptions::declare(config::OptionsSchema& s) {
 using mrpt::poses::CPose2D;
 
 namespace {
+/// [Slam]: SlamEngineOptions, which engine maps the log.
+const char* const kEngineSection = "Slam";
+
 /// Every record of one laser of the log (SlamEngineOptions::scanLabel), in order, to
 /// `consume`; progress reported on the way; which laser, and what was left out, into `result`.
 template <typename Consume>
@@ -126,19 +129,13 @@ void alignWithWalls(const OccupancyGridOptions& options, std::vector<PosedScan>&
     for (std::size_t i = 0; i < result.keyframes.size(); ++i)
         result.keyframes.getAsPair(i).pose->changeCoordinatesReference(mrpt::poses::CPose3D(turn));
 }
+
 /// A misspelt section ([GrahpSlam]) would otherwise be ignored without a word, leaving its
 /// settings at their defaults. MRPT's map definitions ([MappingApplication_<map>_<NN>_<opts>],
 /// read by engine = icp) are MRPT's to check.
 void requireSlamSections(const mrpt::config::CConfigFileBase& ini) {
-    std::vector<std::string> known = {"Slam",
-                                      "GraphSlam",
-                                      "GraphScanMatcher",
-                                      "CornerExtractor",
-                                      "SegmentExtractor",
-                                      "SplitAndMergeExtractor",
-                                      "OccupancyGrid",
-                                      "MappingApplication",
-                                      "ICP"};
+    std::vector<std::string> known = CGraphSlamBuilder::configSections();
+    known.insert(known.end(), {kEngineSection, IcpSlam::kMappingSection, IcpSlam::kIcpSection});
     std::vector<std::string> sections;
     ini.getAllSections(sections);
     for (const std::string& s : sections) {
@@ -157,10 +154,11 @@ MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFile
     MappingResult result;
     requireSlamSections(ini);
     SlamEngineOptions engine;
-    engine.loadFromConfigFile(ini, "Slam");
+    engine.loadFromConfigFile(ini, kEngineSection);
     result.engine = engine.engine;
     OccupancyGridOptions gridOptions;
-    gridOptions.loadFromConfigFile(ini, "OccupancyGrid");
+    // The grid of the optimised poses has the builder's options, whichever engine ran.
+    gridOptions.loadFromConfigFile(ini, CGraphSlamBuilder::kGridSection);
 
     std::vector<PosedScan> scans;
     if (engine.engine == "graph")

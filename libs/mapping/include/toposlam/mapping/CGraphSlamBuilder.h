@@ -26,6 +26,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace toposlam::mapping {
 
@@ -40,6 +41,12 @@ class CGraphSlamBuilder : public mrpt::slam::CMetricMapBuilder {
 
     /// Reads the options (see above); call initialize() afterwards.
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg);
+    /// The .ini sections loadFromConfigFile() may read: its own three and the default section
+    /// of every feature extractor (the one read depends on [GraphSlam] extractor).
+    static std::vector<std::string> configSections();
+    static constexpr const char* kSlamSection = "GraphSlam";
+    static constexpr const char* kMatcherSection = "GraphScanMatcher";
+    static constexpr const char* kGridSection = "OccupancyGrid";
 
     /// Starts a new map at `x0` (its mean; default the origin). Building on an existing map
     /// is not supported: a non-empty `initialMap` throws std::invalid_argument.

@@ -20,8 +20,11 @@ class IcpSlam {
     /// unchecked: a value that is no number or out of range (maxIterations = -5) is a
     /// config::ConfigError naming the file, the section, the key and the value as written.
     explicit IcpSlam(const mrpt::config::CConfigFileBase& ini,
-                     const std::string& mappingSection = "MappingApplication",
-                     const std::string& icpSection = "ICP");
+                     const std::string& mappingSection = kMappingSection,
+                     const std::string& icpSection = kIcpSection);
+    /// icp-slam's section names, the defaults above.
+    static constexpr const char* kMappingSection = "MappingApplication";
+    static constexpr const char* kIcpSection = "ICP";
 
     /// Feeds one scan with its odometry; returns the robot pose estimate at the scan
     /// (map frame = the odometry frame at the first scan; m, rad).

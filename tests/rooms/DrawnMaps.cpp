@@ -216,6 +216,25 @@ DrawnMap thickWall() {
     return m;
 }
 
+DrawnMap hollowWall(double length) {
+    DrawnMap m;
+    const double right = 1.2 + length;
+    m.image = cv::Mat(168, static_cast<int>(std::lround((right + 1.2) / kResolution)), CV_8U,
+                      cv::Scalar(128));
+    cv::Mat& img = m.image;
+    fill(img, 1, 1, right + 0.2, 7.6, 0);
+    fill(img, 1.2, 5.6, right, 7.4, 255);  // the corridor
+    fill(img, 1.2, 1.2, right, 4.6, 255);  // the office
+    fill(img, 1.2, 4.7, right, 5.5, 128);  // the wall's unseen inside, between its faces
+    fill(img, 1.9, 4.6, 3.1, 5.6, 0);      // the doorway's sides ...
+    fill(img, 2.0, 4.6, 3.0, 5.6, 255);    // ... and the doorway
+    const double middle = 0.5 * (1.2 + right);
+    m.rooms = {{middle, 6.5}, {middle, 3}};
+    m.doors = {{{2.5, 5.1}, 1.0}};
+    m.tour = {{middle, 6.5}, {2.5, 6.5}, {2.5, 3}, {middle, 3}};
+    return m;
+}
+
 DrawnMap thinWalls() {
     DrawnMap m;
     m.image = cv::Mat(160, 360, CV_8U, cv::Scalar(128));

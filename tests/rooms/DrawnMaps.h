@@ -94,6 +94,11 @@ DrawnMap wallAtAnAngle();
 /// Two 4.4 x 4 m rooms either side of a 0.55 m thick wall (as thick as B4's Freiburg52 walls)
 /// with a 1 m door in it. 2 rooms, 1 door.
 DrawnMap thickWall();
+/// A `length` x 1.8 m corridor above a `length` x 3.4 m office, as a SLAM grid shows them: the
+/// 1 m wall between them is two 0.1 m faces the laser saw with its unseen inside between (a
+/// double wall, a duct), and a 1 m doorway goes through it 0.8 m from the left end (its sides
+/// seen). 2 rooms, 1 door.
+DrawnMap hollowWall(double length = 11);
 /// A 14 x 8 m hall with a free-standing row of desks 0.7 m deep across the middle, 1 m apart:
 /// the gaps are door-wide and framed by the desks' long edges (wall segments of step 2), but
 /// the desks are deeper than any wall. One room, no door.

@@ -420,6 +420,31 @@ TEST(RoomSegmenter, DoorInAThickWallIsCut) {
     EXPECT_EQ(RoomSegmenter(thin).segment(grid).map.rooms.size(), 1u);
 }
 
+TEST(RoomSegmenter, DoorThroughAHollowWallIsCut) {
+    const DrawnMap drawn = toposlam::rooms::test::hollowWall();
+    const auto grid = toposlam::rooms::test::gridOf(drawn.image);
+    // The cut lies on one of the wall's faces: within half the wall and a cell of its middle.
+    constexpr double kAcrossTheWall = 0.5 + 0.05;
+    for (const bool withTour : {false, true}) {
+        SCOPED_TRACE(withTour ? "with trajectory" : "medial axis");
+        const auto result = RoomSegmenter().segment(
+            grid, withTour ? posesOf(drawn.tour) : std::vector<mrpt::math::TPose2D>{});
+        expectMatchesDrawing(result.map, drawn, kAcrossTheWall);
+    }
+    // Counting its unseen inside, the wall is 1 m thick: no wall has such an end.
+    RoomSegmenter::Options solid;
+    solid.filters.hollowWallLength = 0;
+    EXPECT_EQ(RoomSegmenter(solid).segment(grid).map.rooms.size(), 1u);
+    // Where it goes on for less than the longest furniture (2.5 m) either side of the doorway,
+    // it may be a wardrobe seen from the front.
+    const auto shorter =
+        toposlam::rooms::test::gridOf(toposlam::rooms::test::hollowWall(3.5).image);
+    EXPECT_EQ(RoomSegmenter().segment(shorter).map.rooms.size(), 1u);
+    RoomSegmenter::Options shorterFurniture;  // its 1.6 m right of the doorway are enough
+    shorterFurniture.filters.hollowWallLength = 1.2;
+    EXPECT_EQ(RoomSegmenter(shorterFurniture).segment(shorter).map.rooms.size(), 2u);
+}
+
 TEST(RoomSegmenter, DoorsInThinWallsAreFoundAtAnyAngle) {
     expectMatchesDrawingAtAngles(toposlam::rooms::test::thinWalls(), everyFiveDegrees());
 }

@@ -16,6 +16,9 @@ namespace {
 // m across a wall within which a jamb still counts as on it (onWall in DoorFilters::wallJambs).
 constexpr double kOnWallSlack = 0.1;
 
+// m between the probes along a hollow wall (DoorFilters::Options::hollowWallLength).
+constexpr double kHollowProbeStep = 0.25;
+
 // Length (pixels, capped at `cap`) of the obstacle that starts at `jamb` in direction (ux, uy).
 // A free cell ends it only when its neighbours across the walking direction, up to `slack`
 // cells to either side, are free too: a thin wall drawn as a digital line at an angle is
@@ -172,6 +175,61 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
         return found ? detail::cellDistance(hit.x - from.x, hit.y - from.y) : 1e9;
     };
     const WallThickness* measured = options_.wallThicknessFromMap ? wallThickness : nullptr;
+    // SLAM grids: a wall the laser saw from both sides but not inside. Its faces are occupied
+    // cells with unknown runs of at most 2 x wallHoleReach between them (holes where the laser
+    // grazed a face); a longer unknown run between two faces is its unseen inside.
+    const double hollowGap = 2 * detail::toCells(space.wallHoleReach, space.frame.resolution);
+    const bool hollowWalls = options_.hollowWallLength > 0 && hollowGap > 0;
+    // Cells of the faces on the ray from `from` (itself included) to the first free cell.
+    auto faceCells = [&](const cv::Point& from, double ux, double uy, double reach) {
+        int faces = 0, gap = 0;
+        auto take = [&](int x, int y) {
+            if (detail::isSet(space.free, x, y))
+                return true;
+            if (detail::isSet(space.unknown, x, y)) {
+                ++gap;
+            } else {
+                faces += 1 + (gap <= hollowGap ? gap : 0);
+                gap = 0;
+            }
+            return false;
+        };
+        take(from.x, from.y);
+        cv::Point hit;
+        detail::walkRay(from, ux, uy, reach, take, hit);
+        return faces + (gap <= hollowGap ? gap : 0);
+    };
+    // At `probe`, across (ux, uy): free on both sides within twice the thickest wall, with an
+    // unseen inside between faces together no thicker than the thickest wall. Their thickness
+    // (cells) when so, else 0.
+    auto hollowAt = [&](const cv::Point& probe, double ux, double uy) {
+        const double a = toFree(probe, -uy, ux, 2 * thickness),
+                     b = toFree(probe, uy, -ux, 2 * thickness);
+        if (a > 2 * thickness || b > 2 * thickness)
+            return 0;
+        const int faces =
+            faceCells(probe, -uy, ux, 2 * thickness) + faceCells(probe, uy, -ux, 2 * thickness) - 1;
+        return faces < a + b - 1 && faces <= thickness ? faces : 0;
+    };
+    // From the jamb along (ux, uy), the obstacle goes on as a hollow wall for hollowWallLength:
+    // longer than furniture, whose unseen inside looks the same from its front. Probed every
+    // kHollowProbeStep; a fifth of the probes may land where another wall joins it.
+    const double hollowLength = detail::toCells(options_.hollowWallLength, space.frame.resolution);
+    const double hollowStep =
+        std::max(1.0, detail::toCells(kHollowProbeStep, space.frame.resolution));
+    // The depth (cells) of the hollow walls the current door's jambs end: its doorway's sides
+    // are as long.
+    double hollowDepth = 0;
+    auto hollowAlong = [&](const cv::Point& jamb, double ux, double uy, double from) {
+        if (wallRun(open, jamb, ux, uy, hollowLength) < hollowLength)
+            return false;
+        int probes = 0, hollow = 0;
+        for (double at = from; at <= hollowLength; at += hollowStep, ++probes) {
+            const cv::Point p(cvRound(jamb.x + ux * at), cvRound(jamb.y + uy * at));
+            hollow += !detail::isSet(open, p.x, p.y) && hollowAt(p, ux, uy) > 0 ? 1 : 0;
+        }
+        return 5 * hollow >= 4 * probes;
+    };
     // At `at` cells from the jamb along (ux, uy), inside the obstacle, the obstacle is a wall
     // along that line: free on both sides of it at most `thickness` apart, as thick as the
     // building's walls (or free on one side only: the edge of the mapped space).
@@ -185,6 +243,15 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
             // a + b - 1 obstacle cells across: as thick as the building's walls?
             return a + b <= thickness + 1.0 &&
                    (measured == nullptr || measured->isWallThickness(a + b - 1.0));
+        }
+        if (hollowWalls) {
+            // Seen from both sides but not inside: as thick as its faces, if it goes on so.
+            const int faces = hollowAt(probe, ux, uy);
+            if (faces > 0 && (measured == nullptr || measured->isWallThickness(faces)) &&
+                hollowAlong(jamb, ux, uy, at)) {
+                hollowDepth = std::max(hollowDepth, a + b - 1);
+                return true;
+            }
         }
         if (!(std::min(a, b) <= thickness && std::max(a, b) > 2 * thickness))
             return false;
@@ -251,11 +318,12 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
         const int a = sidesOf(d.jambA, ux, uy, length), b = sidesOf(d.jambB, ux, uy, length);
         return a != 3 && b != 3 && (a & b) == 0;
     };
-    // Both jambs on walls that go on, beyond any wall's thickness, to one side of the door line:
-    // the cut runs across a corridor between its side walls (next to a side door, whose wall
-    // end makes the wall-end test pass), not through a wall.
-    const double corridorWall = thickness + 2;
+    // Both jambs on walls that go on, beyond any wall's thickness (or that of the hollow wall
+    // the door is in), to one side of the door line: the cut runs across a corridor between its
+    // side walls (next to a side door, whose wall end makes the wall-end test pass), not
+    // through a wall.
     auto acrossCorridor = [&](const VirtualDoor& d, double ux, double uy) {
+        const double corridorWall = std::max(thickness, hollowDepth) + 2;
         return (sidesOf(d.jambA, ux, uy, corridorWall) & sidesOf(d.jambB, ux, uy, corridorWall)) !=
                0;
     };
@@ -269,6 +337,7 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
                                    }
                                    if (!options_.requireWallEnd)
                                        return false;
+                                   hollowDepth = 0;
                                    const bool endA = endsItsWall(d.jambA, -ux, -uy);
                                    const bool endB = endsItsWall(d.jambB, ux, uy);
                                    if (!options_.requireBothWallEnds) {

@@ -138,8 +138,10 @@ void FreeSpaceBinarizer::markNoWall(const cv::Mat& all, FreeSpace& out) const {
     if (cv::countNonZero(unknown) == 0) {
         out.noWall.release();
         out.unknown.release();
+        out.wallHoleReach = 0;
         return;
     }
+    out.wallHoleReach = options_.wallHoleReach;
     cv::bitwise_or(all, unknown, nearOccupied_);
     cv::bitwise_not(nearOccupied_, nearOccupied_);  // occupied cells
     const int reach =

@@ -24,6 +24,7 @@ FreeSpace cropToBounds(const FreeSpace& space, cv::Rect& roi) {
     out.obstacles = space.obstacles.empty() ? cv::Mat() : space.obstacles(roi);
     out.noWall = space.noWall.empty() ? cv::Mat() : space.noWall(roi);
     out.unknown = space.unknown.empty() ? cv::Mat() : space.unknown(roi);
+    out.wallHoleReach = space.wallHoleReach;
     out.obstacleOnBorder = space.obstacleOnBorder;
     out.specksRemoved = space.specksRemoved;
     out.bounds = space.bounds - roi.tl();

@@ -122,6 +122,10 @@ void RoomSegmenter::Options::declare(config::OptionsSchema& s) {
            "a wall end free on one side only is the map's edge when nothing is free this deep "
            "behind it")
         .atLeast(0);
+    s.real("hollow_wall_length", filters.hollowWallLength, "m",
+           "a wall seen from both sides but not inside is as thick as its faces where it goes "
+           "on so this long (0 = off)")
+        .atLeast(0);
     s.flag(
         "reject_corridor_cuts", filters.rejectCorridorCuts,
         "no door with both jambs on walls going on to one side of it: a corridor's cross-section "

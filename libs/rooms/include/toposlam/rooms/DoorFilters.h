@@ -27,7 +27,9 @@
 //                 deep to be walls) and the cross-sections of corridors between doors (both
 //                 jambs on side walls). On SLAM grids unknown space away from
 //                 every occupied cell (FreeSpace::noWall: the shadow behind a table) is no
-//                 jamb and no wall;
+//                 jamb and no wall, and a wall seen from both sides but not inside is as thick
+//                 as its faces where it goes on so for longer than furniture
+//                 (hollowWallLength);
 //   constriction: a door is a narrow place between two wider spaces: walking away from the door
 //                 line on each side, within one door width the free space along the door line
 //                 becomes wider than the door by openingMargin (rules out the cross-sections
@@ -95,6 +97,14 @@ class DoorFilters {
         bool wallEndNotOnAFace = true;
         /// m: the thickest inner wall (B4's drawn walls: 0.55 m in Freiburg52, 0.65 m in office_i).
         double maxWallThickness = 0.65;
+        /// m, part of the wall-end test on SLAM grids: a wall the laser saw from both sides but
+        /// not inside (two faces with unknown cells between them, farther apart than twice the
+        /// binariser's wallHoleReach: a thick or double wall, a duct beside a corridor) is as
+        /// thick as its faces where it goes on so for this long from the jamb, along the door
+        /// line: longer than furniture, whose unseen inside looks the same from its front
+        /// (RoomSegmenter's maxFurnitureSize). 0 = off: its unseen inside counts, and such a
+        /// wall is thicker than maxWallThickness.
+        double hollowWallLength = 2.5;
         /// m: how far from a wall-end jamb, along the door line, the wall must go on and is
         /// measured for its thickness (and the reach of the wide openings' framing test).
         double wallEndProbe = 0.55;

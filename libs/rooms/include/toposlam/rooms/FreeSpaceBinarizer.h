@@ -58,6 +58,9 @@ struct FreeSpace {
     /// hardly ever seen. The non-free cells that are not unknown are occupied. Empty when the
     /// map has no unknown cell (drawn maps: every non-free cell is occupied).
     cv::Mat unknown;
+    /// m: the wallHoleReach `noWall` was made with (unknown cells this close to an occupied
+    /// cell are part of its wall); 0 when the map has no unknown cell.
+    double wallHoleReach = 0;
 };
 
 class FreeSpaceBinarizer {

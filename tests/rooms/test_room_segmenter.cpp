@@ -431,6 +431,14 @@ TEST(RoomSegmenter, DoorThroughAHollowWallIsCut) {
             grid, withTour ? posesOf(drawn.tour) : std::vector<mrpt::math::TPose2D>{});
         expectMatchesDrawing(result.map, drawn, kAcrossTheWall);
     }
+    // At any angle to the grid (its faces are staircases, the probes along it land on them).
+    for (const double degrees : everyFiveDegrees()) {
+        SCOPED_TRACE(degrees);
+        const DrawnMap turned = toposlam::rooms::test::rotated(drawn, degrees);
+        expectMatchesDrawing(
+            RoomSegmenter().segment(toposlam::rooms::test::gridOf(turned.image)).map, turned,
+            kAcrossTheWall);
+    }
     // Counting its unseen inside, the wall is 1 m thick: no wall has such an end.
     RoomSegmenter::Options solid;
     solid.filters.hollowWallLength = 0;

@@ -245,10 +245,10 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
                    (measured == nullptr || measured->isWallThickness(a + b - 1.0));
         }
         if (hollowWalls) {
-            // Seen from both sides but not inside: as thick as its faces, if it goes on so.
-            const int faces = hollowAt(probe, ux, uy);
-            if (faces > 0 && (measured == nullptr || measured->isWallThickness(faces)) &&
-                hollowAlong(jamb, ux, uy, at)) {
+            // Seen from both sides but not inside: as thick as its faces, if it goes on so. Two
+            // skins need not be as thick as the building's walls (and at an angle to the grid
+            // their staircases measure a cell or two more): no WallThickness check here.
+            if (hollowAt(probe, ux, uy) > 0 && hollowAlong(jamb, ux, uy, at)) {
                 hollowDepth = std::max(hollowDepth, a + b - 1);
                 return true;
             }

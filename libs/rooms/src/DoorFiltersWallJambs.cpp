@@ -199,17 +199,15 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
         detail::walkRay(from, ux, uy, reach, take, hit);
         return faces + (gap <= hollowGap ? gap : 0);
     };
-    // At `probe`, across (ux, uy): free on both sides within twice the thickest wall, with an
-    // unseen inside between faces together no thicker than the thickest wall. Their thickness
-    // (cells) when so, else 0.
-    auto hollowAt = [&](const cv::Point& probe, double ux, double uy) {
-        const double a = toFree(probe, -uy, ux, 2 * thickness),
-                     b = toFree(probe, uy, -ux, 2 * thickness);
+    // At `probe`, across (ux, uy), free `a` and `b` cells away (toFree): free on both sides
+    // within twice the thickest wall, with an unseen inside between faces together no thicker
+    // than the thickest wall.
+    auto hollowAcross = [&](const cv::Point& probe, double ux, double uy, double a, double b) {
         if (a > 2 * thickness || b > 2 * thickness)
-            return 0;
+            return false;
         const int faces =
             faceCells(probe, -uy, ux, 2 * thickness) + faceCells(probe, uy, -ux, 2 * thickness) - 1;
-        return faces < a + b - 1 && faces <= thickness ? faces : 0;
+        return faces < a + b - 1 && faces <= thickness;
     };
     // From the jamb along (ux, uy), the obstacle goes on as a hollow wall for hollowWallLength:
     // longer than furniture, whose unseen inside looks the same from its front. Probed every
@@ -226,7 +224,11 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
         int probes = 0, hollow = 0;
         for (double at = from; at <= hollowLength; at += hollowStep, ++probes) {
             const cv::Point p(cvRound(jamb.x + ux * at), cvRound(jamb.y + uy * at));
-            hollow += !detail::isSet(open, p.x, p.y) && hollowAt(p, ux, uy) > 0 ? 1 : 0;
+            if (!detail::isSet(open, p.x, p.y) &&
+                hollowAcross(p, ux, uy, toFree(p, -uy, ux, 2 * thickness),
+                             toFree(p, uy, -ux, 2 * thickness))) {
+                ++hollow;
+            }
         }
         return 5 * hollow >= 4 * probes;
     };
@@ -248,7 +250,7 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
             // Seen from both sides but not inside: as thick as its faces, if it goes on so. Two
             // skins need not be as thick as the building's walls (and at an angle to the grid
             // their staircases measure a cell or two more): no WallThickness check here.
-            if (hollowAt(probe, ux, uy) > 0 && hollowAlong(jamb, ux, uy, at)) {
+            if (hollowAcross(probe, ux, uy, a, b) && hollowAlong(jamb, ux, uy, at)) {
                 hollowDepth = std::max(hollowDepth, a + b - 1);
                 return true;
             }

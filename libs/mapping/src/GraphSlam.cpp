@@ -91,6 +91,7 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
     const CPose2D predicted = current_ + increment;
     const Keyframe& last = keyframes_.back();
     p.lastKeyframe = &last;
+    p.lastKeyframeReadings = &lastKeyframeReadings_;
     p.fromLastKeyframe = predicted - graph_.pose(last.id);
     p.distanceFromLastKeyframe = odometrySinceKeyframe_;
     p.turnFromLastKeyframe = turnSinceKeyframe_;
@@ -208,7 +209,8 @@ void GraphSlam::addKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
     kf.id = graph_.addNode(pose);
     kf.scanIndex = scans_.size();
     kf.scan = scan;
-    kf.polar = polar_;
+    kf.fieldOfView = std::abs(polar_.bearingStep()) * double(polar_.size());
+    lastKeyframeReadings_ = polar_;
     matching::LineMapOptions surface = lineMapOptions(options_);
     surface.maxRange = mapRange(polar_, options_);
     matching::surfacePoints(polar_, surface, kf.surface);

@@ -21,8 +21,7 @@ matching::GraphMatcherOptions withoutRetry(matching::GraphMatcherOptions o) {
 /// Whether the two keyframes' lasers can see the same things: with less than a full circle
 /// of view, sensors facing apart by more than half the aperture (plus margin) share little.
 bool viewsOverlap(const Keyframe& a, const Keyframe& b, const PoseGraph& graph) {
-    const double aperture = std::min(std::abs(a.polar.bearingStep()) * double(a.polar.size()),
-                                     std::abs(b.polar.bearingStep()) * double(b.polar.size()));
+    const double aperture = std::min(a.fieldOfView, b.fieldOfView);
     if (aperture >= 1.75 * M_PI)
         return true;
     const double ha = (graph.pose(a.id) + a.sensorOnRobot).phi();
@@ -43,7 +42,8 @@ LoopCloser::LoopCloser(const GraphSlamOptions& options,
       uncertainty_(options.driftSigmaXY, options.driftSigmaPhi, options.driftSigmaPhiPerTurn),
       pool_(options.loopThreads),
       guided_(pool_.size(), matching::GraphScanMatcher(withoutRetry(matcherOptions))),
-      free_(pool_.size(), matching::GraphScanMatcher(matcherOptions)) {}
+      free_(pool_.size(), matching::GraphScanMatcher(matcherOptions)),
+      olderReadings_(pool_.size()) {}
 
 std::vector<std::size_t> LoopCloser::gatedCandidates(std::size_t current, std::size_t firstActive,
                                                      const std::vector<Keyframe>& keyframes,
@@ -100,19 +100,19 @@ std::vector<std::size_t> LoopCloser::globalCandidates(
     return out;
 }
 
-std::optional<LoopCloser::Measurement> LoopCloser::verify(matching::GraphScanMatcher& matcher,
-                                                          const Keyframe& older,
-                                                          const Keyframe& current,
-                                                          const PoseGraph& graph,
-                                                          bool guided) const {
+std::optional<LoopCloser::Measurement> LoopCloser::verify(
+    matching::GraphScanMatcher& matcher, const Keyframe& older,
+    const matching::PolarScan& olderReadings, const Keyframe& current,
+    const matching::PolarScan& currentReadings, const PoseGraph& graph, bool guided) const {
     // This runs on several threads at once: CPose2D caches its cosine and sine in mutable
     // members, so compose only this thread's copies, never the keyframes' shared poses.
     const CPose2D olderMount = older.sensorOnRobot, currentMount = current.sensorOnRobot;
     std::optional<CPose2D> guess;
     if (guided)  // current sensor in the older sensor's frame, as the graph has it
         guess = (graph.pose(current.id) + currentMount) - (graph.pose(older.id) + olderMount);
-    const matching::MatchResult& m = matcher.match(
-        older.polar, older.features->features, current.polar, current.features->features, guess);
+    const matching::MatchResult& m =
+        matcher.match(olderReadings, older.features->features, currentReadings,
+                      current.features->features, guess);
     if (!m.reliable())
         return std::nullopt;
     Measurement out;
@@ -131,9 +131,13 @@ std::vector<std::optional<LoopCloser::Measurement>> LoopCloser::verifyAll(
     const std::vector<Keyframe>& keyframes, const PoseGraph& graph, bool guided) {
     std::vector<std::optional<Measurement>> out(candidates.size());
     std::vector<matching::GraphScanMatcher>& matchers = guided ? guided_ : free_;
+    currentReadings_.assign(*keyframes[current].scan);
     pool_.run(candidates.size(), [&](std::size_t k, std::size_t thread) {
-        out[k] =
-            verify(matchers[thread], keyframes[candidates[k]], keyframes[current], graph, guided);
+        const Keyframe& older = keyframes[candidates[k]];
+        matching::PolarScan& olderReadings = olderReadings_[thread];
+        olderReadings.assign(*older.scan);
+        out[k] = verify(matchers[thread], older, olderReadings, keyframes[current],
+                        currentReadings_, graph, guided);
     });
     return out;
 }

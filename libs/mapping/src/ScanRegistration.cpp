@@ -252,8 +252,8 @@ bool ScanRegistration::tryGraphMatcher(const matching::PolarScan& scan,
     // The prediction as a guess (the matcher retries guess-free when it leads nowhere).
     const CPose2D guess =
         (prediction.fromLastKeyframe + sensorOnRobot) - (CPose2D() + kf.sensorOnRobot);
-    const matching::MatchResult& m =
-        matcher_.match(kf.polar, kf.features->features, scan, features, guess);
+    const matching::MatchResult& m = matcher_.match(*prediction.lastKeyframeReadings,
+                                                    kf.features->features, scan, features, guess);
     if (!m.reliable())
         return false;
     const CPose2D pose = kf.sensorOnRobot + m.pose + (-sensorOnRobot);

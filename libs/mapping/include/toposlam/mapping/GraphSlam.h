@@ -116,6 +116,9 @@ class GraphSlam {
     std::size_t lastGlobalOptimization_ = 0;  ///< newest keyframe at the last global one
     matching::PolarScan polar_;               ///< the current scan (workspace)
     features::ScanFeatures features_;         ///< the current scan's features (workspace)
+    /// The last keyframe's readings, for the graph matcher (Prediction::lastKeyframeReadings;
+    /// keyframes do not keep theirs).
+    matching::PolarScan lastKeyframeReadings_;
 };
 
 }  // namespace toposlam::mapping

@@ -89,11 +89,15 @@ class LoopCloser {
     std::vector<std::size_t> globalCandidates(std::size_t current, std::size_t firstActive,
                                               const std::vector<Keyframe>& keyframes,
                                               const std::vector<std::size_t>& exclude) const;
+    /// Matches `current` against `older`, whose readings (sensor frames) are given.
     std::optional<Measurement> verify(matching::GraphScanMatcher& matcher, const Keyframe& older,
-                                      const Keyframe& current, const PoseGraph& graph,
-                                      bool guided) const;
-    /// verify() of every candidate against `current`, spread over the pool's threads;
-    /// out[k] is candidate k's match.
+                                      const matching::PolarScan& olderReadings,
+                                      const Keyframe& current,
+                                      const matching::PolarScan& currentReadings,
+                                      const PoseGraph& graph, bool guided) const;
+    /// verify() of every candidate against `current`, spread over the pool's threads (each
+    /// rebuilds its candidates' readings from their scans, Keyframe::scan); out[k] is
+    /// candidate k's match.
     std::vector<std::optional<Measurement>> verifyAll(const std::vector<std::size_t>& candidates,
                                                       std::size_t current,
                                                       const std::vector<Keyframe>& keyframes,
@@ -133,6 +137,8 @@ class LoopCloser {
     PathUncertainty uncertainty_;
     WorkerPool pool_;
     std::vector<matching::GraphScanMatcher> guided_, free_;  // one of each per pool thread
+    std::vector<matching::PolarScan> olderReadings_;         // per pool thread (reused)
+    matching::PolarScan currentReadings_;                    // the current keyframe's
     // The gate's candidates of the current query, nearest first (reused).
     std::vector<std::pair<double, std::size_t>> nearFirst_;
     std::deque<Measurement> pending_;    // guess-free matches awaiting confirmation

@@ -74,6 +74,8 @@ struct Prediction {
     const Submap* submap = nullptr;  ///< matched against (nullptr: none yet)
     mrpt::poses::CPose2D inSubmap;   ///< robot pose in the submap's frame
     const Keyframe* lastKeyframe = nullptr;
+    /// The last keyframe's readings (sensor frame), for the graph matcher.
+    const matching::PolarScan* lastKeyframeReadings = nullptr;
     mrpt::poses::CPose2D fromLastKeyframe;  ///< robot pose in the last keyframe's frame
     double distanceFromLastKeyframe = 0;    ///< m travelled by odometry since then
     double turnFromLastKeyframe = 0;        ///< rad turned by odometry since then

@@ -1,7 +1,8 @@
 #pragma once
 // Step 2a of the virtual-door method (sec. 1.4.1): straight wall segments by the progressive
-// probabilistic Hough transform (OpenCV HoughLinesP) on the occupied cells that border the
-// free space, i.e. the wall faces the robot saw. Unknown space beyond them does not vote.
+// probabilistic Hough transform (OpenCV HoughLinesP) on the non-free cells that border the
+// free space: the wall faces the robot saw (unknown space beyond them does not vote) and, on
+// SLAM grids, also the unknown cells at the edges of shadows and of the unexplored space.
 #include <toposlam/rooms/FreeSpaceBinarizer.h>
 #include <toposlam/rooms/LineSegment.h>
 

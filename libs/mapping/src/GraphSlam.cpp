@@ -238,8 +238,9 @@ void GraphSlam::addKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
 
     const std::size_t every = std::max<std::size_t>(1, options_.loopSearchEvery);
     if (options_.loopClosure && keyframes_.size() > 1 && keyframes_.back().id % every == 0) {
-        const LoopClosureOutcome loops = loopCloser_.closeLoops(
-            keyframes_.back().id, firstActiveKeyframe(), keyframes_, graph_, stats_);
+        const LoopClosureOutcome loops =
+            loopCloser_.closeLoops(keyframes_.back().id, lastKeyframeReadings_,
+                                   firstActiveKeyframe(), keyframes_, graph_, stats_);
         loopsWaiting_ += loops.accepted;
         scheduleOptimization(loops);
     }

@@ -128,16 +128,16 @@ std::optional<LoopCloser::Measurement> LoopCloser::verify(
 
 std::vector<std::optional<LoopCloser::Measurement>> LoopCloser::verifyAll(
     const std::vector<std::size_t>& candidates, std::size_t current,
-    const std::vector<Keyframe>& keyframes, const PoseGraph& graph, bool guided) {
+    const matching::PolarScan& currentReadings, const std::vector<Keyframe>& keyframes,
+    const PoseGraph& graph, bool guided) {
     std::vector<std::optional<Measurement>> out(candidates.size());
     std::vector<matching::GraphScanMatcher>& matchers = guided ? guided_ : free_;
-    currentReadings_.assign(*keyframes[current].scan);
     pool_.run(candidates.size(), [&](std::size_t k, std::size_t thread) {
         const Keyframe& older = keyframes[candidates[k]];
         matching::PolarScan& olderReadings = olderReadings_[thread];
         olderReadings.assign(*older.scan);
-        out[k] = verify(matchers[thread], older, olderReadings, keyframes[current],
-                        currentReadings_, graph, guided);
+        out[k] = verify(matchers[thread], older, olderReadings, keyframes[current], currentReadings,
+                        graph, guided);
     });
     return out;
 }
@@ -339,7 +339,9 @@ void LoopCloser::accept(const Measurement& m, PoseGraph& graph, LoopClosureOutco
         throughGate_.push_back(m);  // evidence against contested groups
 }
 
-LoopClosureOutcome LoopCloser::closeLoops(std::size_t current, std::size_t firstActive,
+LoopClosureOutcome LoopCloser::closeLoops(std::size_t current,
+                                          const matching::PolarScan& currentReadings,
+                                          std::size_t firstActive,
                                           const std::vector<Keyframe>& keyframes, PoseGraph& graph,
                                           SlamStatistics& stats) {
     const double start = io::threadCpuSeconds();
@@ -364,7 +366,7 @@ LoopClosureOutcome LoopCloser::closeLoops(std::size_t current, std::size_t first
     std::vector<Measurement> accepted;
     const std::vector<std::size_t> gated = gatedCandidates(current, firstActive, keyframes, graph);
     std::vector<Measurement> matches;
-    for (const auto& m : verifyAll(gated, current, keyframes, graph, true)) {
+    for (const auto& m : verifyAll(gated, current, currentReadings, keyframes, graph, true)) {
         ++stats.loopCandidates;
         if (m)
             matches.push_back(*m);
@@ -387,7 +389,7 @@ LoopClosureOutcome LoopCloser::closeLoops(std::size_t current, std::size_t first
         ++stats.globalSearches;
         const std::vector<std::size_t> global =
             globalCandidates(current, firstActive, keyframes, gated);
-        for (const auto& m : verifyAll(global, current, keyframes, graph, false)) {
+        for (const auto& m : verifyAll(global, current, currentReadings, keyframes, graph, false)) {
             ++stats.loopCandidates;
             if (m) {
                 ++stats.globalHypotheses;

@@ -64,9 +64,11 @@ class LoopCloser {
 
     /// Looks for loops of keyframe `current` against keyframes older than `firstActive` (the
     /// first keyframe of the active submaps) and adds the accepted ones to `graph`.
-    LoopClosureOutcome closeLoops(std::size_t current, std::size_t firstActive,
-                                  const std::vector<Keyframe>& keyframes, PoseGraph& graph,
-                                  SlamStatistics& stats);
+    /// `currentReadings`: keyframe `current`'s readings (sensor frame; keyframes do not keep
+    /// theirs, Keyframe::scan).
+    LoopClosureOutcome closeLoops(std::size_t current, const matching::PolarScan& currentReadings,
+                                  std::size_t firstActive, const std::vector<Keyframe>& keyframes,
+                                  PoseGraph& graph, SlamStatistics& stats);
 
     /// After optimisation: withdraws the loop edge with the largest chi-square above
     /// loopWithdrawChi2; true when one was withdrawn (optimise again).
@@ -100,6 +102,7 @@ class LoopCloser {
     /// candidate k's match.
     std::vector<std::optional<Measurement>> verifyAll(const std::vector<std::size_t>& candidates,
                                                       std::size_t current,
+                                                      const matching::PolarScan& currentReadings,
                                                       const std::vector<Keyframe>& keyframes,
                                                       const PoseGraph& graph, bool guided);
     /// Gated matches that agree with the graph (none when they contradict each other); the
@@ -138,7 +141,6 @@ class LoopCloser {
     WorkerPool pool_;
     std::vector<matching::GraphScanMatcher> guided_, free_;  // one of each per pool thread
     std::vector<matching::PolarScan> olderReadings_;         // per pool thread (reused)
-    matching::PolarScan currentReadings_;                    // the current keyframe's
     // The gate's candidates of the current query, nearest first (reused).
     std::vector<std::pair<double, std::size_t>> nearFirst_;
     std::deque<Measurement> pending_;    // guess-free matches awaiting confirmation

@@ -154,5 +154,40 @@ TEST(LineMap, AnswersAfterClearAsANewMapDoes) {
     }
 }
 
+// reset() also forgets where the first point put the lattice: a map reused for a new submap
+// (GraphSlam) answers every lookup exactly as a new map, where clear() keeps the old cells.
+TEST(LineMap, AnswersAfterResetExactlyAsANewMapDoes) {
+    LineMap reused, fresh;
+    for (int i = 0; i < 50; ++i)  // first point 1.3 cm and 2.7 cm off the new points' lattice
+        reused.insert(pointAt(30.013f + 0.2f * float(i), -20.027f, 0, 1));
+    reused.reset();
+    EXPECT_EQ(reused.size(), 0u);
+    EXPECT_EQ(reused.scans(), 0u);
+    EXPECT_EQ(reused.lookupCells(), 0u);
+    EXPECT_EQ(reused.nearest(31, -20), nullptr);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> along(-3, 3), across(-0.02f, 0.02f);
+    for (int i = 0; i < 200; ++i) {
+        const LineMapPoint p = pointAt(along(rng), 5 + across(rng), 0, 1);
+        reused.insert(p);
+        fresh.insert(p);
+    }
+    ASSERT_EQ(reused.size(), fresh.size());
+    EXPECT_EQ(reused.lookupCells(), fresh.lookupCells());
+    int answered = 0;
+    for (double x = -4; x < 4; x += 0.0037) {
+        for (double y = 4.55; y < 5.45; y += 0.0113) {
+            const LineMapPoint* a = reused.nearest(x, y);
+            const LineMapPoint* b = fresh.nearest(x, y);
+            ASSERT_EQ(a == nullptr, b == nullptr) << x << ", " << y;
+            if (a != nullptr) {
+                ++answered;
+                ASSERT_EQ(a - reused.points().data(), b - fresh.points().data()) << x << ", " << y;
+            }
+        }
+    }
+    EXPECT_GT(answered, 10000);
+}
+
 }  // namespace
 }  // namespace toposlam

@@ -295,7 +295,7 @@ void GraphSlam::updateSubmaps(const Keyframe& kf) {
         submaps_[s].insert(kf, graph_.pose(kf.id) - graph_.pose(submaps_[s].anchor()));
     if (submaps_[firstActiveSubmap_].keyframes().size() >= perSubmap &&
         firstActiveSubmap_ + 1 < submaps_.size()) {
-        submaps_[firstActiveSubmap_].finish();
+        spareLineMap_ = submaps_[firstActiveSubmap_].finish();
         ++firstActiveSubmap_;
         // Keyframes older than every active submap are never inserted into one again.
         for (std::size_t id = submaps_[firstActiveSubmap_ - 1].anchor(); id < firstActiveKeyframe();
@@ -303,7 +303,12 @@ void GraphSlam::updateSubmaps(const Keyframe& kf) {
             std::vector<matching::SurfacePoint>().swap(keyframes_[id].surface);
     }
     if (submaps_.back().keyframes().size() >= perSubmap / 2) {
-        submaps_.emplace_back(kf.id, lineMapOptions(options_));
+        if (spareLineMap_) {
+            submaps_.emplace_back(kf.id, std::move(*spareLineMap_));
+            spareLineMap_.reset();
+        } else {
+            submaps_.emplace_back(kf.id, lineMapOptions(options_));
+        }
         submaps_.back().insert(kf, CPose2D());
         stats_.submaps = submaps_.size();
     }

@@ -33,6 +33,16 @@ void LineMap::clear() {
     std::fill(tileOf_.begin(), tileOf_.end(), kNone);
 }
 
+void LineMap::reset() {
+    points_.clear();
+    scans_ = 0;
+    tilesUsed_ = 0;
+    tileOf_.clear();
+    tilesX_ = tilesY_ = 0;
+    latticeX_ = latticeY_ = 0;
+    firstCellX_ = firstCellY_ = 0;
+}
+
 void surfacePoints(const PolarScan& scan, const LineMapOptions& options,
                    std::vector<SurfacePoint>& out) {
     out.clear();

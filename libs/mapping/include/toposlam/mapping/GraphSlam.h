@@ -102,6 +102,8 @@ class GraphSlam {
     std::vector<Keyframe> keyframes_;
     std::vector<Submap> submaps_;
     std::size_t firstActiveSubmap_ = 0;
+    /// The line map of the submap finished last, for the next new submap to reuse.
+    std::optional<matching::LineMap> spareLineMap_;
     std::vector<ScanRecord> scans_;
     SlamStatistics stats_;
     mrpt::poses::CPose2D initialPose_;

@@ -18,6 +18,8 @@ namespace toposlam::mapping {
 class Submap {
   public:
     Submap(std::size_t anchor, const matching::LineMapOptions& options);
+    /// The same, its line map in `reused`'s memory (a finished submap's, see finish()), reset.
+    Submap(std::size_t anchor, matching::LineMap&& reused);
 
     /// Keyframe id whose robot frame is this submap's frame.
     std::size_t anchor() const { return anchor_; }
@@ -28,8 +30,8 @@ class Submap {
     void insert(const Keyframe& kf, const mrpt::poses::CPose2D& robotInSubmap);
     /// Empties the line map (for a rebuild: insert the keyframes again); keeps nothing.
     void clear();
-    /// Frees the line map; the keyframe list stays.
-    void finish();
+    /// Gives up the line map, returned for a new submap to reuse; the keyframe list stays.
+    matching::LineMap finish();
     bool finished() const { return finished_; }
 
   private:

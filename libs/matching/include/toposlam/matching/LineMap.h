@@ -56,8 +56,11 @@ class LineMap {
     explicit LineMap(const LineMapOptions& options = {});
 
     const LineMapOptions& options() const { return options_; }
-    /// Empties the map (keeps its memory).
+    /// Empties the map (keeps its memory). The lattice stays where the first point put it.
     void clear();
+    /// Empties the map and its lattice: the map then behaves exactly as a new one, but keeps
+    /// its memory (a new submap's map reuses a finished one's: no regrowing, no page faults).
+    void reset();
     /// Adds every valid reading of `scan` that has a local line, seen from `sensorPose` (the
     /// scan's sensor in the map frame).
     void insertScan(const PolarScan& scan, const mrpt::poses::CPose2D& sensorPose);

@@ -16,9 +16,11 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <set>
+#include <vector>
 
 using namespace toposlam::rooms;
 
@@ -59,6 +61,110 @@ TEST(LineMerger, KeepsParallelWallsPerpendicularWallsAndDistantPieces) {
     EXPECT_FALSE(LineMerger::canMerge(base, {{30, 0}, {40, 0}}, 5 * M_PI / 180, 2.0));   // eq. 7
     // Reversed endpoints are the same direction (undirected segments).
     EXPECT_TRUE(LineMerger::canMerge(base, {{12, 0.5f}, {5, 0.5f}}, 5 * M_PI / 180, 2.0));
+}
+
+namespace {
+
+// Eqs. 5-7 and the merge loop as the paper states them, every quantity computed afresh for
+// every pair: the reference LineMerger::merge must agree with exactly.
+bool referenceCanMerge(const LineSegment& a, const LineSegment& b, double maxAngle,
+                       double maxDistance) {
+    const cv::Point3d la = a.homogeneous(), lb = b.homogeneous();
+    const double na = std::hypot(la.x, la.y), nb = std::hypot(lb.x, lb.y);
+    const double angle =
+        na == 0 || nb == 0
+            ? 0
+            : std::acos(std::min(1.0, std::abs(la.x * lb.x + la.y * lb.y) / (na * nb)));
+    if (angle >= maxAngle)
+        return false;
+    if (0.5 * (a.lineDistance(b.start) + a.lineDistance(b.end)) >= maxDistance)
+        return false;
+    const cv::Point2f dm = a.midpoint() - b.midpoint();
+    return std::hypot(dm.x, dm.y) < 0.5 * (a.length() + b.length());
+}
+
+std::vector<LineSegment> referenceMerge(std::vector<LineSegment> lines, double maxAngle,
+                                        double maxDistance) {
+    for (bool merged = true; merged;) {
+        merged = false;
+        std::sort(lines.begin(), lines.end(), [](const LineSegment& a, const LineSegment& b) {
+            return a.length() > b.length();
+        });
+        std::vector<bool> gone(lines.size(), false);
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            for (std::size_t j = i + 1; !gone[i] && j < lines.size(); ++j) {
+                if (gone[j] || !referenceCanMerge(lines[i], lines[j], maxAngle, maxDistance))
+                    continue;
+                // Extend i along its line over j's projected endpoints.
+                LineSegment& base = lines[i];
+                const cv::Point2f d = base.end - base.start;
+                const double len = std::hypot(d.x, d.y);
+                if (len > 0) {
+                    const cv::Point2f u(static_cast<float>(d.x / len),
+                                        static_cast<float>(d.y / len));
+                    auto along = [&](const cv::Point2f& p) {
+                        return static_cast<double>((p - base.start).dot(u));
+                    };
+                    const double t0 = std::min({0.0, along(lines[j].start), along(lines[j].end)});
+                    const double t1 = std::max({len, along(lines[j].start), along(lines[j].end)});
+                    const cv::Point2f s = base.start;
+                    base.start = s + u * static_cast<float>(t0);
+                    base.end = s + u * static_cast<float>(t1);
+                }
+                gone[j] = true;
+                merged = true;
+            }
+        }
+        std::vector<LineSegment> kept;
+        for (std::size_t i = 0; i < lines.size(); ++i)
+            if (!gone[i])
+                kept.push_back(lines[i]);
+        lines = kept;
+    }
+    return lines;
+}
+
+}  // namespace
+
+// Hough-like input: pieces of a few walls, a cell or so off their line and a few degrees off
+// their direction, some exactly at the angle threshold. LineMerger computes each segment's
+// geometry once and decides the angle by its cosine away from the threshold; the merges must
+// be those of the equations evaluated pair by pair.
+TEST(LineMerger, MergesExactlyAsTheEquationsEvaluatedPairByPair) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> unit(0, 1);
+    const double maxAngle = 5 * M_PI / 180, maxDistance = 0.1 / kRes;
+    std::size_t pieces = 0, mergedAway = 0;
+    for (int map = 0; map < 40; ++map) {
+        std::vector<LineSegment> lines;
+        for (int wall = 0; wall < 12; ++wall) {
+            const double a = unit(rng) * M_PI, ox = 300 * unit(rng), oy = 300 * unit(rng);
+            for (int piece = 0; piece < 6; ++piece) {
+                // Pieces on the wall's direction and exactly 5 degrees off it (pairs at the
+                // threshold, give or take the rounding of float endpoints), the others within
+                // 6 degrees.
+                const double off = piece % 3 == 0   ? maxAngle
+                                   : piece % 3 == 1 ? 0.0
+                                                    : (unit(rng) - 0.5) * 12 * M_PI / 180;
+                const double t = 60 * unit(rng), len = 5 + 30 * unit(rng), side = 3 * unit(rng);
+                const double px = ox + t * std::cos(a) - side * std::sin(a);
+                const double py = oy + t * std::sin(a) + side * std::cos(a);
+                lines.push_back({cv::Point2f(static_cast<float>(px), static_cast<float>(py)),
+                                 cv::Point2f(static_cast<float>(px + len * std::cos(a + off)),
+                                             static_cast<float>(py + len * std::sin(a + off)))});
+            }
+        }
+        const auto expected = referenceMerge(lines, maxAngle, maxDistance);
+        const auto merged = LineMerger().merge(lines, kRes);
+        ASSERT_EQ(merged.size(), expected.size()) << "map " << map;
+        for (std::size_t k = 0; k < merged.size(); ++k) {
+            EXPECT_EQ(merged[k].start, expected[k].start) << "map " << map << " line " << k;
+            EXPECT_EQ(merged[k].end, expected[k].end) << "map " << map << " line " << k;
+        }
+        pieces += lines.size();
+        mergedAway += lines.size() - merged.size();
+    }
+    EXPECT_GT(mergedAway, pieces / 4);  // the input does merge, a lot
 }
 
 TEST(MainDirectionVoter, PicksTheLongestDirectionAndItsPerpendicular) {

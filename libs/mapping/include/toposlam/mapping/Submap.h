@@ -3,9 +3,10 @@
 // the line map that scans are registered against. The graph SLAM keeps two active submaps
 // overlapping by half (as Cartographer does): every keyframe goes into both, scans are matched
 // against the older, fuller one, and a submap that has its share of keyframes is finished
-// (its line map freed; its keyframes stay in the graph). Because the content is in the
-// anchor's frame, the submap moves rigidly with the anchor when the graph is optimised; after
-// an optimisation the active submaps are rebuilt from their keyframes' new poses.
+// (its line map goes to the next new submap, which reuses its memory; its keyframes stay in the
+// graph). Because the content is in the anchor's frame, the submap moves rigidly with the
+// anchor when the graph is optimised; after an optimisation the active submaps are rebuilt
+// from their keyframes' new poses.
 #include <mrpt/poses/CPose2D.h>
 #include <toposlam/mapping/Keyframe.h>
 #include <toposlam/matching/LineMap.h>

@@ -158,7 +158,9 @@ TEST(LineMap, AnswersAfterClearAsANewMapDoes) {
 // (GraphSlam) answers every lookup exactly as a new map, where clear() keeps the old cells.
 TEST(LineMap, AnswersAfterResetExactlyAsANewMapDoes) {
     LineMap reused, fresh;
-    for (int i = 0; i < 50; ++i)  // first point 1.3 cm and 2.7 cm off the new points' lattice
+    // Its first point anchors a lattice a fraction of a cell off the one the new points' first
+    // point anchors in `fresh` (1.3 and 2.7 cm past a whole number of cells).
+    for (int i = 0; i < 50; ++i)
         reused.insert(pointAt(30.013f + 0.2f * float(i), -20.027f, 0, 1));
     reused.reset();
     EXPECT_EQ(reused.size(), 0u);

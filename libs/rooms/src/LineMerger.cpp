@@ -24,11 +24,11 @@ struct Measured {
         normalLength = std::hypot(homogeneous.x, homogeneous.y);
         midpoint = line.midpoint();
     }
-    /// LineSegment::lineDistance.
+    /// LineSegment::lineDistance, from the cached line (a point-like segment: its own).
     double lineDistance(const cv::Point2f& p) const {
         const cv::Point3d& l = homogeneous;
         return normalLength > 0 ? std::abs(l.x * p.x + l.y * p.y + l.z) / normalLength
-                                : std::hypot(p.x - line.start.x, p.y - line.start.y);
+                                : line.lineDistance(p);
     }
 };
 

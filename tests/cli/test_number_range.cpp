@@ -16,7 +16,7 @@ TEST(NumberRange, AcceptsOnlyWholeFiniteNumbersInside) {
     EXPECT_EQ(r.parse("100"), 100.0);
     EXPECT_EQ(r.parse("1e1"), 10.0);
     for (const char* bad : {"0", "-1", "100.5", "nan", "NaN", "inf", "-inf", "1e999", "", "abc",
-                            "1.5x", " 1", "1 ", "0x10", "+1"}) {
+                            "1.5x", "12abc", "1e300", " 1", "1 ", "0x10", "+1"}) {
         EXPECT_FALSE(r.parse(bad)) << bad;
     }
     EXPECT_EQ(r.describe(), "a number in (0, 100]");

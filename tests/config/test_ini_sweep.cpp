@@ -206,8 +206,8 @@ std::string loadError(const std::string& iniText, const std::string& section,
 
 TEST(IniSweep, MisspelledKeysAndBadValuesAreErrorsNamingTheKey) {
     // Every key with every bad value in process; through the app (the same code path, but
-    // ~0.5 s a run) a typo and all bad values of the first key of each section and one bad
-    // value of every 8th key.
+    // 0.2-1 s a run) a typo in the first key of each section and one bad value of every 8th
+    // key (the first included), taking each kind of bad value in turn.
     test::TempDir dir;
     for (const IniUse& use : iniUses(dir)) {
         const std::string path = test::configIni(use.file);
@@ -230,7 +230,7 @@ TEST(IniSweep, MisspelledKeysAndBadValuesAreErrorsNamingTheKey) {
                     const std::string spoilt = withLine(text, section, key, key + " = " + bad[v]);
                     const std::string expected = "[" + section + "] " + key + " = " + bad[v] + ": ";
                     EXPECT_NE(loadError(spoilt, section, dir).find(expected), std::string::npos);
-                    if (i == 0 || (i % 8 == 0 && v == i / 8 % bad.size())) {
+                    if (i % 8 == 0 && v == i / 8 % bad.size()) {
                         const std::string output = runWith(use, spoilt, false, dir, section);
                         EXPECT_NE(output.find(expected), std::string::npos) << output;
                     }

@@ -1,9 +1,10 @@
 // Every .ini file of config_ini/ through the app that reads it, spoilt three ways: garbage
 // bytes, a misspelled key, bad values (not a number, NaN, out of range). Each must end in a
 // clear "error: <file>: ..." on stderr, exit status 1 and no output file; the unspoilt file
-// must work. Sections passed through to MRPT ([ICP], icp-slam's [MappingApplication]) are
-// MRPT's to read and are only spoilt with garbage. Not here yet: rooms.ini (RoomSegmenter's
-// options are not config::Options yet); the icp-slam / kf-slam files are read by MRPT's apps.
+// must work. Every key and bad value is checked in process, a sample through the apps. Sections
+// passed through to MRPT ([ICP], icp-slam's [MappingApplication]) are MRPT's to read and are only
+// spoilt with garbage. Not here yet: rooms.ini (RoomSegmenter's options are not config::Options
+// yet); the icp-slam / kf-slam files are read by MRPT's apps.
 #include <gtest/gtest.h>
 #include <toposlam/config/ConfigError.h>
 #include <toposlam/config/IniFile.h>
@@ -14,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <random>
 #include <sstream>
 
@@ -193,6 +195,8 @@ TEST(IniSweep, GarbageIsAnErrorNamingTheFile) {
     }
 }
 
+namespace {
+
 /// The error of reading `iniText`'s [section] with a fresh struct, in process ("" when none).
 std::string loadError(const std::string& iniText, const std::string& section,
                       const test::TempDir& dir) {
@@ -204,47 +208,75 @@ std::string loadError(const std::string& iniText, const std::string& section,
     });
 }
 
-TEST(IniSweep, MisspelledKeysAndBadValuesAreErrorsNamingTheKey) {
-    // Every key with every bad value in process; through the app (the same code path, but
-    // 0.2-1 s a run) a typo in the first key of each section and one bad value of every 8th
-    // key (the first included), taking each kind of bad value in turn.
-    test::TempDir dir;
-    for (const IniUse& use : iniUses(dir)) {
-        const std::string path = test::configIni(use.file);
-        const std::string text = fileText(path);
-        auto ini = config::openIniFile(path);
-        std::vector<std::string> sections;
-        ini->getAllSections(sections);
-        for (const std::string& section : sections) {
-            const auto it = test::sectionStructs().find(section);
-            if (it == test::sectionStructs().end())
-                continue;  // MRPT's (see the file comment)
-            auto options = it->second();
-            const config::OptionsSchema schema = options->schema();
-            for (std::size_t i = 0; i < schema.fields().size(); ++i) {
-                const config::Field& f = schema.fields()[i];
-                const std::string key = f.key();
-                SCOPED_TRACE(use.file + " [" + section + "] " + key);
-                const std::vector<std::string> bad = badValues(f);
-                for (std::size_t v = 0; v < bad.size(); ++v) {
-                    const std::string spoilt = withLine(text, section, key, key + " = " + bad[v]);
-                    const std::string expected = "[" + section + "] " + key + " = " + bad[v] + ": ";
-                    EXPECT_NE(loadError(spoilt, section, dir).find(expected), std::string::npos);
-                    if (i % 8 == 0 && v == i / 8 % bad.size()) {
-                        const std::string output = runWith(use, spoilt, false, dir, section);
-                        EXPECT_NE(output.find(expected), std::string::npos) << output;
-                    }
-                }
-                const std::string typo = key.substr(0, 1) + key.substr(2);  // a letter dropped
-                const std::string spoilt = withLine(text, section, key, typo + " = " + f.text());
-                const std::string expected = "[" + section + "] " + typo + " = " + f.text() +
-                                             ": unknown key; did you mean '" + key + "'?";
-                EXPECT_NE(loadError(spoilt, section, dir).find(expected), std::string::npos);
-                if (i == 0) {
-                    const std::string output = runWith(use, spoilt, false, dir, section);
-                    EXPECT_NE(output.find(expected), std::string::npos) << output;
-                }
+/// A shipped file with one key of one [section] spoilt: a bad value or a letter dropped.
+struct SpoiltKey {
+    std::string section, key, text;
+    std::string expected;  ///< what the error says ("[section] key = value: ...")
+    bool throughApp;       ///< also run through the app: a sample, each run takes 0.2-1 s
+};
+
+/// Every key of every [section] of config_ini/`file` that is ours (see the file comment), with
+/// each of its bad values and with a typo. The app runs a typo in the first key of each
+/// section and one bad value of every 8th key (the first included), each kind in turn.
+std::vector<SpoiltKey> spoiltKeys(const std::string& file) {
+    const std::string path = test::configIni(file);
+    const std::string text = fileText(path);
+    std::vector<std::string> sections;
+    config::openIniFile(path)->getAllSections(sections);
+    std::vector<SpoiltKey> spoilt;
+    for (const std::string& section : sections) {
+        const auto it = test::sectionStructs().find(section);
+        if (it == test::sectionStructs().end())
+            continue;  // MRPT's (see the file comment)
+        const config::OptionsSchema schema = it->second()->schema();
+        for (std::size_t i = 0; i < schema.fields().size(); ++i) {
+            const config::Field& f = schema.fields()[i];
+            const std::string key = f.key();
+            const std::vector<std::string> bad = badValues(f);
+            for (std::size_t v = 0; v < bad.size(); ++v) {
+                spoilt.push_back({section, key, withLine(text, section, key, key + " = " + bad[v]),
+                                  "[" + section + "] " + key + " = " + bad[v] + ": ",
+                                  i % 8 == 0 && v == i / 8 % bad.size()});
             }
+            const std::string typo = key.substr(0, 1) + key.substr(2);
+            spoilt.push_back({section, key, withLine(text, section, key, typo + " = " + f.text()),
+                              "[" + section + "] " + typo + " = " + f.text() +
+                                  ": unknown key; did you mean '" + key + "'?",
+                              i == 0});
+        }
+    }
+    return spoilt;
+}
+
+const char* const kSpoiltFiles[] = {"features.ini", "graph-matcher.ini", "bench-matching-icp.ini",
+                                    "toposlam-slam.ini", "sim-office.ini"};
+
+}  // namespace
+
+// In process: every key, every bad value.
+TEST(IniKeys, MisspelledKeysAndBadValuesAreErrorsNamingTheKey) {
+    test::TempDir dir;
+    for (const char* file : kSpoiltFiles) {
+        for (const SpoiltKey& k : spoiltKeys(file)) {
+            EXPECT_NE(loadError(k.text, k.section, dir).find(k.expected), std::string::npos)
+                << file << " [" << k.section << "] " << k.key << ": " << k.expected;
+        }
+    }
+}
+
+// Through the apps (the same code path): a sample of the keys above.
+TEST(IniSweep, TheAppsNameTheMisspelledKeyOrBadValue) {
+    test::TempDir dir;
+    const std::vector<IniUse> uses = iniUses(dir);
+    ASSERT_EQ(uses.size(), std::size(kSpoiltFiles));
+    for (std::size_t u = 0; u < uses.size(); ++u) {
+        ASSERT_EQ(uses[u].file, kSpoiltFiles[u]);
+        for (const SpoiltKey& k : spoiltKeys(uses[u].file)) {
+            if (!k.throughApp)
+                continue;
+            SCOPED_TRACE(uses[u].file + " [" + k.section + "] " + k.key);
+            const std::string output = runWith(uses[u], k.text, false, dir, k.section);
+            EXPECT_NE(output.find(k.expected), std::string::npos) << output;
         }
     }
 }

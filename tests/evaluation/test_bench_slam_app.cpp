@@ -19,9 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool contains(const std::string& text, const std::string& what) {
-    return text.find(what) != std::string::npos;
-}
+using toposlam::test::contains;
 
 nlohmann::json readJson(const std::string& path) {
     std::ifstream in(path);

@@ -18,9 +18,7 @@ using toposlam::test::TempDir;
 
 namespace {
 
-bool contains(const std::string& text, const std::string& what) {
-    return text.find(what) != std::string::npos;
-}
+using toposlam::test::contains;
 
 using toposlam::test::readFile;
 

@@ -35,9 +35,7 @@ void touch(const std::string& path, const std::string& text = "x\n") {
     std::ofstream(path) << text;
 }
 
-bool contains(const std::string& text, const std::string& what) {
-    return text.find(what) != std::string::npos;
-}
+using toposlam::test::contains;
 
 }  // namespace
 

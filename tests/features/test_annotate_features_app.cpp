@@ -52,9 +52,7 @@ int objectCount(const std::string& infoOutput) {
     return std::regex_search(infoOutput, m, re) ? std::stoi(m[1]) : -1;
 }
 
-std::string pluginPath() {
-    return std::filesystem::canonical(test::binDir() + "/../lib/libtoposlam-plugin.so").string();
-}
+using toposlam::test::pluginPath;
 
 }  // namespace
 

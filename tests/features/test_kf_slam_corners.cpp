@@ -49,9 +49,7 @@ std::vector<CPose2D> loopPoses() {
     return poses;
 }
 
-std::string pluginPath() {
-    return std::filesystem::canonical(test::binDir() + "/../lib/libtoposlam-plugin.so").string();
-}
+using toposlam::test::pluginPath;
 
 /// Landmark means from one of kf-slam's 3D scenes: CRangeBearingKFSLAM2D::getAs3DObject draws
 /// every landmark as a CEllipsoid2D named by its index, placed at the landmark's mean (the

@@ -59,14 +59,12 @@ int trinaryClass(float pFree) {
     return pOcc > 0.65f ? 0 : pOcc < 0.196f ? 2 : 1;
 }
 
-std::string loadError(const std::string& path,
-                      const std::optional<GridMapGeometry>& geometry = std::nullopt) {
+std::string gridMapLoadError(const std::string& path,
+                             const std::optional<GridMapGeometry>& geometry = std::nullopt) {
     return toposlam::test::errorOf<InputError>([&] { loadGridMap(path, geometry); });
 }
 
-void writeText(const std::string& path, const std::string& text) {
-    std::ofstream(path) << text;
-}
+using toposlam::test::writeText;
 
 }  // namespace
 
@@ -208,16 +206,19 @@ TEST(GridMapIO, BareImageUsesGivenGeometry) {
 
 TEST(GridMapIO, BadInputIsReportedWithTheFileName) {
     toposlam::test::TempDir dir;
-    EXPECT_NE(loadError(dir.file("none.png")).find("none.png: file not found"), std::string::npos);
-    EXPECT_NE(loadError(dir.file("none.gridmap.gz")).find("file not found"), std::string::npos);
-    EXPECT_NE(loadError(dir.file("map.txt")).find("unknown grid map format"), std::string::npos);
+    EXPECT_NE(gridMapLoadError(dir.file("none.png")).find("none.png: file not found"),
+              std::string::npos);
+    EXPECT_NE(gridMapLoadError(dir.file("none.gridmap.gz")).find("file not found"),
+              std::string::npos);
+    EXPECT_NE(gridMapLoadError(dir.file("map.txt")).find("unknown grid map format"),
+              std::string::npos);
 
     writeText(dir.file("junk.png"), "this is not a PNG");
-    EXPECT_NE(loadError(dir.file("junk.png")).find("junk.png: cannot read the image"),
+    EXPECT_NE(gridMapLoadError(dir.file("junk.png")).find("junk.png: cannot read the image"),
               std::string::npos);
 
     writeText(dir.file("junk.gridmap"), "this is not a gridmap");
-    EXPECT_NE(loadError(dir.file("junk.gridmap")).find("not a valid .gridmap file"),
+    EXPECT_NE(gridMapLoadError(dir.file("junk.gridmap")).find("not a valid .gridmap file"),
               std::string::npos);
 
     // A truncated .gridmap.gz: gzip data that stops early.
@@ -228,56 +229,61 @@ TEST(GridMapIO, BadInputIsReportedWithTheFileName) {
         std::ofstream(dir.file("cut.gridmap.gz"), std::ios::binary)
             << bytes.substr(0, bytes.size() / 2);
     }
-    EXPECT_NE(loadError(dir.file("cut.gridmap.gz")).find("cut.gridmap.gz: "), std::string::npos);
+    EXPECT_NE(gridMapLoadError(dir.file("cut.gridmap.gz")).find("cut.gridmap.gz: "),
+              std::string::npos);
 
     // Another MRPT class in a .gridmap file.
     {
         mrpt::io::CFileGZOutputStream out(dir.file("other.gridmap.gz"));
         mrpt::serialization::archiveFrom(out) << mrpt::poses::CPose2D(1, 2, 3);
     }
-    EXPECT_NE(loadError(dir.file("other.gridmap.gz")).find("not a valid .gridmap file"),
+    EXPECT_NE(gridMapLoadError(dir.file("other.gridmap.gz")).find("not a valid .gridmap file"),
               std::string::npos);
 
     // No free cell: all occupied, or all unknown.
     COccupancyGridMap2D walls(0, 1, 0, 1, 0.1f);
     walls.fill(0.0f);
     saveGridMap(walls, dir.file("walls.gridmap"));
-    EXPECT_NE(loadError(dir.file("walls.gridmap")).find("walls.gridmap: map has no free cells"),
-              std::string::npos);
+    EXPECT_NE(
+        gridMapLoadError(dir.file("walls.gridmap")).find("walls.gridmap: map has no free cells"),
+        std::string::npos);
     cv::Mat grey(5, 5, CV_8UC1, cv::Scalar(205));
     ASSERT_TRUE(cv::imwrite(dir.file("unknown.pgm"), grey));
     writeText(dir.file("unknown.yaml"),
               "image: unknown.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n"
               "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n");
-    EXPECT_NE(loadError(dir.file("unknown.yaml")).find("map has no free cells"), std::string::npos);
+    EXPECT_NE(gridMapLoadError(dir.file("unknown.yaml")).find("map has no free cells"),
+              std::string::npos);
 
     // Bad metadata.
     writeText(dir.file("nokey.yaml"), "image: unknown.pgm\nresolution: 0.05\n");
-    EXPECT_NE(loadError(dir.file("nokey.yaml")).find("nokey.yaml: missing key 'origin'"),
+    EXPECT_NE(gridMapLoadError(dir.file("nokey.yaml")).find("nokey.yaml: missing key 'origin'"),
               std::string::npos);
     writeText(dir.file("yaw.yaml"),
               "image: unknown.pgm\nresolution: 0.05\norigin: [0, 0, 0.5]\n"
               "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n");
-    EXPECT_NE(loadError(dir.file("yaw.yaml")).find("yaw"), std::string::npos);
+    EXPECT_NE(gridMapLoadError(dir.file("yaw.yaml")).find("yaw"), std::string::npos);
     writeText(dir.file("noimg.yaml"),
               "image: absent.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n"
               "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n");
-    EXPECT_NE(loadError(dir.file("noimg.yaml")).find("absent.pgm: file not found"),
+    EXPECT_NE(gridMapLoadError(dir.file("noimg.yaml")).find("absent.pgm: file not found"),
               std::string::npos);
-    EXPECT_NE(loadError(dir.file("unknown.pgm"), GridMapGeometry{0.0, 0, 0}).find("resolution"),
-              std::string::npos);
+    EXPECT_NE(
+        gridMapLoadError(dir.file("unknown.pgm"), GridMapGeometry{0.0, 0, 0}).find("resolution"),
+        std::string::npos);
     // A cell size the grid's float cannot hold (1e-300 becomes 0), an origin beyond any map.
     writeText(dir.file("tiny.yaml"),
               "image: unknown.pgm\nresolution: 1e-300\norigin: [0, 0, 0]\n"
               "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n");
-    EXPECT_NE(loadError(dir.file("tiny.yaml"))
+    EXPECT_NE(gridMapLoadError(dir.file("tiny.yaml"))
                   .find("tiny.yaml: resolution 1e-300 m is out of range: a number in [0.001, 100]"),
               std::string::npos);
     writeText(dir.file("far.yaml"),
               "image: unknown.pgm\nresolution: 0.05\norigin: [1e300, 0, 0]\n"
               "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n");
-    EXPECT_NE(loadError(dir.file("far.yaml")).find("far.yaml: origin 1e+300, 0 is out of range"),
-              std::string::npos);
+    EXPECT_NE(
+        gridMapLoadError(dir.file("far.yaml")).find("far.yaml: origin 1e+300, 0 is out of range"),
+        std::string::npos);
 }
 
 TEST(GridMapIO, SaveIsAtomicAndRejectsUnknownFormats) {

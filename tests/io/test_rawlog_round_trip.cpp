@@ -219,7 +219,7 @@ TEST(RawlogRoundTrip, ObservationsOdometryIsInterpolatedAtScanTime) {
 
 namespace {
 
-std::string readError(const std::string& path) {
+std::string rawlogReadError(const std::string& path) {
     return toposlam::test::errorOf<InputError>([&] { LaserLogReader::readAll(path); });
 }
 
@@ -236,19 +236,20 @@ void writeBytes(const std::string& path, const std::string& bytes) {
 
 TEST(RawlogBadInput, MissingEmptyGarbage) {
     toposlam::test::TempDir dir;
-    EXPECT_NE(readError(dir.file("none.rawlog")).find("none.rawlog: file not found"),
+    EXPECT_NE(rawlogReadError(dir.file("none.rawlog")).find("none.rawlog: file not found"),
               std::string::npos);
     writeBytes(dir.file("empty.rawlog"), "");
-    EXPECT_NE(readError(dir.file("empty.rawlog")).find("empty.rawlog: file is empty"),
+    EXPECT_NE(rawlogReadError(dir.file("empty.rawlog")).find("empty.rawlog: file is empty"),
               std::string::npos);
     writeBytes(dir.file("garbage.rawlog"), std::string("\x01\x02\x03\xff\xfe garbage", 13));
-    EXPECT_NE(readError(dir.file("garbage.rawlog")).find("neither a CARMEN log nor an MRPT rawlog"),
-              std::string::npos);
+    EXPECT_NE(
+        rawlogReadError(dir.file("garbage.rawlog")).find("neither a CARMEN log nor an MRPT rawlog"),
+        std::string::npos);
     // A PNG: MRPT reads its first bytes as a class name, NUL and control characters included;
     // shown escaped (a NUL cut the message short).
     writeBytes(dir.file("image.rawlog"),
                std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\0\0\x01\0\0\0\x01", 24));
-    const std::string png = readError(dir.file("image.rawlog"));
+    const std::string png = rawlogReadError(dir.file("image.rawlog"));
     EXPECT_NE(png.find("image.rawlog: neither a CARMEN log nor an MRPT rawlog"), std::string::npos)
         << png;
     EXPECT_EQ(png.find('\0'), std::string::npos) << png;
@@ -266,7 +267,7 @@ TEST(RawlogBadInput, TruncatedStreamIsAnErrorNotAnEnd) {
         const std::string bytes = fileBytes(dir.file(name));
         const std::string cut = std::string("cut-") + name;
         writeBytes(dir.file(cut), bytes.substr(0, bytes.size() * 2 / 3));
-        const std::string error = readError(dir.file(cut));
+        const std::string error = rawlogReadError(dir.file(cut));
         EXPECT_NE(error.find(cut + ": object #"), std::string::npos) << error;
         EXPECT_NE(error.find("truncated or corrupt"), std::string::npos) << error;
     }
@@ -284,7 +285,7 @@ TEST(RawlogBadInput, NonFiniteReadingsAndOdometryAreErrors) {
         for (const auto& r : records)
             w.write(r);
         w.commit();
-        return readError(dir.file(name));
+        return rawlogReadError(dir.file(name));
     };
     const std::string nanRange = corrupt(
         "nan.rawlog", [](LaserLogRecord& r) { r.scan->setScanRange(3, NAN); }, 2);
@@ -308,7 +309,7 @@ TEST(RawlogBadInput, NonFiniteReadingsAndOdometryAreErrors) {
     for (const auto& r : records)
         w.write(r);
     w.commit();
-    EXPECT_EQ(readError(dir.file("ok.rawlog")), "");
+    EXPECT_EQ(rawlogReadError(dir.file("ok.rawlog")), "");
 }
 
 // Objects of classes the reader's check does not know (here a CObservationComment) are read
@@ -341,7 +342,7 @@ TEST(RawlogBadInput, UncheckedClassesAreSkippedOrBoundedInMemory) {
     writeBytes(dir.file("huge.rawlog"), bytes);
     rusage before{}, after{};
     getrusage(RUSAGE_SELF, &before);
-    const std::string error = readError(dir.file("huge.rawlog"));
+    const std::string error = rawlogReadError(dir.file("huge.rawlog"));
     getrusage(RUSAGE_SELF, &after);
     EXPECT_NE(error.find("huge.rawlog: object #1 (after a mrpt::obs::CObservation2DRangeScan), a "
                          "mrpt::obs::CObservationComment: "),
@@ -370,7 +371,7 @@ TEST(RawlogBadInput, UnregisteredClassIsAnError) {
     object += name;
     object += std::string("\x00payload", 8);
     writeBytes(dir.file("unreg.rawlog"), fileBytes(dir.file("ok.rawlog")) + object);
-    const std::string error = readError(dir.file("unreg.rawlog"));
+    const std::string error = rawlogReadError(dir.file("unreg.rawlog"));
     EXPECT_NE(error.find("unreg.rawlog: object #6 (after a mrpt::obs::CObservation2DRangeScan): "
                          "class 'plugin::CObservationSomething' is not registered"),
               std::string::npos)

@@ -22,9 +22,7 @@ using toposlam::test::TempDir;
 
 namespace {
 
-void writeText(const std::string& path, const std::string& text) {
-    std::ofstream(path) << text;
-}
+using toposlam::test::writeText;
 
 using toposlam::test::readFile;
 

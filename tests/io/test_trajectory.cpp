@@ -15,12 +15,10 @@ using toposlam::io::Trajectory2D;
 
 namespace {
 
-void writeText(const std::string& path, const std::string& text) {
-    std::ofstream(path) << text;
-}
+using toposlam::test::writeText;
 
 // The InputError message of loading `path`, or "" if it loads.
-std::string loadError(const std::string& path) {
+std::string trajectoryLoadError(const std::string& path) {
     return toposlam::test::errorOf<InputError>([&] { loadTrajectory(path); });
 }
 
@@ -63,21 +61,23 @@ TEST(Trajectory, CommentsBlankLinesAndTabsAreAccepted) {
 
 TEST(Trajectory, BadInputNamesFileAndLine) {
     toposlam::test::TempDir dir;
-    EXPECT_NE(loadError(dir.file("missing.txt")).find("missing.txt: cannot open"),
+    EXPECT_NE(trajectoryLoadError(dir.file("missing.txt")).find("missing.txt: cannot open"),
               std::string::npos);
 
     writeText(dir.file("fields.txt"), "1 2 3 4\n1 2 3\n");
-    EXPECT_NE(loadError(dir.file("fields.txt")).find("line 2: 3 fields, expected 4"),
+    EXPECT_NE(trajectoryLoadError(dir.file("fields.txt")).find("line 2: 3 fields, expected 4"),
               std::string::npos);
 
     writeText(dir.file("extra.txt"), "1 2 3 4 5\n");
-    EXPECT_NE(loadError(dir.file("extra.txt")).find("line 1: 5 fields"), std::string::npos);
+    EXPECT_NE(trajectoryLoadError(dir.file("extra.txt")).find("line 1: 5 fields"),
+              std::string::npos);
 
     writeText(dir.file("nan.txt"), "# c\n1 2 nan 4\n");
-    EXPECT_NE(loadError(dir.file("nan.txt")).find("line 2: non-finite"), std::string::npos);
+    EXPECT_NE(trajectoryLoadError(dir.file("nan.txt")).find("line 2: non-finite"),
+              std::string::npos);
 
     writeText(dir.file("word.txt"), "1 2 x 4\n");
-    EXPECT_NE(loadError(dir.file("word.txt")).find("line 1: not a number: 'x 4'"),
+    EXPECT_NE(trajectoryLoadError(dir.file("word.txt")).find("line 1: not a number: 'x 4'"),
               std::string::npos);
 }
 

@@ -145,9 +145,7 @@ TEST(IcpSlamFeatureMap, OfficeFeatureMapMatchesTheDrawnPlan) {
     ini << iniIn.rdbuf();
     std::ofstream(dir.file("icp.ini")) << std::regex_replace(
         ini.str(), std::regex("logOutput_dir = .*"), "logOutput_dir = " + dir.file("out"));
-    const std::string plugin =
-        std::filesystem::canonical(toposlam::test::binDir() + "/../lib/libtoposlam-plugin.so")
-            .string();
+    const std::string plugin = toposlam::test::pluginPath();
     const auto run = toposlam::test::runCommand("LD_PRELOAD='" + plugin + "' icp-slam '" +
                                                 dir.file("icp.ini") + "' '" + log + "'");
     std::string segmentsFile;

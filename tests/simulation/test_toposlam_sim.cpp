@@ -29,9 +29,7 @@ std::string quoted(const std::string& s) {
     return "'" + s + "'";
 }
 
-void writeText(const std::string& path, const std::string& text) {
-    std::ofstream(path) << text;
-}
+using toposlam::test::writeText;
 
 /// Two 4 m x 3 m rooms joined by a 0.9 m door: a small map for quick tours.
 FloorPlan twoRooms() {

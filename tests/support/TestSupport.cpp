@@ -86,4 +86,16 @@ std::string readFile(const std::string& path) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+std::string pluginPath() {
+    return std::filesystem::canonical(binDir() + "/../lib/libtoposlam-plugin.so").string();
+}
+
+void writeText(const std::string& path, const std::string& text) {
+    std::ofstream(path) << text;
+}
+
+bool contains(const std::string& text, const std::string& what) {
+    return text.find(what) != std::string::npos;
+}
+
 }  // namespace toposlam::test

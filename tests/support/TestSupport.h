@@ -19,6 +19,8 @@ std::string shareDir();
 std::string configIni(const std::string& name);
 /// build/<preset>/bin, where the apps are.
 std::string binDir();
+/// The TopoSLAM plugin for MRPT's apps (`-l` / `-p`): lib/libtoposlam-plugin.so of this build.
+std::string pluginPath();
 
 /// A fresh directory under the build tree's test-tmp/, removed by the destructor.
 class TempDir {
@@ -45,6 +47,10 @@ CommandResult runApp(const std::string& app, const std::string& args);
 
 /// The whole content of the file at `path` ("" when it cannot be read).
 std::string readFile(const std::string& path);
+/// Writes `text` to the file at `path` (replacing it).
+void writeText(const std::string& path, const std::string& text);
+/// Whether `text` contains `what`.
+bool contains(const std::string& text, const std::string& what);
 
 /// The message of the `Error` that `call()` throws, or "" when it returns normally. Any other
 /// exception propagates and fails the test.

@@ -228,7 +228,9 @@ std::vector<SpoiltKey> spoiltKeys(const std::string& file) {
         const auto it = test::sectionStructs().find(section);
         if (it == test::sectionStructs().end())
             continue;  // MRPT's (see the file comment)
-        const config::OptionsSchema schema = it->second()->schema();
+        // The schema's fields read and write this struct: it must outlive them.
+        const auto options = it->second();
+        const config::OptionsSchema schema = options->schema();
         for (std::size_t i = 0; i < schema.fields().size(); ++i) {
             const config::Field& f = schema.fields()[i];
             const std::string key = f.key();

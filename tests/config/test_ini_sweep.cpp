@@ -113,12 +113,7 @@ std::string runWith(const IniUse& use, const std::string& iniText, bool expectSu
     return r.output;
 }
 
-std::string fileText(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using test::readFile;
 
 /// The text with `key = ...` of [section] replaced by `line` (the first such line), or with
 /// `line` added at the top of the section when the file does not spell the key out.
@@ -175,7 +170,7 @@ std::vector<std::string> badValues(const config::Field& f) {
 TEST(IniSweep, EveryShippedIniFileWorksAsShipped) {
     test::TempDir dir;
     for (const IniUse& use : iniUses(dir))
-        runWith(use, fileText(test::configIni(use.file)), true, dir);
+        runWith(use, readFile(test::configIni(use.file)), true, dir);
 }
 
 TEST(IniSweep, GarbageIsAnErrorNamingTheFile) {
@@ -190,7 +185,7 @@ TEST(IniSweep, GarbageIsAnErrorNamingTheFile) {
         }
         // Text that is no ini file, and the real file cut in the middle of a section header.
         runWith(use, "this is not an ini file\n", false, dir);
-        const std::string text = fileText(test::configIni(use.file));
+        const std::string text = readFile(test::configIni(use.file));
         runWith(use, text.substr(0, text.find("\n[") + 4) + "\n", false, dir);
     }
 }
@@ -220,7 +215,7 @@ struct SpoiltKey {
 /// section and one bad value of every 8th key (the first included), each kind in turn.
 std::vector<SpoiltKey> spoiltKeys(const std::string& file) {
     const std::string path = test::configIni(file);
-    const std::string text = fileText(path);
+    const std::string text = readFile(path);
     std::vector<std::string> sections;
     config::openIniFile(path)->getAllSections(sections);
     std::vector<SpoiltKey> spoilt;

@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 
+#include "LogReadError.h"
 #include "TestSupport.h"
 
 using namespace toposlam::io;
@@ -39,9 +40,7 @@ double beamDirection(const mrpt::obs::CObservation2DRangeScan& scan, std::size_t
     return scan.getScanAngle(i) + scan.sensorPose.yaw();
 }
 
-std::string carmenReadError(const std::string& path) {
-    return toposlam::test::errorOf<InputError>([&] { LaserLogReader::readAll(path); });
-}
+using toposlam::test::logReadError;
 
 }  // namespace
 
@@ -195,40 +194,40 @@ TEST(CarmenReader, BadLinesNameTheLine) {
     std::string missing = flaser(180, 2.0, "0 0 0", "0 0 0", "2.000000");
     missing.erase(missing.find(" 2 2 2"), 2);  // one reading less
     writeText(dir.file("count.clf"), good + missing);
-    EXPECT_NE(carmenReadError(dir.file("count.clf"))
+    EXPECT_NE(logReadError(dir.file("count.clf"))
                   .find("count.clf: line 2: FLASER has 190 fields, "
                         "expected 191"),
               std::string::npos)
-        << carmenReadError(dir.file("count.clf"));
+        << logReadError(dir.file("count.clf"));
 
     std::string nan = good;
     nan.replace(nan.find(" 2 "), 3, " nan ");
     writeText(dir.file("nan.clf"), good + nan);
-    EXPECT_NE(carmenReadError(dir.file("nan.clf")).find("line 2: reading 0 is nan"),
+    EXPECT_NE(logReadError(dir.file("nan.clf")).find("line 2: reading 0 is nan"),
               std::string::npos);
 
     std::string negative = good;
     negative.replace(negative.find(" 2 2 "), 5, " 2 -0.5 ");
     writeText(dir.file("neg.clf"), "# c\n" + negative);
-    EXPECT_NE(carmenReadError(dir.file("neg.clf")).find("line 2: reading 1 is negative (-0.5)"),
+    EXPECT_NE(logReadError(dir.file("neg.clf")).find("line 2: reading 1 is negative (-0.5)"),
               std::string::npos)
-        << carmenReadError(dir.file("neg.clf"));
+        << logReadError(dir.file("neg.clf"));
 
     writeText(dir.file("word.clf"), "FLASER 3 1 2 x 0 0 0 0 0 0 1.0 h 1.0\n");
-    EXPECT_NE(carmenReadError(dir.file("word.clf")).find("line 1: reading 2 is not a number: 'x'"),
+    EXPECT_NE(logReadError(dir.file("word.clf")).find("line 1: reading 2 is not a number: 'x'"),
               std::string::npos);
 
     writeText(dir.file("odom.clf"), good + "ODOM 1 2 3 0 0 1.5 nohost 1.5\n");
-    EXPECT_NE(carmenReadError(dir.file("odom.clf")).find("line 2: ODOM has 9 fields, expected 10"),
+    EXPECT_NE(logReadError(dir.file("odom.clf")).find("line 2: ODOM has 9 fields, expected 10"),
               std::string::npos);
 
     writeText(dir.file("text.txt"), "hello world\nthis is text\n");
-    EXPECT_NE(carmenReadError(dir.file("text.txt")).find("not a CARMEN log"), std::string::npos);
+    EXPECT_NE(logReadError(dir.file("text.txt")).find("not a CARMEN log"), std::string::npos);
 
     // A file cut in the middle of a line.
     const std::string two = good + good;
     writeText(dir.file("cut.clf"), two.substr(0, two.size() - 40));
-    EXPECT_NE(carmenReadError(dir.file("cut.clf")).find("cut.clf: line 2: FLASER has"),
+    EXPECT_NE(logReadError(dir.file("cut.clf")).find("cut.clf: line 2: FLASER has"),
               std::string::npos);
 }
 

@@ -21,6 +21,7 @@
 #include <fstream>
 #include <map>
 
+#include "LogReadError.h"
 #include "TestSupport.h"
 
 namespace fs = std::filesystem;
@@ -219,14 +220,9 @@ TEST(RawlogRoundTrip, ObservationsOdometryIsInterpolatedAtScanTime) {
 
 namespace {
 
-std::string rawlogReadError(const std::string& path) {
-    return toposlam::test::errorOf<InputError>([&] { LaserLogReader::readAll(path); });
-}
+using toposlam::test::logReadError;
 
-std::string fileBytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string((std::istreambuf_iterator<char>(in)), {});
-}
+using toposlam::test::readFile;
 
 void writeBytes(const std::string& path, const std::string& bytes) {
     std::ofstream(path, std::ios::binary) << bytes;
@@ -236,20 +232,20 @@ void writeBytes(const std::string& path, const std::string& bytes) {
 
 TEST(RawlogBadInput, MissingEmptyGarbage) {
     toposlam::test::TempDir dir;
-    EXPECT_NE(rawlogReadError(dir.file("none.rawlog")).find("none.rawlog: file not found"),
+    EXPECT_NE(logReadError(dir.file("none.rawlog")).find("none.rawlog: file not found"),
               std::string::npos);
     writeBytes(dir.file("empty.rawlog"), "");
-    EXPECT_NE(rawlogReadError(dir.file("empty.rawlog")).find("empty.rawlog: file is empty"),
+    EXPECT_NE(logReadError(dir.file("empty.rawlog")).find("empty.rawlog: file is empty"),
               std::string::npos);
     writeBytes(dir.file("garbage.rawlog"), std::string("\x01\x02\x03\xff\xfe garbage", 13));
     EXPECT_NE(
-        rawlogReadError(dir.file("garbage.rawlog")).find("neither a CARMEN log nor an MRPT rawlog"),
+        logReadError(dir.file("garbage.rawlog")).find("neither a CARMEN log nor an MRPT rawlog"),
         std::string::npos);
     // A PNG: MRPT reads its first bytes as a class name, NUL and control characters included;
     // shown escaped (a NUL cut the message short).
     writeBytes(dir.file("image.rawlog"),
                std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\0\0\x01\0\0\0\x01", 24));
-    const std::string png = rawlogReadError(dir.file("image.rawlog"));
+    const std::string png = logReadError(dir.file("image.rawlog"));
     EXPECT_NE(png.find("image.rawlog: neither a CARMEN log nor an MRPT rawlog"), std::string::npos)
         << png;
     EXPECT_EQ(png.find('\0'), std::string::npos) << png;
@@ -264,10 +260,10 @@ TEST(RawlogBadInput, TruncatedStreamIsAnErrorNotAnEnd) {
         for (const auto& r : records)
             w.write(r);
         w.commit();
-        const std::string bytes = fileBytes(dir.file(name));
+        const std::string bytes = readFile(dir.file(name));
         const std::string cut = std::string("cut-") + name;
         writeBytes(dir.file(cut), bytes.substr(0, bytes.size() * 2 / 3));
-        const std::string error = rawlogReadError(dir.file(cut));
+        const std::string error = logReadError(dir.file(cut));
         EXPECT_NE(error.find(cut + ": object #"), std::string::npos) << error;
         EXPECT_NE(error.find("truncated or corrupt"), std::string::npos) << error;
     }
@@ -285,7 +281,7 @@ TEST(RawlogBadInput, NonFiniteReadingsAndOdometryAreErrors) {
         for (const auto& r : records)
             w.write(r);
         w.commit();
-        return rawlogReadError(dir.file(name));
+        return logReadError(dir.file(name));
     };
     const std::string nanRange = corrupt(
         "nan.rawlog", [](LaserLogRecord& r) { r.scan->setScanRange(3, NAN); }, 2);
@@ -309,7 +305,7 @@ TEST(RawlogBadInput, NonFiniteReadingsAndOdometryAreErrors) {
     for (const auto& r : records)
         w.write(r);
     w.commit();
-    EXPECT_EQ(rawlogReadError(dir.file("ok.rawlog")), "");
+    EXPECT_EQ(logReadError(dir.file("ok.rawlog")), "");
 }
 
 // Objects of classes the reader's check does not know (here a CObservationComment) are read
@@ -342,7 +338,7 @@ TEST(RawlogBadInput, UncheckedClassesAreSkippedOrBoundedInMemory) {
     writeBytes(dir.file("huge.rawlog"), bytes);
     rusage before{}, after{};
     getrusage(RUSAGE_SELF, &before);
-    const std::string error = rawlogReadError(dir.file("huge.rawlog"));
+    const std::string error = logReadError(dir.file("huge.rawlog"));
     getrusage(RUSAGE_SELF, &after);
     EXPECT_NE(error.find("huge.rawlog: object #1 (after a mrpt::obs::CObservation2DRangeScan), a "
                          "mrpt::obs::CObservationComment: "),
@@ -370,8 +366,8 @@ TEST(RawlogBadInput, UnregisteredClassIsAnError) {
     std::string object(1, static_cast<char>(0x80 | name.size()));
     object += name;
     object += std::string("\x00payload", 8);
-    writeBytes(dir.file("unreg.rawlog"), fileBytes(dir.file("ok.rawlog")) + object);
-    const std::string error = rawlogReadError(dir.file("unreg.rawlog"));
+    writeBytes(dir.file("unreg.rawlog"), readFile(dir.file("ok.rawlog")) + object);
+    const std::string error = logReadError(dir.file("unreg.rawlog"));
     EXPECT_NE(error.find("unreg.rawlog: object #6 (after a mrpt::obs::CObservation2DRangeScan): "
                          "class 'plugin::CObservationSomething' is not registered"),
               std::string::npos)

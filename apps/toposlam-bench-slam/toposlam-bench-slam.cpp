@@ -1,12 +1,14 @@
 // toposlam-bench-slam: benchmark B3 in one command. TopoSLAM's graph SLAM, its icp engine and
 // MRPT's stock icp-slam on every public log with relations and on the simulated office, one
-// run after the other, scored with the relation metric of Kümmerle et al. 2009. The work is
-// done by libs/evaluation (SlamBenchmark); this app reads the options and prints.
+// run after the other, scored with the relation metric of Kümmerle et al. 2009; optionally
+// also on simulated tours of floor plans with several robots (--sim-plans). The work is done
+// by libs/evaluation (SlamBenchmark, SimulatedSlamLogs); this app reads the options and prints.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <toposlam/cli/CommandLine.h>
 #include <toposlam/cli/NumberArg.h>
 #include <toposlam/cli/UsageError.h>
 #include <toposlam/evaluation/ChildProcess.h>
+#include <toposlam/evaluation/SimulatedSlamLogs.h>
 #include <toposlam/evaluation/SlamBenchmark.h>
 #include <toposlam/evaluation/SlamBenchmarkReport.h>
 #include <toposlam/io/InputError.h>
@@ -41,9 +43,14 @@ const char* const kDescription =
     "squared errors, maxima, ATE, wall and CPU time, real-time factor = log duration / wall "
     "time and / CPU time, peak RSS, loop closures accepted / rejected / withdrawn) and numbered "
     "notes on failed or skipped runs; progress goes to stderr.\n"
+    "With --sim-plans it first simulates a tour of each floor plan with each robot of "
+    "--sim-robots (toposlam-sim, exact ground truth; logs <plan>.<robot> in --sim-dir) and "
+    "runs the engines on those logs too: SLAM on data it was not tuned on, with lasers and "
+    "odometry harder than the public logs'.\n"
     "Examples:\n"
     "  toposlam-bench-slam --json b3.json --images b3-img\n"
     "  toposlam-bench-slam --logs intel,office --engines graph,icp-slam --keep b3-runs\n"
+    "  toposlam-bench-slam --sim-plans office_d,NLB --sim-robots lms200,urg-04lx\n"
     "Exit status: 0 when every run succeeded (or, with 'B3 skipped: ...' on stderr, when the "
     "benchmark logs are not there); 1 when a run failed (the table says which and why) or on "
     "bad input (missing configuration); 2 for bad usage (unknown option, log or engine).";
@@ -83,12 +90,27 @@ std::string besideMe(const std::string& program) {
     return path.string();
 }
 
+// "lms1xx,lms200,...": every simulated robot.
+std::string robotNames() {
+    std::string names;
+    for (const auto& robot : evaluation::simulatedRobots())
+        names += (names.empty() ? "" : ",") + robot.name;
+    return names;
+}
+
+std::string robotsHelp() {
+    std::string help = "Comma-separated robots that tour every --sim-plans plan:";
+    for (const auto& robot : evaluation::simulatedRobots())
+        help += " " + robot.name + " (" + robot.description + ");";
+    return help + " Default: all";
+}
+
 // The command line; TCLAP's arguments register with `cmd`, declared first.
 struct Arguments {
     Arguments();
     TCLAP::CmdLine cmd;
     TCLAP::ValueArg<std::string> data, logs, engines, config, icpSlam, icpSlamConfig, keep, images,
-        json;
+        json, simPlans, simRobots, simDir, simConfig;
     cli::NumberArg<double> timeout;
 };
 
@@ -134,6 +156,22 @@ Arguments::Arguments()
              false, "", "dir", cmd),
       json("", "json", "Write the results as JSON to this file (keys: share/doc/apps.md)", false,
            "", "out.json", cmd),
+      simPlans("", "sim-plans",
+               "Comma-separated drawn floor plans to tour with every --sim-robots robot: names of "
+               "Bormann's maps (" TOPOSLAM_SHARED_DATA_DIR
+               "/rooms/<name>_furnitures.png, e.g. office_d, NLB, lab_intel, Freiburg79_scan) "
+               "or plan images (white free, darker obstacles; a name with '/' or '.png'). Their "
+               "logs are named <plan>.<robot>; without --logs only they run. Default: none",
+               false, "", "list", cmd),
+      simRobots("", "sim-robots", robotsHelp(), false, robotNames(), "list", cmd),
+      simDir("", "sim-dir",
+             "Where the simulated logs go (<plan>.<robot>.rawlog, its _gt.txt, toposlam-sim's "
+             "output). Default: b3-sim-logs",
+             false, "b3-sim-logs", "dir", cmd),
+      simConfig("", "sim-config",
+                "toposlam-sim configuration the robots start from (its tour and the lms1xx "
+                "laser). Default: " TOPOSLAM_SOURCE_DIR "/config_ini/sim-office.ini",
+                false, TOPOSLAM_SOURCE_DIR "/config_ini/sim-office.ini", "file.ini", cmd),
       timeout("", "timeout",
               "Kill a run after this many seconds of wall time (0: no limit, the default).", 0.0,
               cli::NumberRange<double>::nonNegative(1e6), "seconds", cmd) {}
@@ -141,6 +179,48 @@ Arguments::Arguments()
 // "/work/wt/../shared/data" -> "/work/shared/data": shorter names in the table.
 std::string tidy(const std::string& path) {
     return fs::path(path).lexically_normal().string();
+}
+
+// A --sim-plans item: a plan image, or the furnished plan of a Bormann map of that name.
+std::string planImage(const std::string& item) {
+    if (item.find('/') != std::string::npos || fs::path(item).extension() == ".png")
+        return item;
+    return tidy(TOPOSLAM_SHARED_DATA_DIR "/rooms/" + item + "_furnitures.png");
+}
+
+// Simulates the --sim-plans logs (progress on stderr); with no --logs, only they run.
+void addSimulatedLogs(Arguments& a, evaluation::SlamBenchmarkOptions& options) {
+    evaluation::SimulatedLogsRequest request;
+    for (const std::string& item : splitList(a.simPlans.getValue()))
+        request.plans.push_back(planImage(item));
+    if (request.plans.empty())
+        return;
+    request.robots = splitList(a.simRobots.getValue());
+    for (const std::string& robot : request.robots) {
+        if (!evaluation::findSimulatedRobot(robot))
+            throw cli::UsageError("--sim-robots: unknown robot '" + robot + "' (" + robotNames() +
+                                  ")");
+    }
+    if (request.robots.empty())
+        throw cli::UsageError("--sim-robots: no robot given");
+    request.simulator = besideMe("toposlam-sim");
+    request.simulatorConfig = tidy(a.simConfig.getValue());
+    request.directory = a.simDir.getValue();
+    request.timeoutSeconds = a.timeout.getValue();
+    const auto logs = evaluation::simulateSlamLogs(request, [&](double, std::size_t done) {
+        if (done < request.plans.size() * request.robots.size())
+            std::cerr << "simulating " << done + 1 << "/"
+                      << request.plans.size() * request.robots.size() << ": "
+                      << evaluation::simulatedLogName(request.plans[done / request.robots.size()],
+                                                      request.robots[done % request.robots.size()])
+                      << " ..." << std::endl;
+    });
+    const bool onlySimulated = options.logs.empty();
+    for (const auto& log : logs) {
+        options.simulatedLogs.push_back(log);
+        if (onlySimulated)
+            options.logs.push_back(log.name);
+    }
 }
 
 // The benchmark options from the command line. Throws cli::UsageError for bad usage.
@@ -170,6 +250,7 @@ evaluation::SlamBenchmarkOptions benchmarkOptions(Arguments& a) {
         std::cerr << "note: " << a.icpSlam.getValue() << " not found: its rows are not run\n";
     setup.toposlamSlam = besideMe("toposlam-slam");
     setup.toposlamConvert = besideMe("toposlam-convert");
+    addSimulatedLogs(a, options);
     return options;
 }
 

@@ -1,17 +1,23 @@
-// End-to-end tests of toposlam-bench-slam (benchmark B3) on the simulated office, whose ground
-// truth is exact: every engine's row, the JSON, the pictures, and the exit statuses.
+// End-to-end tests of toposlam-bench-slam (benchmark B3) on the simulated office and on tours
+// of a drawn plan (--sim-plans), whose ground truth is exact: every engine's row, the JSON,
+// the pictures, the simulated robots, and the exit statuses.
 #include <gtest/gtest.h>
 #include <toposlam/evaluation/ChildProcess.h>
+#include <toposlam/evaluation/LogOdometry.h>
+#include <toposlam/io/LaserLogReader.h>
+#include <toposlam/io/Trajectory.h>
 #include <nlohmann/json.hpp>
 
 #include <TestSupport.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 
+using toposlam::evaluation::odometryAtScans;
 using toposlam::test::runApp;
 using toposlam::test::runCommand;
 using toposlam::test::TempDir;
@@ -53,9 +59,14 @@ void expectScored(const nlohmann::json& run, std::size_t relations, double maxAt
 TEST(BenchSlamApp, HelpExplainsEveryOption) {
     const auto r = runApp("toposlam-bench-slam", "--help");
     EXPECT_EQ(r.exitCode, 0) << r.output;
-    for (const char* option :
-         {"--data", "--logs", "--engines", "--config", "--icp-slam", "--icp-slam-config", "--keep",
-          "--images", "--json", "--timeout", "Kuemmerle", "icp-slam", "office"}) {
+    for (const char* option : {"--data",    "--logs",       "--engines",
+                               "--config",  "--icp-slam",   "--icp-slam-config",
+                               "--keep",    "--images",     "--json",
+                               "--timeout", "Kuemmerle",    "icp-slam",
+                               "office",    "--sim-plans",  "--sim-robots",
+                               "--sim-dir", "--sim-config", "lms1xx",
+                               "lms200",    "urg-04lx",     "poor-odometry",
+                               "people"}) {
         EXPECT_TRUE(contains(r.output, option)) << option;
     }
 }
@@ -165,4 +176,87 @@ TEST(BenchSlamApp, AbsentIcpSlamIsNotRun) {
     EXPECT_EQ(r.exitCode, 0) << r.output;
     EXPECT_TRUE(contains(r.output, "| office | icp-slam | not run [1] |")) << r.output;
     EXPECT_TRUE(contains(r.output, "not installed")) << r.output;
+}
+
+namespace {
+
+// A drawn plan (white free, black walls, a grey table): two 5 x 4 m rooms joined by a 0.9 m
+// door, 5 cm pixels, black outside the building (no free space to tour there).
+std::string writeTwoRoomPlan(const std::string& directory) {
+    cv::Mat plan(100, 240, CV_8U, cv::Scalar(0));
+    plan(cv::Rect(10, 10, 100, 80)).setTo(255);
+    plan(cv::Rect(114, 10, 100, 80)).setTo(255);
+    plan(cv::Rect(110, 40, 4, 18)).setTo(255);   // the door
+    plan(cv::Rect(150, 20, 24, 14)).setTo(128);  // a table
+    const std::string path = directory + "/two_rooms_furnitures.png";
+    cv::imwrite(path, plan);
+    return path;
+}
+
+double pathLength(const toposlam::io::Trajectory2D& path) {
+    double length = 0;
+    for (std::size_t i = 1; i < path.size(); ++i)
+        length +=
+            std::hypot(path[i].pose.x - path[i - 1].pose.x, path[i].pose.y - path[i - 1].pose.y);
+    return length;
+}
+
+}  // namespace
+
+// --sim-plans: each plan toured by each robot, with that robot's laser and odometry, and every
+// engine scored on those logs against their exact ground truth.
+TEST(BenchSlamApp, SimulatedPlansAreTouredByEveryRobotAndScored) {
+    TempDir tmp;
+    const std::string plan = writeTwoRoomPlan(tmp.path());
+    const std::string logs = tmp.path() + "/logs", json = tmp.path() + "/b3.json";
+    const auto r = runApp("toposlam-bench-slam", "--sim-plans " + plan +
+                                                     " --sim-robots lms200,poor-odometry "
+                                                     "--engines graph --sim-dir " +
+                                                     logs + " --json " + json);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* text :
+         {"simulating 1/2: two_rooms.lms200 ...", "simulating 2/2: two_rooms.poor-odometry ...",
+          "| two_rooms.lms200 | graph |", "| two_rooms.poor-odometry | graph |"})
+        EXPECT_TRUE(contains(r.output, text)) << text << "\n" << r.output;
+    // Without --logs only the simulated logs run.
+    EXPECT_FALSE(contains(r.output, "| office |")) << r.output;
+
+    const nlohmann::json j = readJson(json);
+    ASSERT_EQ(j["logs"].size(), 2u);
+    for (const nlohmann::json& log : j["logs"]) {
+        SCOPED_TRACE(log["name"].get<std::string>());
+        EXPECT_EQ(log["reference"]["kind"], "ground_truth");
+        ASSERT_EQ(log["runs"].size(), 1u);
+        // Two small rooms and a 1-2 cm laser: the map is exact to a few cm.
+        expectScored(log["runs"][0], log["reference"]["relations"], 0.05);
+    }
+
+    // The lms200 log has that laser: 181 beams over 180 deg, 8 m.
+    toposlam::io::LaserLogReader reader(logs + "/two_rooms.lms200.rawlog");
+    toposlam::io::LaserLogRecord record;
+    ASSERT_TRUE(reader.next(record));
+    EXPECT_EQ(record.scan->getScanSize(), 181u);
+    EXPECT_NEAR(record.scan->aperture, M_PI, 1e-6);
+    EXPECT_NEAR(record.scan->maxRange, 8.0, 1e-6);
+    // Each log's odometry has its robot's error model: the simulator's 1 % long, and 5 %.
+    for (const auto& [robot, scale] : {std::pair{"lms200", 1.01}, {"poor-odometry", 1.05}}) {
+        const std::string base = logs + "/two_rooms." + robot;
+        const double odometry = pathLength(odometryAtScans(base + ".rawlog"));
+        const double truth = pathLength(toposlam::io::loadTrajectory(base + "_gt.txt"));
+        ASSERT_GT(truth, 5.0) << robot;
+        // Its random error only lengthens the path (1.4 and 6.2 % long as simulated).
+        EXPECT_GT(odometry / truth, scale - 0.005) << robot;
+        EXPECT_LT(odometry / truth, scale + 0.025) << robot;
+    }
+}
+
+TEST(BenchSlamApp, UnknownRobotOrMissingPlanIsAnError) {
+    TempDir tmp;
+    auto r = runApp("toposlam-bench-slam", "--sim-plans office_d --sim-robots lms200,roomba");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_TRUE(contains(r.output, "--sim-robots: unknown robot 'roomba'")) << r.output;
+    r = runApp("toposlam-bench-slam",
+               "--sim-plans /nonexistent/plan.png --sim-dir " + tmp.path() + "/logs");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_TRUE(contains(r.output, "/nonexistent/plan.png: floor plan not found")) << r.output;
 }

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -151,6 +152,30 @@ ChildProcessResult runChildProcess(const ChildProcessSpec& spec) {
     result.systemCpuSeconds = seconds(usage.ru_stime);
     result.peakRssBytes = static_cast<std::size_t>(usage.ru_maxrss) * 1024;
     return result;
+}
+
+ChildProcessResult runChildProcessLogged(const std::vector<std::string>& argv,
+                                         const std::string& directory, const std::string& prefix,
+                                         double timeoutSeconds) {
+    ChildProcessSpec spec;
+    spec.argv = argv;
+    spec.workingDirectory = directory;
+    spec.stdoutFile = directory + "/" + prefix + "stdout.txt";
+    spec.stderrFile = directory + "/" + prefix + "stderr.txt";
+    spec.timeoutSeconds = timeoutSeconds;
+    return runChildProcess(spec);
+}
+
+std::string lastLineOf(const std::string& file) {
+    std::ifstream in(file);
+    std::string line, last;
+    while (std::getline(in, line)) {
+        if (line.find_first_not_of(" \t\r") != std::string::npos)
+            last = line;
+    }
+    if (!last.empty() && last.back() == '\r')
+        last.pop_back();
+    return last.size() > 300 ? last.substr(0, 300) + "..." : last;
 }
 
 std::string findExecutable(const std::string& program) {

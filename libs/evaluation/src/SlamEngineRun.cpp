@@ -14,38 +14,13 @@ namespace fs = std::filesystem;
 
 constexpr double kDefaultResolution = 0.05;  // m, MRPT's and toposlam-slam's grid default
 
-// Runs argv in `dir`, its output going to <dir>/<prefix>stdout.txt and ...stderr.txt.
-ChildProcessResult runLogged(const std::vector<std::string>& argv, const fs::path& dir,
-                             const std::string& prefix, double timeoutSeconds) {
-    ChildProcessSpec spec;
-    spec.argv = argv;
-    spec.workingDirectory = dir.string();
-    spec.stdoutFile = (dir / (prefix + "stdout.txt")).string();
-    spec.stderrFile = (dir / (prefix + "stderr.txt")).string();
-    spec.timeoutSeconds = timeoutSeconds;
-    return runChildProcess(spec);
-}
-
-// The last non-blank line of a text file ("" if none), at most 300 characters.
-std::string lastLine(const fs::path& file) {
-    std::ifstream in(file);
-    std::string line, last;
-    while (std::getline(in, line)) {
-        if (line.find_first_not_of(" \t\r") != std::string::npos)
-            last = line;
-    }
-    if (!last.empty() && last.back() == '\r')
-        last.pop_back();
-    return last.size() > 300 ? last.substr(0, 300) + "..." : last;
-}
-
 // "<what>: exit status 1: error: intel.clf: line 3: ..." from the process and its output.
 std::string failureNote(const std::string& what, const ChildProcessResult& process,
                         const fs::path& dir, const std::string& prefix) {
     std::string note = what + ": " + process.describeFailure();
-    std::string detail = lastLine(dir / (prefix + "stderr.txt"));
+    std::string detail = lastLineOf((dir / (prefix + "stderr.txt")).string());
     if (detail.empty())
-        detail = lastLine(dir / (prefix + "stdout.txt"));
+        detail = lastLineOf((dir / (prefix + "stdout.txt")).string());
     return detail.empty() ? note : note + ": " + detail;
 }
 
@@ -55,8 +30,9 @@ void runToposlamSlam(SlamEngineRun& run, const SlamBenchmarkLog& log, const Slam
     writeIniWithSettings(setup.slamConfig, ini.string(),
                          {{"Slam", "engine", run.engine == SlamEngine::Icp ? "icp" : "graph"}});
     const fs::path out = dir / "out";
-    run.process = runLogged({setup.toposlamSlam, ini.string(), log.logFile, "-o", out.string()},
-                            dir, "", setup.timeoutSeconds);
+    run.process =
+        runChildProcessLogged({setup.toposlamSlam, ini.string(), log.logFile, "-o", out.string()},
+                              dir.string(), "", setup.timeoutSeconds);
     if (!run.process.succeeded()) {
         run.note = failureNote("toposlam-slam", run.process, dir, "");
         return;
@@ -106,8 +82,9 @@ void runIcpSlam(SlamEngineRun& run, const SlamBenchmarkLog& log,
         return;
     }
     const fs::path rawlog = dir / (log.name + ".rawlog");
-    run.conversion = runLogged({setup.toposlamConvert, log.logFile, "-o", rawlog.string()}, dir,
-                               "convert-", setup.timeoutSeconds);
+    run.conversion =
+        runChildProcessLogged({setup.toposlamConvert, log.logFile, "-o", rawlog.string()},
+                              dir.string(), "convert-", setup.timeoutSeconds);
     if (!run.conversion->succeeded()) {
         run.note = failureNote("toposlam-convert", *run.conversion, dir, "convert-");
         return;
@@ -117,8 +94,8 @@ void runIcpSlam(SlamEngineRun& run, const SlamBenchmarkLog& log,
     const fs::path ini = dir / "icp-slam.ini";
     writeIniWithSettings(setup.icpSlamConfig, ini.string(),
                          {{"MappingApplication", "logOutput_dir", out.string()}});
-    run.process =
-        runLogged({setup.icpSlam, ini.string(), rawlog.string()}, dir, "", setup.timeoutSeconds);
+    run.process = runChildProcessLogged({setup.icpSlam, ini.string(), rawlog.string()},
+                                        dir.string(), "", setup.timeoutSeconds);
     if (!run.process.succeeded()) {
         run.note = failureNote("icp-slam", run.process, dir, "");
         return;

@@ -48,6 +48,16 @@ struct ChildProcessResult {
 /// program that cannot be executed is reported in the result (execFailed), not thrown.
 ChildProcessResult runChildProcess(const ChildProcessSpec& spec);
 
+/// Runs `argv` in `directory` with its output going to `<directory>/<prefix>stdout.txt` and
+/// `<prefix>stderr.txt` (runChildProcess).
+ChildProcessResult runChildProcessLogged(const std::vector<std::string>& argv,
+                                         const std::string& directory, const std::string& prefix,
+                                         double timeoutSeconds);
+
+/// The last non-blank line of a text file (a program's error message in its stderr.txt), at
+/// most 300 characters; "" when there is none or the file cannot be read.
+std::string lastLineOf(const std::string& file);
+
 /// The path of `program` if it names an executable file (a path with '/') or an executable
 /// found in PATH; "" otherwise.
 std::string findExecutable(const std::string& program);

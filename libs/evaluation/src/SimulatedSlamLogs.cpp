@@ -1,0 +1,118 @@
+#include <toposlam/evaluation/ChildProcess.h>
+#include <toposlam/evaluation/SimulatedSlamLogs.h>
+#include <toposlam/io/InputError.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <stdexcept>
+
+namespace toposlam::evaluation {
+
+namespace fs = std::filesystem;
+
+const std::vector<SimulatedRobot>& simulatedRobots() {
+    // Lasers as their data sheets give them; the odometry of the last two is the simulator's.
+    static const std::vector<SimulatedRobot> robots = {
+        {"lms1xx",
+         "361 beams over 270 deg, 20 m, range noise 1 cm (toposlam-sim's configuration)",
+         {},
+         {}},
+        {"lms200",
+         "181 beams over 180 deg, 8 m (a SICK LMS200 in its 8 m mode, as on many CARMEN logs)",
+         {"--beams", "181", "--fov-deg", "180", "--max-range", "8"},
+         {}},
+        {"urg-04lx",
+         "682 beams over 240 deg, 5.6 m, range noise 2 cm (a Hokuyo URG-04LX)",
+         {"--beams", "682", "--fov-deg", "240", "--max-range", "5.6", "--range-noise", "0.02"},
+         {}},
+        {"poor-odometry",
+         "lms1xx laser; odometry 5 % long, turning 6 % too far, curving 1 deg per m, three "
+         "times the random error",
+         {},
+         {{"Odometry", "distance_scale", "1.05"},
+          {"Odometry", "rotation_scale", "1.06"},
+          {"Odometry", "curvature_deg_per_m", "1.0"},
+          {"Odometry", "rot_std_deg_per_sqrt_rad", "4.5"},
+          {"Odometry", "rot_std_deg_per_sqrt_m", "1.5"},
+          {"Odometry", "trans_std_m_per_sqrt_m", "0.045"},
+          {"Odometry", "trans_std_m_per_sqrt_rad", "0.015"}}},
+        {"people", "lms1xx laser; 15 people walking about at 0.8-1.3 m/s", {"--people", "15"}, {}},
+    };
+    return robots;
+}
+
+const SimulatedRobot* findSimulatedRobot(const std::string& name) {
+    const auto& robots = simulatedRobots();
+    const auto it = std::find_if(robots.begin(), robots.end(),
+                                 [&](const SimulatedRobot& r) { return r.name == name; });
+    return it == robots.end() ? nullptr : &*it;
+}
+
+std::string simulatedLogName(const std::string& plan, const std::string& robot) {
+    std::string stem = fs::path(plan).stem().string();
+    const std::string furnished = "_furnitures";
+    if (stem.size() > furnished.size() &&
+        stem.compare(stem.size() - furnished.size(), furnished.size(), furnished) == 0)
+        stem.resize(stem.size() - furnished.size());
+    return stem + "." + robot;
+}
+
+std::vector<SlamBenchmarkLog> simulateSlamLogs(const SimulatedLogsRequest& request,
+                                               const io::ProgressCallback& progress) {
+    std::vector<const SimulatedRobot*> robots;
+    for (const std::string& name : request.robots) {
+        const SimulatedRobot* robot = findSimulatedRobot(name);
+        if (!robot)
+            throw std::invalid_argument("unknown robot '" + name + "'");
+        robots.push_back(robot);
+    }
+    for (const std::string& plan : request.plans) {
+        if (!fs::is_regular_file(plan))
+            throw io::InputError(plan, "floor plan not found");
+    }
+    fs::create_directories(request.directory);
+    const std::string directory = fs::absolute(request.directory).string();
+    std::vector<SlamBenchmarkLog> logs;
+    const std::size_t total = request.plans.size() * robots.size();
+    for (const std::string& plan : request.plans) {
+        for (const SimulatedRobot* robot : robots) {
+            if (progress)
+                progress(double(logs.size()) / double(total), logs.size());
+            const std::string name = simulatedLogName(plan, robot->name);
+            const std::string base = directory + "/" + name;
+            std::string config = request.simulatorConfig;
+            if (!robot->settings.empty()) {
+                config = base + ".sim.ini";
+                writeIniWithSettings(request.simulatorConfig, config, robot->settings);
+            }
+            // A drawn plan (grey furniture stops the laser), toured through every room.
+            std::vector<std::string> argv = {request.simulator,
+                                             fs::absolute(plan).string(),
+                                             "--drawn",
+                                             "--tour",
+                                             "-q",
+                                             "-c",
+                                             config,
+                                             "-o",
+                                             base + ".rawlog",
+                                             "--gt",
+                                             base + "_gt.txt"};
+            argv.insert(argv.end(), robot->simulatorArguments.begin(),
+                        robot->simulatorArguments.end());
+            const ChildProcessResult sim =
+                runChildProcessLogged(argv, directory, name + ".sim-", request.timeoutSeconds);
+            if (!sim.succeeded()) {
+                const std::string detail = lastLineOf(base + ".sim-stderr.txt");
+                throw std::runtime_error("toposlam-sim on " + plan + " with robot " + robot->name +
+                                         ": " + sim.describeFailure() +
+                                         (detail.empty() ? "" : ": " + detail));
+            }
+            logs.push_back({name, base + ".rawlog", "", base + "_gt.txt"});
+        }
+    }
+    if (progress)
+        progress(1.0, logs.size());
+    return logs;
+}
+
+}  // namespace toposlam::evaluation

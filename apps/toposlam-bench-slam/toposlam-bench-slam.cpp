@@ -196,25 +196,27 @@ void addSimulatedLogs(Arguments& a, evaluation::SlamBenchmarkOptions& options) {
     if (request.plans.empty())
         return;
     request.robots = splitList(a.simRobots.getValue());
-    for (const std::string& robot : request.robots) {
-        if (!evaluation::findSimulatedRobot(robot))
-            throw cli::UsageError("--sim-robots: unknown robot '" + robot + "' (" + robotNames() +
-                                  ")");
-    }
     if (request.robots.empty())
         throw cli::UsageError("--sim-robots: no robot given");
     request.simulator = besideMe("toposlam-sim");
     request.simulatorConfig = tidy(a.simConfig.getValue());
     request.directory = a.simDir.getValue();
     request.timeoutSeconds = a.timeout.getValue();
-    const auto logs = evaluation::simulateSlamLogs(request, [&](double, std::size_t done) {
+    const auto progress = [&](double, std::size_t done) {
         if (done < request.plans.size() * request.robots.size())
             std::cerr << "simulating " << done + 1 << "/"
                       << request.plans.size() * request.robots.size() << ": "
                       << evaluation::simulatedLogName(request.plans[done / request.robots.size()],
                                                       request.robots[done % request.robots.size()])
                       << " ..." << std::endl;
-    });
+    };
+    std::vector<evaluation::SlamBenchmarkLog> logs;
+    try {
+        logs = evaluation::simulateSlamLogs(request, progress);
+    } catch (const std::invalid_argument& e) {  // an unknown robot, two logs of one name
+        throw cli::UsageError(std::string("--sim-plans, --sim-robots: ") + e.what() +
+                              " (robots: " + robotNames() + ")");
+    }
     const bool onlySimulated = options.logs.empty();
     for (const auto& log : logs) {
         options.simulatedLogs.push_back(log);

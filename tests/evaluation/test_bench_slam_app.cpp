@@ -259,4 +259,16 @@ TEST(BenchSlamApp, UnknownRobotOrMissingPlanIsAnError) {
                "--sim-plans /nonexistent/plan.png --sim-dir " + tmp.path() + "/logs");
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_TRUE(contains(r.output, "/nonexistent/plan.png: floor plan not found")) << r.output;
+    r = runApp("toposlam-bench-slam", "--sim-plans office_d,office_d --sim-robots lms200");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_TRUE(contains(r.output, "two logs would be named office_d.lms200")) << r.output;
+    // A plan with no free space to tour: the simulation fails, and the message says where.
+    const std::string solid = tmp.path() + "/solid.png";
+    cv::imwrite(solid, cv::Mat(40, 40, CV_8U, cv::Scalar(0)));
+    r = runApp("toposlam-bench-slam",
+               "--sim-plans " + solid + " --sim-robots urg-04lx --sim-dir " + tmp.path() + "/logs");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_TRUE(
+        contains(r.output, "toposlam-sim on " + solid + " with robot urg-04lx: exit status"))
+        << r.output;
 }

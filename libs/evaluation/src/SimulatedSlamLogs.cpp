@@ -11,7 +11,8 @@ namespace toposlam::evaluation {
 namespace fs = std::filesystem;
 
 const std::vector<SimulatedRobot>& simulatedRobots() {
-    // Lasers as their data sheets give them; the odometry of the last two is the simulator's.
+    // Lasers as their data sheets give them; every odometry but poor-odometry's is the
+    // simulator configuration's.
     static const std::vector<SimulatedRobot> robots = {
         {"lms1xx",
          "361 beams over 270 deg, 20 m, range noise 1 cm (toposlam-sim's configuration)",
@@ -66,9 +67,16 @@ std::vector<SlamBenchmarkLog> simulateSlamLogs(const SimulatedLogsRequest& reque
             throw std::invalid_argument("unknown robot '" + name + "'");
         robots.push_back(robot);
     }
+    std::vector<std::string> names;
     for (const std::string& plan : request.plans) {
         if (!fs::is_regular_file(plan))
             throw io::InputError(plan, "floor plan not found");
+        for (const SimulatedRobot* robot : robots) {
+            names.push_back(simulatedLogName(plan, robot->name));
+            if (std::count(names.begin(), names.end(), names.back()) > 1)
+                throw std::invalid_argument("two logs would be named " + names.back() +
+                                            " (a plan or robot given twice?)");
+        }
     }
     fs::create_directories(request.directory);
     const std::string directory = fs::absolute(request.directory).string();

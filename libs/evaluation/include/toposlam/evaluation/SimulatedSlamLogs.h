@@ -52,7 +52,8 @@ std::string simulatedLogName(const std::string& plan, const std::string& robot);
 /// output `<name>.sim-stdout.txt`, `<name>.sim-stderr.txt` (always simulated anew: the same
 /// plan, robot and configuration give the same log). `progress`
 /// gets (logs done / logs, logs done) before each simulation. Throws std::invalid_argument
-/// for an unknown robot, io::InputError for a plan that is not there, std::runtime_error
+/// for an unknown robot or two logs of one name (plans of one file name, a robot given twice),
+/// io::InputError for a plan that is not there, std::runtime_error
 /// naming the plan, the robot and toposlam-sim's last message when a simulation fails.
 std::vector<SlamBenchmarkLog> simulateSlamLogs(const SimulatedLogsRequest& request,
                                                const io::ProgressCallback& progress = {});

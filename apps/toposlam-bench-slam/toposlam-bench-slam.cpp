@@ -53,7 +53,8 @@ const char* const kDescription =
     "  toposlam-bench-slam --sim-plans office_d,NLB --sim-robots lms200,urg-04lx\n"
     "Exit status: 0 when every run succeeded (or, with 'B3 skipped: ...' on stderr, when the "
     "benchmark logs are not there); 1 when a run failed (the table says which and why) or on "
-    "bad input (missing configuration); 2 for bad usage (unknown option, log or engine).";
+    "bad input (missing configuration, plan or a failing simulation); 2 for bad usage (unknown "
+    "option, log, engine or robot).";
 
 std::vector<std::string> splitList(const std::string& text) {
     std::vector<std::string> items;
@@ -161,7 +162,8 @@ Arguments::Arguments()
                "Bormann's maps (" TOPOSLAM_SHARED_DATA_DIR
                "/rooms/<name>_furnitures.png, e.g. office_d, NLB, lab_intel, Freiburg79_scan) "
                "or plan images (white free, darker obstacles; a name with '/' or '.png'). Their "
-               "logs are named <plan>.<robot>; without --logs only they run. Default: none",
+               "logs are named <plan>.<robot> and run after those of --logs (without --logs, "
+               "only they run). Default: none",
                false, "", "list", cmd),
       simRobots("", "sim-robots", robotsHelp(), false, robotNames(), "list", cmd),
       simDir("", "sim-dir",
@@ -188,7 +190,7 @@ std::string planImage(const std::string& item) {
     return tidy(TOPOSLAM_SHARED_DATA_DIR "/rooms/" + item + "_furnitures.png");
 }
 
-// Simulates the --sim-plans logs (progress on stderr); with no --logs, only they run.
+// Simulates the --sim-plans logs (progress on stderr) and adds them to the run.
 void addSimulatedLogs(Arguments& a, evaluation::SlamBenchmarkOptions& options) {
     evaluation::SimulatedLogsRequest request;
     for (const std::string& item : splitList(a.simPlans.getValue()))
@@ -217,11 +219,10 @@ void addSimulatedLogs(Arguments& a, evaluation::SlamBenchmarkOptions& options) {
         throw cli::UsageError(std::string("--sim-plans, --sim-robots: ") + e.what() +
                               " (robots: " + robotNames() + ")");
     }
-    const bool onlySimulated = options.logs.empty();
+    // After the logs of --logs (with none, the simulated ones alone).
     for (const auto& log : logs) {
         options.simulatedLogs.push_back(log);
-        if (onlySimulated)
-            options.logs.push_back(log.name);
+        options.logs.push_back(log.name);
     }
 }
 

@@ -250,6 +250,20 @@ TEST(BenchSlamApp, SimulatedPlansAreTouredByEveryRobotAndScored) {
     }
 }
 
+TEST(BenchSlamApp, SimulatedLogsRunAfterThoseOfLogs) {
+    TempDir tmp;
+    const std::string plan = writeTwoRoomPlan(tmp.path());
+    const auto r =
+        runApp("toposlam-bench-slam", "--logs office --engines graph --sim-plans " + plan +
+                                          " --sim-robots lms200 --sim-dir " + tmp.path() + "/logs");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto office = r.output.find("| office | graph |");
+    const auto simulated = r.output.find("| two_rooms.lms200 | graph |");
+    ASSERT_NE(office, std::string::npos) << r.output;
+    ASSERT_NE(simulated, std::string::npos) << r.output;
+    EXPECT_LT(office, simulated) << r.output;
+}
+
 TEST(BenchSlamApp, UnknownRobotOrMissingPlanIsAnError) {
     TempDir tmp;
     auto r = runApp("toposlam-bench-slam", "--sim-plans office_d --sim-robots lms200,roomba");

@@ -204,13 +204,9 @@ void addSimulatedLogs(Arguments& a, evaluation::SlamBenchmarkOptions& options) {
     request.simulatorConfig = tidy(a.simConfig.getValue());
     request.directory = a.simDir.getValue();
     request.timeoutSeconds = a.timeout.getValue();
-    const auto progress = [&](double, std::size_t done) {
-        if (done < request.plans.size() * request.robots.size())
-            std::cerr << "simulating " << done + 1 << "/"
-                      << request.plans.size() * request.robots.size() << ": "
-                      << evaluation::simulatedLogName(request.plans[done / request.robots.size()],
-                                                      request.robots[done % request.robots.size()])
-                      << " ..." << std::endl;
+    const auto progress = [](std::size_t done, std::size_t total, const std::string& next) {
+        std::cerr << "simulating " << done + 1 << "/" << total << ": " << next << " ..."
+                  << std::endl;
     };
     std::vector<evaluation::SlamBenchmarkLog> logs;
     try {

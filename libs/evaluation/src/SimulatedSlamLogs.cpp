@@ -59,7 +59,7 @@ std::string simulatedLogName(const std::string& plan, const std::string& robot) 
 }
 
 std::vector<SlamBenchmarkLog> simulateSlamLogs(const SimulatedLogsRequest& request,
-                                               const io::ProgressCallback& progress) {
+                                               const SimulationProgress& progress) {
     std::vector<const SimulatedRobot*> robots;
     for (const std::string& name : request.robots) {
         const SimulatedRobot* robot = findSimulatedRobot(name);
@@ -67,6 +67,7 @@ std::vector<SlamBenchmarkLog> simulateSlamLogs(const SimulatedLogsRequest& reque
             throw std::invalid_argument("unknown robot '" + name + "'");
         robots.push_back(robot);
     }
+    // Every log's name, plan by plan (the order they are simulated in).
     std::vector<std::string> names;
     for (const std::string& plan : request.plans) {
         if (!fs::is_regular_file(plan))
@@ -81,12 +82,11 @@ std::vector<SlamBenchmarkLog> simulateSlamLogs(const SimulatedLogsRequest& reque
     fs::create_directories(request.directory);
     const std::string directory = fs::absolute(request.directory).string();
     std::vector<SlamBenchmarkLog> logs;
-    const std::size_t total = request.plans.size() * robots.size();
     for (const std::string& plan : request.plans) {
         for (const SimulatedRobot* robot : robots) {
+            const std::string& name = names[logs.size()];
             if (progress)
-                progress(double(logs.size()) / double(total), logs.size());
-            const std::string name = simulatedLogName(plan, robot->name);
+                progress(logs.size(), names.size(), name);
             const std::string base = directory + "/" + name;
             std::string config = request.simulatorConfig;
             if (!robot->settings.empty()) {
@@ -118,8 +118,6 @@ std::vector<SlamBenchmarkLog> simulateSlamLogs(const SimulatedLogsRequest& reque
             logs.push_back({name, base + ".rawlog", "", base + "_gt.txt"});
         }
     }
-    if (progress)
-        progress(1.0, logs.size());
     return logs;
 }
 

@@ -7,8 +7,9 @@
 // curves, people walking through the scans.
 #include <toposlam/evaluation/IniWithSettings.h>
 #include <toposlam/evaluation/SlamBenchmarkLog.h>
-#include <toposlam/io/ProgressCallback.h>
 
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -47,15 +48,19 @@ struct SimulatedLogsRequest {
 /// "office_d.urg-04lx".
 std::string simulatedLogName(const std::string& plan, const std::string& robot);
 
+/// Called before each simulation with the logs simulated so far, the number of logs and the
+/// name of the one about to be simulated.
+using SimulationProgress =
+    std::function<void(std::size_t done, std::size_t total, const std::string& next)>;
+
 /// Simulates a tour of every plan with every robot (plan by plan), each into
 /// `<directory>/<name>.rawlog` with its ground truth `<name>_gt.txt` and toposlam-sim's
 /// output `<name>.sim-stdout.txt`, `<name>.sim-stderr.txt` (always simulated anew: the same
-/// plan, robot and configuration give the same log). `progress`
-/// gets (logs done / logs, logs done) before each simulation. Throws std::invalid_argument
-/// for an unknown robot or two logs of one name (plans of one file name, a robot given twice),
-/// io::InputError for a plan that is not there, std::runtime_error
-/// naming the plan, the robot and toposlam-sim's last message when a simulation fails.
+/// plan, robot and configuration give the same log). Throws std::invalid_argument for an
+/// unknown robot or two logs of one name (plans of one file name, a robot given twice),
+/// io::InputError for a plan that is not there, std::runtime_error naming the plan, the robot
+/// and toposlam-sim's last message when a simulation fails.
 std::vector<SlamBenchmarkLog> simulateSlamLogs(const SimulatedLogsRequest& request,
-                                               const io::ProgressCallback& progress = {});
+                                               const SimulationProgress& progress = {});
 
 }  // namespace toposlam::evaluation

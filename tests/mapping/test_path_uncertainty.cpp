@@ -62,7 +62,7 @@ TEST(PathUncertainty, LazyAnswersAreTheWholeSearchsInAnyOrder) {
     for (unsigned seed = 1; seed <= 5; ++seed) {
         SCOPED_TRACE("seed " + std::to_string(seed));
         const PoseGraph g = randomGraph(300, 60, 5, seed);
-        PathUncertainty whole(0.05, 0.01, 0.02), lazy(0.05, 0.01, 0.02);
+        PathUncertainty whole(0.05, 0.01), lazy(0.05, 0.01);
         const std::size_t source = 250;
         const std::vector<PathVariance> full = whole.from(g, source);
         ASSERT_EQ(full.size(), g.nodeCount());
@@ -86,7 +86,7 @@ TEST(PathUncertainty, LazyAnswersAreTheWholeSearchsInAnyOrder) {
 
 TEST(PathUncertainty, UncertaintyGrowsAlongTheChainAndALoopShortensIt) {
     PoseGraph g = randomGraph(200, 0, 0, 1);
-    PathUncertainty u(0.05, 0.01, 0.02);
+    PathUncertainty u(0.05, 0.01);
     u.start(g, 199);
     const double far = u.to(0).position, near = u.to(190).position;
     EXPECT_GT(far, near);
@@ -96,4 +96,25 @@ TEST(PathUncertainty, UncertaintyGrowsAlongTheChainAndALoopShortensIt) {
     u.start(g, 199);
     EXPECT_LT(u.to(0).position, far / 10);
     EXPECT_EQ(u.to(190).position, near);  // nearer along the chain than through the loop
+}
+
+// Where the edges' own covariances are smaller, each edge of length l adds (a l)^2 and (b l)^2,
+// whatever it turns (the loop gate's model, PathUncertainty.h).
+TEST(PathUncertainty, EdgesWithTinyCovariancesAddTheDriftModelsVariances) {
+    const double a = 0.05, b = 0.01, step = 0.3;
+    mrpt::math::CMatrixDouble33 tiny = mrpt::math::CMatrixDouble33::Zero();
+    tiny(0, 0) = tiny(1, 1) = tiny(2, 2) = 1e-12;
+    for (const double turn : {0.0, 0.25}) {
+        SCOPED_TRACE("turn " + std::to_string(turn));
+        PoseGraph g;
+        for (std::size_t i = 0; i <= 10; ++i)
+            g.addNode(CPose2D());  // node poses do not enter the search, only the edges
+        for (std::size_t i = 1; i <= 10; ++i)
+            g.addEdge(i - 1, i, CPose2D(step, 0, turn), tiny, EdgeKind::Registration);
+        PathUncertainty u(a, b);
+        u.start(g, 0);
+        EXPECT_NEAR(u.to(10).position, 10 * a * a * step * step, 1e-15);
+        EXPECT_NEAR(u.to(10).heading, 10 * b * b * step * step, 1e-15);
+        EXPECT_NEAR(u.to(4).position, 4 * a * a * step * step, 1e-15);
+    }
 }

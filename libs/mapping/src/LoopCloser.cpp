@@ -39,7 +39,7 @@ std::pair<double, double> disagreement(const CPose2D& a, const CPose2D& b) {
 LoopCloser::LoopCloser(const GraphSlamOptions& options,
                        const matching::GraphMatcherOptions& matcherOptions)
     : options_(options),
-      uncertainty_(options.driftSigmaXY, options.driftSigmaPhi, options.driftSigmaPhiPerTurn),
+      uncertainty_(options.driftSigmaXY, options.driftSigmaPhi),
       pool_(options.loopThreads),
       guided_(pool_.size(), matching::GraphScanMatcher(withoutRetry(matcherOptions))),
       free_(pool_.size(), matching::GraphScanMatcher(matcherOptions)),
@@ -69,10 +69,10 @@ std::vector<std::size_t> LoopCloser::gatedCandidates(std::size_t current, std::s
         if (!v.reached ||
             d > options_.loopOverlapDistance + options_.loopGateSigmas * std::sqrt(v.at(d)))
             continue;
+        const mrpt::poses::CPose2D candidate = graph.pose(j);
         const bool spaced = std::all_of(chosen.begin(), chosen.end(), [&](std::size_t c) {
-            return std::hypot(graph.pose(c).x() - graph.pose(j).x(),
-                              graph.pose(c).y() - graph.pose(j).y()) >=
-                   options_.loopCandidateSpacing;
+            return std::hypot(graph.pose(c).x() - candidate.x(),
+                              graph.pose(c).y() - candidate.y()) >= options_.loopCandidateSpacing;
         });
         if (spaced)
             chosen.push_back(j);

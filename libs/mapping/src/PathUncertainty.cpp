@@ -12,9 +12,8 @@ namespace {
 constexpr double kLeverArm = 5.0;
 }  // namespace
 
-PathUncertainty::PathUncertainty(double driftSigmaXY, double driftSigmaPhi,
-                                 double driftSigmaPhiPerTurn)
-    : driftXY_(driftSigmaXY), driftPhi_(driftSigmaPhi), driftTurn_(driftSigmaPhiPerTurn) {}
+PathUncertainty::PathUncertainty(double driftSigmaXY, double driftSigmaPhi)
+    : driftXY_(driftSigmaXY), driftPhi_(driftSigmaPhi) {}
 
 void PathUncertainty::cacheNewEdges(const PoseGraph& graph) {
     // Edges are only ever appended (a withdrawn one leaves the adjacency lists), so each

@@ -117,9 +117,11 @@ struct GraphSlamOptions : public config::Options {
     /// Threads that verify loop candidates (the caller included). The loops found are the
     /// same for any number; 2 uses the second core of a small robot computer.
     std::size_t loopThreads = 2;
-    /// Drift model of the uncertainty propagated through the graph (PathUncertainty.h): an
-    /// edge of length l turning by t adds the variances a^2 l to position and b^2 l + c^2 t
-    /// to heading (a random walk), and at least its own covariance.
+    /// Drift model. Two loops found along a path of length L turning by T may disagree by a
+    /// random walk's a sqrt(L) in position and sqrt(b^2 L + c^2 T) in heading (loopGateSigmas
+    /// of them, beyond the pair tolerances). The loop gate's uncertainty, propagated through
+    /// the graph (PathUncertainty.h), adds at least (a l)^2 and (b l)^2 for an edge of length
+    /// l, a narrower gate that keeps look-alike places out.
     double driftSigmaXY = 0.05;          ///< a, m per sqrt(m)
     double driftSigmaPhi = 0.01;         ///< b, rad per sqrt(m) (0.57 deg)
     double driftSigmaPhiPerTurn = 0.02;  ///< c, rad per sqrt(rad) (1.15 deg)

@@ -1,9 +1,9 @@
 #include <mrpt/core/format.h>
-#include <mrpt/core/initializer.h>
 #include <mrpt/rtti/CObject.h>
 #include <mrpt/serialization/CArchive.h>
 #include <toposlam/features/CObservationLaserFeatures.h>
 #include <toposlam/features/ScanFeaturesArchive.h>
+#include <toposlam/io/ClassRegistration.h>
 
 #include <cmath>
 #include <ostream>
@@ -12,12 +12,7 @@ using namespace toposlam::features;
 using mrpt::serialization::CArchive;
 
 IMPLEMENTS_SERIALIZABLE(CObservationLaserFeatures, CObservation, toposlam::features)
-
-// Registration: loading the library (directly, via the plugin or LD_PRELOAD) makes the class
-// known to every MRPT reader.
-MRPT_INITIALIZER(toposlam_features_register_classes) {
-    mrpt::rtti::registerClass(CLASS_ID(CObservationLaserFeatures));
-}
+TOPOSLAM_REGISTER_CLASS(CObservationLaserFeatures)
 
 uint8_t CObservationLaserFeatures::serializeGetVersion() const {
     return 0;

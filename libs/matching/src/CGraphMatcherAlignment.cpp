@@ -1,4 +1,3 @@
-#include <mrpt/core/initializer.h>
 #include <toposlam/matching/CGraphMatcherAlignment.h>
 #include <toposlam/matching/CScanFeaturesMap.h>
 #include <Eigen/Dense>
@@ -118,9 +117,3 @@ mrpt::poses::CPose3DPDF::Ptr CGraphMatcherAlignment::Align3DPDF(
 }
 
 }  // namespace toposlam::matching
-
-// Registration with mrpt-rtti when the library (or the plugin linking it) is loaded, so that
-// rawlogs, simplemaps and RawLogViewer can read serialized CScanFeaturesMap objects.
-MRPT_INITIALIZER(toposlam_matching_register_classes) {
-    mrpt::rtti::registerClass(CLASS_ID(toposlam::matching::CScanFeaturesMap));
-}

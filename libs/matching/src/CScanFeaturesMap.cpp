@@ -7,6 +7,7 @@
 #include <toposlam/features/FeatureExtractor.h>
 #include <toposlam/features/ScanFeaturesArchive.h>
 #include <toposlam/io/AtomicFile.h>
+#include <toposlam/io/ClassRegistration.h>
 #include <toposlam/matching/CScanFeaturesMap.h>
 #include <toposlam/matching/FeatureMapRendering.h>
 
@@ -67,6 +68,7 @@ mrpt::maps::CMetricMap* CScanFeaturesMap::internal_CreateFromMapDefinition(
 // --- serialization -------------------------------------------------------------------------
 
 IMPLEMENTS_SERIALIZABLE(CScanFeaturesMap, CMetricMap, toposlam::matching)
+TOPOSLAM_REGISTER_CLASS(CScanFeaturesMap)
 
 CScanFeaturesMap::CScanFeaturesMap(const std::string& extractor)
     : extractor_(extractor), extractorObject_(features::makeFeatureExtractor(extractor)) {}

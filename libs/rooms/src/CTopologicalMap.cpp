@@ -1,9 +1,9 @@
 #include <toposlam/rooms/CTopologicalMap.h>
 
-#include <mrpt/core/initializer.h>
 #include <mrpt/rtti/CObject.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/serialization/stl_serialization.h>
+#include <toposlam/io/ClassRegistration.h>
 
 #include <cstdint>
 #include <sstream>
@@ -11,6 +11,7 @@
 namespace toposlam::rooms {
 
 IMPLEMENTS_SERIALIZABLE(CTopologicalMap, CSerializable, toposlam::rooms)
+TOPOSLAM_REGISTER_CLASS(CTopologicalMap)
 
 uint8_t CTopologicalMap::serializeGetVersion() const {
     return 0;
@@ -132,9 +133,3 @@ std::string CTopologicalMap::asString() const {
 }
 
 }  // namespace toposlam::rooms
-
-// Registers the class with mrpt-rtti when the library is loaded (plugin, LD_PRELOAD or link):
-// IMPLEMENTS_SERIALIZABLE alone does not.
-MRPT_INITIALIZER(toposlam_rooms_register_classes) {
-    mrpt::rtti::registerClass(CLASS_ID(toposlam::rooms::CTopologicalMap));
-}

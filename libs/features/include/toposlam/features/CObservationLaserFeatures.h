@@ -5,7 +5,7 @@
 //
 // A separate class, not a subclass of CObservation2DRangeScan: MRPT matches classes exactly
 // (IS_CLASS), so a derived scan would be ignored by grid maps, ICP and viewers. Registered
-// with mrpt-rtti when the library is loaded (MRPT_INITIALIZER), under the name
+// with mrpt-rtti when the library is loaded (a static initialiser), under the name
 // "toposlam::features::CObservationLaserFeatures".
 //
 // Geometry in `features` is in the SENSOR frame; sensorPose is the sensor on the robot.

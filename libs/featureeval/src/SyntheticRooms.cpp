@@ -148,7 +148,10 @@ SyntheticScene makeSyntheticRoom(std::mt19937& rng, const SyntheticRoomOptions& 
     const double W = uniform(o.minWidth, o.maxWidth), D = uniform(o.minDepth, o.maxDepth);
     Polygon room = roomOutline(rng, o, W, D);
     const double roomYaw = uniform(-M_PI, M_PI);
-    room = transformed(room, uniform(-3, 3), uniform(-3, 3), roomYaw);
+    // Draws are sequenced (a call's arguments are evaluated in an order of the compiler's
+    // choosing): y before x, the order GCC gave them when both were arguments.
+    const double roomY = uniform(-3, 3), roomX = uniform(-3, 3);
+    room = transformed(room, roomX, roomY, roomYaw);
     scene.polygons.push_back(room);
 
     double minX = HUGE_VAL, maxX = -HUGE_VAL, minY = HUGE_VAL, maxY = -HUGE_VAL;
@@ -178,7 +181,8 @@ SyntheticScene makeSyntheticRoom(std::mt19937& rng, const SyntheticRoomOptions& 
         }
         const double yaw =
             unit(rng) < 0.5 ? roomYaw + (rng() % 4) * M_PI / 2 : uniform(-M_PI, M_PI);
-        const Polygon piece = transformed(shape, uniform(minX, maxX), uniform(minY, maxY), yaw);
+        const double y = uniform(minY, maxY), x = uniform(minX, maxX);
+        const Polygon piece = transformed(shape, x, y, yaw);
         bool ok = true;
         for (const TPoint2D& p : piece)
             ok = ok && insidePolygon(room, p);
@@ -208,7 +212,8 @@ SyntheticScene makeSyntheticRoom(std::mt19937& rng, const SyntheticRoomOptions& 
     // Sensor poses in the free space.
     for (int attempt = 0; attempt < 1000 && static_cast<int>(scene.poses.size()) < o.posesPerRoom;
          ++attempt) {
-        const TPoint2D p(uniform(minX, maxX), uniform(minY, maxY));
+        const double y = uniform(minY, maxY), x = uniform(minX, maxX);
+        const TPoint2D p(x, y);
         bool ok = insidePolygon(room, p) && distanceToBoundary(room, p) >= o.poseClearance;
         for (std::size_t i = 1; i < scene.polygons.size(); ++i) {
             ok = ok && !insidePolygon(scene.polygons[i], p) &&

@@ -82,7 +82,9 @@ struct Generator {
     double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); }
     TPoint2D freePoint() {
         for (;;) {
-            const TPoint2D p(uniform(0, 14), uniform(0, 9.6));
+            // y before x, sequenced: the order GCC gave the two when both were arguments.
+            const double y = uniform(0, 9.6), x = uniform(0, 14);
+            const TPoint2D p(x, y);
             if (freeAt(room, world, p, 0.4))
                 return p;
         }

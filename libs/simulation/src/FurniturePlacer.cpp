@@ -39,6 +39,11 @@ FurniturePlacer::FurniturePlacer(FloorPlan& plan, std::mt19937& rng)
     }
 }
 
+// Every random draw is sequenced: its own statement, or the only draw among a call's arguments.
+// The order in which a call's arguments are evaluated is up to the compiler, so two draws in
+// one call made the plans differ between GCC and clang. Where a call held several, they are
+// now drawn in the order GCC evaluated them, last argument first, so that the plans (and every
+// benchmark figure measured on them) stay as they were.
 double FurniturePlacer::uniform(double a, double b) {
     return a >= b ? a : std::uniform_real_distribution<>(a, b)(rng_);
 }
@@ -211,8 +216,9 @@ void FurniturePlacer::cornerPlant(const FloorRoom& room) {
 void FurniturePlacer::shelves(const FloorRoom& room, int count) {
     for (int k = 0; k < count; ++k) {
         const int side = std::uniform_int_distribution<>(0, 3)(rng_);
-        solidAgainstWall(room, side, uniform(0.8, 2.0), uniform(0.35, 0.45),
-                         chance(0.7) ? 0.0 : uniform(0.01, 0.05));
+        const double gap = chance(0.7) ? 0.0 : uniform(0.01, 0.05);
+        const double depth = uniform(0.35, 0.45);
+        solidAgainstWall(room, side, uniform(0.8, 2.0), depth, gap);
     }
 }
 
@@ -250,7 +256,8 @@ void FurniturePlacer::office(const FloorRoom& room) {
         const int side = sides[static_cast<std::size_t>(k % 2 == 0 ? k / 2 % 2 : 2 + k / 2 % 2)];
         Box d;
         const double gap = chance(0.6) ? 0.0 : uniform(0.02, 0.15);
-        if (againstWall(room, side, uniform(1.2, 1.8), uniform(0.7, 0.8), gap, d)) {
+        const double depth = uniform(0.7, 0.8);
+        if (againstWall(room, side, uniform(1.2, 1.8), depth, gap, d)) {
             desk(d);
             chairInFront(d, side);
             if (chance(0.4)) {  // a bin beside the desk
@@ -290,8 +297,9 @@ void FurniturePlacer::meeting(const FloorRoom& room) {
         }
     }
     if (chance(0.5)) {  // a sideboard
+        const double length = uniform(1.2, 2.4);
         solidAgainstWall(room, sidesByLength(f)[std::uniform_int_distribution<>(0, 3)(rng_)],
-                         uniform(1.2, 2.4), 0.45, 0.0);
+                         length, 0.45, 0.0);
     }
     if (chance(0.6))
         cornerPlant(room);
@@ -327,8 +335,9 @@ void FurniturePlacer::kitchen(const FloorRoom& room) {
 void FurniturePlacer::storage(const FloorRoom& room) {
     for (int side = 0; side < 4; ++side) {
         if (chance(0.8)) {
-            solidAgainstWall(room, side, uniform(0.6, 0.95) * lengthOf(room.floor, side),
-                             uniform(0.4, 0.6), 0.0);
+            const double depth = uniform(0.4, 0.6);
+            solidAgainstWall(room, side, uniform(0.6, 0.95) * lengthOf(room.floor, side), depth,
+                             0.0);
         }
     }
     const Box& f = room.floor;
@@ -345,10 +354,10 @@ void FurniturePlacer::lab(const FloorRoom& room) {
     const std::vector<int> sides = sidesByLength(room.floor);
     for (int k = 0; k < 3; ++k) {
         Box b;
-        if (againstWall(
-                room, sides[static_cast<std::size_t>(k)],
-                uniform(0.5, 0.85) * lengthOf(room.floor, sides[static_cast<std::size_t>(k)]),
-                uniform(0.75, 0.9), 0.0, b)) {
+        const int side = sides[static_cast<std::size_t>(k)];
+        const double depth = uniform(0.75, 0.9);
+        if (againstWall(room, side, uniform(0.5, 0.85) * lengthOf(room.floor, side), depth, 0.0,
+                        b)) {
             solid(b);
             ++pieces_;
             chairInFront(b, sides[static_cast<std::size_t>(k)]);
@@ -404,8 +413,8 @@ void FurniturePlacer::openPlan(const FloorRoom& room) {
     }
     shelves(room, 2 + std::uniform_int_distribution<>(0, 2)(rng_));
     if (chance(0.4)) {  // a sofa
-        solidAgainstWall(room, std::uniform_int_distribution<>(0, 3)(rng_), uniform(1.6, 2.2), 0.85,
-                         0.05);
+        const double length = uniform(1.6, 2.2);
+        solidAgainstWall(room, std::uniform_int_distribution<>(0, 3)(rng_), length, 0.85, 0.05);
     }
     for (int p = 0; p < 2; ++p) {
         if (chance(0.6))
@@ -426,7 +435,8 @@ void FurniturePlacer::corridor(const FloorRoom& room) {
             if (againstWall(room, side, 2 * radius, 2 * radius, 0.05, b))
                 disc({0.5 * (b.xMin + b.xMax), 0.5 * (b.yMin + b.yMax)}, radius);
         } else {  // a cabinet, bench or coat rack
-            solidAgainstWall(room, side, uniform(0.8, 1.2), uniform(0.35, 0.45), 0.0);
+            const double depth = uniform(0.35, 0.45);
+            solidAgainstWall(room, side, uniform(0.8, 1.2), depth, 0.0);
         }
     }
 }
@@ -463,7 +473,8 @@ void FurniturePlacer::living(const FloorRoom& room) {
     const std::vector<int> sides = sidesByLength(f);
     const int side = sides[static_cast<std::size_t>(std::uniform_int_distribution<>(0, 1)(rng_))];
     Box sofa;
-    if (againstWall(room, side, uniform(1.8, 2.4), uniform(0.85, 0.95), uniform(0.0, 0.1), sofa)) {
+    const double sofaGap = uniform(0.0, 0.1), sofaDepth = uniform(0.85, 0.95);
+    if (againstWall(room, side, uniform(1.8, 2.4), sofaDepth, sofaGap, sofa)) {
         solid(sofa);
         ++pieces_;
         // The coffee table in front of it, on legs.
@@ -493,10 +504,12 @@ void FurniturePlacer::living(const FloorRoom& room) {
             legs(table);
             ++pieces_;
         }
-        if (chance(0.5))
-            beside(room, sofa, side, chance(0.5), uniform(0.75, 0.85));  // an armchair
-        solidAgainstWall(room, opposite(side), uniform(1.2, 1.8), uniform(0.4, 0.5),
-                         0.0);  // a TV unit
+        if (chance(0.5)) {
+            const double size = uniform(0.75, 0.85);
+            beside(room, sofa, side, chance(0.5), size);  // an armchair
+        }
+        const double tvDepth = uniform(0.4, 0.5);
+        solidAgainstWall(room, opposite(side), uniform(1.2, 1.8), tvDepth, 0.0);  // a TV unit
     }
     // A dining table with chairs round it in a large room.
     if (f.area() > 16 && chance(0.6)) {
@@ -547,7 +560,8 @@ void FurniturePlacer::bedroom(const FloorRoom& room) {
     }
     const int other =
         side >= 0 && chance(0.6) ? opposite(side) : std::uniform_int_distribution<>(0, 3)(rng_);
-    solidAgainstWall(room, other, uniform(1.0, 2.4), uniform(0.55, 0.65), 0.0);  // a wardrobe
+    const double depth = uniform(0.55, 0.65);
+    solidAgainstWall(room, other, uniform(1.0, 2.4), depth, 0.0);  // a wardrobe
     if (chance(0.4)) {
         const int s = std::uniform_int_distribution<>(0, 3)(rng_);
         Box d;
@@ -564,17 +578,19 @@ void FurniturePlacer::bathroom(const FloorRoom& room) {
     const Box& f = room.floor;
     const std::vector<int> sides = sidesByLength(f);
     if (lengthOf(f, sides[0]) >= 1.7 && chance(0.6)) {
+        const double depth = uniform(0.7, 0.8), length = uniform(1.6, 1.75);
         solidAgainstWall(  // a bathtub
             room, sides[static_cast<std::size_t>(std::uniform_int_distribution<>(0, 1)(rng_))],
-            uniform(1.6, 1.75), uniform(0.7, 0.8), 0.0);
+            length, depth, 0.0);
     }
     solidAgainstWall(room, std::uniform_int_distribution<>(0, 3)(rng_), 0.38, 0.62,
                      0.0);  // a toilet
     const int s = std::uniform_int_distribution<>(0, 3)(rng_);
     Box basin;
-    if (chance(0.5))  // a vanity unit
-        solidAgainstWall(room, s, uniform(0.5, 0.9), uniform(0.45, 0.5), 0.0);
-    else if (againstWall(room, s, 0.2, 0.2, 0.15, basin))  // a basin on a pedestal
+    if (chance(0.5)) {  // a vanity unit
+        const double depth = uniform(0.45, 0.5);
+        solidAgainstWall(room, s, uniform(0.5, 0.9), depth, 0.0);
+    } else if (againstWall(room, s, 0.2, 0.2, 0.15, basin))  // a basin on a pedestal
         disc({0.5 * (basin.xMin + basin.xMax), 0.5 * (basin.yMin + basin.yMax)}, 0.1);
     if (chance(0.3))  // a washing machine
         solidAgainstWall(room, std::uniform_int_distribution<>(0, 3)(rng_), 0.6, 0.6, 0.0);
@@ -584,9 +600,10 @@ void FurniturePlacer::hall(const FloorRoom& room) {
     const std::vector<int> sides = sidesByLength(room.floor);
     const int n = std::uniform_int_distribution<>(0, 2)(rng_);
     for (int k = 0; k < n; ++k) {
+        const double depth = uniform(0.3, 0.4), length = uniform(0.6, 1.2);
         solidAgainstWall(  // a shoe cabinet, a coat stand, a chest of drawers
             room, sides[static_cast<std::size_t>(std::uniform_int_distribution<>(0, 1)(rng_))],
-            uniform(0.6, 1.2), uniform(0.3, 0.4), 0.0);
+            length, depth, 0.0);
     }
 }
 

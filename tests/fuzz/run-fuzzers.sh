@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Runs TopoSLAM's libFuzzer harnesses (build them first: cmake --preset fuzz && cmake --build
-# --preset fuzz) and prints one line per reader: executions, executions per second, CPU
-# seconds, coverage (edges, features), corpus size, peak memory of the fuzzer, outcome.
+# Runs TopoSLAM's libFuzzer harnesses (the sanitizer build makes them: cmake --preset asan &&
+# cmake --build --preset asan) and prints one line per reader: executions, executions per
+# second, CPU seconds, coverage (edges, features), corpus size, peak memory of the fuzzer,
+# outcome.
 #   tests/fuzz/run-fuzzers.sh [-t seconds] [-j parallel] [-o workdir] [reader ...]
 # Each reader runs for `seconds` (default 30) on a fresh working corpus seeded from
 # tests/fuzz/corpus/<reader>/ (never modified), with -rss_limit_mb=2048 -timeout=10; `parallel`
@@ -21,14 +22,14 @@ while getopts "t:j:o:" opt; do
     esac
 done
 shift $((OPTIND - 1))
-bin="$root/build/fuzz/bin"
+bin="$root/build/asan/bin"
 readers=("$@")
 if [ ${#readers[@]} -eq 0 ]; then
     readers=(carmen rawlog gridmap gridmap_image ros_map rooms_json rooms_graphml relations
              trajectory ini)
 fi
 for r in "${readers[@]}"; do
-    [ -x "$bin/fuzz_$r" ] || { echo "error: $bin/fuzz_$r not built (cmake --build --preset fuzz)" >&2; exit 2; }
+    [ -x "$bin/fuzz_$r" ] || { echo "error: $bin/fuzz_$r not built (cmake --preset asan && cmake --build --preset asan)" >&2; exit 2; }
 done
 work=${work:-$(mktemp -d "${TMPDIR:-/tmp}/toposlam-fuzz.XXXXXX")}
 mkdir -p "$work"

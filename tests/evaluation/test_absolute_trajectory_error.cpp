@@ -17,7 +17,8 @@ TEST(RigidAlignment2D, RecoversAnExactRigidTransform) {
     const TPose2D transform(3.5, -2.25, 2.7);
     std::vector<TPoint2D> source, target;
     for (int i = 0; i < 50; ++i) {
-        source.emplace_back(coord(rng), coord(rng));
+        const double y = coord(rng), x = coord(rng);  // one draw per statement
+        source.emplace_back(x, y);
         target.push_back(transform + source.back());
     }
     const TPose2D found = alignRigid2D(source, target);

@@ -29,8 +29,10 @@ Logs drive(const mrpt::poses::CPose2D& mounting, double scale, double noise, Tur
         const double stamp = 0.1 * i;
         out.odometry.push_back({stamp, odometry.asTPose()});
         mrpt::poses::CPose2D sensor = robot + mounting;
-        if (noise > 0)
-            sensor = sensor + mrpt::poses::CPose2D(n(rng), n(rng), 0.1 * n(rng));
+        if (noise > 0) {
+            const double phi = 0.1 * n(rng), y = n(rng), x = n(rng);  // one draw per statement
+            sensor = sensor + mrpt::poses::CPose2D(x, y, phi);
+        }
         out.sensor.push_back({stamp, sensor.asTPose()});
         const double turn = turnPerStep(i);
         robot = robot + mrpt::poses::CPose2D(0.1, 0, turn);

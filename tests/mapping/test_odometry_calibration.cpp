@@ -43,7 +43,8 @@ void drive(OdometryCalibration& calibration, double metres, double odometryScale
     for (double d = 0; d < metres; d += 0.1) {
         const CPose2D truth(0.1, 0.0, turn(rng));
         const CPose2D odometry(odometryScale * truth.x(), 0.0, truth.phi());
-        const CPose2D registered(truth.x() + noise(rng), noise(rng), truth.phi());
+        const double y = noise(rng), dx = noise(rng);  // one draw per statement
+        const CPose2D registered(truth.x() + dx, y, truth.phi());
         calibration.observe(odometry, registered, covariance);
     }
 }

@@ -28,14 +28,17 @@ std::vector<SmoothingInput> observe(const std::vector<CPose2D>& truth, double re
     std::vector<SmoothingInput> in(truth.size());
     for (std::size_t i = 0; i < truth.size(); ++i) {
         in[i].fixed = i % 5 == 0;
-        in[i].pose = in[i].fixed ? truth[i]
-                                 : CPose2D(truth[i].x() + registration(rng),
-                                           truth[i].y() + registration(rng), truth[i].phi());
+        if (in[i].fixed) {
+            in[i].pose = truth[i];
+        } else {
+            const double dy = registration(rng), dx = registration(rng);  // one per statement
+            in[i].pose = CPose2D(truth[i].x() + dx, truth[i].y() + dy, truth[i].phi());
+        }
         in[i].poseVariance = registrationSigma * registrationSigma;
         if (i > 0) {
             const CPose2D step = truth[i] - truth[i - 1];
-            in[i].odometry =
-                CPose2D(step.x() + odometry(rng), step.y() + odometry(rng), step.phi());
+            const double dy = odometry(rng), dx = odometry(rng);
+            in[i].odometry = CPose2D(step.x() + dx, step.y() + dy, step.phi());
             in[i].odometryVariance = odometrySigma * odometrySigma;
         }
     }

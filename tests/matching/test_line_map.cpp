@@ -51,13 +51,15 @@ TEST(LineMap, FindsTheNearestPointWhereverTheGridGrew) {
         const float far = (i % 2 == 0) ? 0.0f : 150.0f;
         // Normals differ point to point, so nothing is fused and every point stays.
         const float a = float(i);
-        map.insert(pointAt(far + near(rng), -far + near(rng), std::cos(a), std::sin(a)));
+        const float y = -far + near(rng), x = far + near(rng);  // one draw per statement
+        map.insert(pointAt(x, y, std::cos(a), std::sin(a)));
     }
     ASSERT_GT(map.size(), 300u);
     for (int q = 0; q < 4000; ++q) {
         const float far = (q % 2 == 0) ? 0.0f : 150.0f;
-        expectLookupMatchesBruteForce(map, far + near(rng) + offset(rng),
-                                      -far + near(rng) + offset(rng));
+        const float yNear = near(rng), yOffset = offset(rng);
+        const float xNear = near(rng), xOffset = offset(rng);
+        expectLookupMatchesBruteForce(map, far + xNear + xOffset, -far + yNear + yOffset);
     }
     // Between the two areas, far from every point: nothing.
     EXPECT_EQ(map.nearest(75, -75), nullptr);
@@ -170,7 +172,8 @@ TEST(LineMap, AnswersAfterResetExactlyAsANewMapDoes) {
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> along(-3, 3), across(-0.02f, 0.02f);
     for (int i = 0; i < 200; ++i) {
-        const LineMapPoint p = pointAt(along(rng), 5 + across(rng), 0, 1);
+        const float y = 5 + across(rng), x = along(rng);
+        const LineMapPoint p = pointAt(x, y, 0, 1);
         reused.insert(p);
         fresh.insert(p);
     }

@@ -203,8 +203,9 @@ TEST(VirtualDoorDetector, SameDoorsAsFullRaysFromEveryCell) {
     space.frame.resolution = kRes;
     space.free = noise >= 6;        // 6 % single obstacle cells
     for (int k = 0; k < 12; ++k) {  // and walls of any length and angle
-        const cv::Point a(rng.uniform(0, 90), rng.uniform(0, 70));
-        const cv::Point b(rng.uniform(0, 90), rng.uniform(0, 70));
+        const int ay = rng.uniform(0, 70), ax = rng.uniform(0, 90);  // one draw per statement
+        const int by = rng.uniform(0, 70), bx = rng.uniform(0, 90);
+        const cv::Point a(ax, ay), b(bx, by);
         cv::line(space.free, a, b, cv::Scalar(0), 1, cv::LINE_8);
     }
     space.frame.cols = space.free.cols;
@@ -504,10 +505,13 @@ TEST(FreeSpaceBinarizer, ObstaclesAreTheNonFreeComponentsOfTheWholeMap) {
         // Random free boxes (some reaching the edges) with random obstacles and specks in them.
         for (int k = 0; k < 6; ++k) {
             const int x = rng.uniform(0, 60), y = rng.uniform(0, 50);
-            img(cv::Rect(x, y, rng.uniform(3, 70 - x), rng.uniform(3, 60 - y))) = 255;
+            const int height = rng.uniform(3, 60 - y), width = rng.uniform(3, 70 - x);
+            img(cv::Rect(x, y, width, height)) = 255;
         }
-        for (int k = 0; k < 25; ++k)
-            img.at<std::uint8_t>(rng.uniform(0, 60), rng.uniform(0, 70)) = 0;
+        for (int k = 0; k < 25; ++k) {
+            const int col = rng.uniform(0, 70), row = rng.uniform(0, 60);
+            img.at<std::uint8_t>(row, col) = 0;
+        }
         const FreeSpace space = spaceOf(img);
         cv::Mat notFree = space.obstacles != 0;  // after speck removal
         cv::Mat reference;
@@ -627,7 +631,9 @@ TEST(FurniturePockets, OnRandomLabelsOnlyUnlabelledCellsChangeAndNoPocketTouches
     for (int trial = 0; trial < 200; ++trial) {
         cv::Mat labels(100, 100, CV_32S, cv::Scalar(0));
         for (int k = 0; k < 12; ++k) {  // rooms and obstacles drawn over each other
-            const cv::Rect r(coordinate(rng), coordinate(rng), extent(rng), extent(rng));
+            const int h = extent(rng), w = extent(rng);  // one draw per statement
+            const int y = coordinate(rng), x = coordinate(rng);
+            const cv::Rect r(x, y, w, h);
             labels(r & cv::Rect(0, 0, 100, 100)) = k % 3 == 2 ? 0 : room(rng);
         }
         std::vector<VirtualDoor> doors(1);

@@ -74,7 +74,8 @@ TEST(GridWorld, MatchesTheExactVectorWorldOfTheOffice) {
     std::uniform_real_distribution<double> ux(0, 24), uy(0, 13), ua(-M_PI, M_PI);
     int compared = 0;
     while (compared < 3000) {
-        const TPoint2D o(ux(rng), uy(rng));
+        const double y = uy(rng), x = ux(rng);  // one draw per statement
+        const TPoint2D o(x, y);
         if (test::distanceToSolid(plan, o) < 0.05 || plan.roomAt(o) == 0)
             continue;
         const double a = ua(rng);

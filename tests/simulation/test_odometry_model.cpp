@@ -51,7 +51,9 @@ TEST(OdometryModel, ExactModelReproducesTheTrueMotion) {
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> u(-0.3, 0.3);
     for (int k = 0; k < 500; ++k) {
-        const CPose2D inc(u(rng), u(rng), u(rng));  // includes sideways and backwards motion
+        // One draw per statement; includes sideways and backwards motion.
+        const double phi = u(rng), y = u(rng), x = u(rng);
+        const CPose2D inc(x, y, phi);
         truth = truth + inc;
         odo.move(inc, rng);
     }

@@ -360,7 +360,7 @@ void FurniturePlacer::lab(const FloorRoom& room) {
                         b)) {
             solid(b);
             ++pieces_;
-            chairInFront(b, sides[static_cast<std::size_t>(k)]);
+            chairInFront(b, side);
         }
     }
     // Free-standing benches in rows along the long side, aisles of 1-1.6 m.

@@ -1,6 +1,8 @@
 // The frame a relation file fits best (FrameOffsetFit.h): a trajectory of a point 0.12 m behind
 // the one the relations were made for is found 0.12 m off, and scored there it is exact; one
 // already in the right frame gains nothing, and the evaluation table names the frame only then.
+#include "FigureOfEight.h"
+
 #include <gtest/gtest.h>
 #include <toposlam/evaluation/FrameOffsetFit.h>
 #include <toposlam/evaluation/GroundTruthRelations.h>
@@ -9,21 +11,10 @@
 #include <cmath>
 
 using namespace toposlam::evaluation;
+using toposlam::evaluation::test_paths::figureOfEight;
 using toposlam::io::Trajectory2D;
 
 namespace {
-
-// A robot driving a figure of eight (turning both ways), a pose every 0.1 s.
-Trajectory2D figureOfEight() {
-    Trajectory2D t;
-    for (int i = 0; i <= 1200; ++i) {
-        const double s = 0.01 * i;  // rad along the curve
-        const double x = 4 * std::sin(s), y = 2 * std::sin(2 * s);
-        const double dx = 4 * std::cos(s), dy = 4 * std::cos(2 * s);
-        t.push_back({0.1 * i, {x, y, std::atan2(dy, dx)}});
-    }
-    return t;
-}
 
 // The same path, each pose moved `d` m along its heading.
 Trajectory2D moved(Trajectory2D t, double d) {

@@ -205,7 +205,8 @@ nlohmann::json evaluationJson(const MethodEvaluation& m) {
                         {"translation_m", statsJson(r.translation)},
                         {"rotation_deg", statsJson(r.rotation)},
                         {"translation_squared_m2", statsJson(r.translationSquared)},
-                        {"rotation_squared_deg2", statsJson(r.rotationSquared)}};
+                        {"rotation_squared_deg2", statsJson(r.rotationSquared)},
+                        {"along_track_percent", m.alongTrack.percent()}};
     if (m.absolute) {
         j["ate"] = {{"matched_poses", m.absolute->matchedPoses},
                     {"position_m", statsJson(m.absolute->position)},

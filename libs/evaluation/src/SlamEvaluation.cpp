@@ -62,6 +62,7 @@ MethodEvaluation evaluateMethod(const std::string& name, const std::string& sour
         m.byTurn.push_back(bin);
     }
     m.bestFrame = fitFrameOffset(estimate, relations, m.relative);
+    m.alongTrack = alongTrackScale(relations, m.relative);
     if (separations) {
         if (separations->size() != relations.size()) {
             throw std::invalid_argument("evaluateMethod: one separation per relation expected");
@@ -134,6 +135,26 @@ void appendMountingTable(std::ostringstream& out, const SlamEvaluation& ev) {
             << formatFixed(k.mounting.phi * 180.0 / M_PI, 2) << " | "
             << formatFixed(k.odometryScale, 4) << " | " << k.pairs << " | "
             << formatFixed(k.residualRms, 4) << " |\n";
+    }
+}
+
+// Each method's along-track scale: whether its motion reads long or short.
+void appendAlongTrack(std::ostringstream& out, const std::vector<MethodEvaluation>& methods) {
+    out << "\nAlong the direction of travel (relations moving "
+        << formatFixed(kAlongTrackMinLength, 2) << "–" << formatFixed(kAlongTrackMaxLength, 1)
+        << " m within " << formatFixed(kAlongTrackMaxSeconds, 0)
+        << " s; negative: the motion reads short):\n\n"
+           "| method | relations | true travel (m) | along-track error (m) | scale |\n"
+           "|---|---|---|---|---|\n";
+    for (const MethodEvaluation& m : methods) {
+        const AlongTrackScale& a = m.alongTrack;
+        out << "| " << m.name << " | " << a.relations << " | ";
+        if (a.relations == 0) {
+            out << "– | – | – |\n";
+            continue;
+        }
+        out << formatFixed(a.pathLength, 1) << " | " << formatFixed(a.error, 3) << " | "
+            << (a.error >= 0 ? "+" : "") << formatFixed(a.percent(), 3) << " % |\n";
     }
 }
 
@@ -219,6 +240,7 @@ std::string formatEvaluationTable(const SlamEvaluation& ev) {
         ev.methods, &MethodEvaluation::byTurn, [](const TurnErrors& t) {
             return formatFixed(t.minTurnDeg, 0) + "–" + formatFixed(t.maxTurnDeg, 0) + "°";
         });
+    appendAlongTrack(out, ev.methods);
     appendFrameOffsets(out, ev.methods);
     appendBreakdownTable(
         out,
@@ -278,7 +300,12 @@ io::Json methodJson(const MethodEvaluation& m) {
                     {"rotation_squared_deg2", jsonStats(r.rotationSquared)},
                     {"best_frame_offset",
                      {{"offset_m", jsonNumber(m.bestFrame.offset)},
-                      {"mean_translation_m", jsonNumber(m.bestFrame.meanError)}}}};
+                      {"mean_translation_m", jsonNumber(m.bestFrame.meanError)}}},
+                    {"along_track",
+                     {{"relations", m.alongTrack.relations},
+                      {"path_m", jsonNumber(m.alongTrack.pathLength)},
+                      {"error_m", jsonNumber(m.alongTrack.error)},
+                      {"percent", jsonNumber(m.alongTrack.percent())}}}};
     if (m.absolute) {
         const AbsoluteTrajectoryErrorResult& a = *m.absolute;
         out["ate"] = {{"matched_poses", a.matchedPoses},

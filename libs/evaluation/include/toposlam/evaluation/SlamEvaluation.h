@@ -3,6 +3,7 @@
 // file, or a ground-truth trajectory and the relations derived from it), with the result as a
 // table for people and as JSON for scripts.
 #include <toposlam/evaluation/AbsoluteTrajectoryError.h>
+#include <toposlam/evaluation/AlongTrackScale.h>
 #include <toposlam/evaluation/FrameOffsetFit.h>
 #include <toposlam/evaluation/GroundTruthRelations.h>
 #include <toposlam/evaluation/RelationFile.h>
@@ -58,6 +59,9 @@ struct MethodEvaluation {
     /// Always: the frame along the heading that fits the relations best (FrameOffsetFit.h),
     /// relative to the poses scored.
     FrameOffsetFit bestFrame;
+    /// Always: how long or short its motion reads along the direction of travel
+    /// (AlongTrackScale.h).
+    AlongTrackScale alongTrack;
     /// Its worst relations, when asked for (SlamEvaluationRequest::worstRelations).
     std::vector<WorstRelation> worst;
     /// Where its poses sit on the robot as the odometry sees it, when asked for
@@ -95,8 +99,9 @@ MethodEvaluation evaluateMethod(const std::string& name, const std::string& sour
 
 /// A Markdown table (readable in a terminal, pasteable into a README), one row per method,
 /// preceded by a line that names the reference; then the translational error by the
-/// relations' turn, and the frame that fits the relations best for each method whose mean
-/// error it lowers by kFrameOffsetNote or more; with a ground-truth reference, by relation
+/// relations' turn, each method's along-track scale, and the frame that fits the relations
+/// best for each method whose mean error it lowers by kFrameOffsetNote or more; with a
+/// ground-truth reference, by relation
 /// separation; then the
 /// estimated sensor mountings, if asked for; then each method's worst relations, if any
 /// (formatWorstRelations).

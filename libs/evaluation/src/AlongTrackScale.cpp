@@ -5,14 +5,13 @@
 namespace toposlam::evaluation {
 
 AlongTrackScale alongTrackScale(const PoseRelations& relations,
-                                const RelativePoseErrorResult& scored, double minLength,
-                                double maxLength) {
+                                const RelativePoseErrorResult& scored) {
     AlongTrackScale out;
     for (const RelationError& e : scored.errors) {
         const PoseRelation& relation = relations[e.relation];
         const mrpt::math::TPose2D& truth = relation.motion;
         const double length = std::hypot(truth.x, truth.y);
-        if (!(length >= minLength && length <= maxLength) ||
+        if (!(length >= kAlongTrackMinLength && length <= kAlongTrackMaxLength) ||
             !(std::abs(relation.stamp2 - relation.stamp1) <= kAlongTrackMaxSeconds)) {
             continue;
         }

@@ -19,7 +19,7 @@
 namespace toposlam::evaluation {
 
 struct AlongTrackScale {
-    std::size_t relations = 0;  ///< matched relations that move at least the minimum
+    std::size_t relations = 0;  ///< matched relations of one stretch of driving (above)
     double pathLength = 0;      ///< m, sum of their |t_gt|
     double error = 0;           ///< m, sum of their along-track errors (negative: short)
     /// error / pathLength in per cent; 0 when no relation moved enough.
@@ -33,11 +33,8 @@ inline constexpr double kAlongTrackMaxLength = 2.0;
 inline constexpr double kAlongTrackMaxSeconds = 10.0;
 
 /// The along-track scale of the relations `scored` matched (evaluateRelativePoseError against
-/// the same `relations`), over those whose true motion moves [minLength, maxLength] m within
-/// kAlongTrackMaxSeconds.
+/// the same `relations`) that belong to one stretch of driving (the three limits above).
 AlongTrackScale alongTrackScale(const PoseRelations& relations,
-                                const RelativePoseErrorResult& scored,
-                                double minLength = kAlongTrackMinLength,
-                                double maxLength = kAlongTrackMaxLength);
+                                const RelativePoseErrorResult& scored);
 
 }  // namespace toposlam::evaluation

@@ -101,10 +101,8 @@ MethodEvaluation evaluateMethod(const std::string& name, const std::string& sour
 /// preceded by a line that names the reference; then the translational error by the
 /// relations' turn, each method's along-track scale, and the frame that fits the relations
 /// best for each method whose mean error it lowers by kFrameOffsetNote or more; with a
-/// ground-truth reference, by relation
-/// separation; then the
-/// estimated sensor mountings, if asked for; then each method's worst relations, if any
-/// (formatWorstRelations).
+/// ground-truth reference, the error by relation separation; then the estimated sensor
+/// mountings, if asked for; then each method's worst relations, if any (formatWorstRelations).
 std::string formatEvaluationTable(const SlamEvaluation& evaluation);
 
 /// The whole evaluation as a JSON document (keys: share/doc/apps.md).

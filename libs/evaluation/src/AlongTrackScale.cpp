@@ -15,10 +15,10 @@ AlongTrackScale alongTrackScale(const PoseRelations& relations,
             !(std::abs(relation.stamp2 - relation.stamp1) <= kAlongTrackMaxSeconds)) {
             continue;
         }
-        // e = δ_gt⁻¹ ⊕ δ_est has translation R(−φ_gt) (t_est − t_gt): turn it back.
-        const double c = std::cos(truth.phi), s = std::sin(truth.phi);
-        const double dx = c * e.error.x - s * e.error.y, dy = s * e.error.x + c * e.error.y;
-        out.error += (dx * truth.x + dy * truth.y) / length;
+        // e = δ_gt⁻¹ ⊕ δ_est, so δ_est = δ_gt ⊕ e (TPose2D's + is MRPT's ⊕).
+        const mrpt::math::TPose2D estimated = truth + e.error;
+        out.error +=
+            ((estimated.x - truth.x) * truth.x + (estimated.y - truth.y) * truth.y) / length;
         out.pathLength += length;
         ++out.relations;
     }

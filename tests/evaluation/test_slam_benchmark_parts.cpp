@@ -315,6 +315,10 @@ TEST(SlamBenchmarkReport, RowsNotesAndJson) {
     EXPECT_DOUBLE_EQ(run["process"]["peak_rss_mib"].get<double>(), 100.0);
     EXPECT_EQ(run["summary"]["loops"]["accepted"], 7);
     EXPECT_TRUE(run["accuracy"].contains("ate"));
+    // The evaluator's own JSON for the method, key for key (toposlam-eval-slam --json).
+    EXPECT_EQ(run["accuracy"], nlohmann::json(evaluationJson(*log.rows[0].evaluation)));
+    EXPECT_TRUE(run["accuracy"].contains("along_track"));
+    EXPECT_TRUE(run["accuracy"].contains("by_turn"));
     EXPECT_EQ(j["logs"][0]["runs"][1]["status"], "skipped");
 
     result.logs[0].rows[1].run.status = SlamEngineRun::Status::Failed;

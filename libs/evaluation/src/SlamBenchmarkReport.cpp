@@ -1,4 +1,5 @@
 #include <toposlam/evaluation/SlamBenchmarkReport.h>
+#include <toposlam/evaluation/SlamEvaluation.h>
 #include <toposlam/io/AtomicFile.h>
 
 #include <algorithm>
@@ -180,10 +181,6 @@ std::string formatSlamBenchmarkTable(const SlamBenchmarkResult& result) {
 
 namespace {
 
-nlohmann::json statsJson(const ErrorStatistics& s) {
-    return {{"count", s.count}, {"mean", s.mean}, {"std", s.std}, {"max", s.max}, {"rms", s.rms}};
-}
-
 nlohmann::json processJson(const ChildProcessResult& p, double duration) {
     return {{"exit_code", p.exitCode},
             {"signal", p.signal},
@@ -195,24 +192,6 @@ nlohmann::json processJson(const ChildProcessResult& p, double duration) {
             {"real_time_factor", p.wallSeconds > 0 ? duration / p.wallSeconds : 0.0},
             {"real_time_factor_cpu", p.cpuSeconds() > 0 ? duration / p.cpuSeconds() : 0.0},
             {"peak_rss_mib", double(p.peakRssBytes) / kMiB}};
-}
-
-nlohmann::json evaluationJson(const MethodEvaluation& m) {
-    const RelativePoseErrorResult& r = m.relative;
-    nlohmann::json j = {{"poses", m.poses},
-                        {"relations_total", r.totalRelations},
-                        {"relations_matched", r.matchedRelations},
-                        {"translation_m", statsJson(r.translation)},
-                        {"rotation_deg", statsJson(r.rotation)},
-                        {"translation_squared_m2", statsJson(r.translationSquared)},
-                        {"rotation_squared_deg2", statsJson(r.rotationSquared)},
-                        {"along_track_percent", m.alongTrack.percent()}};
-    if (m.absolute) {
-        j["ate"] = {{"matched_poses", m.absolute->matchedPoses},
-                    {"position_m", statsJson(m.absolute->position)},
-                    {"heading_deg", statsJson(m.absolute->heading)}};
-    }
-    return j;
 }
 
 nlohmann::json rowJson(const SlamBenchmarkRow& row, double duration) {

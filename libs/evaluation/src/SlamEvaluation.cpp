@@ -286,7 +286,9 @@ io::Json referenceJson(const SlamEvaluation& ev) {
     return reference;
 }
 
-io::Json methodJson(const MethodEvaluation& m) {
+}  // namespace
+
+io::Json evaluationJson(const MethodEvaluation& m) {
     const RelativePoseErrorResult& r = m.relative;
     io::Json out = {{"name", m.name},
                     {"source", m.source},
@@ -367,12 +369,10 @@ io::Json methodJson(const MethodEvaluation& m) {
     return out;
 }
 
-}  // namespace
-
 std::string formatEvaluationJson(const SlamEvaluation& ev) {
     io::Json methods = io::Json::array();
     for (const MethodEvaluation& m : ev.methods)
-        methods.push_back(methodJson(m));
+        methods.push_back(evaluationJson(m));
     return io::formatJson(
         {{"tool", "toposlam-eval-slam"},
          {"metric",

@@ -10,6 +10,7 @@
 #include <toposlam/evaluation/RelativePoseError.h>
 #include <toposlam/evaluation/SensorMounting.h>
 #include <toposlam/evaluation/WorstRelations.h>
+#include <toposlam/io/JsonFile.h>
 #include <toposlam/io/Trajectory.h>
 
 #include <optional>
@@ -104,6 +105,12 @@ MethodEvaluation evaluateMethod(const std::string& name, const std::string& sour
 /// ground-truth reference, the error by relation separation; then the estimated sensor
 /// mountings, if asked for; then each method's worst relations, if any (formatWorstRelations).
 std::string formatEvaluationTable(const SlamEvaluation& evaluation);
+
+/// One method's evaluation as JSON: relations, error statistics, ATE (with ground truth), by
+/// turn and separation, along-track scale, best frame, mounting and worst relations (keys:
+/// share/doc/apps.md). formatEvaluationJson lists one per method; toposlam-bench-slam puts
+/// it under each run's "accuracy".
+io::Json evaluationJson(const MethodEvaluation& method);
 
 /// The whole evaluation as a JSON document (keys: share/doc/apps.md).
 std::string formatEvaluationJson(const SlamEvaluation& evaluation);

@@ -35,16 +35,19 @@ const char* const kDescription =
     "Benchmark B4: room segmentation scored against ground-truth rooms and doors (metrics: "
     "shared/BENCHMARKS.md, B4) by the virtual-door segmenter (vdoor: TopoSLAM's default; "
     "vdoor-paper: the paper's method as published) and the morphological (morph) and "
-    "distance-transform (dist) baselines of ipa_room_segmentation, on up to four sets:\n"
+    "distance-transform (dist) baselines of ipa_room_segmentation, on up to five sets:\n"
     "  bormann  the 20 maps of Bormann et al. (ICRA 2016), unfurnished and furnished;\n"
     "  gen      B4-gen: generated furnished office buildings with exact ground truth "
     "(--gen-seeds);\n"
     "  flats    B4-flats: generated furnished flats, rooms opening into rooms, no corridor "
     "(--flat-seeds);\n"
+    "  rings    B4-rings: generated furnished buildings around a corridor ring, rows of rooms "
+    "that look alike (--ring-seeds; not in the default --sets);\n"
     "  slam     end to end: a simulated robot tours generated plans and Bormann maps, "
     "toposlam's SLAM maps the log, the SLAM grid and trajectory are segmented and scored in "
     "the plan's frame (beside the same plans as drawn, set 'drawn'). Slow: minutes per plan.\n"
-    "--rotations turns every bormann, gen and flats map (and its ground truth) by each angle; "
+    "--rotations turns every bormann, gen, flats and rings map (and its ground truth) by each "
+    "angle; "
     "--cell-size maps them in coarser cells. Prints "
     "one row per map and method, then the averages per set, method, furnishing and angle, and "
     "writes them as JSON. Every method runs single-threaded; times are wall-clock medians over "
@@ -54,6 +57,7 @@ const char* const kDescription =
     "  toposlam-bench-rooms --sets bormann,gen --rotations 0,10,17,30,45 -r 1 -o b4-rot.json\n"
     "  toposlam-bench-rooms --sets bormann --cell-size 0.1 -m vdoor -r 1 -o b4-10cm.json\n"
     "  toposlam-bench-rooms --sets slam -r 1 --images b4-slam-png -o b4-slam.json\n"
+    "  toposlam-bench-rooms --sets rings -o b4-rings.json\n"
     "  toposlam-bench-rooms --write-plans gen-maps   # B4-gen and B4-flats as Bormann-format "
     "files";
 
@@ -93,7 +97,7 @@ std::vector<double> angleList(const std::string& text) {
     return angles;
 }
 
-// B4-gen or B4-flats as files in Bormann's layout.
+// B4-gen, B4-flats or B4-rings as files in Bormann's layout.
 std::size_t writePlans(const std::string& dir, const std::vector<unsigned>& seeds,
                        const std::vector<double>& angles, simulation::BuildingStyle style) {
     simulation::FloorPlanGeneratorOptions options;
@@ -150,7 +154,7 @@ struct Arguments {
     TCLAP::ValueArg<std::string> sets{
         "",
         "sets",
-        "comma-separated subset of bormann,gen,flats,slam (default: bormann,gen,flats)",
+        "comma-separated subset of bormann,gen,flats,rings,slam (default: bormann,gen,flats)",
         false,
         "bormann,gen,flats",
         "list",
@@ -162,8 +166,8 @@ struct Arguments {
     TCLAP::ValueArg<std::string> rotations{
         "",
         "rotations",
-        "comma-separated angles (deg, counter-clockwise) to turn every bormann, gen and flats "
-        "map by, "
+        "comma-separated angles (deg, counter-clockwise) to turn every bormann, gen, flats and "
+        "rings map by, "
         "nearest neighbour (default: 0)",
         false,
         "0",
@@ -172,8 +176,9 @@ struct Arguments {
     cli::NumberArg<double> cellSize{
         "",
         "cell-size",
-        "segment every bormann, gen and flats map in cells of this size (m), scored in the drawn "
-        "ground truth (default: 0 = as drawn). A whole multiple of the drawn 0.05 m: a cell is "
+        "segment every bormann, gen, flats and rings map in cells of this size (m), scored in the "
+        "drawn ground truth (default: 0 = as drawn). A whole multiple of the drawn 0.05 m: a cell "
+        "is "
         "free when every drawn pixel in it is, as a laser grid marks a cell a beam ended in. A "
         "whole fraction of it (0.025, 0.0125): every pixel split into cells of its own state, as "
         "a finer grid shows the same walls",
@@ -189,9 +194,21 @@ struct Arguments {
         "",    "flat-seeds", "B4-flats plans: seeds and ranges, e.g. 1-20 or 3,7 (default: 1-20)",
         false, "1-20",       "list",
         cmd};
+    TCLAP::ValueArg<std::string> ringSeeds{
+        "",    "ring-seeds", "B4-rings plans: seeds and ranges, e.g. 1-20 or 3,7 (default: 1-20)",
+        false, "1-20",       "list",
+        cmd};
     TCLAP::ValueArg<std::string> slamSeeds{
         "",     "slam-seeds", "end to end: generated plans to tour (default: 1-4)", false, "1-4",
         "list", cmd};
+    TCLAP::ValueArg<std::string> slamRingSeeds{
+        "",
+        "slam-ring-seeds",
+        "end to end: generated ring plans to tour (default: none)",
+        false,
+        "",
+        "list",
+        cmd};
     TCLAP::ValueArg<std::string> slamMaps{"",
                                           "slam-maps",
                                           "end to end: Bormann maps to tour, furnished (default: "
@@ -226,7 +243,8 @@ struct Arguments {
     TCLAP::ValueArg<std::string> writePlans{
         "",
         "write-plans",
-        "write the B4-gen and B4-flats plans of --sets (--gen-seeds, --flat-seeds, at "
+        "write the B4-gen, B4-flats and B4-rings plans of --sets (--gen-seeds, --flat-seeds, "
+        "--ring-seeds, at "
         "--rotations) into this folder in Bormann's format (<name>.png, _furnitures.png, "
         "_gt_segmentation.png, _doors.json) and exit",
         false,
@@ -267,8 +285,9 @@ roomsbench::RoomBenchmarkSuiteOptions suiteOptions(
     const auto sets = splitList(a.sets.getValue());
     auto has = [&](const char* s) { return std::find(sets.begin(), sets.end(), s) != sets.end(); };
     for (const auto& s : sets) {
-        if (s != "bormann" && s != "gen" && s != "flats" && s != "slam")
-            throw cli::UsageError("--sets: unknown set '" + s + "' (bormann, gen, flats, slam)");
+        if (s != "bormann" && s != "gen" && s != "flats" && s != "rings" && s != "slam")
+            throw cli::UsageError("--sets: unknown set '" + s +
+                                  "' (bormann, gen, flats, rings, slam)");
     }
     const bool haveData = std::filesystem::is_directory(o.bench.dataDir);
     if (!haveData && (has("bormann") || has("slam")))
@@ -279,8 +298,11 @@ roomsbench::RoomBenchmarkSuiteOptions suiteOptions(
         o.generatedSeeds = seedList(a.genSeeds.getValue(), "--gen-seeds");
     if (has("flats"))
         o.flatSeeds = seedList(a.flatSeeds.getValue(), "--flat-seeds");
+    if (has("rings"))
+        o.ringSeeds = seedList(a.ringSeeds.getValue(), "--ring-seeds");
     if (has("slam")) {
         o.endToEndSeeds = seedList(a.slamSeeds.getValue(), "--slam-seeds");
+        o.endToEndRingSeeds = seedList(a.slamRingSeeds.getValue(), "--slam-ring-seeds");
         if (haveData)
             o.endToEndBormannMaps = splitList(a.slamMaps.getValue());
         slamIni = std::make_unique<mrpt::config::CConfigFile>(a.slamConfig.getValue());
@@ -316,13 +338,18 @@ int run(int argc, char** argv) {
             written += writePlans(a.writePlans.getValue(),
                                   seedList(a.flatSeeds.getValue(), "--flat-seeds"), angles,
                                   simulation::BuildingStyle::Flat);
+        if (has("rings"))
+            written += writePlans(a.writePlans.getValue(),
+                                  seedList(a.ringSeeds.getValue(), "--ring-seeds"), angles,
+                                  simulation::BuildingStyle::Ring);
         std::cerr << "wrote " << written << " plans to " << a.writePlans.getValue() << "\n";
         return 0;
     }
     std::unique_ptr<mrpt::config::CConfigFile> slamIni;
     const auto options = suiteOptions(a, slamIni);
     if (!options.bormann && options.generatedSeeds.empty() && options.flatSeeds.empty() &&
-        options.endToEndSeeds.empty() && options.endToEndBormannMaps.empty()) {
+        options.ringSeeds.empty() && options.endToEndSeeds.empty() &&
+        options.endToEndBormannMaps.empty() && options.endToEndRingSeeds.empty()) {
         return 0;  // nothing left to run (the reason was printed)
     }
     io::ProgressDisplay progress("B4 room segmentation", "maps");

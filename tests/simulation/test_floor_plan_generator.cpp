@@ -1,6 +1,6 @@
-// The furnished floor-plan generator of B4-gen (offices) and B4-flats and its drawings: the same
-// seed gives the same plan; every plan is a closed building whose rooms are all reachable, doors
-// join two rooms and stay clear of furniture; drawings at an angle keep every room's area and
+// The furnished floor-plan generator of B4-gen (offices), B4-flats and B4-rings and its drawings:
+// the same seed gives the same plan; every plan is a closed building whose rooms are all reachable,
+// doors join two rooms and stay clear of furniture; drawings at an angle keep every room's area and
 // the doors.
 #include <toposlam/simulation/FloorPlanGenerator.h>
 #include <toposlam/simulation/FloorPlanImages.h>
@@ -134,6 +134,33 @@ TEST(FloorPlanGenerator, RoomsAreReachableAndDoorsClear) {
         EXPECT_GE(plan.roomCount, 5);
         expectUsableBuilding(plan, 0.8);
     }
+}
+
+TEST(FloorPlanGenerator, RingsAreCorridorLoopsAroundRowsOfRooms) {
+    FloorPlanGeneratorOptions o;
+    o.style = BuildingStyle::Ring;
+    for (unsigned seed = 1; seed <= 10; ++seed) {
+        SCOPED_TRACE("ring seed " + std::to_string(seed));
+        const auto plan = generateFloorPlan(seed, o);
+        EXPECT_GE(plan.roomCount, 20);
+        expectUsableBuilding(plan, 0.8);
+        // The corridor (the last ground-truth room, four boxes) is one region with a hole: the
+        // middle block, which a flood from its centre over everything else cannot leave.
+        const auto images = drawFloorPlan(plan);
+        const cv::Mat corridor = images.rooms == plan.roomCount;
+        cv::Mat labels;
+        EXPECT_EQ(cv::connectedComponents(corridor, labels, 4), 2);  // background + corridor
+        const cv::Rect box = cv::boundingRect(corridor);
+        const cv::Point centre = (box.tl() + box.br()) / 2;
+        ASSERT_EQ(corridor.at<std::uint8_t>(centre), 0);
+        cv::Mat flooded = corridor.clone();
+        cv::floodFill(flooded, centre, 255);
+        EXPECT_EQ(flooded.at<std::uint8_t>(0, 0), 0)
+            << "the flood from the middle block leaked past the corridor to the outside";
+    }
+    const auto a = generateFloorPlan(4, o), b = generateFloorPlan(4, o);
+    EXPECT_EQ(a.summary, b.summary);
+    EXPECT_NE(a.summary, generateFloorPlan(4).summary);  // not the office of the same seed
 }
 
 TEST(FloorPlanGenerator, DrawingAtAnAngleKeepsRoomsAndDoors) {

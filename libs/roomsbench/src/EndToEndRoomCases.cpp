@@ -117,13 +117,18 @@ mrpt::math::TPose2D alignTrajectories(const io::Trajectory2D& slam, const io::Tr
 
 std::vector<PlanToTour> plansToTour(const std::vector<unsigned>& seeds,
                                     const std::vector<std::string>& bormannMaps,
-                                    const std::string& bormannDir) {
+                                    const std::string& bormannDir,
+                                    const std::vector<unsigned>& ringSeeds) {
     std::vector<PlanToTour> plans;
-    for (const unsigned seed : seeds) {
-        const auto images = simulation::drawFloorPlan(simulation::generateFloorPlan(seed));
-        plans.push_back({generatedPlanName(seed) + "_furnitures", images.resolution,
+    const auto generated = [&](unsigned seed, simulation::BuildingStyle style) {
+        simulation::FloorPlanGeneratorOptions options;
+        options.style = style;
+        const auto images = simulation::drawFloorPlan(simulation::generateFloorPlan(seed, options));
+        plans.push_back({generatedPlanName(seed, style) + "_furnitures", images.resolution,
                          images.furnished, images.map == 255, images.rooms});
-    }
+    };
+    for (const unsigned seed : seeds)
+        generated(seed, simulation::BuildingStyle::Office);
     for (const std::string& base : bormannMaps) {
         // The turned-by-0 cases carry the maps and ground truth exactly as B4 reads them.
         auto cases = rooms::bormannCases(bormannDir, base, {0});
@@ -132,6 +137,8 @@ std::vector<PlanToTour> plansToTour(const std::vector<unsigned>& seeds,
         plans.push_back({furnished.map, furnished.grid.getResolution(), furnished.inputFree,
                          unfurnished.inputFree, unfurnished.truth.labels});
     }
+    for (const unsigned seed : ringSeeds)
+        generated(seed, simulation::BuildingStyle::Ring);
     return plans;
 }
 

@@ -17,13 +17,23 @@ const std::vector<unsigned>& b4GenSeeds() {
 }
 
 std::string generatedSetName(simulation::BuildingStyle style) {
-    return style == simulation::BuildingStyle::Flat ? "flats" : "gen";
+    switch (style) {
+        case simulation::BuildingStyle::Flat:
+            return "flats";
+        case simulation::BuildingStyle::Ring:
+            return "rings";
+        case simulation::BuildingStyle::Office:
+            break;
+    }
+    return "gen";
 }
 
 std::string generatedPlanName(unsigned seed, simulation::BuildingStyle style) {
+    std::string set = generatedSetName(style);
+    if (style != simulation::BuildingStyle::Office)
+        set.pop_back();  // "flat01", "ring01"
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%s%02u",
-                  style == simulation::BuildingStyle::Flat ? "flat" : "gen", seed);
+    std::snprintf(buf, sizeof buf, "%s%02u", set.c_str(), seed);
     return buf;
 }
 

@@ -18,8 +18,10 @@ RoomBenchmarkSuiteResult runRoomBenchmarkSuite(const RoomBenchmarkSuiteOptions& 
     const std::size_t bormann = options.bormann ? o.maps.size() : 0;
     const std::size_t generated = options.generatedSeeds.size();
     const std::size_t flats = options.flatSeeds.size();
-    const std::size_t endToEnd = options.endToEndSeeds.size() + options.endToEndBormannMaps.size();
-    const std::size_t total = bormann + generated + flats + endToEnd;
+    const std::size_t rings = options.ringSeeds.size();
+    const std::size_t endToEnd = options.endToEndSeeds.size() + options.endToEndBormannMaps.size() +
+                                 options.endToEndRingSeeds.size();
+    const std::size_t total = bormann + generated + flats + rings + endToEnd;
     if (total == 0)
         throw std::invalid_argument(
             "nothing to run: no Bormann map, generated plan or end-to-end plan");
@@ -52,9 +54,10 @@ RoomBenchmarkSuiteResult runRoomBenchmarkSuite(const RoomBenchmarkSuiteOptions& 
     };
     runGenerated(options.generatedSeeds, simulation::BuildingStyle::Office, bormann);
     runGenerated(options.flatSeeds, simulation::BuildingStyle::Flat, bormann + generated);
+    runGenerated(options.ringSeeds, simulation::BuildingStyle::Ring, bormann + generated + flats);
     if (endToEnd > 0) {
-        const auto plans =
-            plansToTour(options.endToEndSeeds, options.endToEndBormannMaps, o.dataDir);
+        const auto plans = plansToTour(options.endToEndSeeds, options.endToEndBormannMaps,
+                                       o.dataDir, options.endToEndRingSeeds);
         append(bench.runCases(
             plans.size(),
             [&](std::size_t i) {
@@ -66,7 +69,7 @@ RoomBenchmarkSuiteResult runRoomBenchmarkSuite(const RoomBenchmarkSuiteOptions& 
                 cases.push_back(std::move(slam));
                 return cases;
             },
-            part(bormann + generated + flats, endToEnd)));
+            part(bormann + generated + flats + rings, endToEnd)));
     }
     result.summary = rooms::RoomBenchmark::summarize(result.scores);
     return result;
@@ -208,6 +211,7 @@ std::string suiteJson(const RoomBenchmarkSuiteResult& result,
         rooms::RoomBenchmark::json(result.scores, result.summary, options.bench), "B4 report");
     j["generated_seeds"] = options.generatedSeeds;
     j["flat_seeds"] = options.flatSeeds;
+    j["ring_seeds"] = options.ringSeeds;
     j["end_to_end"] = io::Json::array();
     for (const auto& e : result.endToEnd) {
         j["end_to_end"].push_back(

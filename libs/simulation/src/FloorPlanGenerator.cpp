@@ -14,11 +14,12 @@ namespace {
 
 using mrpt::math::TPoint2D;
 
-// A block of rooms: the area between a corridor and the outer wall (inner faces), the corridor
-// on its north or south side.
+// A block of rooms: a row of rooms along a corridor (inner faces), the corridor on its north or
+// south side.
 struct Block {
     Box box;
     bool corridorNorth = true;
+    int corridor = 0;  ///< the corridor room its doors open into
 };
 
 class Builder {
@@ -31,6 +32,7 @@ class Builder {
     double uniform(double a, double b) { return std::uniform_real_distribution<>(a, b)(rng_); }
     bool chance(double p) { return uniform(0, 1) < p; }
     void layoutCorridors(double width, double depth, std::vector<Block>& blocks);
+    double layoutRing(double width, std::vector<Block>& blocks);
     void fillBlock(const Block& b);
     int addRoomInRow(const Block& b, double x0, double x1, const std::string& kind);
     void doorToCorridor(const Block& b, double x0, double x1, int room, const std::string& kind);
@@ -41,7 +43,6 @@ class Builder {
     FloorPlanGeneratorOptions o_;
     FloorPlan plan_;
     double tOuter_ = 0.2, tInner_ = 0.1;
-    int corridor_ = 0;
     std::map<std::string, int> kinds_;
 };
 
@@ -58,7 +59,7 @@ void Builder::layoutCorridors(double width, double depth, std::vector<Block>& bl
     const double y0 =
         uniform(std::max(4.0, 0.3 * depth), std::min(depth - 4.0 - cw, 0.7 * depth - cw));
     const double y1 = y0 + cw;
-    corridor_ = plan_.addRoom("corridor", "corridor", {0, y0, width, y1});
+    const int corridor = plan_.addRoom("corridor", "corridor", {0, y0, width, y1});
     // A branch corridor to the north and/or south outer wall (T or crossing), or none.
     const int branch = std::uniform_int_distribution<>(0, 3)(rng_);  // 0 none, 1 N, 2 S, 3 both
     const double bw = uniform(o_.minCorridor, o_.maxCorridor);
@@ -71,7 +72,7 @@ void Builder::layoutCorridors(double width, double depth, std::vector<Block>& bl
         const double blockY0 = north ? y1 + tInner_ : 0, blockY1 = north ? depth : y0 - tInner_;
         if (!hasBranch) {
             plan_.addWall({0, wallY}, {width, wallY}, tInner_);
-            blocks.push_back({{0, blockY0, width, blockY1}, !north});
+            blocks.push_back({{0, blockY0, width, blockY1}, !north, corridor});
             continue;
         }
         const double farY = north ? depth : 0;
@@ -81,9 +82,41 @@ void Builder::layoutCorridors(double width, double depth, std::vector<Block>& bl
         plan_.addWall({bx1 + h, wallY}, {width, wallY}, tInner_);
         plan_.addWall({bx0 - h, wallY}, {bx0 - h, farY}, tInner_);
         plan_.addWall({bx1 + h, wallY}, {bx1 + h, farY}, tInner_);
-        blocks.push_back({{0, blockY0, bx0 - tInner_, blockY1}, !north});
-        blocks.push_back({{bx1 + tInner_, blockY0, width, blockY1}, !north});
+        blocks.push_back({{0, blockY0, bx0 - tInner_, blockY1}, !north, corridor});
+        blocks.push_back({{bx1 + tInner_, blockY0, width, blockY1}, !north, corridor});
     }
+}
+
+// A corridor ring: corridors along the south and north sides joined along the west and east
+// outer walls, rows of rooms between them and the outer walls and two rows back to back in the
+// middle (a loop to drive round, and rooms that look alike all along it). Returns the depth.
+double Builder::layoutRing(double width, std::vector<Block>& blocks) {
+    const double cw = uniform(o_.minCorridor, o_.maxCorridor);
+    const double outerSouth = uniform(4.0, 7.0), innerSouth = uniform(4.0, 7.0);
+    const double innerNorth = uniform(4.0, 7.0), outerNorth = uniform(4.0, 7.0);
+    const double t = tInner_, h = tInner_ / 2;
+    const double yS0 = outerSouth + t, yS1 = yS0 + cw;  // the south corridor
+    const double yMiddle = yS1 + t + innerSouth + h;    // the wall between the middle rows
+    const double yN0 = yMiddle + h + innerNorth + t, yN1 = yN0 + cw;
+    const double depth = yN1 + t + outerNorth;
+    const int south = plan_.addRoom("corridor south", "corridor", {0, yS0, width, yS1});
+    const int north = plan_.addRoom("corridor north", "corridor", {0, yN0, width, yN1});
+    plan_.addRoom("corridor west", "corridor", {0, yS1, cw, yN0});
+    plan_.addRoom("corridor east", "corridor", {width - cw, yS1, width, yN0});
+    plan_.addWall({0, yS0 - h}, {width, yS0 - h}, t);
+    plan_.addWall({0, yN1 + h}, {width, yN1 + h}, t);
+    // The middle block: its outline, and the wall between its two rows.
+    const double x0 = cw + h, x1 = width - cw - h;
+    plan_.addWall({x0, yS1 + h}, {x1, yS1 + h}, t);
+    plan_.addWall({x0, yN0 - h}, {x1, yN0 - h}, t);
+    plan_.addWall({x0, yS1 + h}, {x0, yN0 - h}, t);
+    plan_.addWall({x1, yS1 + h}, {x1, yN0 - h}, t);
+    plan_.addWall({x0, yMiddle}, {x1, yMiddle}, t);
+    blocks.push_back({{0, 0, width, yS0 - t}, true, south});
+    blocks.push_back({{cw + t, yS1 + t, width - cw - t, yMiddle - h}, false, south});
+    blocks.push_back({{cw + t, yMiddle + h, width - cw - t, yN0 - t}, true, north});
+    blocks.push_back({{0, yN1 + t, width, depth}, false, north});
+    return depth;
 }
 
 int Builder::addRoomInRow(const Block& b, double x0, double x1, const std::string& kind) {
@@ -97,13 +130,13 @@ void Builder::doorToCorridor(const Block& b, double x0, double x1, int room,
     const double wallY = b.corridorNorth ? b.box.yMax + tInner_ / 2 : b.box.yMin - tInner_ / 2;
     const double w = std::min(doorWidth(kind), x1 - x0 - 0.7);
     const double a = uniform(x0 + 0.35, x1 - 0.35 - w);
-    plan_.addDoor({a, wallY}, {a + w, wallY}, room, corridor_);
+    plan_.addDoor({a, wallY}, {a + w, wallY}, room, b.corridor);
     // Large rooms often have a second door.
     if (x1 - x0 > 9 && chance(0.5)) {
         const double w2 = doorWidth(kind);
         const double c = a + w < 0.5 * (x0 + x1) ? uniform(0.5 * (x0 + x1), x1 - 0.35 - w2)
                                                  : uniform(x0 + 0.35, 0.5 * (x0 + x1) - w2);
-        plan_.addDoor({c, wallY}, {c + w2, wallY}, room, corridor_);
+        plan_.addDoor({c, wallY}, {c + w2, wallY}, room, b.corridor);
     }
     if ((kind == "open plan" || kind == "lab") && b.box.yMax - b.box.yMin > 5 && chance(0.6))
         partitionStubs(b, x0, x1, a, a + w);
@@ -194,14 +227,21 @@ void Builder::fillBlock(const Block& b) {
 }
 
 GeneratedFloorPlan Builder::build(unsigned seed) {
-    const double width = uniform(o_.minWidth, o_.maxWidth);
-    const double depth = uniform(o_.minDepth, o_.maxDepth);
+    const bool ring = o_.style == BuildingStyle::Ring;
+    const double width =
+        ring ? uniform(o_.minRingWidth, o_.maxRingWidth) : uniform(o_.minWidth, o_.maxWidth);
+    double depth = ring ? 0.0 : uniform(o_.minDepth, o_.maxDepth);
     const detail::WallThicknesses walls = detail::drawWallThicknesses(rng_);
     tOuter_ = walls.outer;
     tInner_ = walls.inner;
-    detail::addOuterWalls(plan_, width, depth, tOuter_);
     std::vector<Block> blocks;
-    layoutCorridors(width, depth, blocks);
+    if (ring) {
+        depth = layoutRing(width, blocks);  // the rows' depths make the building's
+        detail::addOuterWalls(plan_, width, depth, tOuter_);
+    } else {
+        detail::addOuterWalls(plan_, width, depth, tOuter_);
+        layoutCorridors(width, depth, blocks);
+    }
     for (const Block& b : blocks)
         fillBlock(b);
 

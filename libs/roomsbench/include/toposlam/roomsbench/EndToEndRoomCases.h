@@ -27,11 +27,13 @@ struct PlanToTour {
     cv::Mat roomLabels;        ///< CV_32S ground-truth rooms, 0 = none
 };
 
-/// The plans of the end-to-end set: generated plans (seeds) and Bormann maps (names, from
-/// `bormannDir`; their furnished map is toured). Throws io::InputError for a missing map.
+/// The plans of the end-to-end set: generated office plans (seeds), Bormann maps (names, from
+/// `bormannDir`; their furnished map is toured) and generated ring plans (ringSeeds). Throws
+/// io::InputError for a missing map.
 std::vector<PlanToTour> plansToTour(const std::vector<unsigned>& seeds,
                                     const std::vector<std::string>& bormannMaps,
-                                    const std::string& bormannDir);
+                                    const std::string& bormannDir,
+                                    const std::vector<unsigned>& ringSeeds = {});
 
 /// toposlam-sim's defaults (config_ini/sim-office.ini), except that the tour also looks into
 /// every area the room-sized tour leaves unseen ([Tour] look_into_unseen): as a person driving

@@ -17,10 +17,12 @@ struct RoomBenchmarkSuiteOptions {
     bool bormann = true;                   ///< B4 on Bormann's maps
     std::vector<unsigned> generatedSeeds;  ///< B4-gen plans (empty: none)
     std::vector<unsigned> flatSeeds;       ///< B4-flats plans (empty: none)
+    std::vector<unsigned> ringSeeds;       ///< B4-rings plans (empty: none)
     /// End to end (empty lists: none): generated plans and Bormann maps toured, mapped by SLAM,
     /// segmented, scored; and the same plans as drawn (dataset "drawn") for comparison.
     std::vector<unsigned> endToEndSeeds;
     std::vector<std::string> endToEndBormannMaps;
+    std::vector<unsigned> endToEndRingSeeds;  ///< generated ring plans
     EndToEndOptions endToEnd;
 };
 
@@ -36,8 +38,8 @@ struct RoomBenchmarkSuiteResult {
     std::vector<EndToEndRecord> endToEnd;
 };
 
-/// Runs the selected sets in the order Bormann, B4-gen, B4-flats, end to end. Throws io::InputError
-/// for a missing map, std::invalid_argument for bad options.
+/// Runs the selected sets in the order Bormann, B4-gen, B4-flats, B4-rings, end to end. Throws
+/// io::InputError for a missing map, std::invalid_argument for bad options.
 RoomBenchmarkSuiteResult runRoomBenchmarkSuite(const RoomBenchmarkSuiteOptions& options,
                                                const io::ProgressCallback& progress = {});
 

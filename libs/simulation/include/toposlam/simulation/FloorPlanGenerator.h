@@ -11,6 +11,12 @@
 // and labs may have partition walls that stop 2-4 m short of the opposite wall: openings wider
 // than a door inside one room, which are NOT room borders.
 //
+// Rings (BuildingStyle::Ring, B4-rings): a corridor ring, as in many office and university
+// buildings: corridors along the south and north sides joined along the west and east outer
+// walls, a row of rooms between each of them and the outer wall, and two rows back to back in
+// the middle block, every room filled and doored as in the offices. A loop of 90-175 m to drive
+// round, lined with rooms that look alike.
+//
 // Flats (BuildingStyle::Flat, B4-flats; FlatFloorPlan.cpp): no corridor. The outline, sometimes
 // L-shaped, is divided wall by wall (binary space partition) into a living room, bedrooms, a
 // kitchen, bathrooms and box rooms; rooms open into each other: a tree of doors from the living
@@ -33,13 +39,15 @@
 
 namespace toposlam::simulation {
 
-enum class BuildingStyle { Office, Flat };
+enum class BuildingStyle { Office, Flat, Ring };
 
 struct FloorPlanGeneratorOptions {
     BuildingStyle style = BuildingStyle::Office;
     double minWidth = 24, maxWidth = 44;          ///< m, office building (inner faces), east-west
     double minDepth = 15, maxDepth = 28;          ///< m, office building, north-south
     double minCorridor = 1.5, maxCorridor = 2.4;  ///< m, corridor width
+    double minRingWidth = 32, maxRingWidth = 60;  ///< m, ring building, east-west (its depth,
+                                                  ///< 24-38 m, follows from its rows of rooms)
     double minFlatWidth = 8, maxFlatWidth = 16;   ///< m, flat (inner faces), east-west
     double minFlatDepth = 7, maxFlatDepth = 12;   ///< m, flat, north-south
     bool furnish = true;                          ///< false: walls, rooms and doors only

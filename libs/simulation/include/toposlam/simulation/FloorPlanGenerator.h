@@ -14,7 +14,7 @@
 // Rings (BuildingStyle::Ring, B4-rings): a corridor ring, as in many office and university
 // buildings: corridors along the south and north sides joined along the west and east outer
 // walls, a row of rooms between each of them and the outer wall, and two rows back to back in
-// the middle block, every room filled and doored as in the offices. A loop of 90-175 m to drive
+// the middle block, every room filled and doored as in the offices. A loop of 80-150 m to drive
 // round, lined with rooms that look alike.
 //
 // Flats (BuildingStyle::Flat, B4-flats; FlatFloorPlan.cpp): no corridor. The outline, sometimes
@@ -47,7 +47,7 @@ struct FloorPlanGeneratorOptions {
     double minDepth = 15, maxDepth = 28;          ///< m, office building, north-south
     double minCorridor = 1.5, maxCorridor = 2.4;  ///< m, corridor width
     double minRingWidth = 32, maxRingWidth = 60;  ///< m, ring building, east-west (its depth,
-                                                  ///< 24-38 m, follows from its rows of rooms)
+                                                  ///< 20-34 m, follows from its rows of rooms)
     double minFlatWidth = 8, maxFlatWidth = 16;   ///< m, flat (inner faces), east-west
     double minFlatDepth = 7, maxFlatDepth = 12;   ///< m, flat, north-south
     bool furnish = true;                          ///< false: walls, rooms and doors only

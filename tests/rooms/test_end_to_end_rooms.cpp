@@ -11,6 +11,30 @@
 
 using namespace toposlam;
 
+namespace {
+
+// `plan` toured, mapped by toposlam-slam's shipped settings and carried into the plan's frame
+// (the end-to-end set's "slam" case); what the tour and SLAM did goes into `run`.
+rooms::RoomBenchmarkCase mappedBySlam(const roomsbench::PlanToTour& plan,
+                                      roomsbench::EndToEndRun& run) {
+    const mrpt::config::CConfigFile ini(test::configIni("toposlam-slam.ini"));
+    const test::TempDir dir;  // the simulated log; the case keeps its maps in memory
+    roomsbench::EndToEndOptions options;
+    options.slamConfig = &ini;
+    options.workDir = dir.path();
+    return roomsbench::endToEndCase(plan, options, run);
+}
+
+// The virtual-door segmenter's score on `c`, one run.
+rooms::RoomBenchmarkScore vdoorScore(const rooms::RoomBenchmarkCase& c) {
+    rooms::RoomBenchmarkOptions bench;
+    bench.methods = {"vdoor"};
+    bench.repeats = 1;
+    return rooms::RoomBenchmark(bench).score(c).at(0);
+}
+
+}  // namespace
+
 TEST(EndToEndRooms, OnTheOpenFloorTheSlamGridsRoomsAreThePlansRooms) {
     // A laser grid marks the cell a wall face lies in as occupied: its walls and furniture
     // stand up to a cell into the plan's free pixels, which the plain recall counts as lost.
@@ -18,22 +42,13 @@ TEST(EndToEndRooms, OnTheOpenFloorTheSlamGridsRoomsAreThePlansRooms) {
     // must be the drawn plan's, up to what 1 cm range noise and a few cm of pose error move.
     const auto plans = roomsbench::plansToTour({3}, {}, "");
     ASSERT_EQ(plans.size(), 1u);
-    const mrpt::config::CConfigFile ini(test::configIni("toposlam-slam.ini"));
-    const test::TempDir dir;
-    roomsbench::EndToEndOptions options;
-    options.slamConfig = &ini;
-    options.workDir = dir.path();
     roomsbench::EndToEndRun run;
-    const rooms::RoomBenchmarkCase slam = roomsbench::endToEndCase(plans[0], options, run);
+    const rooms::RoomBenchmarkCase slam = mappedBySlam(plans[0], run);
     const rooms::RoomBenchmarkCase drawn = roomsbench::drawnPlanCase(plans[0]);
     ASSERT_FALSE(slam.openFloor.labels.empty());
     ASSERT_EQ(slam.openFloor.count, slam.truth.count);
 
-    rooms::RoomBenchmarkOptions bench;
-    bench.methods = {"vdoor"};
-    bench.repeats = 1;
-    const rooms::RoomBenchmark benchmark(bench);
-    const auto onSlam = benchmark.score(slam).at(0), onDrawn = benchmark.score(drawn).at(0);
+    const auto onSlam = vdoorScore(slam), onDrawn = vdoorScore(drawn);
     ASSERT_TRUE(onSlam.openFloor && onDrawn.openFloor);
     EXPECT_EQ(onSlam.segments, onDrawn.segments);
     // The plain recall loses the ring: at least a point (a 4 x 4 m room's one-cell ring is 5 %
@@ -81,24 +96,15 @@ TEST(EndToEndRooms, ARingBuildingKeepsItsLoopAndItsRooms) {
     const auto plans = roomsbench::plansToTour({}, {}, "", {5});
     ASSERT_EQ(plans.size(), 1u);
     ASSERT_EQ(plans[0].name, "ring05_furnitures");
-    const mrpt::config::CConfigFile ini(test::configIni("toposlam-slam.ini"));
-    const test::TempDir dir;
-    roomsbench::EndToEndOptions options;
-    options.slamConfig = &ini;
-    options.workDir = dir.path();
     roomsbench::EndToEndRun run;
-    const rooms::RoomBenchmarkCase slam = roomsbench::endToEndCase(plans[0], options, run);
+    const rooms::RoomBenchmarkCase slam = mappedBySlam(plans[0], run);
     EXPECT_GT(run.tourLength, 200.0);
     // 1 cm range noise and drifting odometry over a 350 m tour: a loop that did not close
     // would leave decimetres.
     EXPECT_LT(run.alignmentRmse, 0.05);
 
-    rooms::RoomBenchmarkOptions bench;
-    bench.methods = {"vdoor"};
-    bench.repeats = 1;
-    const rooms::RoomBenchmark benchmark(bench);
-    const auto onSlam = benchmark.score(slam).at(0);
-    const auto onDrawn = benchmark.score(roomsbench::drawnPlanCase(plans[0])).at(0);
+    const auto onSlam = vdoorScore(slam);
+    const auto onDrawn = vdoorScore(roomsbench::drawnPlanCase(plans[0]));
     ASSERT_TRUE(onSlam.openFloor && onDrawn.openFloor);
     EXPECT_EQ(onDrawn.doors.matchedTrue, onDrawn.doors.trueDoors);
     EXPECT_GE(onSlam.pr.segments, onDrawn.pr.segments - 2);

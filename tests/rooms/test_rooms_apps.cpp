@@ -246,12 +246,15 @@ TEST(ToposlamBenchRooms, RunsGeneratedPlansAtTwoAnglesAndWritesThem) {
     }
     EXPECT_TRUE(std::filesystem::is_regular_file(dir.file("gen.json")));
 
-    r = runApp("toposlam-bench-rooms", "--write-plans '" + dir.file("plans") +
-                                           "' --gen-seeds 2 --flat-seeds 3 --rotations 0,30");
+    r = runApp("toposlam-bench-rooms",
+               "--write-plans '" + dir.file("plans") +
+                   "' --sets gen,flats,rings --gen-seeds 2 --flat-seeds 3 --ring-seeds 4 "
+                   "--rotations 0,30");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     for (const char* file :
          {"gen02.png", "gen02_furnitures.png", "gen02_gt_segmentation.png", "gen02_doors.json",
-          "gen02_rot30_furnitures.png", "flat03.png", "flat03_rot30_gt_segmentation.png"}) {
+          "gen02_rot30_furnitures.png", "flat03.png", "flat03_rot30_gt_segmentation.png",
+          "ring04_furnitures.png", "ring04_rot30_gt_segmentation.png"}) {
         EXPECT_TRUE(std::filesystem::is_regular_file(dir.file("plans/" + std::string(file))))
             << file;
     }
@@ -267,6 +270,8 @@ TEST(ToposlamBenchRooms, RejectsBadOptions) {
                                                   {"--rotations 400", 2},
                                                   {"--gen-seeds x", 2},
                                                   {"--sets flats --flat-seeds 1-x", 2},
+                                                  {"--sets rings --ring-seeds x", 2},
+                                                  {"--sets slam --slam-ring-seeds -3", 2},
                                                   {"--cell-size 0.07", 2},  // no whole multiple
                                                   {"--cell-size 0.03", 2},  // no whole fraction
                                                   {"-c missing.ini", 1}}) {

@@ -68,6 +68,7 @@ struct Arguments {
     cli::NumberArg<double> maxRange;
     TCLAP::ValueArg<std::string> laserOffset;
     cli::NumberArg<std::size_t> maxScans;
+    cli::NumberArg<std::size_t> keepEvery;
     cli::NumberArg<double> resolution;
     TCLAP::ValueArg<std::string> origin;
     cli::MapReadingArgs mapReading;
@@ -104,8 +105,14 @@ Arguments::Arguments()
                   "the log states. Default: from the log (laser vs robot pose in each line, else "
                   "PARAM robot_frontlaser_offset)",
                   false, "", "x,y,yaw", cmd),
-      maxScans("", "max-scans", "Convert only the first N scans. Default: 0 = all", 0,
+      maxScans("", "max-scans", "Read only the first N scans of the log. Default: 0 = all", 0,
                cli::NumberRange<std::size_t>::nonNegative(1000000000), "N", cmd),
+      keepEvery("", "keep-every",
+                "Keep one scan in N (the first, then every Nth): the log as a laser with an N "
+                "times lower scan rate would have recorded it; the odometry is the pose at each "
+                "kept scan. A relation file still matches the kept scans' stamps. Default: 1 = "
+                "every scan",
+                1, cli::NumberRange<std::size_t>::closed(1, 1000), "N", cmd),
       resolution(
           "", "resolution",
           "Maps: cell size in m for an input image (overrides its .yaml sidecar). "
@@ -130,7 +137,8 @@ void refuseLogOptions(const Arguments& a) {
         {a.label.isSet(), "--label"},
         {a.maxRange.isSet(), "--carmen-max-range"},
         {a.laserOffset.isSet(), "--laser-offset"},
-        {a.maxScans.isSet(), "--max-scans"}};
+        {a.maxScans.isSet(), "--max-scans"},
+        {a.keepEvery.isSet(), "--keep-every"}};
     for (const auto& [set, name] : logOptions) {
         if (set)
             throw cli::UsageError(std::string(name) + " is for laser logs, not grid maps");
@@ -179,6 +187,7 @@ io::LogConversionOptions logOptions(Arguments& a) {
                                                        : io::RawlogFormat::Observations;
     options.odometryTrajectoryPath = a.odometryTrajectory.getValue();
     options.maxScans = a.maxScans.getValue();
+    options.keepEvery = a.keepEvery.getValue();
     return options;
 }
 

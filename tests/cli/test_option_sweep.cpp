@@ -49,6 +49,7 @@ const NumericOption kNumericOptions[] = {
     {"toposlam-bench-slam", "--timeout", 0, 1e6, false, false},
     {"toposlam-convert", "--carmen-max-range", 0, 1000, true, false},
     {"toposlam-convert", "--max-scans", 0, 1e9, false, true},
+    {"toposlam-convert", "--keep-every", 1, 1000, false, true},
     {"toposlam-convert", "--resolution", 0, 100, true, false},
     {"toposlam-eval-slam", "--frame-offset", -10, 10, false, false},
     {"toposlam-eval-slam", "--gt-separation", 0, kBig, false, false},

@@ -86,6 +86,40 @@ TEST(ToposlamConvert, CarmenToRawlogInBothFormats) {
     }
 }
 
+TEST(ToposlamConvert, KeepEveryNthScanIsALowerScanRate) {
+    TempDir dir;
+    writeText(dir.file("log.clf"), carmenLog(8));
+    const std::string out = dir.file("every3.rawlog");
+    const auto r = runApp("toposlam-convert", dir.file("log.clf") + " -o " + out +
+                                                  " --keep-every 3 --odometry-trajectory " +
+                                                  dir.file("odo.txt"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("3 scans of 181 readings"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("5 scans left out (one kept in 3)"), std::string::npos) << r.output;
+    // Scans 0, 3 and 6, each with the odometry at that scan: increments span the left-out ones.
+    toposlam::io::LaserLogReader reader(out);
+    toposlam::io::LaserLogRecord rec;
+    std::vector<double> x;
+    while (reader.next(rec))
+        x.push_back(rec.odometry.x());
+    ASSERT_EQ(x.size(), 3u);
+    EXPECT_NEAR(x[1], 0.3, 1e-9);
+    EXPECT_NEAR(x[2], 0.6, 1e-9);
+    const auto t = toposlam::io::loadTrajectory(dir.file("odo.txt"));
+    ASSERT_EQ(t.size(), 3u);
+    EXPECT_NEAR(t[1].stamp, 9.9 + 0.21, 1e-9) << "the kept scans' own stamps";
+    // --max-scans counts the scans read: the first 4 read keep scans 0 and 3.
+    const auto first4 =
+        runApp("toposlam-convert", dir.file("log.clf") + " -q -o " + dir.file("first4.rawlog") +
+                                       " --keep-every 3 --max-scans 4");
+    ASSERT_EQ(first4.exitCode, 0) << first4.output;
+    toposlam::io::LaserLogReader first(dir.file("first4.rawlog"));
+    std::size_t n = 0;
+    while (first.next(rec))
+        ++n;
+    EXPECT_EQ(n, 2u);
+}
+
 TEST(ToposlamConvert, OdometryTrajectoryUsesPrintedStamps) {
     TempDir dir;
     writeText(dir.file("log.clf"), carmenLog(4));
@@ -240,7 +274,8 @@ TEST(ToposlamConvert, ABarePlanPictureBecomesAGridWithItsGreyWallsOccupied) {
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_FALSE(fs::exists(dir.file("x.rawlog")));
     // And the log options are for logs only: on a map they would be ignored.
-    for (const char* option : {"--label FLASER", "--format sf", "--max-scans 3"}) {
+    for (const char* option :
+         {"--label FLASER", "--format sf", "--max-scans 3", "--keep-every 2"}) {
         r = runApp("toposlam-convert",
                    dir.file("plan.png") + " " + option + " -o " + dir.file("y.gridmap"));
         EXPECT_EQ(r.exitCode, 2) << option << ": " << r.output;

@@ -2,6 +2,7 @@
 #include <toposlam/io/LogConversion.h>
 #include <toposlam/io/Trajectory.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
@@ -18,7 +19,13 @@ LogConversionSummary convertLaserLog(const std::string& inputPath,
     summary.inputFormat = reader.format();
     Trajectory2D odometry;
     LaserLogRecord record;
-    while ((options.maxScans == 0 || summary.scans < options.maxScans) && reader.next(record)) {
+    const std::size_t keepEvery = std::max<std::size_t>(1, options.keepEvery);
+    for (std::size_t read = 0;
+         (options.maxScans == 0 || read < options.maxScans) && reader.next(record); ++read) {
+        if (read % keepEvery != 0) {
+            ++summary.scansLeftOut;
+            continue;
+        }
         if (summary.scans == 0) {
             summary.beamsPerScan = record.scan->getScanSize();
             summary.firstStamp = record.fileStamp;
@@ -60,6 +67,10 @@ std::string describe(const LogConversionSummary& s, const std::string& inputPath
         text += ", " + std::to_string(s.adjustedTimestamps) + " timestamps repaired";
     if (s.scansWithoutOdometry > 0)
         text += ", " + std::to_string(s.scansWithoutOdometry) + " scans without odometry";
+    if (s.scansLeftOut > 0) {
+        text += ", " + std::to_string(s.scansLeftOut) + " scans left out (one kept in " +
+                std::to_string(options.keepEvery) + ")";
+    }
     text += "\n";
     if (!options.rawlogPath.empty()) {
         text += "wrote " + options.rawlogPath + " (" + toString(options.rawlogFormat) +

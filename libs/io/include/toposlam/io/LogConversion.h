@@ -20,15 +20,20 @@ struct LogConversionOptions {
     /// (Trajectory.h). The stamps are the scans' fileStamps, so relation files match them.
     /// Scans without odometry are left out.
     std::string odometryTrajectoryPath;
-    /// Convert only the first this many scans (0 = all).
+    /// Read only the first this many scans of the input (0 = all).
     std::size_t maxScans = 0;
+    /// Keep one scan in this many (the first, then every keepEvery-th): the log as a laser
+    /// with a lower scan rate would have recorded it. The odometry is the pose at each kept
+    /// scan, so an increment spans the scans left out. 1 = every scan.
+    std::size_t keepEvery = 1;
     /// Called after each scan with (fraction of the input parsed, scans so far).
     ProgressCallback progress;
 };
 
 struct LogConversionSummary {
     LaserLogFormat inputFormat = LaserLogFormat::Carmen;
-    std::size_t scans = 0;
+    std::size_t scans = 0;         ///< converted (kept)
+    std::size_t scansLeftOut = 0;  ///< read but left out (keepEvery)
     std::size_t scansWithoutOdometry = 0;
     std::size_t beamsPerScan = 0;        ///< of the first scan
     std::size_t adjustedTimestamps = 0;  ///< see LaserLogReader::adjustedTimestamps()
@@ -42,8 +47,8 @@ LogConversionSummary convertLaserLog(const std::string& inputPath,
                                      const LogConversionOptions& options);
 
 /// What a conversion did, for people: "<input>: CARMEN, 5 scans of 181 readings, 9.9 .. 10.2 s
-/// (0.3 s), 1 timestamps repaired" and a "wrote <file> (...)" line per output, each line ending
-/// in a newline.
+/// (0.3 s), 1 timestamps repaired" (and ", 10 scans left out (one kept in 3)") and a
+/// "wrote <file> (...)" line per output, each line ending in a newline.
 std::string describe(const LogConversionSummary& summary, const std::string& inputPath,
                      const LogConversionOptions& options);
 

@@ -52,8 +52,9 @@ SimulatedDrive simulateDrive(const simulation::PolygonWorld& world,
         if (i > 0) {
             const CPose2D step = truth[i] - truth[i - 1];
             const double d = step.norm();
+            const double forward = errors.reversingReadsForward ? std::abs(step.x()) : step.x();
             odometry =
-                odometry + CPose2D(step.x() * errors.distanceScale, step.y() * errors.distanceScale,
+                odometry + CPose2D(forward * errors.distanceScale, step.y() * errors.distanceScale,
                                    step.phi() * errors.turnScale + errors.headingDriftPerMetre * d);
         }
         CPose2D reported = odometry;

@@ -25,6 +25,8 @@ struct OdometryErrors {
     /// From scan `jumpAt` on, the odometry is offset by `jump` (a glitch); 0 = none.
     std::size_t jumpAt = 0;
     mrpt::poses::CPose2D jump;
+    /// Driving backwards is counted as driving forward (as fr079's odometry does).
+    bool reversingReadsForward = false;
 };
 
 struct SimulatedDrive {

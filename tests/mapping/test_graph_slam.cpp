@@ -485,6 +485,47 @@ TEST(GraphSlam, RecoversFromAnOdometryJump) {
     EXPECT_LT(std::abs(finalError.phi()), 0.02);
 }
 
+TEST(GraphSlam, ReversingIsNotTakenForDrivingForward) {
+    // Odometry that counts reversing as driving forward (fr079's), at 0.3 m per scan (fr079 at a
+    // third of its scan rate): each reversing step is predicted 0.6 m off, more than ICP
+    // reaches or may correct and than a step may be. At the first one the graph matcher finds
+    // the true step and ICP on the submap confirms it; then the last motion is the better
+    // prediction (both confirm_large_corrections). Without that, ICP from the odometry either
+    // fails, keeping the odometry's step, or is held at the odometry's position along the
+    // corridor.
+    constexpr double kStep = 0.3;
+    std::vector<CPose2D> truth = test::drivePath({{1.5, 1.5}, {18, 1.5}}, kStep);
+    for (int k = 1; k <= 10; ++k)  // 3 m backwards from the corridor's end, facing it
+        truth.emplace_back(truth.back().x() - kStep, 1.5, truth.back().phi());
+    const auto onward =
+        test::drivePath({{truth.back().x(), 1.5}, {18.5, 1.5}, {18.5, 10.5}, {12, 10.5}}, kStep);
+    truth.insert(truth.end(), onward.begin() + 1, onward.end());
+    test::OdometryErrors errors;
+    errors.reversingReadsForward = true;
+    const auto drive = test::simulateDrive(ringCorridor(), truth, errors, 11);
+    const CPose2D odometryEnd = truth.front() + drive.odometry.back();  // the truth's frame
+    ASSERT_GT((odometryEnd - truth.back()).norm(), 5.0)
+        << "the odometry must be metres off after reversing";
+
+    const SlamRun run = runSlam(drive);
+    const CPose2D finalError = run.poses.back() - truth.back();
+    // Registered steps, as in RecoversFromAnOdometryJump: a few cm over the drive.
+    EXPECT_LT(finalError.norm(), 0.1);
+    EXPECT_LT(std::abs(finalError.phi()), 0.02);
+    const auto& stats = run.slam->statistics();
+    EXPECT_GE(stats.graphMatcherConfirmed, 1u) << "the first reversing step";
+    EXPECT_GE(stats.lastMotionPredictions, 1u) << "the next ones";
+    EXPECT_EQ(stats.registrationFailed, 0u);
+
+    const SlamRun unconfirmed =
+        runSlam(drive, 0, [](mapping::GraphSlamOptions& o) { o.confirmLargeCorrections = false; });
+    EXPECT_GT((unconfirmed.poses.back() - truth.back()).norm(), 1.0)
+        << "without it the reversing steps must keep the odometry's";
+    EXPECT_EQ(unconfirmed.slam->statistics().graphMatcherConfirmed +
+                  unconfirmed.slam->statistics().lastMotionPredictions,
+              0u);
+}
+
 TEST(GraphSlam, NoHalfTurnFromALookAlikeMatchAmongPeople) {
     // The project's office toured with six people walking about (toposlam-sim --tour --people 6
     // --seed 2). Where they hide the walls ICP gives up, and the graph matcher, retrying without

@@ -88,6 +88,8 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
         ++stats_.odometryJumps;
         increment = lastMotion_;
     }
+    p.odometryStep = increment;
+    p.lastMotion = lastMotion_;
     const CPose2D predicted = current_ + increment;
     const Keyframe& last = keyframes_.back();
     p.lastKeyframe = &last;
@@ -150,6 +152,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     const CPose2D sensorOnRobot(scan->sensorPose);
     const Registration r =
         registration_.registerScan(polar_, sensorOnRobot, prediction, extract, features_);
+    stats_.lastMotionPredictions += r.byLastMotion;
     if (r.alongHeading) {
         stats_.alongHeadingChecks.push_back(*r.alongHeading);
         stats_.alongHeadingChecks.back().scan = stats_.scans - 1;
@@ -164,6 +167,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
             break;
         case RegistrationMethod::GraphMatcher:
             ++stats_.registeredByGraphMatcher;
+            stats_.graphMatcherConfirmed += r.confirmedOnSubmap;
             break;
         case RegistrationMethod::Odometry:
             ++stats_.registrationFailed;

@@ -93,6 +93,10 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
     s.angle("odometry_jump_angle", odometryJumpAngle, "... as are turns larger than this")
         .above(0)
         .atMost(180);
+    s.flag("confirm_large_corrections", confirmLargeCorrections,
+           "corrections of the odometry beyond these bounds (the graph matcher's, up to twice "
+           "them; the last motion as the prediction) are used when ICP on the submap confirms "
+           "them");
     s.real("odometry_sigma_xy", odometrySigmaXY, "m",
            "odometry-only edges: position noise floor ...")
         .above(0);

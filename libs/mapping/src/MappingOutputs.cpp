@@ -73,11 +73,14 @@ std::string formatSummary(const MappingResult& r) {
             "registration: %zu by ICP (%.1f %%; %zu unsettled, %zu of them from a second start; "
             "%zu without foreground objects; %zu held at the odometry's position along the "
             "heading), %zu by the graph "
-            "matcher (%.1f %%), %zu failed (%.1f %%, odometry kept); %zu odometry jumps",
+            "matcher (%.1f %%; %zu of them beyond a jump, confirmed on the submap), %zu failed "
+            "(%.1f %%, odometry kept); %zu odometry jumps; %zu predicted by the last motion "
+            "instead of the odometry",
             st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
             st->icpSecondStarts, st->icpWithoutForeground, st->icpHeldAlongHeading,
             st->registeredByGraphMatcher, percent(st->registeredByGraphMatcher, n),
-            st->registrationFailed, percent(st->registrationFailed, n), st->odometryJumps);
+            st->graphMatcherConfirmed, st->registrationFailed, percent(st->registrationFailed, n),
+            st->odometryJumps, st->lastMotionPredictions);
         if (!r.odometryCalibration)
             s += line("odometry: distances as read (odometry_calibration off)");
         else if (st->odometryScale == 1.0)
@@ -153,6 +156,8 @@ nlohmann::json summaryJson(const MappingResult& r) {
                              {"icp_without_foreground", st->icpWithoutForeground},
                              {"icp_held_along_heading", st->icpHeldAlongHeading},
                              {"graph_matcher", st->registeredByGraphMatcher},
+                             {"graph_matcher_confirmed", st->graphMatcherConfirmed},
+                             {"last_motion_predictions", st->lastMotionPredictions},
                              {"failed", st->registrationFailed},
                              {"odometry_jumps", st->odometryJumps},
                              {"registered_share", st->registeredShare()}};

@@ -15,6 +15,8 @@ using mrpt::poses::CPose2D;
 namespace {
 /// m: a reading this close to the submap's surface counts as explained by a pose.
 constexpr double kFitDistance = 0.05;
+/// rad: two ICP runs that end within kFitDistance and this angle found the same pose.
+constexpr double kSameEndAngle = 0.0175;
 /// ICP that did not converge has not settled when its residual RMS is more than this times the
 /// median of the recent registrations. (Less than half of the scan on the map, tried as a
 /// second sign, flagged 5 % of intel's scans and never changed a result.)
@@ -22,6 +24,12 @@ constexpr double kUnsettledResidualRatio = 2.0;
 /// Along-heading check: ICP "slid" along a corridor only where at least this share of the
 /// readings lies on the submap at its pose (a good fit, not a place where nothing fits).
 constexpr double kSlideMinFit = 0.5;
+/// Two ICP runs that end within kFitDistance and kSameEndAngle found the same pose.
+bool sameEnd(const CPose2D& a, const CPose2D& b) {
+    const CPose2D apart = b - a;
+    return apart.norm() <= kFitDistance &&
+           std::abs(mrpt::math::wrapToPi(apart.phi())) <= kSameEndAngle;
+}
 /// Readings of `scan` within kFitDistance of the submap's surface at sensor pose `sensor`.
 std::size_t readingsOnMap(const matching::LineMap& map, const matching::PolarScan& scan,
                           const CPose2D& sensor) {
@@ -164,6 +172,7 @@ bool ScanRegistration::holdAlongHeading(const matching::PolarScan& scan,
 
 bool ScanRegistration::tryIcp(const matching::PolarScan& scan, const CPose2D& sensorOnRobot,
                               const Prediction& prediction, Registration& out) {
+    failedIcp_.reset();
     if (!prediction.submap || prediction.submap->map().size() == 0 || scan.validCount() == 0)
         return false;
     IcpAttempt best = icpFrom(scan, sensorOnRobot, *prediction.submap, prediction.inSubmap);
@@ -172,6 +181,7 @@ bool ScanRegistration::tryIcp(const matching::PolarScan& scan, const CPose2D& se
     out.overlap = best.overlap;
     if (best.overlap < options_.minInlierRatio ||
         !plausibleCorrection(best.robot - prediction.inSubmap)) {
+        failedIcp_ = best.robot;
         return false;
     }
     if (options_.secondOpinion) {
@@ -235,6 +245,35 @@ void ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
     icp.secondStart = true;
 }
 
+const Prediction& ScanRegistration::preferredPrediction(const matching::PolarScan& scan,
+                                                        const CPose2D& sensorOnRobot,
+                                                        const Prediction& prediction) {
+    if (!options_.confirmLargeCorrections || prediction.odometryJumped || !prediction.submap ||
+        prediction.submap->map().size() == 0 || scan.validCount() == 0)
+        return prediction;
+    // The last motion's pose is the odometry's, less the odometry's step, plus that motion.
+    const CPose2D toMotion = (-prediction.odometryStep) + prediction.lastMotion;
+    if (toMotion.norm() <= options_.icpMaxDistance)
+        return prediction;  // ICP from the odometry reaches it
+    const Submap& submap = *prediction.submap;
+    const CPose2D byMotion = prediction.inSubmap + toMotion;
+    const IcpAttempt fromOdometry = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap);
+    const IcpAttempt fromMotion = icpFrom(scan, sensorOnRobot, submap, byMotion);
+    const auto onMap = [&](const CPose2D& robot) {
+        return double(readingsOnMap(submap.map(), scan, robot + sensorOnRobot));
+    };
+    // Both found the same pose (then only the size of the odometry's correction is in doubt),
+    // or the last motion's fits clearly better.
+    if (!sameEnd(fromMotion.robot, fromOdometry.robot) &&
+        onMap(fromMotion.robot) <
+            onMap(fromOdometry.robot) + options_.secondOpinionMargin * double(scan.validCount()))
+        return prediction;
+    motionPrediction_ = prediction;
+    motionPrediction_.inSubmap = byMotion;
+    motionPrediction_.fromLastKeyframe = prediction.fromLastKeyframe + toMotion;
+    return motionPrediction_;
+}
+
 double ScanRegistration::typicalResidual() const {
     constexpr std::size_t kMinCount = 20;
     if (residualCount_ < kMinCount)
@@ -247,7 +286,8 @@ double ScanRegistration::typicalResidual() const {
 
 bool ScanRegistration::tryGraphMatcher(const matching::PolarScan& scan,
                                        const CPose2D& sensorOnRobot, const Prediction& prediction,
-                                       const features::ScanFeatures& features, Registration& out) {
+                                       const features::ScanFeatures& features,
+                                       const CPose2D* failedIcp, Registration& out) {
     const Keyframe& kf = *prediction.lastKeyframe;
     // The prediction as a guess (the matcher retries guess-free when it leads nowhere).
     const CPose2D guess =
@@ -262,7 +302,8 @@ bool ScanRegistration::tryGraphMatcher(const matching::PolarScan& scan,
     // motion. Guess-free answers are exactly the ones that can land there.
     if (!prediction.odometryJumped &&
         beyondOdometryJump(options_, pose - prediction.fromLastKeyframe)) {
-        return false;
+        return options_.confirmLargeCorrections && failedIcp &&
+               confirmOnSubmap(scan, sensorOnRobot, prediction, pose, *failedIcp, out);
     }
     out.method = RegistrationMethod::GraphMatcher;
     out.reference = kf.id;
@@ -271,6 +312,40 @@ bool ScanRegistration::tryGraphMatcher(const matching::PolarScan& scan,
     out.covariance = edgeCovariance(m.covariance, prediction.distanceFromLastKeyframe,
                                     prediction.turnFromLastKeyframe);
     out.overlap = 0;
+    return true;
+}
+
+bool ScanRegistration::confirmOnSubmap(const matching::PolarScan& scan,
+                                       const CPose2D& sensorOnRobot, const Prediction& prediction,
+                                       const CPose2D& matched, const CPose2D& failedIcp,
+                                       Registration& out) {
+    const CPose2D correction = matched - prediction.fromLastKeyframe;
+    if (correction.norm() > 2 * options_.odometryJumpDistance ||
+        std::abs(mrpt::math::wrapToPi(correction.phi())) > 2 * options_.odometryJumpAngle)
+        return false;
+    const Submap& submap = *prediction.submap;
+    // The last keyframe in the submap's frame, as in secondOpinion().
+    const CPose2D start = prediction.inSubmap + (-prediction.fromLastKeyframe) + matched;
+    const IcpAttempt icp = icpFrom(scan, sensorOnRobot, submap, start);
+    if (icp.overlap < options_.minInlierRatio || !plausibleCorrection(icp.robot - start))
+        return false;
+    const auto onMap = [&](const CPose2D& robot) {
+        return double(readingsOnMap(submap.map(), scan, robot + sensorOnRobot));
+    };
+    // Either ICP from the prediction ended there too (rejected only for the size of the
+    // correction), or the scan fits clearly better there than where it ended.
+    if (!sameEnd(icp.robot, failedIcp) &&
+        onMap(icp.robot) <
+            onMap(failedIcp) + options_.secondOpinionMargin * double(scan.validCount()))
+        return false;
+    out.method = RegistrationMethod::GraphMatcher;
+    out.confirmedOnSubmap = true;
+    out.reference = submap.anchor();
+    out.pose = icp.robot;
+    out.overlap = icp.overlap;
+    out.rawCovariance = icp.icp.covariance;
+    out.covariance = edgeCovariance(icp.icp.covariance, prediction.distanceFromLastKeyframe,
+                                    prediction.turnFromLastKeyframe);
     return true;
 }
 

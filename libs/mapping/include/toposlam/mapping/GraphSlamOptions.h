@@ -84,6 +84,18 @@ struct GraphSlamOptions : public config::Options {
     /// a jump, a graph-matcher answer that corrects the prediction by more is not used.
     double odometryJumpDistance = 0.5;  ///< m
     double odometryJumpAngle = 0.7854;  ///< rad (45 deg)
+    /// Corrections of the odometry's step beyond the bounds above, when the submap confirms
+    /// them (odometry that counts reversing as driving forward, as fr079's, is off by twice
+    /// the step):
+    ///  - the graph matcher's answer, up to twice the jump bounds, when ICP started there
+    ///    agrees with it within the correction bounds and ends where ICP from the prediction
+    ///    did, or puts at least secondOpinionMargin more of the scan's readings on the submap
+    ///    (where ICP from the prediction already fits, as along a corridor seen the other way
+    ///    round, it does neither);
+    ///  - the robot's last registered motion instead of the odometry's step as the
+    ///    prediction, when the two are farther apart than icpMaxDistance and ICP from the
+    ///    last motion ends where ICP from the odometry does or fits by that margin better.
+    bool confirmLargeCorrections = true;
     /// Odometry noise (standard deviations) for edges that only odometry supports: a floor,
     /// plus a share of the distance travelled and of the angle turned.
     double odometrySigmaXY = 0.02;           ///< m

@@ -8,6 +8,12 @@
 //     residual over twice the recent median), it is run again from the graph matcher's answer
 //     and from the prediction turned either way, and the start that explains clearly more of
 //     the scan wins (an odometry heading off by 10-15 deg in one step of a fast turn).
+//     With confirm_large_corrections on (the default), when the odometry's step and the
+//     robot's last registered motion are farther apart than ICP reaches (icp_max_distance),
+//     ICP runs from both first, and the last motion replaces the odometry as the prediction
+//     when both end at the same pose or it puts second_opinion_margin more of the scan on the
+//     submap (odometry that counts reversing as driving forward: fr079 at a third of its scan
+//     rate).
 //     Before that, when ICP corrected the prediction by more than foreground_check along the
 //     robot's heading, it is run again without the small objects close to the laser
 //     (ForegroundObjects.h: a person walking just ahead, whom the submap holds where the next
@@ -17,7 +23,10 @@
 //     the odometry's position along the heading fits it nearly as well, along a corridor whose
 //     walls do not fix that position, the pose is moved back there;
 //  2. otherwise (poor overlap, a correction too large to trust, or an odometry jump) the graph
-//     matcher against the last keyframe, from the prediction and, failing that, guess-free;
+//     matcher against the last keyframe, from the prediction and, failing that, guess-free.
+//     Without a jump, an answer that corrects the prediction by more than a jump is a
+//     look-alike unless ICP on the submap, started there, confirms it (confirm_large_
+//     corrections: odometry that counts reversing as driving forward);
 //  3. if both fail, the odometry prediction, with the odometry model's covariance.
 // Poses are ROBOT poses (the laser's mounting offset is applied here), in the frame of the
 // reference keyframe the result names (m, rad).
@@ -56,6 +65,12 @@ struct Registration {
     bool unsettled = false;
     /// ICP without the scan's foreground objects (foreground_check), which took back the step.
     bool withoutForeground = false;
+    /// The graph matcher's answer beyond the jump bounds, confirmed by ICP on the submap
+    /// (confirm_large_corrections).
+    bool confirmedOnSubmap = false;
+    /// Predicted by the robot's last motion instead of the odometry's step
+    /// (confirm_large_corrections).
+    bool byLastMotion = false;
     /// The along-heading check's evidence when it ran (its `scan` is left 0: the caller knows
     /// which scan this is).
     std::optional<AlongHeadingCheck> alongHeading;
@@ -80,6 +95,9 @@ struct Prediction {
     double distanceFromLastKeyframe = 0;    ///< m travelled by odometry since then
     double turnFromLastKeyframe = 0;        ///< rad turned by odometry since then
     bool odometryJumped = false;
+    /// The odometry's step since the last scan as predicted (the last motion after a jump),
+    /// and the robot's motion registered at the last scan (robot frame, m, rad).
+    mrpt::poses::CPose2D odometryStep, lastMotion;
 };
 
 class ScanRegistration {
@@ -134,9 +152,21 @@ class ScanRegistration {
                           IcpAttempt& attempt, AlongHeadingCheck& check) const;
     bool tryIcp(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                 const Prediction& prediction, Registration& out);
+    /// The graph matcher against the last keyframe. An answer beyond the odometry's jump
+    /// bounds is a look-alike unless the odometry jumped, or `failedIcp` (where ICP from the
+    /// prediction ended, rejected; null when it was not tried or not rejected) is given and
+    /// confirmOnSubmap() confirms it.
     bool tryGraphMatcher(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                          const Prediction& prediction, const features::ScanFeatures& features,
-                         Registration& out);
+                         const mrpt::poses::CPose2D* failedIcp, Registration& out);
+    /// confirm_large_corrections: the graph matcher's robot pose `matched` (in the last
+    /// keyframe's frame), at most twice the jump bounds from the prediction, confirmed by ICP
+    /// on the submap started there (converged, within the correction bounds of `matched`,
+    /// second_opinion_margin more readings on the submap than at `failedIcp`). `out` gets
+    /// ICP's pose on the submap.
+    bool confirmOnSubmap(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
+                         const Prediction& prediction, const mrpt::poses::CPose2D& matched,
+                         const mrpt::poses::CPose2D& failedIcp, Registration& out);
 
     /// ICP from `prediction` ended in `icp` without settling: ICP again from the graph
     /// matcher's answer `matched` (when it has one) and from the prediction turned by +-1 and
@@ -145,6 +175,13 @@ class ScanRegistration {
     void secondOpinion(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                        const Prediction& prediction, const Registration* matched,
                        Registration& icp);
+    /// `prediction`, or the same with the robot's last motion instead of the odometry's step
+    /// (kept in motionPrediction_) when the two are farther apart than ICP reaches and ICP
+    /// from the last motion ends where ICP from the odometry does or puts
+    /// second_opinion_margin more of `scan` on the submap (confirm_large_corrections).
+    const Prediction& preferredPrediction(const matching::PolarScan& scan,
+                                          const mrpt::poses::CPose2D& sensorOnRobot,
+                                          const Prediction& prediction);
     /// Median residual RMS of the last accepted ICP registrations (m; 0 before there are
     /// enough): the scale of "a residual well above the recent ones" for this laser and place.
     double typicalResidual() const;
@@ -154,6 +191,10 @@ class ScanRegistration {
     std::array<double, 101> recentResiduals_{};
     std::size_t residualCount_ = 0;
     bool icpUnsettled_ = false;  ///< the last ICP registration tryIcp accepted had not settled
+    /// Robot pose (submap frame) where the last ICP that tryIcp rejected ended; empty when
+    /// tryIcp accepted, or did not run ICP.
+    std::optional<mrpt::poses::CPose2D> failedIcp_;
+    Prediction motionPrediction_;  ///< preferredPrediction()'s alternative
     matching::PointToLineIcp icp_;
     matching::IcpOptions icpOptions_;
     matching::GraphScanMatcher matcher_;
@@ -165,23 +206,28 @@ class ScanRegistration {
 template <typename ExtractFeatures>
 Registration ScanRegistration::registerScan(const matching::PolarScan& scan,
                                             const mrpt::poses::CPose2D& sensorOnRobot,
-                                            const Prediction& prediction,
+                                            const Prediction& odometryPrediction,
                                             ExtractFeatures&& extractFeatures,
                                             features::ScanFeatures& features) {
     Registration out;
+    const Prediction& prediction = preferredPrediction(scan, sensorOnRobot, odometryPrediction);
+    out.byLastMotion = &prediction != &odometryPrediction;
     if (!prediction.odometryJumped && tryIcp(scan, sensorOnRobot, prediction, out)) {
         if (icpUnsettled_ && prediction.lastKeyframe) {  // set only with second_opinion on
             out.unsettled = true;
             extractFeatures(features);
             Registration matched;
-            const bool found = tryGraphMatcher(scan, sensorOnRobot, prediction, features, matched);
+            const bool found =
+                tryGraphMatcher(scan, sensorOnRobot, prediction, features, nullptr, matched);
             secondOpinion(scan, sensorOnRobot, prediction, found ? &matched : nullptr, out);
         }
         return out;
     }
     if (prediction.lastKeyframe) {
         extractFeatures(features);
-        if (tryGraphMatcher(scan, sensorOnRobot, prediction, features, out))
+        const mrpt::poses::CPose2D* failedIcp =
+            prediction.odometryJumped || !failedIcp_ ? nullptr : &*failedIcp_;
+        if (tryGraphMatcher(scan, sensorOnRobot, prediction, features, failedIcp, out))
             return out;
     }
     out.method = RegistrationMethod::Odometry;

@@ -37,8 +37,14 @@ struct SlamStatistics {
     /// disagreed along the way, and what the scan said).
     std::vector<AlongHeadingCheck> alongHeadingChecks;
     std::size_t registeredByGraphMatcher = 0;  ///< ICP was poor; the graph matcher succeeded
-    std::size_t registrationFailed = 0;        ///< both failed: odometry prediction kept
-    std::size_t odometryJumps = 0;             ///< odometry increments rejected as jumps
+    /// Of those, answers beyond the odometry's jump bounds that ICP on the submap confirmed
+    /// (confirm_large_corrections).
+    std::size_t graphMatcherConfirmed = 0;
+    /// Scans predicted by the robot's last motion instead of the odometry's step, whatever
+    /// registered them (confirm_large_corrections).
+    std::size_t lastMotionPredictions = 0;
+    std::size_t registrationFailed = 0;  ///< both failed: odometry prediction kept
+    std::size_t odometryJumps = 0;       ///< odometry increments rejected as jumps
     /// Distance scale applied to the odometry at the end (odometry_calibration; 1 = none),
     /// and the odometry distance of the well-registered scans it was learnt from (m).
     double odometryScale = 1.0;

@@ -4,16 +4,16 @@
 //     prediction (PointToLineIcp::refineOnMap); good when enough of the scan lands on the map
 //     and the correction of the prediction is plausible. After an odometry jump the
 //     prediction is the last scan's motion instead, and this step is skipped.
+//     With confirm_large_corrections on (the default), when the odometry's step and the
+//     robot's last registered motion are farther apart than ICP reaches (icp_max_distance),
+//     ICP first runs from both, and the last motion replaces the odometry as the prediction
+//     when both end at the same pose or it puts second_opinion_margin more of the scan on the
+//     submap (odometry that counts reversing as driving forward: fr079 at a third of its scan
+//     rate).
 //     With second_opinion on (the default), when ICP has not settled (no convergence, and a
 //     residual over twice the recent median), it is run again from the graph matcher's answer
 //     and from the prediction turned either way, and the start that explains clearly more of
 //     the scan wins (an odometry heading off by 10-15 deg in one step of a fast turn).
-//     With confirm_large_corrections on (the default), when the odometry's step and the
-//     robot's last registered motion are farther apart than ICP reaches (icp_max_distance),
-//     ICP runs from both first, and the last motion replaces the odometry as the prediction
-//     when both end at the same pose or it puts second_opinion_margin more of the scan on the
-//     submap (odometry that counts reversing as driving forward: fr079 at a third of its scan
-//     rate).
 //     Before that, when ICP corrected the prediction by more than foreground_check along the
 //     robot's heading, it is run again without the small objects close to the laser
 //     (ForegroundObjects.h: a person walking just ahead, whom the submap holds where the next
@@ -161,9 +161,10 @@ class ScanRegistration {
                          const mrpt::poses::CPose2D* failedIcp, Registration& out);
     /// confirm_large_corrections: the graph matcher's robot pose `matched` (in the last
     /// keyframe's frame), at most twice the jump bounds from the prediction, confirmed by ICP
-    /// on the submap started there (converged, within the correction bounds of `matched`,
-    /// second_opinion_margin more readings on the submap than at `failedIcp`). `out` gets
-    /// ICP's pose on the submap.
+    /// on the submap started there: enough overlap, within the correction bounds of
+    /// `matched`, and ending where ICP from the prediction did (`failedIcp`) or with
+    /// second_opinion_margin more readings on the submap than there. `out` gets ICP's pose on
+    /// the submap.
     bool confirmOnSubmap(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                          const Prediction& prediction, const mrpt::poses::CPose2D& matched,
                          const mrpt::poses::CPose2D& failedIcp, Registration& out);

@@ -46,11 +46,13 @@ const char* const kDescription =
     "With --sim-plans it first simulates a tour of each floor plan with each robot of "
     "--sim-robots (toposlam-sim, exact ground truth; logs <plan>.<robot> in --sim-dir) and "
     "runs the engines on those logs too: SLAM on data it was not tuned on, with lasers and "
-    "odometry harder than the public logs'.\n"
+    "odometry harder than the public logs'. With --keep-every N every log runs with one scan "
+    "in N: more motion between two scans, as a slower laser or a faster robot gives.\n"
     "Examples:\n"
     "  toposlam-bench-slam --json b3.json --images b3-img\n"
     "  toposlam-bench-slam --logs intel,office --engines graph,icp-slam --keep b3-runs\n"
     "  toposlam-bench-slam --sim-plans office_d,NLB --sim-robots lms200,urg-04lx\n"
+    "  toposlam-bench-slam --logs fr079,intel --keep-every 3\n"
     "Exit status: 0 when every run succeeded (or, with 'B3 skipped: ...' on stderr, when the "
     "benchmark logs are not there); 1 when a run failed (the table says which and why) or on "
     "bad input (missing configuration, plan or a failing simulation); 2 for bad usage (unknown "
@@ -113,6 +115,7 @@ struct Arguments {
     TCLAP::ValueArg<std::string> data, logs, engines, config, icpSlam, icpSlamConfig, keep, images,
         json, simPlans, simRobots, simDir, simConfig;
     cli::NumberArg<double> timeout;
+    cli::NumberArg<std::size_t> keepEvery;
 };
 
 Arguments::Arguments()
@@ -176,7 +179,13 @@ Arguments::Arguments()
                 false, TOPOSLAM_SOURCE_DIR "/config_ini/sim-office.ini", "file.ini", cmd),
       timeout("", "timeout",
               "Kill a run after this many seconds of wall time (0: no limit, the default).", 0.0,
-              cli::NumberRange<double>::nonNegative(1e6), "seconds", cmd) {}
+              cli::NumberRange<double>::nonNegative(1e6), "seconds", cmd),
+      keepEvery("", "keep-every",
+                "Run every log with one scan in N (toposlam-convert --keep-every: the log as a "
+                "laser with an N times lower scan rate would have recorded it), named "
+                "<log>-1inN and scored on the relations between kept scans. Default: 1 = the "
+                "logs as recorded",
+                1, cli::NumberRange<std::size_t>::closed(1, 1000), "N", cmd) {}
 
 // "/work/wt/../shared/data" -> "/work/shared/data": shorter names in the table.
 std::string tidy(const std::string& path) {
@@ -240,6 +249,7 @@ evaluation::SlamBenchmarkOptions benchmarkOptions(Arguments& a) {
     options.engines = parseEngines(a.engines.getValue());
     options.keepDir = a.keep.getValue();
     options.imageDir = a.images.getValue();
+    options.keepEvery = a.keepEvery.getValue();
     evaluation::SlamEngineSetup& setup = options.setup;
     setup.timeoutSeconds = a.timeout.getValue();
     setup.slamConfig = tidy(a.config.getValue());

@@ -47,6 +47,7 @@ const NumericOption kNumericOptions[] = {
     {"toposlam-bench-rooms", "--repeats", 1, 1000, false, true},
     {"toposlam-bench-rooms", "--cell-size", 0, 5, false, false},
     {"toposlam-bench-slam", "--timeout", 0, 1e6, false, false},
+    {"toposlam-bench-slam", "--keep-every", 1, 1000, false, true},
     {"toposlam-convert", "--carmen-max-range", 0, 1000, true, false},
     {"toposlam-convert", "--max-scans", 0, 1e9, false, true},
     {"toposlam-convert", "--keep-every", 1, 1000, false, true},

@@ -118,6 +118,29 @@ TEST(BenchSlamApp, OfficeEveryEngineScoredAgainstGroundTruth) {
     }
 }
 
+TEST(BenchSlamApp, KeepEveryRunsTheLogsWithFewerScans) {
+    TempDir dir;
+    const std::string json = dir.file("b3.json");
+    const auto r = runApp("toposlam-bench-slam",
+                          "--logs office --engines graph --keep-every 2 --json " + json);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(contains(r.output, "| office-1in2 | graph")) << r.output;
+    const nlohmann::json j = readJson(json);
+    ASSERT_EQ(j["logs"].size(), 1u);
+    const nlohmann::json& office = j["logs"][0];
+    EXPECT_EQ(office["name"], "office-1in2");
+    EXPECT_EQ(office["scans"], 184) << "every second of the office's 368 scans";
+    // Scored on the relations between kept scans only (85 of the 638 derived from the
+    // ground truth: their two stamps must both be kept), still to centimetres.
+    const nlohmann::json& graph = office["runs"][0];
+    ASSERT_EQ(graph["status"], "ok") << graph.dump(2);
+    const std::size_t matched = graph["accuracy"]["relations_matched"];
+    EXPECT_GT(matched, 50u);
+    EXPECT_LT(matched, graph["accuracy"]["relations_total"].get<std::size_t>());
+    EXPECT_LT(graph["accuracy"]["translation_m"]["mean"].get<double>(), 0.05);
+    EXPECT_LT(graph["accuracy"]["ate"]["position_m"]["rms"].get<double>(), 0.1);
+}
+
 TEST(BenchSlamApp, KeepKeepsEveryRunsFolder) {
     TempDir dir;
     const std::string keep = dir.file("runs");

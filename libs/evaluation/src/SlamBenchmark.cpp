@@ -4,6 +4,7 @@
 #include <toposlam/evaluation/SlamBenchmark.h>
 #include <toposlam/evaluation/TrajectoryPlot.h>
 #include <toposlam/io/InputError.h>
+#include <toposlam/io/LogConversion.h>
 
 #include <stdlib.h>
 
@@ -197,18 +198,41 @@ SlamBenchmarkResult SlamBenchmark::run(const io::ProgressCallback& progress) con
     return result;
 }
 
-SlamBenchmarkLogResult SlamBenchmark::runLog(const SlamBenchmarkLog& log,
+namespace {
+
+// `log` with one scan in `keepEvery`, converted into `directory` (io::convertLaserLog).
+SlamBenchmarkLog withFewerScans(const SlamBenchmarkLog& log, std::size_t keepEvery,
+                                const fs::path& directory) {
+    SlamBenchmarkLog thinned = log;
+    thinned.name = log.name + "-1in" + std::to_string(keepEvery);
+    fs::create_directories(directory);
+    thinned.logFile = (directory / (thinned.name + ".rawlog")).string();
+    io::LogConversionOptions conversion;
+    conversion.rawlogPath = thinned.logFile;
+    conversion.keepEvery = keepEvery;
+    io::convertLaserLog(log.logFile, conversion);
+    return thinned;
+}
+
+}  // namespace
+
+SlamBenchmarkLogResult SlamBenchmark::runLog(const SlamBenchmarkLog& recorded,
                                              const std::string& workDirectory,
                                              const io::ProgressCallback& progress,
                                              std::size_t& done, std::size_t total) const {
     SlamBenchmarkLogResult result;
-    result.log = log;
+    result.log = recorded;
+    SlamBenchmarkLog log = recorded;
     const std::size_t runsOfLog = static_cast<std::size_t>(std::count_if(
         options_.engines.begin(), options_.engines.end(),
         [&](SlamEngine e) { return e != SlamEngine::IcpSlam || !options_.setup.icpSlam.empty(); }));
     Reference reference;
     std::vector<double> stamps;
     try {
+        if (options_.keepEvery > 1) {
+            log = withFewerScans(recorded, options_.keepEvery, workDirectory);
+            result.log = log;
+        }
         reference = loadReference(log);
         stamps = scanFileStamps(log.logFile);
     } catch (const std::exception& e) {

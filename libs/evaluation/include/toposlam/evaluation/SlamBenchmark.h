@@ -35,6 +35,10 @@ struct SlamBenchmarkOptions {
     /// (the trajectories aligned on one plot) into this folder; "" = none.
     std::string imageDir;
     double stampTolerance = StampedPoseLookup::kDefaultTolerance;
+    /// Run every log with one scan in this many (toposlam-convert --keep-every: the log as a
+    /// laser with a lower scan rate would have recorded it), named `<log>-1in<N>`; scored on
+    /// the reference's relations between kept scans. 1 = the logs as recorded.
+    std::size_t keepEvery = 1;
 };
 
 /// One table row: an engine on a log, and its score when it ran.
@@ -88,7 +92,9 @@ class SlamBenchmark {
     SlamBenchmarkResult run(const io::ProgressCallback& progress = {}) const;
 
   private:
-    SlamBenchmarkLogResult runLog(const SlamBenchmarkLog& log, const std::string& workDirectory,
+    /// `recorded`, or with one scan in keepEvery (converted into workDirectory), run and scored.
+    SlamBenchmarkLogResult runLog(const SlamBenchmarkLog& recorded,
+                                  const std::string& workDirectory,
                                   const io::ProgressCallback& progress, std::size_t& done,
                                   std::size_t total) const;
     void writeImages(SlamBenchmarkLogResult& result, const io::Trajectory2D* groundTruth) const;

@@ -35,6 +35,18 @@ std::size_t readingsOnMap(const matching::LineMap& map, const matching::PolarSca
                           const CPose2D& sensor) {
     return matching::PointToLineIcp::countOnMap(map, scan, sensor, kFitDistance);
 }
+/// ICP that ended at robot pose `candidate` bears out its answer against ICP that ended at
+/// `other` (both on `map`): they found the same pose, or the scan fits clearly better at
+/// `candidate` (`margin` more of its valid readings on the map).
+bool bearsOut(const matching::LineMap& map, const matching::PolarScan& scan,
+              const CPose2D& sensorOnRobot, const CPose2D& candidate, const CPose2D& other,
+              double margin) {
+    if (sameEnd(candidate, other))
+        return true;
+    return double(readingsOnMap(map, scan, candidate + sensorOnRobot)) >=
+           double(readingsOnMap(map, scan, other + sensorOnRobot)) +
+               margin * double(scan.validCount());
+}
 /// The covariance with every eigenvalue clamped to [lo, hi] (per eigen-direction of position
 /// and heading together; position and heading are in different units, but ICP's covariance is
 /// nearly block-diagonal, so this clamps each block).
@@ -259,14 +271,10 @@ const Prediction& ScanRegistration::preferredPrediction(const matching::PolarSca
     const CPose2D byMotion = prediction.inSubmap + toMotion;
     const IcpAttempt fromOdometry = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap);
     const IcpAttempt fromMotion = icpFrom(scan, sensorOnRobot, submap, byMotion);
-    const auto onMap = [&](const CPose2D& robot) {
-        return double(readingsOnMap(submap.map(), scan, robot + sensorOnRobot));
-    };
     // Both found the same pose (then only the size of the odometry's correction is in doubt),
     // or the last motion's fits clearly better.
-    if (!sameEnd(fromMotion.robot, fromOdometry.robot) &&
-        onMap(fromMotion.robot) <
-            onMap(fromOdometry.robot) + options_.secondOpinionMargin * double(scan.validCount()))
+    if (!bearsOut(submap.map(), scan, sensorOnRobot, fromMotion.robot, fromOdometry.robot,
+                  options_.secondOpinionMargin))
         return prediction;
     motionPrediction_ = prediction;
     motionPrediction_.inSubmap = byMotion;
@@ -329,14 +337,10 @@ bool ScanRegistration::confirmOnSubmap(const matching::PolarScan& scan,
     const IcpAttempt icp = icpFrom(scan, sensorOnRobot, submap, start);
     if (icp.overlap < options_.minInlierRatio || !plausibleCorrection(icp.robot - start))
         return false;
-    const auto onMap = [&](const CPose2D& robot) {
-        return double(readingsOnMap(submap.map(), scan, robot + sensorOnRobot));
-    };
     // Either ICP from the prediction ended there too (rejected only for the size of the
     // correction), or the scan fits clearly better there than where it ended.
-    if (!sameEnd(icp.robot, failedIcp) &&
-        onMap(icp.robot) <
-            onMap(failedIcp) + options_.secondOpinionMargin * double(scan.validCount()))
+    if (!bearsOut(submap.map(), scan, sensorOnRobot, icp.robot, failedIcp,
+                  options_.secondOpinionMargin))
         return false;
     out.method = RegistrationMethod::GraphMatcher;
     out.confirmedOnSubmap = true;

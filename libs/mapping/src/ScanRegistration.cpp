@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
 
 namespace toposlam::mapping {
 
@@ -183,11 +184,13 @@ bool ScanRegistration::holdAlongHeading(const matching::PolarScan& scan,
 }
 
 bool ScanRegistration::tryIcp(const matching::PolarScan& scan, const CPose2D& sensorOnRobot,
-                              const Prediction& prediction, Registration& out) {
+                              const Prediction& prediction, Registration& out,
+                              const IcpAttempt* started) {
     failedIcp_.reset();
     if (!prediction.submap || prediction.submap->map().size() == 0 || scan.validCount() == 0)
         return false;
-    IcpAttempt best = icpFrom(scan, sensorOnRobot, *prediction.submap, prediction.inSubmap);
+    IcpAttempt best =
+        started ? *started : icpFrom(scan, sensorOnRobot, *prediction.submap, prediction.inSubmap);
     // Before judging it: a person ahead can also push the answer beyond the plausible.
     checkAlongHeading(scan, sensorOnRobot, prediction, best, out);
     out.overlap = best.overlap;
@@ -259,7 +262,8 @@ void ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
 
 const Prediction& ScanRegistration::preferredPrediction(const matching::PolarScan& scan,
                                                         const CPose2D& sensorOnRobot,
-                                                        const Prediction& prediction) {
+                                                        const Prediction& prediction,
+                                                        std::optional<IcpAttempt>& started) {
     if (!options_.confirmLargeCorrections || prediction.odometryJumped || !prediction.submap ||
         prediction.submap->map().size() == 0 || scan.validCount() == 0)
         return prediction;
@@ -269,13 +273,16 @@ const Prediction& ScanRegistration::preferredPrediction(const matching::PolarSca
         return prediction;  // ICP from the odometry reaches it
     const Submap& submap = *prediction.submap;
     const CPose2D byMotion = prediction.inSubmap + toMotion;
-    const IcpAttempt fromOdometry = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap);
-    const IcpAttempt fromMotion = icpFrom(scan, sensorOnRobot, submap, byMotion);
+    IcpAttempt fromOdometry = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap);
+    IcpAttempt fromMotion = icpFrom(scan, sensorOnRobot, submap, byMotion);
     // Both found the same pose (then only the size of the odometry's correction is in doubt),
     // or the last motion's fits clearly better.
     if (!bearsOut(submap.map(), scan, sensorOnRobot, fromMotion.robot, fromOdometry.robot,
-                  options_.secondOpinionMargin))
+                  options_.secondOpinionMargin)) {
+        started = std::move(fromOdometry);
         return prediction;
+    }
+    started = std::move(fromMotion);
     motionPrediction_ = prediction;
     motionPrediction_.inSubmap = byMotion;
     motionPrediction_.fromLastKeyframe = prediction.fromLastKeyframe + toMotion;

@@ -150,8 +150,11 @@ class ScanRegistration {
     bool holdAlongHeading(const matching::PolarScan& scan,
                           const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
                           IcpAttempt& attempt, AlongHeadingCheck& check) const;
+    /// Step 1 at the top of this file: ICP from the prediction, judged (`started`: that ICP,
+    /// already run; null: run it here).
     bool tryIcp(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
-                const Prediction& prediction, Registration& out);
+                const Prediction& prediction, Registration& out,
+                const IcpAttempt* started = nullptr);
     /// The graph matcher against the last keyframe. An answer beyond the odometry's jump
     /// bounds is a look-alike unless the odometry jumped, or `failedIcp` (where ICP from the
     /// prediction ended, rejected; null when it was not tried or not rejected) is given and
@@ -179,10 +182,13 @@ class ScanRegistration {
     /// `prediction`, or the same with the robot's last motion instead of the odometry's step
     /// (kept in motionPrediction_) when the two are farther apart than ICP reaches and ICP
     /// from the last motion ends where ICP from the odometry does or puts
-    /// second_opinion_margin more of `scan` on the submap (confirm_large_corrections).
+    /// second_opinion_margin more of `scan` on the submap (confirm_large_corrections). When it
+    /// compared the two, `started` gets the ICP run from the prediction returned, so that it
+    /// is not run again.
     const Prediction& preferredPrediction(const matching::PolarScan& scan,
                                           const mrpt::poses::CPose2D& sensorOnRobot,
-                                          const Prediction& prediction);
+                                          const Prediction& prediction,
+                                          std::optional<IcpAttempt>& started);
     /// Median residual RMS of the last accepted ICP registrations (m; 0 before there are
     /// enough): the scale of "a residual well above the recent ones" for this laser and place.
     double typicalResidual() const;
@@ -211,9 +217,12 @@ Registration ScanRegistration::registerScan(const matching::PolarScan& scan,
                                             ExtractFeatures&& extractFeatures,
                                             features::ScanFeatures& features) {
     Registration out;
-    const Prediction& prediction = preferredPrediction(scan, sensorOnRobot, odometryPrediction);
+    std::optional<IcpAttempt> started;
+    const Prediction& prediction =
+        preferredPrediction(scan, sensorOnRobot, odometryPrediction, started);
     out.byLastMotion = &prediction != &odometryPrediction;
-    if (!prediction.odometryJumped && tryIcp(scan, sensorOnRobot, prediction, out)) {
+    if (!prediction.odometryJumped &&
+        tryIcp(scan, sensorOnRobot, prediction, out, started ? &*started : nullptr)) {
         if (icpUnsettled_ && prediction.lastKeyframe) {  // set only with second_opinion on
             out.unsettled = true;
             extractFeatures(features);

@@ -141,6 +141,25 @@ TEST(BenchSlamApp, KeepEveryRunsTheLogsWithFewerScans) {
     EXPECT_LT(graph["accuracy"]["ate"]["position_m"]["rms"].get<double>(), 0.1);
 }
 
+TEST(BenchSlamApp, KeepEveryOnABadLogFailsItsRowNamingTheProblem) {
+    // The conversion to fewer scans reads the log first: a NaN reading is that log's error,
+    // not a crash, and nothing is left beside the data.
+    TempDir dir;
+    const std::string data = dir.file("data");
+    fs::create_directories(data);
+    toposlam::test::writeText(data + "/bad.clf",
+                              "FLASER 3 1.0 nan 2.0 0 0 0 0 0 0 1.0 nohost 1.0\n");
+    toposlam::test::writeText(data + "/bad.relations", "1.0 2.0 0 0 0 0 0 0\n");
+    const auto r =
+        runApp("toposlam-bench-slam", "-d " + data + " --logs bad --engines graph --keep-every 2");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_TRUE(contains(r.output, "bad.clf: line 1: reading 1 is nan")) << r.output;
+    std::size_t files = 0;
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(data))
+        ++files;
+    EXPECT_EQ(files, 2u) << "the data folder holds only what the test wrote";
+}
+
 TEST(BenchSlamApp, KeepKeepsEveryRunsFolder) {
     TempDir dir;
     const std::string keep = dir.file("runs");

@@ -21,15 +21,6 @@
 using namespace toposlam;
 
 namespace {
-std::vector<std::string> splitComma(const std::string& s) {
-    std::vector<std::string> out;
-    std::stringstream ss(s);
-    for (std::string item; std::getline(ss, item, ',');)
-        if (!item.empty())
-            out.push_back(item);
-    return out;
-}
-
 void run(const matchingbench::ScanPairs& pairs,
          const std::vector<matchingbench::PairMatcher*>& methods, bool guess,
          const std::string& what, matchingbench::BenchmarkReport& report) {
@@ -117,7 +108,7 @@ int run(int argc, char** argv) {
     const auto& ini = o.ini;
 
     std::vector<std::unique_ptr<matchingbench::PairMatcher>> owned;
-    for (const std::string& e : splitComma(extractors.getValue()))
+    for (const std::string& e : cli::splitList(extractors.getValue()))
         owned.push_back(std::make_unique<matchingbench::GraphPairMatcher>("graph (" + e + ")", e,
                                                                           graphOptions, ini.get()));
     auto classic = icpParams, lm = icpParams;
@@ -135,7 +126,7 @@ int run(int argc, char** argv) {
         so.pairsPerCase = simPairs.getValue();
         pairs = matchingbench::makeSimulatedPairs(so);
     }
-    for (const std::string& log : splitComma(logs.getValue())) {
+    for (const std::string& log : cli::splitList(logs.getValue())) {
         const std::string base = data.getValue() + "/slam/" + log;
         auto real = matchingbench::loadRelationPairs(base + ".clf", base + ".relations", log,
                                                      maxReal.getValue());

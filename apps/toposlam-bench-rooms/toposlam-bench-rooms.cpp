@@ -61,36 +61,9 @@ const char* const kDescription =
     "  toposlam-bench-rooms --write-plans gen-maps   # B4-gen and B4-flats as Bormann-format "
     "files";
 
-std::vector<std::string> splitList(const std::string& s) {
-    std::vector<std::string> out;
-    std::stringstream in(s);
-    std::string item;
-    while (std::getline(in, item, ',')) {
-        if (!item.empty())
-            out.push_back(item);
-    }
-    return out;
-}
-
-std::vector<unsigned> seedList(const std::string& text, const std::string& option) {
-    std::vector<unsigned> seeds;
-    for (const std::string& item : splitList(text)) {
-        const auto dash = item.find('-', 1);
-        const auto range = cli::parseNumberList(
-            dash == std::string::npos ? item : item.substr(0, dash) + "," + item.substr(dash + 1),
-            dash == std::string::npos ? 1 : 2, option);
-        for (double s = range.front(); s <= range.back(); ++s) {
-            if (s < 0 || s != std::floor(s) || s > 1e9)
-                throw cli::UsageError(option + ": seeds are whole numbers >= 0");
-            seeds.push_back(static_cast<unsigned>(s));
-        }
-    }
-    return seeds;
-}
-
 std::vector<double> angleList(const std::string& text) {
     std::vector<double> angles;
-    for (const std::string& item : splitList(text))
+    for (const std::string& item : cli::splitList(text))
         angles.push_back(cli::parseNumberList(item, 1, "--rotations",
                                               cli::NumberRange<double>::closed(-360, 360))
                              .front());
@@ -269,8 +242,8 @@ roomsbench::RoomBenchmarkSuiteOptions suiteOptions(
     o.bench.dataDir = a.data.getValue();
     o.bench.repeats = a.repeats.getValue();
     o.bench.imageDir = a.images.getValue();
-    o.bench.methods = splitList(a.methods.getValue());
-    o.bench.maps = splitList(a.maps.getValue());
+    o.bench.methods = cli::splitList(a.methods.getValue());
+    o.bench.maps = cli::splitList(a.maps.getValue());
     o.bench.rotationsDeg = angleList(a.rotations.getValue());
     o.bench.cellSize = a.cellSize.getValue();
     if (o.bench.cellSize > 0) {
@@ -282,7 +255,7 @@ roomsbench::RoomBenchmarkSuiteOptions suiteOptions(
     }
     o.bench.virtualDoor = rooms::RoomSegmenter::Options::load(a.config.getValue(), false);
     o.bench.virtualDoorPaper = rooms::RoomSegmenter::Options::load(a.config.getValue(), true);
-    const auto sets = splitList(a.sets.getValue());
+    const auto sets = cli::splitList(a.sets.getValue());
     auto has = [&](const char* s) { return std::find(sets.begin(), sets.end(), s) != sets.end(); };
     for (const auto& s : sets) {
         if (s != "bormann" && s != "gen" && s != "flats" && s != "rings" && s != "slam")
@@ -295,16 +268,16 @@ roomsbench::RoomBenchmarkSuiteOptions suiteOptions(
                   << "); get shared/data/rooms or pass --data\n";
     o.bormann = has("bormann") && haveData;
     if (has("gen"))
-        o.generatedSeeds = seedList(a.genSeeds.getValue(), "--gen-seeds");
+        o.generatedSeeds = cli::parseSeedList(a.genSeeds.getValue(), "--gen-seeds");
     if (has("flats"))
-        o.flatSeeds = seedList(a.flatSeeds.getValue(), "--flat-seeds");
+        o.flatSeeds = cli::parseSeedList(a.flatSeeds.getValue(), "--flat-seeds");
     if (has("rings"))
-        o.ringSeeds = seedList(a.ringSeeds.getValue(), "--ring-seeds");
+        o.ringSeeds = cli::parseSeedList(a.ringSeeds.getValue(), "--ring-seeds");
     if (has("slam")) {
-        o.endToEndSeeds = seedList(a.slamSeeds.getValue(), "--slam-seeds");
-        o.endToEndRingSeeds = seedList(a.slamRingSeeds.getValue(), "--slam-ring-seeds");
+        o.endToEndSeeds = cli::parseSeedList(a.slamSeeds.getValue(), "--slam-seeds");
+        o.endToEndRingSeeds = cli::parseSeedList(a.slamRingSeeds.getValue(), "--slam-ring-seeds");
         if (haveData)
-            o.endToEndBormannMaps = splitList(a.slamMaps.getValue());
+            o.endToEndBormannMaps = cli::splitList(a.slamMaps.getValue());
         slamIni = std::make_unique<mrpt::config::CConfigFile>(a.slamConfig.getValue());
         o.endToEnd.slamConfig = slamIni.get();
         if (!a.simConfig.getValue().empty())
@@ -324,24 +297,24 @@ int run(int argc, char** argv) {
             throw io::InputError(file, "no such config file");
     }
     if (!a.writePlans.getValue().empty()) {
-        const auto sets = splitList(a.sets.getValue());
+        const auto sets = cli::splitList(a.sets.getValue());
         const auto has = [&](const char* s) {
             return std::find(sets.begin(), sets.end(), s) != sets.end();
         };
         const auto angles = angleList(a.rotations.getValue());
         std::size_t written = 0;
         if (has("gen"))
-            written +=
-                writePlans(a.writePlans.getValue(), seedList(a.genSeeds.getValue(), "--gen-seeds"),
-                           angles, simulation::BuildingStyle::Office);
+            written += writePlans(a.writePlans.getValue(),
+                                  cli::parseSeedList(a.genSeeds.getValue(), "--gen-seeds"), angles,
+                                  simulation::BuildingStyle::Office);
         if (has("flats"))
             written += writePlans(a.writePlans.getValue(),
-                                  seedList(a.flatSeeds.getValue(), "--flat-seeds"), angles,
-                                  simulation::BuildingStyle::Flat);
+                                  cli::parseSeedList(a.flatSeeds.getValue(), "--flat-seeds"),
+                                  angles, simulation::BuildingStyle::Flat);
         if (has("rings"))
             written += writePlans(a.writePlans.getValue(),
-                                  seedList(a.ringSeeds.getValue(), "--ring-seeds"), angles,
-                                  simulation::BuildingStyle::Ring);
+                                  cli::parseSeedList(a.ringSeeds.getValue(), "--ring-seeds"),
+                                  angles, simulation::BuildingStyle::Ring);
         std::cerr << "wrote " << written << " plans to " << a.writePlans.getValue() << "\n";
         return 0;
     }

@@ -58,20 +58,9 @@ const char* const kDescription =
     "bad input (missing configuration, plan or a failing simulation); 2 for bad usage (unknown "
     "option, log, engine or robot).";
 
-std::vector<std::string> splitList(const std::string& text) {
-    std::vector<std::string> items;
-    std::stringstream in(text);
-    std::string item;
-    while (std::getline(in, item, ',')) {
-        if (!item.empty())
-            items.push_back(item);
-    }
-    return items;
-}
-
 std::vector<evaluation::SlamEngine> parseEngines(const std::string& text) {
     std::vector<evaluation::SlamEngine> engines;
-    for (const std::string& name : splitList(text)) {
+    for (const std::string& name : cli::splitList(text)) {
         const auto engine = evaluation::engineFromName(name);
         if (!engine)
             throw cli::UsageError("--engines: unknown engine '" + name +
@@ -202,11 +191,11 @@ std::string planImage(const std::string& item) {
 // Simulates the --sim-plans logs (progress on stderr) and adds them to the run.
 void addSimulatedLogs(Arguments& a, evaluation::SlamBenchmarkOptions& options) {
     evaluation::SimulatedLogsRequest request;
-    for (const std::string& item : splitList(a.simPlans.getValue()))
+    for (const std::string& item : cli::splitList(a.simPlans.getValue()))
         request.plans.push_back(planImage(item));
     if (request.plans.empty())
         return;
-    request.robots = splitList(a.simRobots.getValue());
+    request.robots = cli::splitList(a.simRobots.getValue());
     if (request.robots.empty())
         throw cli::UsageError("--sim-robots: no robot given");
     request.simulator = besideMe("toposlam-sim");
@@ -245,7 +234,7 @@ evaluation::SlamBenchmarkOptions benchmarkOptions(Arguments& a) {
     if (fs::exists(mrptSimul) && fs::exists(mrptSimul + ".GT.txt"))
         options.simulatedLogs.push_back(
             {"mrpt-simul", tidy(mrptSimul), "", tidy(mrptSimul + ".GT.txt")});
-    options.logs = splitList(a.logs.getValue());
+    options.logs = cli::splitList(a.logs.getValue());
     options.engines = parseEngines(a.engines.getValue());
     options.keepDir = a.keep.getValue();
     options.imageDir = a.images.getValue();

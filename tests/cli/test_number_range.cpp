@@ -72,3 +72,21 @@ TEST(ParseNumberList, IsStrictAndAUsageError) {
     for (const char* bad : {"1", "1,2,3", "1,nan", "1,,2", "a,b", "1e9,0", ""})
         EXPECT_THROW(parseNumberList(bad, 2, "--origin"), UsageError) << bad;
 }
+
+TEST(SplitList, KeepsTheItemsAndLeavesOutEmptyOnes) {
+    EXPECT_EQ(splitList("a,b,,c,"), (std::vector<std::string>{"a", "b", "c"}));
+    EXPECT_TRUE(splitList("").empty());
+}
+
+TEST(ParseSeedList, TakesSeedsAndRangesAndIsStrict) {
+    EXPECT_EQ(parseSeedList("1-3,7", "--seeds"), (std::vector<unsigned>{1, 2, 3, 7}));
+    EXPECT_EQ(parseSeedList("0", "--seeds"), (std::vector<unsigned>{0}));
+    for (const char* bad : {"x", "1.5", "-3", "2-x", "1-2-3"}) {
+        try {
+            parseSeedList(bad, "--seeds");
+            ADD_FAILURE() << bad << " was taken";
+        } catch (const UsageError& e) {
+            EXPECT_EQ(std::string(e.what()).rfind("--seeds: ", 0), 0u) << e.what();
+        }
+    }
+}

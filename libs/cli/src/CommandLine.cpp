@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -109,6 +110,33 @@ std::vector<double> parseNumberList(const std::string& text, std::size_t count,
                          " comma-separated numbers, got '" + text + "'");
     }
     return values;
+}
+
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> items;
+    std::stringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ',')) {
+        if (!item.empty())
+            items.push_back(item);
+    }
+    return items;
+}
+
+std::vector<unsigned> parseSeedList(const std::string& text, const std::string& option) {
+    std::vector<unsigned> seeds;
+    for (const std::string& item : splitList(text)) {
+        const auto dash = item.find('-', 1);
+        const auto range = parseNumberList(
+            dash == std::string::npos ? item : item.substr(0, dash) + "," + item.substr(dash + 1),
+            dash == std::string::npos ? 1 : 2, option);
+        for (double s = range.front(); s <= range.back(); ++s) {
+            if (s < 0 || s != std::floor(s) || s > 1e9)
+                throw UsageError(option + ": seeds are whole numbers >= 0");
+            seeds.push_back(static_cast<unsigned>(s));
+        }
+    }
+    return seeds;
 }
 
 namespace {

@@ -26,6 +26,13 @@ std::vector<double> parseNumberList(
     const std::string& text, std::size_t count, const std::string& option,
     const NumberRange<double>& range = NumberRange<double>::closed(-1e6, 1e6));
 
+/// "a,b,,c" -> {"a", "b", "c"}: the items of a comma-separated list option, empty ones left out.
+std::vector<std::string> splitList(const std::string& text);
+
+/// "1-3,7" -> {1, 2, 3, 7}: seeds and ranges of seeds. Throws UsageError naming `option` unless
+/// every item is a whole number >= 0 (at most 1e9) or a range of two.
+std::vector<unsigned> parseSeedList(const std::string& text, const std::string& option);
+
 /// A file named on the command line: the option that named it ("" for a positional argument)
 /// and its path ("": not given).
 struct FileArgument {

@@ -44,14 +44,17 @@ const char* const kDescription =
     "time and / CPU time, peak RSS, loop closures accepted / rejected / withdrawn) and numbered "
     "notes on failed or skipped runs; progress goes to stderr.\n"
     "With --sim-plans it first simulates a tour of each floor plan with each robot of "
-    "--sim-robots (toposlam-sim, exact ground truth; logs <plan>.<robot> in --sim-dir) and "
-    "runs the engines on those logs too: SLAM on data it was not tuned on, with lasers and "
-    "odometry harder than the public logs'. With --keep-every N every log runs with one scan "
+    "--sim-robots (toposlam-sim, exact ground truth; logs <plan>.<robot> in --sim-dir), with "
+    "--sim-seeds once per seed, and runs the engines on those logs too: SLAM on data it was not "
+    "tuned on, with lasers and odometry harder than the public logs'; a table by robot sums "
+    "them up (ATE mean, spread, median, worst log). With --keep-every N every log runs with one "
+    "scan "
     "in N: more motion between two scans, as a slower laser or a faster robot gives.\n"
     "Examples:\n"
     "  toposlam-bench-slam --json b3.json --images b3-img\n"
     "  toposlam-bench-slam --logs intel,office --engines graph,icp-slam --keep b3-runs\n"
     "  toposlam-bench-slam --sim-plans office_d,NLB --sim-robots lms200,urg-04lx\n"
+    "  toposlam-bench-slam --sim-plans office_d,NLB --sim-seeds 1-3 --engines graph\n"
     "  toposlam-bench-slam --logs fr079,intel --keep-every 3\n"
     "Exit status: 0 when every run succeeded (or, with 'B3 skipped: ...' on stderr, when the "
     "benchmark logs are not there); 1 when a run failed (the table says which and why) or on "
@@ -102,7 +105,7 @@ struct Arguments {
     Arguments();
     TCLAP::CmdLine cmd;
     TCLAP::ValueArg<std::string> data, logs, engines, config, icpSlam, icpSlamConfig, keep, images,
-        json, simPlans, simRobots, simDir, simConfig;
+        json, simPlans, simRobots, simSeeds, simDir, simConfig;
     cli::NumberArg<double> timeout;
     cli::NumberArg<std::size_t> keepEvery;
 };
@@ -158,6 +161,13 @@ Arguments::Arguments()
                "only they run). Default: none",
                false, "", "list", cmd),
       simRobots("", "sim-robots", robotsHelp(), false, robotNames(), "list", cmd),
+      simSeeds("", "sim-seeds",
+               "Tour every plan with every robot once per seed (toposlam-sim --seed: the same "
+               "tour, other laser noise, odometry errors and people), e.g. 1-5 or 2,7; logs "
+               "<plan>.<robot>.seed<N>. One tour's outcome is partly chance: with several "
+               "seeds the table by robot (ATE mean, spread, median, worst) says what is. "
+               "Default: one tour with the configuration's seed, logs <plan>.<robot>",
+               false, "", "list", cmd),
       simDir("", "sim-dir",
              "Where the simulated logs go (<plan>.<robot>.rawlog, its _gt.txt, toposlam-sim's "
              "output). Default: b3-sim-logs",
@@ -191,6 +201,7 @@ std::string planImage(const std::string& item) {
 // Simulates the --sim-plans logs (progress on stderr) and adds them to the run.
 void addSimulatedLogs(Arguments& a, evaluation::SlamBenchmarkOptions& options) {
     evaluation::SimulatedLogsRequest request;
+    request.seeds = cli::parseSeedList(a.simSeeds.getValue(), "--sim-seeds");
     for (const std::string& item : cli::splitList(a.simPlans.getValue()))
         request.plans.push_back(planImage(item));
     if (request.plans.empty())
@@ -226,14 +237,14 @@ evaluation::SlamBenchmarkOptions benchmarkOptions(Arguments& a) {
     options.dataDir = tidy(a.data.getValue());
     options.simulatedLogs.push_back({"office",
                                      tidy(TOPOSLAM_SOURCE_DIR "/share/office/office.rawlog"), "",
-                                     tidy(TOPOSLAM_SOURCE_DIR "/share/office/office_gt.txt")});
+                                     tidy(TOPOSLAM_SOURCE_DIR "/share/office/office_gt.txt"), ""});
     // MRPT's own simulated sample log, with the ground truth its simulator wrote: a noisier
     // laser than the public logs' (2-5 cm), 80 m range in a 90 x 60 m hall, and frames dropped
     // for up to 2 s. Present only with the shared data.
     const std::string mrptSimul = TOPOSLAM_SHARED_DATA_DIR "/rawlog/simul.rawlog";
     if (fs::exists(mrptSimul) && fs::exists(mrptSimul + ".GT.txt"))
         options.simulatedLogs.push_back(
-            {"mrpt-simul", tidy(mrptSimul), "", tidy(mrptSimul + ".GT.txt")});
+            {"mrpt-simul", tidy(mrptSimul), "", tidy(mrptSimul + ".GT.txt"), ""});
     options.logs = cli::splitList(a.logs.getValue());
     options.engines = parseEngines(a.engines.getValue());
     options.keepDir = a.keep.getValue();

@@ -163,7 +163,7 @@ TEST(SlamBenchmarkLogs, FindsLogsWithRelations) {
 TEST(SlamBenchmarkSelection, SkipsWithoutDataUnlessOnlySimulatedLogsAreAsked) {
     SlamBenchmarkOptions options;
     options.dataDir = "/nonexistent/slam";
-    options.simulatedLogs = {{"office", "office.rawlog", "", "office_gt.txt"}};
+    options.simulatedLogs = {{"office", "office.rawlog", "", "office_gt.txt", ""}};
     options.setup.icpSlam = "";
     EXPECT_FALSE(SlamBenchmark(options).skipReason().empty());
     options.logs = {"intel"};
@@ -185,7 +185,7 @@ TEST(SlamBenchmarkSelection, UnknownOrRepeatedNamesAreUsageErrors) {
     touch(dir.file("intel.clf"));
     SlamBenchmarkOptions options;
     options.dataDir = dir.path();
-    options.simulatedLogs = {{"office", "office.rawlog", "", "office_gt.txt"}};
+    options.simulatedLogs = {{"office", "office.rawlog", "", "office_gt.txt", ""}};
     options.setup.icpSlam = "/usr/bin/icp-slam";
     EXPECT_EQ(SlamBenchmark(options).logs().size(), 2u);
     EXPECT_EQ(SlamBenchmark(options).runs().size(), 6u);
@@ -273,7 +273,7 @@ TEST(SlamBenchmarkReport, RowsNotesAndJson) {
     SlamBenchmarkResult result;
     result.cores = 2;
     SlamBenchmarkLogResult log;
-    log.log = {"office", "office.rawlog", "", "office_gt.txt"};
+    log.log = {"office", "office.rawlog", "", "office_gt.txt", ""};
     log.scans = 368;
     log.durationSeconds = 270;
     log.relations = 4;
@@ -324,4 +324,62 @@ TEST(SlamBenchmarkReport, RowsNotesAndJson) {
     result.logs[0].rows[1].run.status = SlamEngineRun::Status::Failed;
     EXPECT_TRUE(result.anyFailed());
     EXPECT_TRUE(contains(formatSlamBenchmarkTable(result), "| office | icp-slam | FAILED [1] |"));
+}
+
+// The logs of one robot (group), summed up per engine: ATE mean, median and worst over the
+// scored logs; failed runs counted, not scored; logs without a group left out.
+TEST(SlamBenchmarkReport, LogsOfARobotAreSummedUpPerEngine) {
+    SlamBenchmarkResult result;
+    const toposlam::io::Trajectory2D truth = {{1, {0, 0, 0}}, {2, {1, 0, 0}}, {3, {2, 0, 0}}};
+    const PoseRelations relations = {{1, 2, {1, 0, 0}}, {2, 3, {1, 0, 0}}};
+    // A log whose estimate is `truth` with its middle pose `offset` m off (the evaluator's ATE
+    // grows with it); returns that ATE.
+    const auto addLog = [&](const std::string& name, const std::string& group, double offset,
+                            bool failed) {
+        SlamBenchmarkLogResult log;
+        log.log = {name, name + ".rawlog", "", name + "_gt.txt", group};
+        SlamBenchmarkRow row;
+        row.run.engine = SlamEngine::Graph;
+        row.run.status = failed ? SlamEngineRun::Status::Failed : SlamEngineRun::Status::Ok;
+        if (!failed) {
+            toposlam::io::Trajectory2D estimate = truth;
+            estimate[1].pose.y += offset;
+            row.evaluation = evaluateMethod("graph", name, estimate, relations, &truth, 1e-5);
+        }
+        log.rows = {row};
+        result.logs.push_back(log);
+        return failed ? 0.0 : row.evaluation->absolute->position.rms;
+    };
+    addLog("office", "", 0.3, false);  // no group: not summed up
+    const double a = addLog("plan.urg.seed1", "urg", 0.1, false);
+    const double b = addLog("plan.lms.seed1", "lms", 0.05, false);
+    const double c = addLog("plan.urg.seed2", "urg", 0.4, false);
+    addLog("plan.urg.seed3", "urg", 0, true);
+    const double d = addLog("plan.urg.seed4", "urg", 0.2, false);
+    ASSERT_GT(a, 0);
+    ASSERT_LT(a, d);
+    ASSERT_LT(d, c);
+
+    const std::vector<SlamGroupSummary> groups = summariseByGroup(result);
+    ASSERT_EQ(groups.size(), 2u);
+    EXPECT_EQ(groups[0].group, "urg");  // in the order their first log ran
+    EXPECT_EQ(groups[1].group, "lms");
+    const SlamGroupSummary& urg = groups[0];
+    EXPECT_EQ(urg.logs, 4u);
+    EXPECT_EQ(urg.failed, 1u);
+    EXPECT_EQ(urg.ate.count, 3u);
+    EXPECT_NEAR(urg.ate.mean, (a + c + d) / 3, 1e-12);
+    EXPECT_NEAR(urg.ateMedian, d, 1e-12);
+    EXPECT_NEAR(urg.ate.max, c, 1e-12);
+    EXPECT_EQ(urg.worstLog, "plan.urg.seed2");
+    EXPECT_NEAR(groups[1].ate.mean, b, 1e-12);
+
+    const std::string table = formatSlamBenchmarkTable(result);
+    EXPECT_TRUE(contains(table, "| urg | graph | 3 / 4 |")) << table;
+    EXPECT_TRUE(contains(table, ": plan.urg.seed2 |")) << table;
+    EXPECT_EQ(slamBenchmarkJson(result)["by_robot"].size(), 2u);
+    // Without groups, no such table.
+    result.logs.resize(1);
+    EXPECT_FALSE(contains(formatSlamBenchmarkTable(result), "by robot"));
+    EXPECT_TRUE(slamBenchmarkJson(result)["by_robot"].empty());
 }

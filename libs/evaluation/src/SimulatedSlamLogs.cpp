@@ -49,13 +49,14 @@ const SimulatedRobot* findSimulatedRobot(const std::string& name) {
     return it == robots.end() ? nullptr : &*it;
 }
 
-std::string simulatedLogName(const std::string& plan, const std::string& robot) {
+std::string simulatedLogName(const std::string& plan, const std::string& robot,
+                             std::optional<unsigned> seed) {
     std::string stem = fs::path(plan).stem().string();
     const std::string furnished = "_furnitures";
     if (stem.size() > furnished.size() &&
         stem.compare(stem.size() - furnished.size(), furnished.size(), furnished) == 0)
         stem.resize(stem.size() - furnished.size());
-    return stem + "." + robot;
+    return stem + "." + robot + (seed ? ".seed" + std::to_string(*seed) : "");
 }
 
 std::vector<SlamBenchmarkLog> simulateSlamLogs(const SimulatedLogsRequest& request,
@@ -67,56 +68,69 @@ std::vector<SlamBenchmarkLog> simulateSlamLogs(const SimulatedLogsRequest& reque
             throw std::invalid_argument("unknown robot '" + name + "'");
         robots.push_back(robot);
     }
-    // Every log's name, plan by plan (the order they are simulated in).
-    std::vector<std::string> names;
+    // Every tour and its log's name, plan by plan (the order they are simulated in).
+    struct Tour {
+        std::string plan;
+        const SimulatedRobot* robot;
+        std::optional<unsigned> seed;
+        std::string name;
+    };
+    std::vector<std::optional<unsigned>> seeds(request.seeds.begin(), request.seeds.end());
+    if (seeds.empty())
+        seeds.push_back(std::nullopt);  // the configuration's seed
+    std::vector<Tour> tours;
     for (const std::string& plan : request.plans) {
         if (!fs::is_regular_file(plan))
             throw io::InputError(plan, "floor plan not found");
         for (const SimulatedRobot* robot : robots) {
-            names.push_back(simulatedLogName(plan, robot->name));
-            if (std::count(names.begin(), names.end(), names.back()) > 1)
-                throw std::invalid_argument("two logs would be named " + names.back() +
-                                            " (a plan or robot given twice?)");
+            for (const std::optional<unsigned>& seed : seeds) {
+                const std::string name = simulatedLogName(plan, robot->name, seed);
+                if (std::any_of(tours.begin(), tours.end(),
+                                [&](const Tour& t) { return t.name == name; }))
+                    throw std::invalid_argument("two logs would be named " + name +
+                                                " (a plan, robot or seed given twice?)");
+                tours.push_back({plan, robot, seed, name});
+            }
         }
     }
     fs::create_directories(request.directory);
     const std::string directory = fs::absolute(request.directory).string();
     std::vector<SlamBenchmarkLog> logs;
-    for (const std::string& plan : request.plans) {
-        for (const SimulatedRobot* robot : robots) {
-            const std::string& name = names[logs.size()];
-            if (progress)
-                progress(logs.size(), names.size(), name);
-            const std::string base = directory + "/" + name;
-            std::string config = request.simulatorConfig;
-            if (!robot->settings.empty()) {
-                config = base + ".sim.ini";
-                writeIniWithSettings(request.simulatorConfig, config, robot->settings);
-            }
-            // A drawn plan (grey furniture stops the laser), toured through every room.
-            std::vector<std::string> argv = {request.simulator,
-                                             fs::absolute(plan).string(),
-                                             "--drawn",
-                                             "--tour",
-                                             "-q",
-                                             "-c",
-                                             config,
-                                             "-o",
-                                             base + ".rawlog",
-                                             "--gt",
-                                             base + "_gt.txt"};
-            argv.insert(argv.end(), robot->simulatorArguments.begin(),
-                        robot->simulatorArguments.end());
-            const ChildProcessResult sim =
-                runChildProcessLogged(argv, directory, name + ".sim-", request.timeoutSeconds);
-            if (!sim.succeeded()) {
-                const std::string detail = lastLineOf(base + ".sim-stderr.txt");
-                throw std::runtime_error("toposlam-sim on " + plan + " with robot " + robot->name +
-                                         ": " + sim.describeFailure() +
-                                         (detail.empty() ? "" : ": " + detail));
-            }
-            logs.push_back({name, base + ".rawlog", "", base + "_gt.txt"});
+    for (const Tour& tour : tours) {
+        if (progress)
+            progress(logs.size(), tours.size(), tour.name);
+        const std::string base = directory + "/" + tour.name;
+        std::string config = request.simulatorConfig;
+        if (!tour.robot->settings.empty()) {
+            config = base + ".sim.ini";
+            writeIniWithSettings(request.simulatorConfig, config, tour.robot->settings);
         }
+        // A drawn plan (grey furniture stops the laser), toured through every room.
+        std::vector<std::string> argv = {request.simulator,
+                                         fs::absolute(tour.plan).string(),
+                                         "--drawn",
+                                         "--tour",
+                                         "-q",
+                                         "-c",
+                                         config,
+                                         "-o",
+                                         base + ".rawlog",
+                                         "--gt",
+                                         base + "_gt.txt"};
+        argv.insert(argv.end(), tour.robot->simulatorArguments.begin(),
+                    tour.robot->simulatorArguments.end());
+        if (tour.seed)
+            argv.insert(argv.end(), {"--seed", std::to_string(*tour.seed)});
+        const ChildProcessResult sim =
+            runChildProcessLogged(argv, directory, tour.name + ".sim-", request.timeoutSeconds);
+        if (!sim.succeeded()) {
+            const std::string detail = lastLineOf(base + ".sim-stderr.txt");
+            throw std::runtime_error(
+                "toposlam-sim on " + tour.plan + " with robot " + tour.robot->name +
+                (tour.seed ? " (seed " + std::to_string(*tour.seed) + ")" : std::string()) + ": " +
+                sim.describeFailure() + (detail.empty() ? "" : ": " + detail));
+        }
+        logs.push_back({tour.name, base + ".rawlog", "", base + "_gt.txt", tour.robot->name});
     }
     return logs;
 }

@@ -20,7 +20,8 @@ std::vector<SlamBenchmarkLog> findRelationLogs(const std::string& directory) {
              {".clf", ".log", ".rawlog", ".clf.gz", ".log.gz", ".rawlog.gz"}) {
             const fs::path log = relations.parent_path() / (relations.stem().string() + extension);
             if (fs::is_regular_file(log, ec)) {
-                logs.push_back({relations.stem().string(), log.string(), relations.string(), ""});
+                logs.push_back(
+                    {relations.stem().string(), log.string(), relations.string(), "", ""});
                 break;
             }
         }

@@ -144,7 +144,77 @@ std::string rowLine(const SlamBenchmarkLogResult& log, const SlamBenchmarkRow& r
     return line + costCells(row, log.durationSeconds) + loopCells(row) + "\n";
 }
 
+// The summariseByGroup() table, "" when there is none.
+std::string groupTable(const SlamBenchmarkResult& result) {
+    const std::vector<SlamGroupSummary> groups = summariseByGroup(result);
+    if (groups.empty())
+        return "";
+    std::ostringstream out;
+    out << "\nSimulated logs by robot, over every plan and seed (one tour's outcome is partly "
+           "chance: the spread and the worst log say as much as the mean):\n\n"
+        << "| robot | engine | logs scored | ATE RMSE mean ± std (m) | median (m) | worst (m): "
+           "log | translational error, mean of logs (m) |\n|---|---|---|---|---|---|---|\n";
+    for (const SlamGroupSummary& g : groups) {
+        out << "| " << g.group << " | " << engineName(g.engine) << " | " << g.ate.count << " / "
+            << g.logs << " |";
+        if (g.ate.count == 0) {
+            out << dashes(4) << "\n";
+            continue;
+        }
+        out << " " << formatMeanStd(g.ate, 4) << " | " << formatFixed(g.ateMedian, 4) << " | "
+            << formatFixed(g.ate.max, 4) << ": " << g.worstLog << " | "
+            << formatFixed(g.translationMean, 4) << " |\n";
+    }
+    return out.str();
+}
+
 }  // namespace
+
+std::vector<SlamGroupSummary> summariseByGroup(const SlamBenchmarkResult& result) {
+    std::vector<SlamGroupSummary> out;
+    std::vector<std::vector<double>> ates, translations;  // per summary
+    for (const SlamBenchmarkLogResult& log : result.logs) {
+        if (log.log.group.empty())
+            continue;
+        for (const SlamBenchmarkRow& row : log.rows) {
+            auto it = std::find_if(out.begin(), out.end(), [&](const SlamGroupSummary& g) {
+                return g.group == log.log.group && g.engine == row.run.engine;
+            });
+            if (it == out.end()) {
+                SlamGroupSummary g;
+                g.group = log.log.group;
+                g.engine = row.run.engine;
+                out.push_back(g);
+                ates.emplace_back();
+                translations.emplace_back();
+                it = out.end() - 1;
+            }
+            const std::size_t k = std::size_t(it - out.begin());
+            ++it->logs;
+            const auto& absolute = row.evaluation ? row.evaluation->absolute : std::nullopt;
+            if (row.run.status == SlamEngineRun::Status::Failed) {
+                ++it->failed;
+            } else if (absolute && absolute->matchedPoses > 0) {
+                if (ates[k].empty() || absolute->position.rms > it->ate.max)
+                    it->worstLog = log.log.name;
+                ates[k].push_back(absolute->position.rms);
+                translations[k].push_back(row.evaluation->relative.translation.mean);
+                it->ate.max = std::max(it->ate.max, absolute->position.rms);
+            }
+        }
+    }
+    for (std::size_t k = 0; k < out.size(); ++k) {
+        out[k].ate = summarizeErrors(ates[k]);
+        if (ates[k].empty())
+            continue;
+        std::vector<double> sorted = ates[k];
+        std::sort(sorted.begin(), sorted.end());
+        const std::size_t n = sorted.size();
+        out[k].ateMedian = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+        out[k].translationMean = summarizeErrors(translations[k]).mean;
+    }
+    return out;
+}
 
 std::string formatSlamBenchmarkTable(const SlamBenchmarkResult& result) {
     const bool withAte =
@@ -176,6 +246,7 @@ std::string formatSlamBenchmarkTable(const SlamBenchmarkResult& result) {
         for (std::size_t i = 0; i < notes.size(); ++i)
             out << "[" << i + 1 << "] " << notes[i] << "\n";
     }
+    out << groupTable(result);
     return out.str();
 }
 
@@ -214,6 +285,19 @@ nlohmann::json rowJson(const SlamBenchmarkRow& row, double duration) {
 }  // namespace
 
 nlohmann::json slamBenchmarkJson(const SlamBenchmarkResult& result) {
+    nlohmann::json groups = nlohmann::json::array();
+    for (const SlamGroupSummary& g : summariseByGroup(result))
+        groups.push_back({{"robot", g.group},
+                          {"engine", engineName(g.engine)},
+                          {"logs", g.logs},
+                          {"failed", g.failed},
+                          {"scored", g.ate.count},
+                          {"ate_rms_mean_m", g.ate.mean},
+                          {"ate_rms_std_m", g.ate.std},
+                          {"ate_rms_median_m", g.ateMedian},
+                          {"ate_rms_max_m", g.ate.max},
+                          {"worst_log", g.worstLog},
+                          {"translation_error_mean_m", g.translationMean}});
     nlohmann::json logs = nlohmann::json::array();
     for (const SlamBenchmarkLogResult& log : result.logs) {
         nlohmann::json runs = nlohmann::json::array();
@@ -244,7 +328,8 @@ nlohmann::json slamBenchmarkJson(const SlamBenchmarkResult& result) {
               {"load_average_before", result.loadAverageBefore},
               {"load_average_after", result.loadAverageAfter}}},
             {"work_directory", result.workDirectory},
-            {"logs", logs}};
+            {"logs", logs},
+            {"by_robot", groups}};
 }
 
 void saveSlamBenchmarkJson(const SlamBenchmarkResult& result, const std::string& path) {

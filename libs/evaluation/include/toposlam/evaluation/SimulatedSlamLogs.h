@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,24 +43,30 @@ struct SimulatedLogsRequest {
     std::string simulatorConfig;      ///< its .ini (config_ini/sim-office.ini)
     std::string directory;            ///< where the logs go (created)
     double timeoutSeconds = 0;        ///< per simulation; <= 0: none
+    /// toposlam-sim --seed of each tour: every plan and robot toured once per seed (the same
+    /// tour; the laser noise, odometry errors and people differ). Empty = once, with the
+    /// configuration's seed.
+    std::vector<unsigned> seeds;
 };
 
 /// The log name of a plan and robot: "<plan file stem without _furnitures>.<robot>", e.g.
-/// "office_d.urg-04lx".
-std::string simulatedLogName(const std::string& plan, const std::string& robot);
+/// "office_d.urg-04lx", and with a seed "office_d.urg-04lx.seed3".
+std::string simulatedLogName(const std::string& plan, const std::string& robot,
+                             std::optional<unsigned> seed = std::nullopt);
 
 /// Called before each simulation with the logs simulated so far, the number of logs and the
 /// name of the one about to be simulated.
 using SimulationProgress =
     std::function<void(std::size_t done, std::size_t total, const std::string& next)>;
 
-/// Simulates a tour of every plan with every robot (plan by plan), each into
-/// `<directory>/<name>.rawlog` with its ground truth `<name>_gt.txt` and toposlam-sim's
+/// Simulates a tour of every plan with every robot (plan by plan; per robot, seed by seed),
+/// each into `<directory>/<name>.rawlog` with its ground truth `<name>_gt.txt` and toposlam-sim's
 /// output `<name>.sim-stdout.txt`, `<name>.sim-stderr.txt` (always simulated anew: the same
-/// plan, robot and configuration give the same log). Throws std::invalid_argument for an
-/// unknown robot or two logs of one name (plans of one file name, a robot given twice),
-/// io::InputError for a plan that is not there, std::runtime_error naming the plan, the robot
-/// and toposlam-sim's last message when a simulation fails.
+/// plan, robot, seed and configuration give the same log); each log's group is its robot.
+/// Throws std::invalid_argument for an unknown robot or two logs of one name (plans of one
+/// file name, a robot or seed given twice), io::InputError for a plan that is not there,
+/// std::runtime_error naming the plan, the robot (and seed) and toposlam-sim's last message
+/// when a simulation fails.
 std::vector<SlamBenchmarkLog> simulateSlamLogs(const SimulatedLogsRequest& request,
                                                const SimulationProgress& progress = {});
 

@@ -13,6 +13,9 @@ struct SlamBenchmarkLog {
     /// Exactly one of the two references is set:
     std::string relationsFile;    ///< ground-truth relations (RelationFile.h)
     std::string groundTruthFile;  ///< true trajectory 'timestamp x y yaw' (Trajectory.h)
+    /// Logs of one group are summarised together: a simulated log's robot (SimulatedSlamLogs.h);
+    /// "" = none (the public logs, the office).
+    std::string group;
 };
 
 /// Every log in `directory` that has a relation file beside it: `<name>.relations` with a log

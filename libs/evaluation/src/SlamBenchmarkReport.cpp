@@ -172,46 +172,54 @@ std::string groupTable(const SlamBenchmarkResult& result) {
 
 std::vector<SlamGroupSummary> summariseByGroup(const SlamBenchmarkResult& result) {
     std::vector<SlamGroupSummary> out;
-    std::vector<std::vector<double>> ates, translations;  // per summary
+    // Per summary, its scored logs: (ATE RMSE, mean translational error, log name).
+    struct Scored {
+        double ate, translation;
+        std::string log;
+    };
+    std::vector<std::vector<Scored>> scored;
     for (const SlamBenchmarkLogResult& log : result.logs) {
         if (log.log.group.empty())
             continue;
         for (const SlamBenchmarkRow& row : log.rows) {
-            auto it = std::find_if(out.begin(), out.end(), [&](const SlamGroupSummary& g) {
+            const auto it = std::find_if(out.begin(), out.end(), [&](const SlamGroupSummary& g) {
                 return g.group == log.log.group && g.engine == row.run.engine;
             });
+            const std::size_t k = std::size_t(it - out.begin());
             if (it == out.end()) {
                 SlamGroupSummary g;
                 g.group = log.log.group;
                 g.engine = row.run.engine;
                 out.push_back(g);
-                ates.emplace_back();
-                translations.emplace_back();
-                it = out.end() - 1;
+                scored.emplace_back();
             }
-            const std::size_t k = std::size_t(it - out.begin());
-            ++it->logs;
-            const auto& absolute = row.evaluation ? row.evaluation->absolute : std::nullopt;
+            ++out[k].logs;
             if (row.run.status == SlamEngineRun::Status::Failed) {
-                ++it->failed;
-            } else if (absolute && absolute->matchedPoses > 0) {
-                if (ates[k].empty() || absolute->position.rms > it->ate.max)
-                    it->worstLog = log.log.name;
-                ates[k].push_back(absolute->position.rms);
-                translations[k].push_back(row.evaluation->relative.translation.mean);
-                it->ate.max = std::max(it->ate.max, absolute->position.rms);
+                ++out[k].failed;
+                continue;
             }
+            if (!row.evaluation || !row.evaluation->absolute ||
+                row.evaluation->absolute->matchedPoses == 0)
+                continue;  // skipped, or nothing to score
+            scored[k].push_back({row.evaluation->absolute->position.rms,
+                                 row.evaluation->relative.translation.mean, log.log.name});
         }
     }
     for (std::size_t k = 0; k < out.size(); ++k) {
-        out[k].ate = summarizeErrors(ates[k]);
-        if (ates[k].empty())
+        std::vector<double> ates, translations;
+        for (const Scored& s : scored[k])
+            ates.push_back(s.ate), translations.push_back(s.translation);
+        out[k].ate = summarizeErrors(ates);
+        if (ates.empty())
             continue;
-        std::vector<double> sorted = ates[k];
-        std::sort(sorted.begin(), sorted.end());
-        const std::size_t n = sorted.size();
-        out[k].ateMedian = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
-        out[k].translationMean = summarizeErrors(translations[k]).mean;
+        out[k].translationMean = summarizeErrors(translations).mean;
+        out[k].worstLog =
+            std::max_element(scored[k].begin(), scored[k].end(),
+                             [](const Scored& a, const Scored& b) { return a.ate < b.ate; })
+                ->log;
+        std::sort(ates.begin(), ates.end());
+        const std::size_t n = ates.size();
+        out[k].ateMedian = n % 2 ? ates[n / 2] : 0.5 * (ates[n / 2 - 1] + ates[n / 2]);
     }
     return out;
 }

@@ -48,8 +48,7 @@ const char* const kDescription =
     "--sim-seeds once per seed, and runs the engines on those logs too: SLAM on data it was not "
     "tuned on, with lasers and odometry harder than the public logs'; a table by robot sums "
     "them up (ATE mean, spread, median, worst log). With --keep-every N every log runs with one "
-    "scan "
-    "in N: more motion between two scans, as a slower laser or a faster robot gives.\n"
+    "scan in N: more motion between two scans, as a slower laser or a faster robot gives.\n"
     "Examples:\n"
     "  toposlam-bench-slam --json b3.json --images b3-img\n"
     "  toposlam-bench-slam --logs intel,office --engines graph,icp-slam --keep b3-runs\n"
@@ -59,7 +58,7 @@ const char* const kDescription =
     "Exit status: 0 when every run succeeded (or, with 'B3 skipped: ...' on stderr, when the "
     "benchmark logs are not there); 1 when a run failed (the table says which and why) or on "
     "bad input (missing configuration, plan or a failing simulation); 2 for bad usage (unknown "
-    "option, log, engine or robot).";
+    "option, log, engine, robot or seed).";
 
 std::vector<evaluation::SlamEngine> parseEngines(const std::string& text) {
     std::vector<evaluation::SlamEngine> engines;

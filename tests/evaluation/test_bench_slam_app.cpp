@@ -13,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
@@ -235,6 +236,22 @@ std::string writeTwoRoomPlan(const std::string& directory) {
     return path;
 }
 
+// toposlam-bench-slam, graph engine, on the tours of `plan` that `tours` asks for (--sim-robots,
+// --sim-seeds), logs into `logs`, results into `json`.
+toposlam::test::CommandResult benchSimulatedTours(const std::string& plan, const std::string& tours,
+                                                  const std::string& logs,
+                                                  const std::string& json) {
+    return runApp("toposlam-bench-slam", "--sim-plans " + plan + " " + tours +
+                                             " --engines graph --sim-dir " + logs + " --json " +
+                                             json);
+}
+
+// Every one of `lines` is in `output`.
+void expectPrinted(const std::string& output, std::initializer_list<const char*> lines) {
+    for (const char* text : lines)
+        EXPECT_TRUE(contains(output, text)) << text << "\n" << output;
+}
+
 double pathLength(const toposlam::io::Trajectory2D& path) {
     double length = 0;
     for (std::size_t i = 1; i < path.size(); ++i)
@@ -251,15 +268,12 @@ TEST(BenchSlamApp, SimulatedPlansAreTouredByEveryRobotAndScored) {
     TempDir tmp;
     const std::string plan = writeTwoRoomPlan(tmp.path());
     const std::string logs = tmp.path() + "/logs", json = tmp.path() + "/b3.json";
-    const auto r = runApp("toposlam-bench-slam", "--sim-plans " + plan +
-                                                     " --sim-robots lms200,poor-odometry "
-                                                     "--engines graph --sim-dir " +
-                                                     logs + " --json " + json);
+    const auto r = benchSimulatedTours(plan, "--sim-robots lms200,poor-odometry", logs, json);
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    for (const char* text :
-         {"simulating 1/2: two_rooms.lms200 ...", "simulating 2/2: two_rooms.poor-odometry ...",
-          "| two_rooms.lms200 | graph |", "| two_rooms.poor-odometry | graph |"})
-        EXPECT_TRUE(contains(r.output, text)) << text << "\n" << r.output;
+    expectPrinted(
+        r.output,
+        {"simulating 1/2: two_rooms.lms200 ...", "simulating 2/2: two_rooms.poor-odometry ...",
+         "| two_rooms.lms200 | graph |", "| two_rooms.poor-odometry | graph |"});
     // Without --logs only the simulated logs run.
     EXPECT_FALSE(contains(r.output, "| office |")) << r.output;
 
@@ -298,17 +312,13 @@ TEST(BenchSlamApp, SimulatedToursRepeatWithEverySeedAndAreSummedUpByRobot) {
     TempDir tmp;
     const std::string plan = writeTwoRoomPlan(tmp.path());
     const std::string logs = tmp.path() + "/logs", json = tmp.path() + "/b3.json";
-    const auto r = runApp("toposlam-bench-slam", "--sim-plans " + plan +
-                                                     " --sim-robots lms200 --sim-seeds 1,2 "
-                                                     "--engines graph --sim-dir " +
-                                                     logs + " --json " + json);
+    const auto r = benchSimulatedTours(plan, "--sim-robots lms200 --sim-seeds 1,2", logs, json);
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    for (const char* text :
-         {"simulating 1/2: two_rooms.lms200.seed1 ...",
-          "simulating 2/2: two_rooms.lms200.seed2 ...", "| two_rooms.lms200.seed1 | graph |",
-          "| two_rooms.lms200.seed2 | graph |", "Simulated logs by robot",
-          "| lms200 | graph | 2 / 2 |"})
-        EXPECT_TRUE(contains(r.output, text)) << text << "\n" << r.output;
+    expectPrinted(
+        r.output,
+        {"simulating 1/2: two_rooms.lms200.seed1 ...", "simulating 2/2: two_rooms.lms200.seed2 ...",
+         "| two_rooms.lms200.seed1 | graph |", "| two_rooms.lms200.seed2 | graph |",
+         "Simulated logs by robot", "| lms200 | graph | 2 / 2 |"});
     // The seeds give other logs of the same tour: other odometry, the same true path.
     const auto odometry1 = odometryAtScans(logs + "/two_rooms.lms200.seed1.rawlog");
     const auto odometry2 = odometryAtScans(logs + "/two_rooms.lms200.seed2.rawlog");

@@ -32,6 +32,12 @@ double squaredDistanceToSegment(double px, double py, const mrpt::math::TPoint2D
     const double ex = px - (a.x + t * dx), ey = py - (a.y + t * dy);
     return ex * ex + ey * ey;
 }
+/// True when the points u and v lie on opposite sides of the line through a and b.
+bool oppositeSides(const mrpt::math::TPoint2D& a, const mrpt::math::TPoint2D& b, double ux,
+                   double uy, double vx, double vy) {
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    return (dx * (uy - a.y) - dy * (ux - a.x)) * (dx * (vy - a.y) - dy * (vx - a.x)) < 0;
+}
 /// True when the reference saw farther than `range` (+ margin) on beam b and on both its
 /// neighbours: a point there contradicts the reference. Requiring the neighbours too keeps
 /// a beam that just grazes past an edge from calling the edge's points violations.
@@ -68,6 +74,7 @@ AlignmentScore scoreAlignment(const PolarScan& reference, const PolarScan& curre
             continue;
         }
         double best = std::numeric_limits<double>::infinity();
+        bool fromBehind = false;  // the nearest piece of surface faces away from the sensor
         long prev = -1;
         for (long o = -options.searchBeams; o <= options.searchBeams; ++o) {
             const long r = reference.neighbour(b, o);
@@ -76,17 +83,24 @@ AlignmentScore scoreAlignment(const PolarScan& reference, const PolarScan& curre
                 continue;
             }
             const mrpt::math::TPoint2D& q = reference.point(std::size_t(r));
-            best = std::min(best, (qx - q.x) * (qx - q.x) + (qy - q.y) * (qy - q.y));
+            const double toPoint = (qx - q.x) * (qx - q.x) + (qy - q.y) * (qy - q.y);
+            if (toPoint < best)
+                best = toPoint, fromBehind = false;
             if (prev >= 0) {
                 const mrpt::math::TPoint2D& pq = reference.point(std::size_t(prev));
                 const double join =
                     options.maxJoinDistance + 3 * stepArc * reference.range(std::size_t(r));
-                if ((pq.x - q.x) * (pq.x - q.x) + (pq.y - q.y) * (pq.y - q.y) < join * join)
-                    best = std::min(best, squaredDistanceToSegment(qx, qy, pq, q));
+                const double toPiece = squaredDistanceToSegment(qx, qy, pq, q);
+                if ((pq.x - q.x) * (pq.x - q.x) + (pq.y - q.y) * (pq.y - q.y) < join * join &&
+                    toPiece < best) {
+                    best = toPiece;
+                    // The reference sensor is at the origin; the current one at the pose.
+                    fromBehind = oppositeSides(pq, q, 0, 0, pose.x(), pose.y());
+                }
             }
             prev = r;
         }
-        if (best <= tol2) {
+        if (best <= tol2 && !fromBehind) {
             ++s.inliers;
             s.inlierSquaredError += best;
         } else if (inFreeSpace(reference, b, std::sqrt(qx * qx + qy * qy),

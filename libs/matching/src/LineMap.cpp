@@ -46,10 +46,11 @@ void LineMap::reset() {
 void surfacePoints(const PolarScan& scan, const LineMapOptions& options,
                    std::vector<SurfacePoint>& out) {
     out.clear();
+    const double reach = localLineReach(surfaceNoise(scan, options.maxJoinDistance));
     for (std::size_t b = 0; b < scan.size(); ++b) {
         if (!scan.valid(b) || scan.range(b) > options.maxRange)
             continue;
-        const auto line = fitLocalLine(scan, b, options.maxJoinDistance);
+        const auto line = fitLocalLine(scan, b, options.maxJoinDistance, reach);
         if (!line)
             continue;
         const mrpt::math::TPoint2D& p = scan.point(b);

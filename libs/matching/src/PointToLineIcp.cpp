@@ -140,9 +140,10 @@ IcpResult PointToLineIcp::refine(const PolarScan& current, const AttributedGraph
 void PointToLineIcp::prepareReference(const PolarScan& reference, double maxJoinDistance) {
     const std::size_t n = reference.size();
     lines_.assign(n, std::nullopt);
+    const double reach = localLineReach(surfaceNoise(reference, maxJoinDistance));
     for (std::size_t b = 0; b < n; ++b) {
         if (reference.valid(b))
-            lines_[b] = fitLocalLine(reference, b, maxJoinDistance);
+            lines_[b] = fitLocalLine(reference, b, maxJoinDistance, reach);
     }
 }
 
@@ -200,8 +201,8 @@ IcpResult PointToLineIcp::refineOnScan(const PolarScan& reference, const PolarSc
     if (lines_.size() != reference.size())
         prepareReference(reference);  // never prepared
     // The local line of the nearest reference point among the beams around q's bearing.
-    const auto correspond = [&](double qx, double qy, double /*sensorX*/, double /*sensorY*/,
-                                double gate2, bool /*tight*/, double& nx, double& ny, double& r) {
+    const auto correspond = [&](double qx, double qy, double sensorX, double sensorY, double gate2,
+                                bool /*tight*/, double& nx, double& ny, double& r) {
         const long b = reference.beamAtPoint(qx, qy);
         if (b < 0)
             return false;
@@ -219,6 +220,9 @@ IcpResult PointToLineIcp::refineOnScan(const PolarScan& reference, const PolarSc
         if (best < 0)
             return false;
         const LocalLine& l = *lines_[std::size_t(best)];
+        // The normal faces the reference sensor: the current one must be on that side too.
+        if (l.nx * (sensorX - qx) + l.ny * (sensorY - qy) <= 0)
+            return false;
         nx = l.nx, ny = l.ny, r = l.nx * qx + l.ny * qy - l.offset;
         return r * r <= gate2;
     };
@@ -242,8 +246,9 @@ IcpResult PointToLineIcp::refineOnMap(const LineMap& map, const PolarScan& curre
         // cos(incidence) = n . v / |v| with v towards the sensor, compared without a root.
         const double vx = sensorX - m->x, vy = sensorY - m->y;
         const double facing = m->nx * vx + m->ny * vy;
-        if (checkFacing && facing * std::abs(facing) < minFacing2 * (vx * vx + vy * vy))
-            return false;
+        if (facing <= 0 ||
+            (checkFacing && facing * std::abs(facing) < minFacing2 * (vx * vx + vy * vy)))
+            return false;  // the back of the surface, or seen too obliquely
         const double dx = qx - m->x, dy = qy - m->y;
         if (dx * dx + dy * dy > gate2)
             return false;

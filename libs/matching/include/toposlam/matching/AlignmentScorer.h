@@ -4,7 +4,9 @@
 // reference sensor's frame and looked up by bearing in the reference scan (O(1), no search
 // tree); against the reference readings of the nearest beams it is
 //   - an inlier     when it lies within inlierDistance of the reference surface (the points
-//                   and the polyline through neighbouring reference points);
+//                   and the polyline through neighbouring reference points), and the current
+//                   sensor is on the side of that polyline the reference sensor saw it from:
+//                   the other face of a 10 cm wall is not the same surface;
 //   - a violation   when it lies in front of the reference readings (that beam and both
 //                   neighbours) by more than that: the reference sensor saw through the place
 //                   where the current scan saw a surface, so the pose (or a moving obstacle)

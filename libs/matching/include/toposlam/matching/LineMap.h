@@ -132,7 +132,8 @@ class LineMap {
 };
 
 /// The readings of `scan` within options.maxRange that have a local line (fitLocalLine with
-/// options.maxJoinDistance), with its normal, in the sensor frame; `out` is replaced.
+/// options.maxJoinDistance, reaching as far as the scan's noise asks), with its normal, in the
+/// sensor frame; `out` is replaced.
 void surfacePoints(const PolarScan& scan, const LineMapOptions& options,
                    std::vector<SurfacePoint>& out);
 

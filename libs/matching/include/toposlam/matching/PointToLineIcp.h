@@ -10,10 +10,15 @@
 //  - scan mode (refineOnScan), the last polish once the segments agree on a pose: every
 //    valid current point against the local line of its nearest reference point, searched
 //    among the reference beams within `searchBeams` of its bearing (O(1) per point, no
-//    search tree). Local lines are fitted to each reference point and its neighbours within
-//    +-2 beams that are not across a range jump, once per reference scan. It uses the short
+//    search tree). Local lines are fitted to each reference point and its neighbours that
+//    are not across a range jump (LocalLine.h: as far as the scan's noise asks), once per
+//    reference scan. It uses the short
 //    walls, corners and furniture the segment graph leaves out, which is what makes the pose
 //    accurate on cluttered real scans; it never runs from a pose the segments did not give.
+// In scan and map mode a point is associated only with a surface its own sensor faces, as the
+// sensor that saw the surface did: a wall 10 cm thick, seen from the room on one side by the
+// reference and from the corridor on the other by the current scan, has two faces 10 cm
+// apart, and points on one face matched to the other pull the pose by the wall's thickness.
 // Each iteration takes one Gauss-Newton step of the Cauchy-weighted least squares
 //     min_{x,y,phi} sum_p rho( n . (R(phi) p + t) - offset ),   rho: Cauchy, scale c,
 // dropping points farther than maxDistance from their line, and restricted to the directions
@@ -63,7 +68,8 @@ struct IcpOptions {
     /// the places it stood in earlier scans pull a registration back by that step. 1 = all.
     std::uint32_t minMapViews = 1;
     /// Map mode: a map point is associated only when its surface faces the sensor at an
-    /// incidence below this (rad; angle between its normal and the direction to the sensor).
+    /// incidence below this (rad; angle between its normal and the direction to the sensor;
+    /// a surface facing away, beyond pi / 2, is never associated).
     /// A rough wall seen from down a corridor keeps the normals of the faces that looked back
     /// along it; passing beside them, a reading on the wall must not be held by them. pi = all.
     double maxIncidence = M_PI;

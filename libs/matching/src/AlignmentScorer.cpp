@@ -90,12 +90,13 @@ AlignmentScore scoreAlignment(const PolarScan& reference, const PolarScan& curre
                 const mrpt::math::TPoint2D& pq = reference.point(std::size_t(prev));
                 const double join =
                     options.maxJoinDistance + 3 * stepArc * reference.range(std::size_t(r));
-                const double toPiece = squaredDistanceToSegment(qx, qy, pq, q);
-                if ((pq.x - q.x) * (pq.x - q.x) + (pq.y - q.y) * (pq.y - q.y) < join * join &&
-                    toPiece < best) {
-                    best = toPiece;
-                    // The reference sensor is at the origin; the current one at the pose.
-                    fromBehind = oppositeSides(pq, q, 0, 0, pose.x(), pose.y());
+                if ((pq.x - q.x) * (pq.x - q.x) + (pq.y - q.y) * (pq.y - q.y) < join * join) {
+                    const double toPiece = squaredDistanceToSegment(qx, qy, pq, q);
+                    if (toPiece < best) {
+                        best = toPiece;
+                        // The reference sensor is at the origin; the current one at the pose.
+                        fromBehind = oppositeSides(pq, q, 0, 0, pose.x(), pose.y());
+                    }
                 }
             }
             prev = r;

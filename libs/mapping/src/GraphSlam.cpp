@@ -81,7 +81,10 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
     CPose2D increment = odometryIncrement.value_or(CPose2D());
     odometrySinceKeyframe_ += increment.norm();
     turnSinceKeyframe_ += std::abs(mrpt::math::wrapToPi(increment.phi()));
-    if (beyondOdometryJump(options_, increment)) {
+    // A jump is a step beyond the bounds that also departs from the last registered motion by
+    // more than them: at a low scan rate, or on a fast robot, every step is long.
+    if (beyondOdometryJump(options_, increment) &&
+        beyondOdometryJump(options_, (-lastMotion_) + increment)) {
         // Wheels do not teleport: predict the motion of the last scan instead (a stalled
         // odometry that catches up in one step jumps; the robot kept moving meanwhile).
         p.odometryJumped = true;

@@ -88,7 +88,8 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "... and moves the robot sideways by at most this (0 = no limit)")
         .atLeast(0);
     s.real("odometry_jump_distance", odometryJumpDistance, "m",
-           "odometry steps longer than this between two scans are jumps, not motion ...")
+           "odometry steps longer than this between two scans, and as far from the last motion, "
+           "are jumps, not motion ...")
         .above(0);
     s.angle("odometry_jump_angle", odometryJumpAngle, "... as are turns larger than this")
         .above(0)

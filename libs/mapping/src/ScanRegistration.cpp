@@ -276,9 +276,17 @@ const Prediction& ScanRegistration::preferredPrediction(const matching::PolarSca
     IcpAttempt fromOdometry = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap);
     IcpAttempt fromMotion = icpFrom(scan, sensorOnRobot, submap, byMotion);
     // Both found the same pose (then only the size of the odometry's correction is in doubt),
-    // or the last motion's fits clearly better.
-    if (!bearsOut(submap.map(), scan, sensorOnRobot, fromMotion.robot, fromOdometry.robot,
-                  options_.secondOpinionMargin)) {
+    // or the last motion's fits clearly better, or ICP from the odometry ends where tryIcp()
+    // would reject it while from the last motion it passes and fits more of the scan.
+    const auto acceptable = [&](const IcpAttempt& a, const CPose2D& start) {
+        return a.overlap >= options_.minInlierRatio && plausibleCorrection(a.robot - start);
+    };
+    const bool onlyMotionPasses =
+        !acceptable(fromOdometry, prediction.inSubmap) && acceptable(fromMotion, byMotion) &&
+        readingsOnMap(submap.map(), scan, fromMotion.robot + sensorOnRobot) >
+            readingsOnMap(submap.map(), scan, fromOdometry.robot + sensorOnRobot);
+    if (!onlyMotionPasses && !bearsOut(submap.map(), scan, sensorOnRobot, fromMotion.robot,
+                                       fromOdometry.robot, options_.secondOpinionMargin)) {
         started = std::move(fromOdometry);
         return prediction;
     }

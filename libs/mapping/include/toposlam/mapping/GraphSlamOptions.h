@@ -79,8 +79,9 @@ struct GraphSlamOptions : public config::Options {
     /// 0 = no limit, for robots that can move sideways). Wheels do not slide sideways: ICP
     /// that says so has locked onto the wrong structure (seen in fast turns on mit-csail).
     double maxLateralCorrection = 0.06;
-    /// Odometry increments larger than this between two scans are jumps, not motion: the
-    /// prediction is then the previous pose and the graph matcher registers the scan. Without
+    /// Odometry increments larger than this between two scans, and as far from the robot's
+    /// last registered motion (at a low scan rate every step is long), are jumps, not motion:
+    /// the prediction is then the last motion and the graph matcher registers the scan. Without
     /// a jump, a graph-matcher answer that corrects the prediction by more is not used.
     double odometryJumpDistance = 0.5;  ///< m
     double odometryJumpAngle = 0.7854;  ///< rad (45 deg)

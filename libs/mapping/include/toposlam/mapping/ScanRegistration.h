@@ -181,8 +181,10 @@ class ScanRegistration {
                        Registration& icp);
     /// `prediction`, or the same with the robot's last motion instead of the odometry's step
     /// (kept in motionPrediction_) when the two are farther apart than ICP reaches and ICP
-    /// from the last motion ends where ICP from the odometry does or puts
-    /// second_opinion_margin more of `scan` on the submap (confirm_large_corrections). When it
+    /// from the last motion ends where ICP from the odometry does, or puts
+    /// second_opinion_margin more of `scan` on the submap, or passes tryIcp()'s overlap and
+    /// correction tests and puts more of `scan` on it where ICP from the odometry fails them
+    /// (confirm_large_corrections). When it
     /// compared the two, `started` gets the ICP run from the prediction returned, so that it
     /// is not run again.
     const Prediction& preferredPrediction(const matching::PolarScan& scan,

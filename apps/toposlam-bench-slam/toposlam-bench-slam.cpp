@@ -48,13 +48,15 @@ const char* const kDescription =
     "--sim-seeds once per seed, and runs the engines on those logs too: SLAM on data it was not "
     "tuned on, with lasers and odometry harder than the public logs'; a table by robot sums "
     "them up (ATE mean, spread, median, worst log). With --keep-every N every log runs with one "
-    "scan in N: more motion between two scans, as a slower laser or a faster robot gives.\n"
+    "scan in N: more motion between two scans, as a slower laser or a faster robot gives; with "
+    "--keep-beam-every N one beam in N: a coarser laser.\n"
     "Examples:\n"
     "  toposlam-bench-slam --json b3.json --images b3-img\n"
     "  toposlam-bench-slam --logs intel,office --engines graph,icp-slam --keep b3-runs\n"
     "  toposlam-bench-slam --sim-plans office_d,NLB --sim-robots lms200,urg-04lx\n"
     "  toposlam-bench-slam --sim-plans office_d,NLB --sim-seeds 1-3 --engines graph\n"
     "  toposlam-bench-slam --logs fr079,intel --keep-every 3\n"
+    "  toposlam-bench-slam --logs mit-csail,fr079 --engines graph --keep-beam-every 2\n"
     "Exit status: 0 when every run succeeded (or, with 'B3 skipped: ...' on stderr, when the "
     "benchmark logs are not there); 1 when a run failed (the table says which and why) or on "
     "bad input (missing configuration, plan or a failing simulation); 2 for bad usage (unknown "
@@ -107,6 +109,7 @@ struct Arguments {
         json, simPlans, simRobots, simSeeds, simDir, simConfig;
     cli::NumberArg<double> timeout;
     cli::NumberArg<std::size_t> keepEvery;
+    cli::NumberArg<std::size_t> keepBeamEvery;
 };
 
 Arguments::Arguments()
@@ -183,7 +186,12 @@ Arguments::Arguments()
                 "laser with an N times lower scan rate would have recorded it), named "
                 "<log>-1inN and scored on the relations between kept scans. Default: 1 = the "
                 "logs as recorded",
-                1, cli::NumberRange<std::size_t>::closed(1, 1000), "N", cmd) {}
+                1, cli::NumberRange<std::size_t>::closed(1, 1000), "N", cmd),
+      keepBeamEvery("", "keep-beam-every",
+                    "Run every log with one beam in N of each scan (toposlam-convert "
+                    "--keep-beam-every: a laser with N times the angle between beams), named "
+                    "<log>-beams1inN. Default: 1 = every beam",
+                    1, cli::NumberRange<std::size_t>::closed(1, 1000), "N", cmd) {}
 
 // "/work/wt/../shared/data" -> "/work/shared/data": shorter names in the table.
 std::string tidy(const std::string& path) {
@@ -249,6 +257,7 @@ evaluation::SlamBenchmarkOptions benchmarkOptions(Arguments& a) {
     options.keepDir = a.keep.getValue();
     options.imageDir = a.images.getValue();
     options.keepEvery = a.keepEvery.getValue();
+    options.keepBeamEvery = a.keepBeamEvery.getValue();
     evaluation::SlamEngineSetup& setup = options.setup;
     setup.timeoutSeconds = a.timeout.getValue();
     setup.slamConfig = tidy(a.config.getValue());

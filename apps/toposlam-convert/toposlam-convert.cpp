@@ -69,6 +69,7 @@ struct Arguments {
     TCLAP::ValueArg<std::string> laserOffset;
     cli::NumberArg<std::size_t> maxScans;
     cli::NumberArg<std::size_t> keepEvery;
+    cli::NumberArg<std::size_t> keepBeamEvery;
     cli::NumberArg<double> resolution;
     TCLAP::ValueArg<std::string> origin;
     cli::MapReadingArgs mapReading;
@@ -113,6 +114,12 @@ Arguments::Arguments()
                 "kept scan. A relation file still matches the kept scans' stamps. Default: 1 = "
                 "every scan",
                 1, cli::NumberRange<std::size_t>::closed(1, 1000), "N", cmd),
+      keepBeamEvery("", "keep-beam-every",
+                    "Keep one beam in N of each scan (the first, then every Nth): the log as a "
+                    "laser with N times the angle between beams would have recorded it; each "
+                    "kept beam keeps its direction. Features stored with the scans are left out. "
+                    "Default: 1 = every beam",
+                    1, cli::NumberRange<std::size_t>::closed(1, 1000), "N", cmd),
       resolution(
           "", "resolution",
           "Maps: cell size in m for an input image (overrides its .yaml sidecar). "
@@ -138,7 +145,8 @@ void refuseLogOptions(const Arguments& a) {
         {a.maxRange.isSet(), "--carmen-max-range"},
         {a.laserOffset.isSet(), "--laser-offset"},
         {a.maxScans.isSet(), "--max-scans"},
-        {a.keepEvery.isSet(), "--keep-every"}};
+        {a.keepEvery.isSet(), "--keep-every"},
+        {a.keepBeamEvery.isSet(), "--keep-beam-every"}};
     for (const auto& [set, name] : logOptions) {
         if (set)
             throw cli::UsageError(std::string(name) + " is for laser logs, not grid maps");
@@ -188,6 +196,7 @@ io::LogConversionOptions logOptions(Arguments& a) {
     options.odometryTrajectoryPath = a.odometryTrajectory.getValue();
     options.maxScans = a.maxScans.getValue();
     options.keepEvery = a.keepEvery.getValue();
+    options.keepBeamEvery = a.keepBeamEvery.getValue();
     return options;
 }
 

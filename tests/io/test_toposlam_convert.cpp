@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <toposlam/io/GridMapIO.h>
 #include <toposlam/io/LaserLogReader.h>
+#include <toposlam/io/LogConversion.h>
 #include <toposlam/io/Trajectory.h>
 
 #include <filesystem>
@@ -118,6 +119,55 @@ TEST(ToposlamConvert, KeepEveryNthScanIsALowerScanRate) {
     while (first.next(rec))
         ++n;
     EXPECT_EQ(n, 2u);
+}
+
+// The direction of reading `i` of `scan` in the robot frame (rad).
+double beamDirection(const mrpt::obs::CObservation2DRangeScan& scan, std::size_t i) {
+    const double step = double(scan.aperture) / double(scan.getScanSize() - 1);
+    const double inSensor = (scan.rightToLeft ? 1.0 : -1.0) * (-0.5 * scan.aperture + step * i);
+    return scan.sensorPose.yaw() + inSensor;
+}
+
+TEST(ToposlamConvert, KeepEveryNthBeamIsACoarserLaserPointingTheSameWay) {
+    TempDir dir;
+    writeText(dir.file("log.clf"), carmenLog(3));
+    const std::string out = dir.file("beams.rawlog");
+    const auto r =
+        runApp("toposlam-convert", dir.file("log.clf") + " -o " + out + " --keep-beam-every 4");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    // 181 readings, 1 deg apart: beams 0, 4, ..., 180 are kept, 4 deg apart, still -90..+90.
+    EXPECT_NE(r.output.find("3 scans of 46 readings"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("one beam kept in 4"), std::string::npos) << r.output;
+    toposlam::io::LaserLogReader original(dir.file("log.clf")), coarse(out);
+    toposlam::io::LaserLogRecord a, b;
+    ASSERT_TRUE(original.next(a));
+    ASSERT_TRUE(coarse.next(b));
+    ASSERT_EQ(b.scan->getScanSize(), 46u);
+    for (std::size_t k = 0; k < 46; ++k) {
+        EXPECT_FLOAT_EQ(b.scan->getScanRange(k), a.scan->getScanRange(4 * k));
+        EXPECT_EQ(b.scan->getScanRangeValidity(k), a.scan->getScanRangeValidity(4 * k));
+        EXPECT_NEAR(beamDirection(*b.scan, k), beamDirection(*a.scan, 4 * k), 1e-6);
+    }
+    // Kept beams that no longer span the fan symmetrically (180 readings, one in 7: the last
+    // kept is 5 short of the end) turn the sensor to their centre; either beam order.
+    for (const bool rightToLeft : {true, false}) {
+        mrpt::obs::CObservation2DRangeScan scan;
+        scan.aperture = static_cast<float>(M_PI * 179.0 / 180.0);
+        scan.rightToLeft = rightToLeft;
+        scan.sensorPose = mrpt::poses::CPose3D(0.1, 0, 0, 0.2, 0, 0);
+        scan.resizeScan(180);
+        for (std::size_t i = 0; i < 180; ++i) {
+            scan.setScanRange(i, 1.0f + 0.01f * static_cast<float>(i));
+            scan.setScanRangeValidity(i, i % 5 != 0);
+        }
+        const auto kept = toposlam::io::keepEveryBeam(scan, 7);
+        ASSERT_EQ(kept->getScanSize(), 26u);
+        for (std::size_t k = 0; k < 26; ++k) {
+            SCOPED_TRACE(k);
+            EXPECT_NEAR(beamDirection(*kept, k), beamDirection(scan, 7 * k), 1e-6);
+            EXPECT_EQ(kept->getScanRangeValidity(k), scan.getScanRangeValidity(7 * k));
+        }
+    }
 }
 
 TEST(ToposlamConvert, OdometryTrajectoryUsesPrintedStamps) {

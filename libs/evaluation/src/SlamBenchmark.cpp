@@ -200,18 +200,23 @@ SlamBenchmarkResult SlamBenchmark::run(const io::ProgressCallback& progress) con
 
 namespace {
 
-// `log` with one scan in `keepEvery`, converted into `directory` (io::convertLaserLog).
-SlamBenchmarkLog withFewerScans(const SlamBenchmarkLog& log, std::size_t keepEvery,
-                                const fs::path& directory) {
-    SlamBenchmarkLog thinned = log;
-    thinned.name = log.name + "-1in" + std::to_string(keepEvery);
+// `log` with one scan in `keepEvery` and one beam in `keepBeamEvery`, converted into
+// `directory` (io::convertLaserLog).
+SlamBenchmarkLog thinned(const SlamBenchmarkLog& log, std::size_t keepEvery,
+                         std::size_t keepBeamEvery, const fs::path& directory) {
+    SlamBenchmarkLog out = log;
+    if (keepEvery > 1)
+        out.name += "-1in" + std::to_string(keepEvery);
+    if (keepBeamEvery > 1)
+        out.name += "-beams1in" + std::to_string(keepBeamEvery);
     fs::create_directories(directory);
-    thinned.logFile = (directory / (thinned.name + ".rawlog")).string();
+    out.logFile = (directory / (out.name + ".rawlog")).string();
     io::LogConversionOptions conversion;
-    conversion.rawlogPath = thinned.logFile;
+    conversion.rawlogPath = out.logFile;
     conversion.keepEvery = keepEvery;
+    conversion.keepBeamEvery = keepBeamEvery;
     io::convertLaserLog(log.logFile, conversion);
-    return thinned;
+    return out;
 }
 
 }  // namespace
@@ -229,8 +234,8 @@ SlamBenchmarkLogResult SlamBenchmark::runLog(const SlamBenchmarkLog& recorded,
     Reference reference;
     std::vector<double> stamps;
     try {
-        if (options_.keepEvery > 1) {
-            log = withFewerScans(recorded, options_.keepEvery, workDirectory);
+        if (options_.keepEvery > 1 || options_.keepBeamEvery > 1) {
+            log = thinned(recorded, options_.keepEvery, options_.keepBeamEvery, workDirectory);
             result.log = log;
         }
         reference = loadReference(log);

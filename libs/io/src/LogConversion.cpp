@@ -8,6 +8,32 @@
 
 namespace toposlam::io {
 
+mrpt::obs::CObservation2DRangeScan::Ptr keepEveryBeam(
+    const mrpt::obs::CObservation2DRangeScan& scan, std::size_t keepEvery) {
+    auto out = std::make_shared<mrpt::obs::CObservation2DRangeScan>(scan);
+    const std::size_t n = scan.getScanSize();
+    if (keepEvery <= 1 || n < 2)
+        return out;
+    const std::size_t kept = (n - 1) / keepEvery + 1;
+    out->resizeScan(kept);
+    for (std::size_t k = 0; k < kept; ++k) {
+        out->setScanRange(k, scan.getScanRange(k * keepEvery));
+        out->setScanRangeValidity(k, scan.getScanRangeValidity(k * keepEvery));
+        if (scan.hasIntensity())
+            out->setScanIntensity(k, scan.getScanIntensity(k * keepEvery));
+    }
+    // Beam i of n points at -aperture/2 + i * aperture / (n - 1) (MRPT's convention, mirrored
+    // for rightToLeft = false). The kept ones span (kept - 1) * keepEvery steps from the first
+    // beam; a fan centred on the sensor's x axis needs the sensor turned by the shift.
+    const double step = double(scan.aperture) / double(n - 1);
+    const double span = step * double((kept - 1) * keepEvery);
+    out->aperture = static_cast<float>(span);
+    const double shift = (scan.rightToLeft ? 1.0 : -1.0) * 0.5 * (span - double(scan.aperture));
+    out->sensorPose.setYawPitchRoll(out->sensorPose.yaw() + shift, out->sensorPose.pitch(),
+                                    out->sensorPose.roll());
+    return out;
+}
+
 LogConversionSummary convertLaserLog(const std::string& inputPath,
                                      const LogConversionOptions& options) {
     LaserLogReader reader(inputPath, options.read);
@@ -25,6 +51,10 @@ LogConversionSummary convertLaserLog(const std::string& inputPath,
         if (read % keepEvery != 0) {
             ++summary.scansLeftOut;
             continue;
+        }
+        if (options.keepBeamEvery > 1) {
+            record.scan = keepEveryBeam(*record.scan, options.keepBeamEvery);
+            record.storedFeatures.reset();
         }
         if (summary.scans == 0) {
             summary.beamsPerScan = record.scan->getScanSize();
@@ -71,6 +101,8 @@ std::string describe(const LogConversionSummary& s, const std::string& inputPath
         text += ", " + std::to_string(s.scansLeftOut) + " scans left out (one kept in " +
                 std::to_string(options.keepEvery) + ")";
     }
+    if (options.keepBeamEvery > 1)
+        text += ", one beam kept in " + std::to_string(options.keepBeamEvery);
     text += "\n";
     if (!options.rawlogPath.empty()) {
         text += "wrote " + options.rawlogPath + " (" + toString(options.rawlogFormat) +

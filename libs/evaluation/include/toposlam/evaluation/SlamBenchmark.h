@@ -39,6 +39,9 @@ struct SlamBenchmarkOptions {
     /// laser with a lower scan rate would have recorded it), named `<log>-1in<N>`; scored on
     /// the reference's relations between kept scans. 1 = the logs as recorded.
     std::size_t keepEvery = 1;
+    /// ... and with one beam in this many of each scan (toposlam-convert --keep-beam-every:
+    /// a laser with that many times the angle between beams), named `<log>-beams1in<N>`.
+    std::size_t keepBeamEvery = 1;
 };
 
 /// One table row: an engine on a log, and its score when it ran.

@@ -26,6 +26,12 @@ struct LogConversionOptions {
     /// with a lower scan rate would have recorded it. The odometry is the pose at each kept
     /// scan, so an increment spans the scans left out. 1 = every scan.
     std::size_t keepEvery = 1;
+    /// Keep one beam in this many of each scan (the first, then every keepBeamEvery-th): the
+    /// log as a laser with that many times the angle between beams would have recorded it.
+    /// Each kept beam keeps its direction (the scan's aperture shrinks to the kept beams, and
+    /// its sensor yaw turns to their centre if they are no longer centred). Features stored
+    /// with the scans are left out (they were found on every beam). 1 = every beam.
+    std::size_t keepBeamEvery = 1;
     /// Called after each scan with (fraction of the input parsed, scans so far).
     ProgressCallback progress;
 };
@@ -35,11 +41,16 @@ struct LogConversionSummary {
     std::size_t scans = 0;         ///< converted (kept)
     std::size_t scansLeftOut = 0;  ///< read but left out (keepEvery)
     std::size_t scansWithoutOdometry = 0;
-    std::size_t beamsPerScan = 0;        ///< of the first scan
+    std::size_t beamsPerScan = 0;        ///< of the first scan written (after keepBeamEvery)
     std::size_t adjustedTimestamps = 0;  ///< see LaserLogReader::adjustedTimestamps()
     std::size_t rawlogObjects = 0;
     double firstStamp = 0, lastStamp = 0;  ///< fileStamps, s
 };
+
+/// `scan` with one beam in `keepEvery` kept, each in its own direction (LogConversionOptions::
+/// keepBeamEvery). A scan of one beam, or keepEvery <= 1, comes back as a copy.
+mrpt::obs::CObservation2DRangeScan::Ptr keepEveryBeam(
+    const mrpt::obs::CObservation2DRangeScan& scan, std::size_t keepEvery);
 
 /// Throws InputError for bad input, including a log without any (matching) laser scan, and
 /// std::runtime_error when an output cannot be written; no output file is left then.

@@ -740,23 +740,31 @@ TEST(GraphSlam, IntelHoldsTogetherWhenLoopsAreSearchedLessOften) {
     EXPECT_GE(held, result.statistics->icpHeldAlongHeading);
 }
 
-/// `log` thinned to one scan in three (as a laser with a third of its rate would record it),
-/// mapped with the shipped settings and scored on `relations` (those whose stamps it keeps,
-/// at least `minMatched`): mean error below 0.1 m, no relation beyond the 0.3 m.
-void expectMappedAtAThirdOfTheScans(const std::string& log, const std::string& relations,
-                                    std::size_t minMatched) {
+/// `log` thinned as `conversion` says (keepEvery, keepBeamEvery: as a laser with a lower
+/// scan rate or wider-spaced beams would record it), mapped with the shipped settings and
+/// scored on `relations` (those whose stamps it keeps, at least `minMatched`): mean error
+/// below `maxMean`, no relation beyond `maxWorst` (m).
+void expectMappedWhenThinned(const std::string& log, const std::string& relations,
+                             io::LogConversionOptions conversion, std::size_t minMatched,
+                             double maxMean, double maxWorst) {
     test::TempDir dir;
-    io::LogConversionOptions conversion;
     conversion.rawlogPath = dir.file("thinned.rawlog");
-    conversion.keepEvery = 3;
     io::convertLaserLog(log, conversion);
     const mapping::MappingResult result = mapping::mapLog(
         conversion.rawlogPath, mrpt::config::CConfigFile(test::configIni("toposlam-slam.ini")));
     const auto r = evaluation::evaluateRelativePoseError(result.trajectory,
                                                          evaluation::loadRelations(relations));
     EXPECT_GE(r.matchedRelations, minMatched);
-    EXPECT_LT(r.translation.mean, 0.1);
-    EXPECT_LT(r.translation.max, 0.3);
+    EXPECT_LT(r.translation.mean, maxMean);
+    EXPECT_LT(r.translation.max, maxWorst);
+}
+
+/// One scan in three: mean below 0.1 m, no relation beyond the 0.3 m.
+void expectMappedAtAThirdOfTheScans(const std::string& log, const std::string& relations,
+                                    std::size_t minMatched) {
+    io::LogConversionOptions third;
+    third.keepEvery = 3;
+    expectMappedWhenThinned(log, relations, third, minMatched, 0.1, 0.3);
 }
 
 TEST(GraphSlam, Fr079HoldsTogetherAtAThirdOfItsScanRate) {
@@ -779,6 +787,19 @@ TEST(GraphSlam, MitCsailHoldsTogetherAtAThirdOfItsScanRate) {
     TOPOSLAM_SHARED_DATA_OR_SKIP(log, "slam/mit-csail.clf");
     TOPOSLAM_SHARED_DATA_OR_SKIP(relations, "slam/mit-csail.relations");
     expectMappedAtAThirdOfTheScans(log, relations, 25);  // 27 of its 1172 relations are kept
+}
+
+TEST(GraphSlam, MitCsailHoldsTogetherWithEveryOtherBeam) {
+    // 181 beams 1 deg apart instead of 361: loops at the end of the log were verified on 30
+    // inliers, as for 0.5 deg, and went unverified, so the last minutes ended 2 m off (mean
+    // relation error 0.145 m, worst 2.15 m). The graph matcher's min_inliers now counts beams
+    // 0.5 deg apart (min_inliers_bearing_step_deg): 0.028 m, worst 0.42 m (a local glitch where
+    // the odometry stalls; the full laser's worst is 0.29 m).
+    TOPOSLAM_SHARED_DATA_OR_SKIP(log, "slam/mit-csail.clf");
+    TOPOSLAM_SHARED_DATA_OR_SKIP(relations, "slam/mit-csail.relations");
+    io::LogConversionOptions everyOtherBeam;
+    everyOtherBeam.keepBeamEvery = 2;
+    expectMappedWhenThinned(log, relations, everyOtherBeam, 1172, 0.05, 0.5);
 }
 
 TEST(GraphSlam, BadLogsGiveClearErrors) {

@@ -53,6 +53,35 @@ TEST(GraphScanMatcher, RecoversKnownTransformsWithoutGuess) {
     }
 }
 
+// min_inliers is a count of beams 0.5 deg apart: a coarser laser puts fewer readings on the
+// same walls and needs as many as cover the same bearing. The same pair seen with 0.5 deg
+// and with 2 deg between beams, min_inliers set to 80 % of what the fine laser puts on the
+// walls: both are matched. Counted as it is, the coarse scans (a quarter of the readings)
+// fall short.
+TEST(GraphScanMatcher, TheInlierFloorCoversTheSameBearingWhateverTheBeamSpacing) {
+    const auto world = toposlam::test::asymmetricRoom();
+    const CPose2D reference(3.0, 2.0, 0.4), motion(0.4, -0.2, 0.3);
+    const auto matchWith = [&](std::size_t beams, std::size_t minInliers, double step) {
+        const auto laser = toposlam::test::fullCircleLaser(beams);
+        const SyntheticScan ref = simulateWithSegments(world, laser, reference);
+        const SyntheticScan cur = simulateWithSegments(world, laser, reference + motion, 2);
+        GraphScanMatcher matcher;
+        matcher.options().minInliers = minInliers;
+        matcher.options().minInliersBearingStep = step;
+        return matcher.match(ref.polar, ref.features, cur.polar, cur.features);
+    };
+    const double halfDegree = 0.5 * M_PI / 180;
+    const MatchResult fine = matchWith(720, 1, halfDegree);
+    ASSERT_EQ(fine.status, MatchStatus::Matched) << toString(fine.status);
+    const std::size_t floor = fine.score.inliers * 4 / 5;
+    EXPECT_EQ(matchWith(720, floor, halfDegree).status, MatchStatus::Matched);
+    const MatchResult coarse = matchWith(180, floor, halfDegree);
+    EXPECT_EQ(coarse.status, MatchStatus::Matched) << toString(coarse.status);
+    EXPECT_LT(translationError(coarse.pose, motion), 0.01);
+    EXPECT_LT(coarse.score.inliers, floor);
+    EXPECT_EQ(matchWith(180, floor, 0).status, MatchStatus::PoorFit);
+}
+
 TEST(GraphScanMatcher, CovarianceIsSmallAndPositive) {
     const auto world = toposlam::test::asymmetricRoom();
     const auto laser = toposlam::test::fullCircleLaser();

@@ -294,7 +294,7 @@ void GraphScanMatcher::decide() {
     const bool overlapping = double(evidence.inliers) >= options_.minInlierRatio * scored ||
                              (options_.minVisibleInlierRatio > 0 &&
                               double(evidence.inliers) >= options_.minVisibleInlierRatio * visible);
-    if (best.score.inliers < options_.minInliers || !overlapping ||
+    if (best.score.inliers < minInliers_ || !overlapping ||
         evidence.inlierFraction() < options_.minInlierFraction) {
         r.status = MatchStatus::PoorFit;
     } else if (best.icp.pointsUsed < 3 ||
@@ -365,6 +365,14 @@ const MatchResult& GraphScanMatcher::match(const PolarScan& referenceScan,
     refined_.clear();
     weakDirectionSearched_.reset();
     auto t0 = threadCpuSeconds();
+    // As many inliers as cover the bearing min_inliers cover at the stated beam spacing.
+    const double step = std::abs(currentScan.bearingStep());
+    minInliers_ = options_.minInliers;
+    if (options_.minInliersBearingStep > 0 && step > 0) {
+        minInliers_ = std::max<std::size_t>(
+            1, std::size_t(std::lround(double(options_.minInliers) *
+                                       options_.minInliersBearingStep / step)));
+    }
 
     current_.build(currentFeatures.segments, options_.minSegmentLength, options_.maxSegments);
     reference_.build(referenceFeatures.segments, options_.minSegmentLength, options_.maxSegments);
@@ -499,8 +507,14 @@ void GraphMatcherOptions::declareRefinement(config::OptionsSchema& s) {
 }
 
 void GraphMatcherOptions::declareDecision(config::OptionsSchema& s) {
-    s.integer("min_inliers", minInliers, "", "current points on the reference surface")
+    s.integer("min_inliers", minInliers, "",
+              "current points on the reference surface, for a laser with ...")
         .within(0, 1000000);
+    s.angle("min_inliers_bearing_step", minInliersBearingStep,
+            "... this between beams (other lasers: as many as cover the same bearing; 0: as "
+            "is)")
+        .atLeast(0)
+        .atMost(180);
     s.real("min_inlier_ratio", minInlierRatio, "", "of the scored points (both ways) ...")
         .within(0, 1);
     s.real("min_visible_inlier_ratio", minVisibleInlierRatio, "",

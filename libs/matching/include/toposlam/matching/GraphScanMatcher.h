@@ -28,7 +28,8 @@
 // The result is the pose of the CURRENT scan's sensor in the REFERENCE scan's sensor frame
 // (what MRPT calls the pose of m2 relative to m1), its covariance and the evidence for it.
 // Decision: a pose is returned as reliable only when
-//   - enough of the scans land on each other's surface (inliers >= minInliers, and >=
+//   - enough of the scans land on each other's surface (inliers >= minInliers, scaled to
+//     the current scan's beam spacing, and >=
 //     minInlierRatio of the scored points or >= minVisibleInlierRatio of those inside the
 //     other sensor's field of view: where the robot turned round, the scans share a small
 //     part, but the pose must explain most of that part) and little lands in space the other
@@ -104,8 +105,13 @@ struct GraphMatcherOptions : public config::Options {
     std::size_t houghRefineTop = 12;
     HoughPoseSearchOptions hough;
     // Decision
+    /// Current points on the reference surface, counted for a laser with
+    /// minInliersBearingStep between beams: a laser with other spacing needs as many as cover
+    /// the same bearing (a 1 deg laser half as many, a 0.25 deg one twice as many; at least
+    /// one). 0 = minInliers whatever the laser.
     std::size_t minInliers = 30;
-    double minInlierRatio = 0.25;  ///< of the current scan's valid points
+    double minInliersBearingStep = 0.5 * M_PI / 180;  ///< rad
+    double minInlierRatio = 0.25;                     ///< of the current scan's valid points
     /// ... or of the points inside the other sensor's field of view (0: off).
     double minVisibleInlierRatio = 0;
     double minInlierFraction = 0.90;  ///< inliers / (inliers + free-space violations)
@@ -235,6 +241,7 @@ class GraphScanMatcher {
     std::vector<SegmentMatch> consensus_, best_;
     std::vector<Refined> refined_;
     std::optional<mrpt::poses::CPose2D> weakDirectionSearched_;  // best pose searched last
+    std::size_t minInliers_ = 0;  // options_.minInliers for the current scan's beam spacing
     MatchResult result_;
 };
 

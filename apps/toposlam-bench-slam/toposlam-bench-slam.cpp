@@ -49,7 +49,8 @@ const char* const kDescription =
     "tuned on, with lasers and odometry harder than the public logs'; a table by robot sums "
     "them up (ATE mean, spread, median, worst log). With --keep-every N every log runs with one "
     "scan in N: more motion between two scans, as a slower laser or a faster robot gives; with "
-    "--keep-beam-every N one beam in N: a coarser laser.\n"
+    "--keep-beam-every N one beam in N: a coarser laser; with --clip-range R no reading beyond R "
+    "m: a laser that sees less far.\n"
     "Examples:\n"
     "  toposlam-bench-slam --json b3.json --images b3-img\n"
     "  toposlam-bench-slam --logs intel,office --engines graph,icp-slam --keep b3-runs\n"
@@ -57,6 +58,7 @@ const char* const kDescription =
     "  toposlam-bench-slam --sim-plans office_d,NLB --sim-seeds 1-3 --engines graph\n"
     "  toposlam-bench-slam --logs fr079,intel --keep-every 3\n"
     "  toposlam-bench-slam --logs mit-csail,fr079 --engines graph --keep-beam-every 2\n"
+    "  toposlam-bench-slam --logs intel,fr079,mit-csail --clip-range 5.6\n"
     "Exit status: 0 when every run succeeded (or, with 'B3 skipped: ...' on stderr, when the "
     "benchmark logs are not there); 1 when a run failed (the table says which and why) or on "
     "bad input (missing configuration, plan or a failing simulation); 2 for bad usage (unknown "
@@ -110,6 +112,7 @@ struct Arguments {
     cli::NumberArg<double> timeout;
     cli::NumberArg<std::size_t> keepEvery;
     cli::NumberArg<std::size_t> keepBeamEvery;
+    cli::NumberArg<double> clipRange;
 };
 
 Arguments::Arguments()
@@ -191,7 +194,12 @@ Arguments::Arguments()
                     "Run every log with one beam in N of each scan (toposlam-convert "
                     "--keep-beam-every: a laser with N times the angle between beams), named "
                     "<log>-beams1inN. Default: 1 = every beam",
-                    1, cli::NumberRange<std::size_t>::closed(1, 1000), "N", cmd) {}
+                    1, cli::NumberRange<std::size_t>::closed(1, 1000), "N", cmd),
+      clipRange("", "clip-range",
+                "Run every log with its readings at or beyond this range invalid "
+                "(toposlam-convert --clip-range: a laser that sees less far), named <log>-toRm. "
+                "Default: 0 = as recorded",
+                0.0, cli::NumberRange<double>::nonNegative(1000), "m", cmd) {}
 
 // "/work/wt/../shared/data" -> "/work/shared/data": shorter names in the table.
 std::string tidy(const std::string& path) {
@@ -258,6 +266,7 @@ evaluation::SlamBenchmarkOptions benchmarkOptions(Arguments& a) {
     options.imageDir = a.images.getValue();
     options.keepEvery = a.keepEvery.getValue();
     options.keepBeamEvery = a.keepBeamEvery.getValue();
+    options.clipRange = a.clipRange.getValue();
     evaluation::SlamEngineSetup& setup = options.setup;
     setup.timeoutSeconds = a.timeout.getValue();
     setup.slamConfig = tidy(a.config.getValue());

@@ -70,6 +70,7 @@ struct Arguments {
     cli::NumberArg<std::size_t> maxScans;
     cli::NumberArg<std::size_t> keepEvery;
     cli::NumberArg<std::size_t> keepBeamEvery;
+    cli::NumberArg<double> clipRange;
     cli::NumberArg<double> resolution;
     TCLAP::ValueArg<std::string> origin;
     cli::MapReadingArgs mapReading;
@@ -120,6 +121,11 @@ Arguments::Arguments()
                     "kept beam keeps its direction. Features stored with the scans are left out. "
                     "Default: 1 = every beam",
                     1, cli::NumberRange<std::size_t>::closed(1, 1000), "N", cmd),
+      clipRange("", "clip-range",
+                "Readings at or beyond this range become invalid and the scans' maximum range "
+                "is at most this: the log as a laser that sees less far would have recorded it. "
+                "Default: 0 = as recorded",
+                0.0, cli::NumberRange<double>::nonNegative(1000), "m", cmd),
       resolution(
           "", "resolution",
           "Maps: cell size in m for an input image (overrides its .yaml sidecar). "
@@ -146,7 +152,8 @@ void refuseLogOptions(const Arguments& a) {
         {a.laserOffset.isSet(), "--laser-offset"},
         {a.maxScans.isSet(), "--max-scans"},
         {a.keepEvery.isSet(), "--keep-every"},
-        {a.keepBeamEvery.isSet(), "--keep-beam-every"}};
+        {a.keepBeamEvery.isSet(), "--keep-beam-every"},
+        {a.clipRange.isSet(), "--clip-range"}};
     for (const auto& [set, name] : logOptions) {
         if (set)
             throw cli::UsageError(std::string(name) + " is for laser logs, not grid maps");
@@ -197,6 +204,7 @@ io::LogConversionOptions logOptions(Arguments& a) {
     options.maxScans = a.maxScans.getValue();
     options.keepEvery = a.keepEvery.getValue();
     options.keepBeamEvery = a.keepBeamEvery.getValue();
+    options.clipRange = a.clipRange.getValue();
     return options;
 }
 

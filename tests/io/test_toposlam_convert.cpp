@@ -170,6 +170,29 @@ TEST(ToposlamConvert, KeepEveryNthBeamIsACoarserLaserPointingTheSameWay) {
     }
 }
 
+TEST(ToposlamConvert, ClipRangeIsALaserThatSeesLessFar) {
+    TempDir dir;
+    writeText(dir.file("log.clf"), carmenLog(2));  // readings 2.00 .. 3.80 m, one at 35 m
+    const std::string out = dir.file("short.rawlog");
+    const auto r =
+        runApp("toposlam-convert", dir.file("log.clf") + " -o " + out + " --clip-range 3");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("readings from 3.00 m on invalid"), std::string::npos) << r.output;
+    toposlam::io::LaserLogReader original(dir.file("log.clf")), clipped(out);
+    toposlam::io::LaserLogRecord a, b;
+    ASSERT_TRUE(original.next(a));
+    ASSERT_TRUE(clipped.next(b));
+    ASSERT_EQ(b.scan->getScanSize(), a.scan->getScanSize());
+    EXPECT_FLOAT_EQ(b.scan->maxRange, 3.0f);
+    std::size_t valid = 0;
+    for (std::size_t i = 0; i < a.scan->getScanSize(); ++i) {
+        const bool near = a.scan->getScanRangeValidity(i) && a.scan->getScanRange(i) < 3.0f;
+        EXPECT_EQ(b.scan->getScanRangeValidity(i), near) << i;
+        valid += near;
+    }
+    EXPECT_EQ(valid, 99u);  // 2.00 .. 2.99 m but the 35 m reading among them
+}
+
 TEST(ToposlamConvert, OdometryTrajectoryUsesPrintedStamps) {
     TempDir dir;
     writeText(dir.file("log.clf"), carmenLog(4));

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
 #include <stdexcept>
 #include <thread>
 
@@ -200,21 +201,27 @@ SlamBenchmarkResult SlamBenchmark::run(const io::ProgressCallback& progress) con
 
 namespace {
 
-// `log` with one scan in `keepEvery` and one beam in `keepBeamEvery`, converted into
-// `directory` (io::convertLaserLog).
+// `log` with one scan in `keepEvery`, one beam in `keepBeamEvery` and no reading from
+// `clipRange` on, converted into `directory` (io::convertLaserLog).
 SlamBenchmarkLog thinned(const SlamBenchmarkLog& log, std::size_t keepEvery,
-                         std::size_t keepBeamEvery, const fs::path& directory) {
+                         std::size_t keepBeamEvery, double clipRange, const fs::path& directory) {
     SlamBenchmarkLog out = log;
     if (keepEvery > 1)
         out.name += "-1in" + std::to_string(keepEvery);
     if (keepBeamEvery > 1)
         out.name += "-beams1in" + std::to_string(keepBeamEvery);
+    if (clipRange > 0) {
+        std::ostringstream range;
+        range << clipRange;
+        out.name += "-to" + range.str() + "m";
+    }
     fs::create_directories(directory);
     out.logFile = (directory / (out.name + ".rawlog")).string();
     io::LogConversionOptions conversion;
     conversion.rawlogPath = out.logFile;
     conversion.keepEvery = keepEvery;
     conversion.keepBeamEvery = keepBeamEvery;
+    conversion.clipRange = clipRange;
     io::convertLaserLog(log.logFile, conversion);
     return out;
 }
@@ -234,8 +241,9 @@ SlamBenchmarkLogResult SlamBenchmark::runLog(const SlamBenchmarkLog& recorded,
     Reference reference;
     std::vector<double> stamps;
     try {
-        if (options_.keepEvery > 1 || options_.keepBeamEvery > 1) {
-            log = thinned(recorded, options_.keepEvery, options_.keepBeamEvery, workDirectory);
+        if (options_.keepEvery > 1 || options_.keepBeamEvery > 1 || options_.clipRange > 0) {
+            log = thinned(recorded, options_.keepEvery, options_.keepBeamEvery, options_.clipRange,
+                          workDirectory);
             result.log = log;
         }
         reference = loadReference(log);

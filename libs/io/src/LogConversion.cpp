@@ -34,6 +34,17 @@ mrpt::obs::CObservation2DRangeScan::Ptr keepEveryBeam(
     return out;
 }
 
+mrpt::obs::CObservation2DRangeScan::Ptr clipRange(const mrpt::obs::CObservation2DRangeScan& scan,
+                                                  double range) {
+    auto out = std::make_shared<mrpt::obs::CObservation2DRangeScan>(scan);
+    out->maxRange = static_cast<float>(std::min<double>(scan.maxRange, range));
+    for (std::size_t i = 0; i < out->getScanSize(); ++i) {
+        if (out->getScanRange(i) >= range)
+            out->setScanRangeValidity(i, false);
+    }
+    return out;
+}
+
 LogConversionSummary convertLaserLog(const std::string& inputPath,
                                      const LogConversionOptions& options) {
     LaserLogReader reader(inputPath, options.read);
@@ -54,6 +65,10 @@ LogConversionSummary convertLaserLog(const std::string& inputPath,
         }
         if (options.keepBeamEvery > 1) {
             record.scan = keepEveryBeam(*record.scan, options.keepBeamEvery);
+            record.storedFeatures.reset();
+        }
+        if (options.clipRange > 0) {
+            record.scan = clipRange(*record.scan, options.clipRange);
             record.storedFeatures.reset();
         }
         if (summary.scans == 0) {
@@ -103,6 +118,10 @@ std::string describe(const LogConversionSummary& s, const std::string& inputPath
     }
     if (options.keepBeamEvery > 1)
         text += ", one beam kept in " + std::to_string(options.keepBeamEvery);
+    if (options.clipRange > 0) {
+        std::snprintf(buf, sizeof buf, ", readings from %.2f m on invalid", options.clipRange);
+        text += buf;
+    }
     text += "\n";
     if (!options.rawlogPath.empty()) {
         text += "wrote " + options.rawlogPath + " (" + toString(options.rawlogFormat) +

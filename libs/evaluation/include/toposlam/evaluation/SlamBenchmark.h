@@ -42,6 +42,9 @@ struct SlamBenchmarkOptions {
     /// ... and with one beam in this many of each scan (toposlam-convert --keep-beam-every:
     /// a laser with that many times the angle between beams), named `<log>-beams1in<N>`.
     std::size_t keepBeamEvery = 1;
+    /// ... and with readings at or beyond this range (m) invalid (toposlam-convert
+    /// --clip-range: a laser that sees less far), named `<log>-to<R>m`. 0 = as recorded.
+    double clipRange = 0;
 };
 
 /// One table row: an engine on a log, and its score when it ran.

@@ -32,6 +32,9 @@ struct LogConversionOptions {
     /// its sensor yaw turns to their centre if they are no longer centred). Features stored
     /// with the scans are left out (they were found on every beam). 1 = every beam.
     std::size_t keepBeamEvery = 1;
+    /// Readings at or beyond this range (m) become invalid, and the scan's maxRange is at most
+    /// this: the log as a laser that sees less far would have recorded it. 0 = as recorded.
+    double clipRange = 0;
     /// Called after each scan with (fraction of the input parsed, scans so far).
     ProgressCallback progress;
 };
@@ -51,6 +54,11 @@ struct LogConversionSummary {
 /// keepBeamEvery). A scan of one beam, or keepEvery <= 1, comes back as a copy.
 mrpt::obs::CObservation2DRangeScan::Ptr keepEveryBeam(
     const mrpt::obs::CObservation2DRangeScan& scan, std::size_t keepEvery);
+
+/// `scan` with every reading at or beyond `range` (m) invalid and its maxRange at most `range`
+/// (LogConversionOptions::clipRange).
+mrpt::obs::CObservation2DRangeScan::Ptr clipRange(const mrpt::obs::CObservation2DRangeScan& scan,
+                                                  double range);
 
 /// Throws InputError for bad input, including a log without any (matching) laser scan, and
 /// std::runtime_error when an output cannot be written; no output file is left then.

@@ -133,6 +133,10 @@ bool ScanRegistration::plausibleCorrection(const CPose2D& correction) const {
             std::abs(correction.y()) <= options_.maxLateralCorrection);
 }
 
+bool ScanRegistration::acceptable(const IcpAttempt& attempt, const CPose2D& start) const {
+    return attempt.overlap >= options_.minInlierRatio && plausibleCorrection(attempt.robot - start);
+}
+
 bool ScanRegistration::seesForegroundObjects(const matching::PolarScan& scan) {
     return foreground_.remove(scan, foregroundOptions_, background_) > 0;
 }
@@ -147,7 +151,7 @@ void ScanRegistration::checkAlongHeading(const matching::PolarScan& scan,
         IcpAttempt alt =
             icpFrom(background_, sensorOnRobot, *prediction.submap, prediction.inSubmap);
         const CPose2D altCorrection = alt.robot - prediction.inSubmap;
-        if (alt.overlap >= options_.minInlierRatio && plausibleCorrection(altCorrection)) {
+        if (acceptable(alt, prediction.inSubmap)) {
             // Without the objects ICP keeps most of the odometry's step: they took it back.
             // Or it slid along a corridor: the walls left fix nothing along it.
             const bool keptStep = std::abs(altCorrection.x()) < 0.5 * along;
@@ -194,8 +198,7 @@ bool ScanRegistration::tryIcp(const matching::PolarScan& scan, const CPose2D& se
     // Before judging it: a person ahead can also push the answer beyond the plausible.
     checkAlongHeading(scan, sensorOnRobot, prediction, best, out);
     out.overlap = best.overlap;
-    if (best.overlap < options_.minInlierRatio ||
-        !plausibleCorrection(best.robot - prediction.inSubmap)) {
+    if (!acceptable(best, prediction.inSubmap)) {
         failedIcp_ = best.robot;
         return false;
     }
@@ -278,9 +281,6 @@ const Prediction& ScanRegistration::preferredPrediction(const matching::PolarSca
     // Both found the same pose (then only the size of the odometry's correction is in doubt),
     // or the last motion's fits clearly better, or ICP from the odometry ends where tryIcp()
     // would reject it while from the last motion it passes and fits more of the scan.
-    const auto acceptable = [&](const IcpAttempt& a, const CPose2D& start) {
-        return a.overlap >= options_.minInlierRatio && plausibleCorrection(a.robot - start);
-    };
     const bool onlyMotionPasses =
         !acceptable(fromOdometry, prediction.inSubmap) && acceptable(fromMotion, byMotion) &&
         readingsOnMap(submap.map(), scan, fromMotion.robot + sensorOnRobot) >
@@ -350,7 +350,7 @@ bool ScanRegistration::confirmOnSubmap(const matching::PolarScan& scan,
     // The last keyframe in the submap's frame, as in secondOpinion().
     const CPose2D start = prediction.inSubmap + (-prediction.fromLastKeyframe) + matched;
     const IcpAttempt icp = icpFrom(scan, sensorOnRobot, submap, start);
-    if (icp.overlap < options_.minInlierRatio || !plausibleCorrection(icp.robot - start))
+    if (!acceptable(icp, start))
         return false;
     // Either ICP from the prediction ended there too (rejected only for the size of the
     // correction), or the scan fits clearly better there than where it ended.

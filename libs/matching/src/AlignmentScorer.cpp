@@ -1,4 +1,5 @@
 #include <toposlam/matching/AlignmentScorer.h>
+#include <toposlam/matching/LocalLine.h>
 
 #include <algorithm>
 #include <cmath>
@@ -59,7 +60,6 @@ AlignmentScore scoreAlignment(const PolarScan& reference, const PolarScan& curre
     AlignmentScore s;
     const double c = std::cos(pose.phi()), sn = std::sin(pose.phi());
     const double tol2 = options.inlierDistance * options.inlierDistance;
-    const double stepArc = std::abs(reference.bearingStep());
     const std::size_t stride = std::max<std::size_t>(1, options.stride);
 
     for (std::size_t i = 0; i < current.size(); i += stride) {
@@ -89,7 +89,7 @@ AlignmentScore scoreAlignment(const PolarScan& reference, const PolarScan& curre
             if (prev >= 0) {
                 const mrpt::math::TPoint2D& pq = reference.point(std::size_t(prev));
                 const double join =
-                    options.maxJoinDistance + 3 * stepArc * reference.range(std::size_t(r));
+                    jumpGap(reference, reference.range(std::size_t(r)), options.maxJoinDistance);
                 if ((pq.x - q.x) * (pq.x - q.x) + (pq.y - q.y) * (pq.y - q.y) < join * join) {
                     const double toPiece = squaredDistanceToSegment(qx, qy, pq, q);
                     if (toPiece < best) {

@@ -23,14 +23,13 @@ const double kMedianToSigma = 0.6745 * std::sqrt(1.5);
 double surfaceNoise(const PolarScan& scan, double maxJoinDistance) {
     thread_local std::vector<double> distances;  // reused: no allocation per scan
     distances.clear();
-    const double step = std::abs(scan.bearingStep());
     for (std::size_t b = 1; b + 1 < scan.size(); ++b) {
         if (!scan.valid(b - 1) || !scan.valid(b) || !scan.valid(b + 1))
             continue;
         const mrpt::math::TPoint2D &a = scan.point(b - 1), &p = scan.point(b),
                                    &c = scan.point(b + 1);
         const double ex = c.x - a.x, ey = c.y - a.y, chord = std::hypot(ex, ey);
-        if (chord <= 0 || chord > 2 * (maxJoinDistance + 3 * step * scan.range(b)))
+        if (chord <= 0 || chord > 2 * jumpGap(scan, scan.range(b), maxJoinDistance))
             continue;
         const double mx = p.x - 0.5 * (a.x + c.x), my = p.y - 0.5 * (a.y + c.y);
         distances.push_back(std::abs(mx * ey - my * ex) / chord);
@@ -49,7 +48,7 @@ double localLineReach(double noise) {
 std::optional<LocalLine> fitLocalLine(const PolarScan& scan, std::size_t beam,
                                       double maxJoinDistance, double reach) {
     const mrpt::math::TPoint2D& p = scan.point(beam);
-    const double join = maxJoinDistance + 3 * std::abs(scan.bearingStep()) * scan.range(beam);
+    const double join = jumpGap(scan, scan.range(beam), maxJoinDistance);
     // Neighbours on each side, walking outwards and stopping at a jump or at `reach`.
     double sx = p.x, sy = p.y, sxx = p.x * p.x, sxy = p.x * p.y, syy = p.y * p.y;
     int count = 1;

@@ -134,6 +134,9 @@ class ScanRegistration {
                        const Submap& submap, const mrpt::poses::CPose2D& start);
     /// The correction passes max_correction_distance, _angle and max_lateral_correction.
     bool plausibleCorrection(const mrpt::poses::CPose2D& correction) const;
+    /// ICP that started at `start` passes as a registration: min_inlier_ratio of the scan on
+    /// the map and a plausible correction of `start`.
+    bool acceptable(const IcpAttempt& attempt, const mrpt::poses::CPose2D& start) const;
     /// The checks of a large correction along the heading, on `icp`, ICP from the prediction.
     /// The foreground check (foreground_check): replaced by ICP without the scan's foreground
     /// objects when that keeps less than half of the correction. Then the along-heading check

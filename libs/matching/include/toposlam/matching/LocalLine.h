@@ -13,6 +13,7 @@
 // 8 times the scan's noise on each side (localLineReach), at least 2 beams, at most 16.
 #include <toposlam/matching/PolarScan.h>
 
+#include <cmath>
 #include <cstddef>
 #include <optional>
 
@@ -22,6 +23,12 @@ namespace toposlam::matching {
 struct LocalLine {
     double nx = 0, ny = 0, offset = 0;
 };
+
+/// Two neighbouring readings of `scan` at about `range` (m) farther apart than this (m) lie
+/// across a range jump, not on one surface: maxJoinDistance plus 3 beam arcs.
+inline double jumpGap(const PolarScan& scan, double range, double maxJoinDistance) {
+    return maxJoinDistance + 3 * std::abs(scan.bearingStep()) * range;
+}
 
 /// Robust standard deviation (m) of the scan's readings across the surfaces they lie on: the
 /// median distance of every reading from the chord of its two neighbours (none across a range

@@ -21,6 +21,7 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "SimulatedDrive.h"
 #include "TestSupport.h"
@@ -170,23 +171,31 @@ TEST(CGraphSlamBuilder, AppOutputsAreReadByMrpt) {
 TEST(CGraphSlamBuilder, SummarySaysWhichLoopRulesRan) {
     const test::TempDir dir;
     test::writeRawlog(roomTour(), dir.file("tour.rawlog"));
-    std::string ini = test::readFile(test::configIni("toposlam-slam.ini"));
-    for (const auto& [from, to] :
-         {std::pair<std::string, std::string>{"\nglobal_search_every = 0",
-                                              "\nglobal_search_every = 10"},
-          {"\nloop_contested_support = 0", "\nloop_contested_support = 4"},
-          {"\nodometry_calibration = false", "\nodometry_calibration = true"}}) {
-        const auto at = ini.find(from);
-        ASSERT_NE(at, std::string::npos) << from;
-        ini.replace(at, from.size(), to);
-    }
-    std::ofstream(dir.file("rules-on.ini")) << ini;
+    // The shipped ini has the contested rule on, the other two off.
+    const std::string shipped = test::readFile(test::configIni("toposlam-slam.ini"));
+    const auto edited = [&](std::vector<std::pair<std::string, std::string>> edits,
+                            const std::string& name) {
+        std::string ini = shipped;
+        for (const auto& [from, to] : edits) {
+            const auto at = ini.find(from);
+            EXPECT_NE(at, std::string::npos) << from;
+            if (at != std::string::npos)
+                ini.replace(at, from.size(), to);
+        }
+        std::ofstream(dir.file(name)) << ini;
+        return dir.file(name);
+    };
+    const std::string rulesOn =
+        edited({{"\nglobal_search_every = 0", "\nglobal_search_every = 10"},
+                {"\nodometry_calibration = false", "\nodometry_calibration = true"}},
+               "rules-on.ini");
+    const std::string rulesOff =
+        edited({{"\nloop_contested_support = 4", "\nloop_contested_support = 0"}}, "rules-off.ini");
     for (const bool on : {false, true}) {
         const std::string out = dir.file(on ? "on" : "off");
-        const auto run = test::runApp(
-            "toposlam-slam",
-            "'" + (on ? dir.file("rules-on.ini") : test::configIni("toposlam-slam.ini")) + "' '" +
-                dir.file("tour.rawlog") + "' -o '" + out + "'");
+        const auto run =
+            test::runApp("toposlam-slam", "'" + (on ? rulesOn : rulesOff) + "' '" +
+                                              dir.file("tour.rawlog") + "' -o '" + out + "'");
         ASSERT_EQ(run.exitCode, 0) << run.output;
         const std::string text = test::readFile(out + "/summary.txt");
         const auto loops = io::loadJsonFile(out + "/summary.json").at("loops");

@@ -189,6 +189,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
         stats_.odometryScale = odometryCalibration_.scale();
         stats_.odometryCalibrationDistance = odometryCalibration_.evidenceDistance();
     }
+    doubtSinceKeyframe_ = doubtSinceKeyframe_ || r.method != RegistrationMethod::Icp;
     lastMotion_ = step;
     travelled_ += step.norm();
     turned_ += std::abs(mrpt::math::wrapToPi(step.phi()));
@@ -224,6 +225,7 @@ void GraphSlam::addKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
     kf.sensorOnRobot = CPose2D(scan->sensorPose);
     kf.travelled = travelled_;
     kf.turned = turned_;
+    kf.frontEndDoubt = doubtSinceKeyframe_;
     kf.signature = scanSignature(polar_);
     kf.features = stored;
     if (!kf.features) {
@@ -240,6 +242,7 @@ void GraphSlam::addKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
         addKeyframeEdges(r, keyframes_.back());
     scans_.push_back({keyframes_.back().id, CPose2D(), std::nullopt, 0});
     odometrySinceKeyframe_ = turnSinceKeyframe_ = 0;
+    doubtSinceKeyframe_ = false;
     ++stats_.keyframes;
     updateSubmaps(keyframes_.back());
 

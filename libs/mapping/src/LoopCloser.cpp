@@ -203,6 +203,17 @@ void LoopCloser::acceptContested(const std::vector<Keyframe>& keyframes, const P
     const auto [first, last] = std::minmax_element(currentTravel.begin(), currentTravel.end());
     if (*last <= *first || visits < 2)
         return;
+    // And a front end that doubts its own way from each older keyframe to the current one:
+    // where every scan since was placed by ICP, the graph is as right as its covariances say,
+    // and matches beyond the gate fit a look-alike place (an office entered by its back door).
+    const auto doubted = [&](const Measurement& m) {
+        return std::any_of(keyframes.begin() + long(m.older) + 1,
+                           keyframes.begin() + long(m.current) + 1,
+                           [](const Keyframe& k) { return k.frontEndDoubt; });
+    };
+    if (!std::all_of(best.begin(), best.end(),
+                     [&](std::size_t i) { return doubted(contested_[i]); }))
+        return;
     if (contradicted(best, keyframes, graph, accepted)) {
         std::sort(best.rbegin(), best.rend());
         for (std::size_t i : best)

@@ -114,6 +114,7 @@ class GraphSlam {
     double turned_ = 0;                       ///< rad turned along it (absolute)
     double odometrySinceKeyframe_ = 0;        ///< m by odometry since the last keyframe
     double turnSinceKeyframe_ = 0;            ///< rad by odometry since the last keyframe
+    bool doubtSinceKeyframe_ = false;         ///< a scan since then placed without ICP
     std::size_t loopsWaiting_ = 0;            ///< accepted loops not yet optimised
     std::size_t lastGlobalOptimization_ = 0;  ///< newest keyframe at the last global one
     matching::PolarScan polar_;               ///< the current scan (workspace)

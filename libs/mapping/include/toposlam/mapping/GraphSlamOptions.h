@@ -166,13 +166,12 @@ struct GraphSlamOptions : public config::Options {
     /// Gated matches the gate rejected are kept for loopConfirmWindow keyframes; when this
     /// many of them agree pairwise, from at least two searches and against older keyframes of
     /// at least two visits of the place (runs of the path more than loopMinTravel apart),
+    /// and past a keyframe the front end doubts (Keyframe::frontEndDoubt) after each older one,
     /// they are accepted together: the front end went wrong by more than the drift model
     /// allows (ICP sliding along a corridor, a laser dropout while the wheels slip), and only
-    /// loops can repair it. 0 = never, the default: a look-alike room reached through
-    /// unmapped space gives such groups too (LoopCloser.h, and the test
-    /// GraphSlam.NoLoopIntoALookAlikeOfficeThroughItsBackDoor); 4 for a log whose front end
-    /// is known to fail.
-    std::size_t loopContestedSupport = 0;
+    /// loops can repair it (fr079 at a quarter of its scan rate: 0.157 -> 0.029 m). 0 = never:
+    /// a rejected match stays rejected.
+    std::size_t loopContestedSupport = 4;
 
     // --- Back end ---
     /// Loop edges carry a Cauchy loss of this scale (in standard deviations), so one wrong

@@ -33,6 +33,11 @@ struct Keyframe {
     mrpt::poses::CPose2D sensorOnRobot;  ///< the laser's pose on the robot (2D part)
     double travelled = 0;                ///< m along the estimated trajectory at this keyframe
     double turned = 0;                   ///< rad turned (absolute) along it
+    /// The front end doubts how it got here: this scan or one since the previous keyframe was
+    /// placed without ICP (by the graph matcher, or by odometry alone). Only past such a
+    /// keyframe may the graph be off by more than its covariances say (LoopCloser: contested
+    /// matches).
+    bool frontEndDoubt = false;
     ScanSignature signature{};
 };
 

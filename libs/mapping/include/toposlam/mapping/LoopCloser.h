@@ -19,20 +19,25 @@
 //    their common cycle (pairwise consistency); guess-free matches always need support.
 //    After optimisation the builder withdraws loops whose residual still exceeds a far looser
 //    bound, loopWithdrawChi2 (withdrawWorstOutlier).
-//  - Contested matches (opt-in, loopContestedSupport > 0: a look-alike room reached through
-//    unmapped space passes every guard below): a front-end failure (ICP sliding along a corridor)
-//    can put the robot farther off than the drift model's gate allows, and then every right loop is
-//    rejected. Gate-rejected matches are kept for loopConfirmWindow keyframes; loopContestedSupport
-//    of them that agree pairwise, from two or more searches and against older keyframes of two or
-//    more visits of the place, are accepted together, without the robust loss (through it, a few
-//    loops many sigma off would hardly pull). Matches into a look-alike place (a parallel corridor,
-//    the office next door) agree with each other too: one pass through it gives as many as the
-//    robot takes keyframes there, hence the two visits; and they are dropped when a loop that
-//    passed the gate meanwhile, into the same stretch of the old path, disagrees with them (the
-//    graph was right there), or when one that passed it within the last 2 loopMinTravel of the
-//    path, into the same place (the same stretch, or one an accepted loop joins to it), disagrees
-//    by more than the drift model allows over the path since: the office next to one visited twice,
-//    met a few metres after the loop in the corridor that placed the robot right.
+//  - Contested matches (loopContestedSupport > 0, the default): a front-end failure (a step
+//    neither ICP nor the graph matcher could place, a laser dropout while the wheels slip) can
+//    put the robot farther off than the drift model's gate allows, and then every right loop is
+//    rejected. Gate-rejected matches are kept for loopConfirmWindow keyframes;
+//    loopContestedSupport of them that agree pairwise, from two or more searches and against older
+//    keyframes of two or more visits of the place, are accepted together, without the robust loss
+//    (through it, a few loops many sigma off would hardly pull). Matches into a look-alike place (a
+//    parallel corridor, the office next door) agree with each other too: one pass through it gives
+//    as many as the robot takes keyframes there, hence the two visits; and they are dropped when a
+//    loop that passed the gate meanwhile, into the same stretch of the old path, disagrees with
+//    them (the graph was right there), or when one that passed it within the last 2 loopMinTravel
+//    of the path, into the same place (the same stretch, or one an accepted loop joins to it),
+//    disagrees by more than the drift model allows over the path since: the office next to one
+//    visited twice, met a few metres after the loop in the corridor that placed the robot right.
+//    Above all, a group is taken only past a keyframe the front end doubts (Keyframe::
+//    frontEndDoubt: placed by the graph matcher or the odometry) between each of its older
+//    keyframes and the current one: where ICP placed every scan, the graph is as right as its
+//    covariances say, and matches beyond the gate fit a look-alike (an office entered by its
+//    back door after 30 m of corridors: GraphSlam.NoLoopIntoALookAlikeOfficeThroughItsBackDoor).
 //  Candidates are verified on loopThreads threads, one graph matcher each; the matcher is a
 //  pure function of its inputs, so the loops found do not depend on the number of threads.
 #include <toposlam/mapping/GraphSlamOptions.h>

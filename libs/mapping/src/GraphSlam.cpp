@@ -78,7 +78,8 @@ std::vector<CPose2D> GraphSlam::scanPoses() const {
 
 Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
     Prediction p;
-    CPose2D increment = odometryIncrement.value_or(CPose2D());
+    // Without odometry (a laser-only log) the robot is predicted to move as it last did.
+    CPose2D increment = odometryIncrement.value_or(lastMotion_);
     odometrySinceKeyframe_ += increment.norm();
     turnSinceKeyframe_ += std::abs(mrpt::math::wrapToPi(increment.phi()));
     // A jump is a step beyond the bounds that also departs from the last registered motion by

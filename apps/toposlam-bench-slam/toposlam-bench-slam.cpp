@@ -113,6 +113,7 @@ struct Arguments {
     cli::NumberArg<std::size_t> keepEvery;
     cli::NumberArg<std::size_t> keepBeamEvery;
     cli::NumberArg<double> clipRange;
+    TCLAP::SwitchArg noOdometry;
 };
 
 Arguments::Arguments()
@@ -199,7 +200,11 @@ Arguments::Arguments()
                 "Run every log with its readings at or beyond this range invalid "
                 "(toposlam-convert --clip-range: a laser that sees less far), named <log>-toRm. "
                 "Default: 0 = as recorded",
-                0.0, cli::NumberRange<double>::nonNegative(1000), "m", cmd) {}
+                0.0, cli::NumberRange<double>::nonNegative(1000), "m", cmd),
+      noOdometry("", "no-odometry",
+                 "Run every log without its odometry (toposlam-convert --no-odometry: a "
+                 "laser-only log), named <log>-laseronly",
+                 cmd) {}
 
 // "/work/wt/../shared/data" -> "/work/shared/data": shorter names in the table.
 std::string tidy(const std::string& path) {
@@ -267,6 +272,7 @@ evaluation::SlamBenchmarkOptions benchmarkOptions(Arguments& a) {
     options.keepEvery = a.keepEvery.getValue();
     options.keepBeamEvery = a.keepBeamEvery.getValue();
     options.clipRange = a.clipRange.getValue();
+    options.dropOdometry = a.noOdometry.getValue();
     evaluation::SlamEngineSetup& setup = options.setup;
     setup.timeoutSeconds = a.timeout.getValue();
     setup.slamConfig = tidy(a.config.getValue());

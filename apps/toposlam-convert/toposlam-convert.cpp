@@ -71,6 +71,7 @@ struct Arguments {
     cli::NumberArg<std::size_t> keepEvery;
     cli::NumberArg<std::size_t> keepBeamEvery;
     cli::NumberArg<double> clipRange;
+    TCLAP::SwitchArg noOdometry;
     cli::NumberArg<double> resolution;
     TCLAP::ValueArg<std::string> origin;
     cli::MapReadingArgs mapReading;
@@ -126,6 +127,10 @@ Arguments::Arguments()
                 "is at most this: the log as a laser that sees less far would have recorded it. "
                 "Default: 0 = as recorded",
                 0.0, cli::NumberRange<double>::nonNegative(1000), "m", cmd),
+      noOdometry("", "no-odometry",
+                 "Leave the odometry out: the log as a robot without wheel odometry would have "
+                 "recorded it (a laser-only log)",
+                 cmd),
       resolution(
           "", "resolution",
           "Maps: cell size in m for an input image (overrides its .yaml sidecar). "
@@ -153,7 +158,8 @@ void refuseLogOptions(const Arguments& a) {
         {a.maxScans.isSet(), "--max-scans"},
         {a.keepEvery.isSet(), "--keep-every"},
         {a.keepBeamEvery.isSet(), "--keep-beam-every"},
-        {a.clipRange.isSet(), "--clip-range"}};
+        {a.clipRange.isSet(), "--clip-range"},
+        {a.noOdometry.isSet(), "--no-odometry"}};
     for (const auto& [set, name] : logOptions) {
         if (set)
             throw cli::UsageError(std::string(name) + " is for laser logs, not grid maps");
@@ -190,6 +196,8 @@ io::LogConversionOptions logOptions(Arguments& a) {
     }
     if (a.output.getValue().empty() && a.odometryTrajectory.getValue().empty())
         throw cli::UsageError("nothing to do: give -o and/or --odometry-trajectory");
+    if (a.noOdometry.getValue() && a.odometryTrajectory.isSet())
+        throw cli::UsageError("--no-odometry leaves no odometry for --odometry-trajectory");
     io::LogConversionOptions options;
     options.read.scanLabel = a.label.getValue();
     options.read.carmenDefaultMaxRange = static_cast<float>(a.maxRange.getValue());
@@ -205,6 +213,7 @@ io::LogConversionOptions logOptions(Arguments& a) {
     options.keepEvery = a.keepEvery.getValue();
     options.keepBeamEvery = a.keepBeamEvery.getValue();
     options.clipRange = a.clipRange.getValue();
+    options.dropOdometry = a.noOdometry.getValue();
     return options;
 }
 

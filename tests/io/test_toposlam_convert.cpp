@@ -193,6 +193,40 @@ TEST(ToposlamConvert, ClipRangeIsALaserThatSeesLessFar) {
     EXPECT_EQ(valid, 99u);  // 2.00 .. 2.99 m but the 35 m reading among them
 }
 
+TEST(ToposlamConvert, NoOdometryIsALaserOnlyLogInBothFormats) {
+    TempDir dir;
+    writeText(dir.file("log.clf"), carmenLog(4));
+    for (const std::string format : {"obs", "sf"}) {
+        SCOPED_TRACE(format);
+        const std::string out = dir.file("laser-only-" + format + ".rawlog");
+        const auto r = runApp("toposlam-convert", dir.file("log.clf") + " -o " + out +
+                                                      " --no-odometry --format " + format);
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        EXPECT_NE(r.output.find("odometry left out"), std::string::npos) << r.output;
+        // The same scans, none with odometry (sf: no action, not a zero increment).
+        toposlam::io::LaserLogReader original(dir.file("log.clf")), converted(out);
+        toposlam::io::LaserLogRecord a, b;
+        std::size_t scans = 0;
+        while (original.next(a)) {
+            ASSERT_TRUE(converted.next(b));
+            EXPECT_TRUE(a.hasOdometry);
+            EXPECT_FALSE(b.hasOdometry) << "scan " << scans;
+            EXPECT_EQ(b.scan->getScanSize(), a.scan->getScanSize());
+            EXPECT_EQ(b.scan->getScanRange(0), a.scan->getScanRange(0));
+            ++scans;
+        }
+        EXPECT_FALSE(converted.next(b));
+        EXPECT_EQ(scans, 4u);
+    }
+    // Nothing would be left for an odometry trajectory.
+    const auto r = runApp("toposlam-convert", dir.file("log.clf") + " -o " + dir.file("x.rawlog") +
+                                                  " --no-odometry " + "--odometry-trajectory " +
+                                                  dir.file("odo.txt"));
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("--no-odometry"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir.file("x.rawlog")));
+}
+
 TEST(ToposlamConvert, OdometryTrajectoryUsesPrintedStamps) {
     TempDir dir;
     writeText(dir.file("log.clf"), carmenLog(4));

@@ -284,6 +284,7 @@ TEST(GraphSlam, MapsALaserOnlyLog) {
     auto drive = test::simulateDrive(ringCorridor(), truth, {}, 3);
     drive.odometry.clear();
     const SlamRun run = runSlam(drive);
+    EXPECT_EQ(run.slam->statistics().scansWithoutOdometry, drive.scans.size() - 1);
     EXPECT_GT(run.slam->statistics().registeredShare(), 0.95);
     EXPECT_GE(run.slam->statistics().loopsAccepted, 1u);
     // As with odometry (ClosesALongLoopAfterOdometryDrift): 5 noise sigmas.

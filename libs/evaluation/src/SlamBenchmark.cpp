@@ -201,10 +201,11 @@ SlamBenchmarkResult SlamBenchmark::run(const io::ProgressCallback& progress) con
 
 namespace {
 
-// `log` with one scan in `keepEvery`, one beam in `keepBeamEvery` and no reading from
-// `clipRange` on, converted into `directory` (io::convertLaserLog).
+// `log` with one scan in `keepEvery`, one beam in `keepBeamEvery`, no reading from `clipRange`
+// on and, with `dropOdometry`, no odometry, converted into `directory` (io::convertLaserLog).
 SlamBenchmarkLog thinned(const SlamBenchmarkLog& log, std::size_t keepEvery,
-                         std::size_t keepBeamEvery, double clipRange, const fs::path& directory) {
+                         std::size_t keepBeamEvery, double clipRange, bool dropOdometry,
+                         const fs::path& directory) {
     SlamBenchmarkLog out = log;
     if (keepEvery > 1)
         out.name += "-1in" + std::to_string(keepEvery);
@@ -215,6 +216,8 @@ SlamBenchmarkLog thinned(const SlamBenchmarkLog& log, std::size_t keepEvery,
         range << clipRange;
         out.name += "-to" + range.str() + "m";
     }
+    if (dropOdometry)
+        out.name += "-laseronly";
     fs::create_directories(directory);
     out.logFile = (directory / (out.name + ".rawlog")).string();
     io::LogConversionOptions conversion;
@@ -222,6 +225,7 @@ SlamBenchmarkLog thinned(const SlamBenchmarkLog& log, std::size_t keepEvery,
     conversion.keepEvery = keepEvery;
     conversion.keepBeamEvery = keepBeamEvery;
     conversion.clipRange = clipRange;
+    conversion.dropOdometry = dropOdometry;
     io::convertLaserLog(log.logFile, conversion);
     return out;
 }
@@ -241,9 +245,10 @@ SlamBenchmarkLogResult SlamBenchmark::runLog(const SlamBenchmarkLog& recorded,
     Reference reference;
     std::vector<double> stamps;
     try {
-        if (options_.keepEvery > 1 || options_.keepBeamEvery > 1 || options_.clipRange > 0) {
+        if (options_.keepEvery > 1 || options_.keepBeamEvery > 1 || options_.clipRange > 0 ||
+            options_.dropOdometry) {
             log = thinned(recorded, options_.keepEvery, options_.keepBeamEvery, options_.clipRange,
-                          workDirectory);
+                          options_.dropOdometry, workDirectory);
             result.log = log;
         }
         reference = loadReference(log);

@@ -71,6 +71,8 @@ LogConversionSummary convertLaserLog(const std::string& inputPath,
             record.scan = clipRange(*record.scan, options.clipRange);
             record.storedFeatures.reset();
         }
+        if (options.dropOdometry)
+            record.hasOdometry = false;
         if (summary.scans == 0) {
             summary.beamsPerScan = record.scan->getScanSize();
             summary.firstStamp = record.fileStamp;
@@ -110,7 +112,9 @@ std::string describe(const LogConversionSummary& s, const std::string& inputPath
     std::string text = inputPath + buf;
     if (s.adjustedTimestamps > 0)
         text += ", " + std::to_string(s.adjustedTimestamps) + " timestamps repaired";
-    if (s.scansWithoutOdometry > 0)
+    if (options.dropOdometry)
+        text += ", odometry left out";
+    else if (s.scansWithoutOdometry > 0)
         text += ", " + std::to_string(s.scansWithoutOdometry) + " scans without odometry";
     if (s.scansLeftOut > 0) {
         text += ", " + std::to_string(s.scansLeftOut) + " scans left out (one kept in " +

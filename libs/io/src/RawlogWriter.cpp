@@ -74,19 +74,20 @@ void RawlogWriter::writeRecord(const LaserLogRecord& record) {
         ++impl_->objects;
         return;
     }
-    // Increment in the previous robot frame: previous^-1 (+) current.
-    mrpt::poses::CPose2D increment;
+    // Increment in the previous robot frame: previous^-1 (+) current. A scan without odometry
+    // gets no action at all (a zero increment would read as a robot standing still).
+    mrpt::obs::CActionCollection actions;
     if (record.hasOdometry) {
+        mrpt::poses::CPose2D increment;
         if (impl_->previousOdometry)
             increment = record.odometry - *impl_->previousOdometry;
         impl_->previousOdometry = record.odometry;
+        mrpt::obs::CActionRobotMovement2D movement;
+        movement.computeFromOdometry(increment,
+                                     mrpt::obs::CActionRobotMovement2D::TMotionModelOptions());
+        movement.timestamp = record.scan->timestamp;
+        actions.insert(movement);
     }
-    mrpt::obs::CActionRobotMovement2D movement;
-    movement.computeFromOdometry(increment,
-                                 mrpt::obs::CActionRobotMovement2D::TMotionModelOptions());
-    movement.timestamp = record.scan->timestamp;
-    mrpt::obs::CActionCollection actions;
-    actions.insert(movement);
     mrpt::obs::CSensoryFrame frame;
     frame.insert(record.scan);
     archive << actions << frame;

@@ -80,6 +80,7 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
     Prediction p;
     // Without odometry (a laser-only log) the robot is predicted to move as it last did.
     CPose2D increment = odometryIncrement.value_or(lastMotion_);
+    stats_.scansWithoutOdometry += !odometryIncrement;
     odometrySinceKeyframe_ += increment.norm();
     turnSinceKeyframe_ += std::abs(mrpt::math::wrapToPi(increment.phi()));
     // A jump is a step beyond the bounds that also departs from the last registered motion by

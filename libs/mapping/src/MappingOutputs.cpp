@@ -30,6 +30,23 @@ std::string line(const char* format, ...) {
 double percent(std::size_t part, std::size_t whole) {
     return whole > 0 ? 100.0 * double(part) / double(whole) : 0.0;
 }
+
+// How the odometry's distances were taken (odometry_calibration).
+std::string odometryLine(const MappingResult& r, const SlamStatistics& st) {
+    if (!r.odometryCalibration)
+        return line("odometry: distances as read (odometry_calibration off)");
+    if (st.odometryScale == 1.0) {
+        return line(
+            "odometry: distances as read (%.1f m of well-registered motion, fewer than "
+            "odometry_calibration_min_distance)",
+            st.odometryCalibrationDistance);
+    }
+    return line(
+        "odometry: distances scaled by %.4f, learnt from %.0f m of well-registered motion (the "
+        "odometry reads %.1f %% %s)",
+        st.odometryScale, st.odometryCalibrationDistance,
+        100.0 * std::abs(1.0 / st.odometryScale - 1.0), st.odometryScale < 1.0 ? "long" : "short");
+}
 }  // namespace
 
 bool mostlyUnregistered(const MappingResult& result) {
@@ -81,20 +98,13 @@ std::string formatSummary(const MappingResult& r) {
             st->registeredByGraphMatcher, percent(st->registeredByGraphMatcher, n),
             st->graphMatcherConfirmed, st->registrationFailed, percent(st->registrationFailed, n),
             st->odometryJumps, st->lastMotionPredictions);
-        if (!r.odometryCalibration)
-            s += line("odometry: distances as read (odometry_calibration off)");
-        else if (st->odometryScale == 1.0)
+        if (st->scansWithoutOdometry > 0)
             s += line(
-                "odometry: distances as read (%.1f m of well-registered motion, fewer than "
-                "odometry_calibration_min_distance)",
-                st->odometryCalibrationDistance);
-        else
-            s += line(
-                "odometry: distances scaled by %.4f, learnt from %.0f m of well-registered "
-                "motion (the odometry reads %.1f %% %s)",
-                st->odometryScale, st->odometryCalibrationDistance,
-                100.0 * std::abs(1.0 / st->odometryScale - 1.0),
-                st->odometryScale < 1.0 ? "long" : "short");
+                "odometry: none for %zu of %zu scans, each of them predicted by the "
+                "robot's last registered motion",
+                st->scansWithoutOdometry, n);
+        if (st->scansWithoutOdometry < n)  // a laser-only log has nothing to calibrate
+            s += odometryLine(r, *st);
         // A rule that is off says so, instead of a count that could not be anything but 0.
         const std::string guessFree =
             r.guessFreeSearch ? std::to_string(st->globalConfirmed) + " of them guess-free"
@@ -175,7 +185,8 @@ nlohmann::json summaryJson(const MappingResult& r) {
                  {"held", c.held}});
         }
         j["registration"]["along_heading_checks"] = std::move(checks);
-        j["odometry"] = {{"calibration", r.odometryCalibration},
+        j["odometry"] = {{"scans_without", st->scansWithoutOdometry},
+                         {"calibration", r.odometryCalibration},
                          {"distance_scale", st->odometryScale},
                          {"calibration_distance_m", st->odometryCalibrationDistance}};
         j["loops"] = {{"candidates", st->loopCandidates},

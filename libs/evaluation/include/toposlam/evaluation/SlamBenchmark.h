@@ -45,6 +45,9 @@ struct SlamBenchmarkOptions {
     /// ... and with readings at or beyond this range (m) invalid (toposlam-convert
     /// --clip-range: a laser that sees less far), named `<log>-to<R>m`. 0 = as recorded.
     double clipRange = 0;
+    /// ... and without its odometry (toposlam-convert --no-odometry: a laser-only log), named
+    /// `<log>-laseronly`.
+    bool dropOdometry = false;
 };
 
 /// One table row: an engine on a log, and its score when it ran.

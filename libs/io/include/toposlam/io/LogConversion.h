@@ -35,6 +35,10 @@ struct LogConversionOptions {
     /// Readings at or beyond this range (m) become invalid, and the scan's maxRange is at most
     /// this: the log as a laser that sees less far would have recorded it. 0 = as recorded.
     double clipRange = 0;
+    /// Leave the odometry out: the log as a robot without wheel odometry (a laser-only log)
+    /// would have recorded it. Observations format: no CObservationOdometry; sensory frames:
+    /// empty action collections.
+    bool dropOdometry = false;
     /// Called after each scan with (fraction of the input parsed, scans so far).
     ProgressCallback progress;
 };

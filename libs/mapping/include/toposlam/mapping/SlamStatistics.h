@@ -45,6 +45,9 @@ struct SlamStatistics {
     std::size_t lastMotionPredictions = 0;
     std::size_t registrationFailed = 0;  ///< both failed: odometry prediction kept
     std::size_t odometryJumps = 0;       ///< odometry increments rejected as jumps
+    /// Scans that came without an odometry increment (a laser-only log), each predicted by
+    /// the robot's last registered motion instead.
+    std::size_t scansWithoutOdometry = 0;
     /// Distance scale applied to the odometry at the end (odometry_calibration; 1 = none),
     /// and the odometry distance of the well-registered scans it was learnt from (m).
     double odometryScale = 1.0;

@@ -168,7 +168,7 @@ struct GraphSlamOptions : public config::Options {
     /// at least two visits of the place (runs of the path more than loopMinTravel apart),
     /// and past a keyframe the front end doubts (Keyframe::frontEndDoubt) after each older one,
     /// they are accepted together: the front end went wrong by more than the drift model
-    /// allows (ICP sliding along a corridor, a laser dropout while the wheels slip), and only
+    /// allows (a step no registration could place, a laser dropout while the wheels slip), and only
     /// loops can repair it (fr079 at a quarter of its scan rate: 0.157 -> 0.029 m). 0 = never:
     /// a rejected match stays rejected.
     std::size_t loopContestedSupport = 4;

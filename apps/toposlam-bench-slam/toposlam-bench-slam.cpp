@@ -269,10 +269,10 @@ evaluation::SlamBenchmarkOptions benchmarkOptions(Arguments& a) {
     options.engines = parseEngines(a.engines.getValue());
     options.keepDir = a.keep.getValue();
     options.imageDir = a.images.getValue();
-    options.keepEvery = a.keepEvery.getValue();
-    options.keepBeamEvery = a.keepBeamEvery.getValue();
-    options.clipRange = a.clipRange.getValue();
-    options.dropOdometry = a.noOdometry.getValue();
+    options.alteration.keepEvery = a.keepEvery.getValue();
+    options.alteration.keepBeamEvery = a.keepBeamEvery.getValue();
+    options.alteration.clipRange = a.clipRange.getValue();
+    options.alteration.dropOdometry = a.noOdometry.getValue();
     evaluation::SlamEngineSetup& setup = options.setup;
     setup.timeoutSeconds = a.timeout.getValue();
     setup.slamConfig = tidy(a.config.getValue());

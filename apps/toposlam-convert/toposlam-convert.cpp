@@ -210,10 +210,10 @@ io::LogConversionOptions logOptions(Arguments& a) {
                                                        : io::RawlogFormat::Observations;
     options.odometryTrajectoryPath = a.odometryTrajectory.getValue();
     options.maxScans = a.maxScans.getValue();
-    options.keepEvery = a.keepEvery.getValue();
-    options.keepBeamEvery = a.keepBeamEvery.getValue();
-    options.clipRange = a.clipRange.getValue();
-    options.dropOdometry = a.noOdometry.getValue();
+    options.alteration.keepEvery = a.keepEvery.getValue();
+    options.alteration.keepBeamEvery = a.keepBeamEvery.getValue();
+    options.alteration.clipRange = a.clipRange.getValue();
+    options.alteration.dropOdometry = a.noOdometry.getValue();
     return options;
 }
 

@@ -757,10 +757,10 @@ TEST(GraphSlam, IntelHoldsTogetherWhenLoopsAreSearchedLessOften) {
     EXPECT_GE(held, result.statistics->icpHeldAlongHeading);
 }
 
-/// `log` thinned as `conversion` says (keepEvery, keepBeamEvery: as a laser with a lower
-/// scan rate or wider-spaced beams would record it), mapped with the shipped settings and
-/// scored on `relations` (those whose stamps it keeps, at least `minMatched`): mean error
-/// below `maxMean`, no relation beyond `maxWorst` (m).
+/// `log` thinned as `conversion` says (alteration.keepEvery, alteration.keepBeamEvery: as a laser
+/// with a lower scan rate or wider-spaced beams would record it), mapped with the shipped settings
+/// and scored on `relations` (those whose stamps it keeps, at least `minMatched`): mean error below
+/// `maxMean`, no relation beyond `maxWorst` (m).
 void expectMappedWhenThinned(const std::string& log, const std::string& relations,
                              io::LogConversionOptions conversion, std::size_t minMatched,
                              double maxMean, double maxWorst) {
@@ -780,7 +780,7 @@ void expectMappedWhenThinned(const std::string& log, const std::string& relation
 void expectMappedAtAThirdOfTheScans(const std::string& log, const std::string& relations,
                                     std::size_t minMatched) {
     io::LogConversionOptions third;
-    third.keepEvery = 3;
+    third.alteration.keepEvery = 3;
     expectMappedWhenThinned(log, relations, third, minMatched, 0.1, 0.3);
 }
 
@@ -806,7 +806,7 @@ TEST(GraphSlam, Fr079HoldsTogetherAtAQuarterOfItsScanRate) {
     TOPOSLAM_SHARED_DATA_OR_SKIP(log, "slam/fr079.clf");
     TOPOSLAM_SHARED_DATA_OR_SKIP(relations, "slam/fr079.relations");
     io::LogConversionOptions quarter;
-    quarter.keepEvery = 4;
+    quarter.alteration.keepEvery = 4;
     expectMappedWhenThinned(log, relations, quarter, 200, 0.05, 0.3);  // 211 of 1685 kept
 }
 
@@ -829,7 +829,7 @@ TEST(GraphSlam, MitCsailHoldsTogetherWithEveryOtherBeam) {
     TOPOSLAM_SHARED_DATA_OR_SKIP(log, "slam/mit-csail.clf");
     TOPOSLAM_SHARED_DATA_OR_SKIP(relations, "slam/mit-csail.relations");
     io::LogConversionOptions everyOtherBeam;
-    everyOtherBeam.keepBeamEvery = 2;
+    everyOtherBeam.alteration.keepBeamEvery = 2;
     expectMappedWhenThinned(log, relations, everyOtherBeam, 1172, 0.05, 0.5);
 }
 

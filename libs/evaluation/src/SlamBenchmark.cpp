@@ -201,31 +201,26 @@ SlamBenchmarkResult SlamBenchmark::run(const io::ProgressCallback& progress) con
 
 namespace {
 
-// `log` with one scan in `keepEvery`, one beam in `keepBeamEvery`, no reading from `clipRange`
-// on and, with `dropOdometry`, no odometry, converted into `directory` (io::convertLaserLog).
-SlamBenchmarkLog thinned(const SlamBenchmarkLog& log, std::size_t keepEvery,
-                         std::size_t keepBeamEvery, double clipRange, bool dropOdometry,
+// `log` as `alteration` changes it, converted into `directory` (io::convertLaserLog).
+SlamBenchmarkLog altered(const SlamBenchmarkLog& log, const io::LogAlteration& alteration,
                          const fs::path& directory) {
     SlamBenchmarkLog out = log;
-    if (keepEvery > 1)
-        out.name += "-1in" + std::to_string(keepEvery);
-    if (keepBeamEvery > 1)
-        out.name += "-beams1in" + std::to_string(keepBeamEvery);
-    if (clipRange > 0) {
+    if (alteration.keepEvery > 1)
+        out.name += "-1in" + std::to_string(alteration.keepEvery);
+    if (alteration.keepBeamEvery > 1)
+        out.name += "-beams1in" + std::to_string(alteration.keepBeamEvery);
+    if (alteration.clipRange > 0) {
         std::ostringstream range;
-        range << clipRange;
+        range << alteration.clipRange;
         out.name += "-to" + range.str() + "m";
     }
-    if (dropOdometry)
+    if (alteration.dropOdometry)
         out.name += "-laseronly";
     fs::create_directories(directory);
     out.logFile = (directory / (out.name + ".rawlog")).string();
     io::LogConversionOptions conversion;
     conversion.rawlogPath = out.logFile;
-    conversion.keepEvery = keepEvery;
-    conversion.keepBeamEvery = keepBeamEvery;
-    conversion.clipRange = clipRange;
-    conversion.dropOdometry = dropOdometry;
+    conversion.alteration = alteration;
     io::convertLaserLog(log.logFile, conversion);
     return out;
 }
@@ -245,10 +240,8 @@ SlamBenchmarkLogResult SlamBenchmark::runLog(const SlamBenchmarkLog& recorded,
     Reference reference;
     std::vector<double> stamps;
     try {
-        if (options_.keepEvery > 1 || options_.keepBeamEvery > 1 || options_.clipRange > 0 ||
-            options_.dropOdometry) {
-            log = thinned(recorded, options_.keepEvery, options_.keepBeamEvery, options_.clipRange,
-                          options_.dropOdometry, workDirectory);
+        if (options_.alteration.any()) {
+            log = altered(recorded, options_.alteration, workDirectory);
             result.log = log;
         }
         reference = loadReference(log);

@@ -56,22 +56,22 @@ LogConversionSummary convertLaserLog(const std::string& inputPath,
     summary.inputFormat = reader.format();
     Trajectory2D odometry;
     LaserLogRecord record;
-    const std::size_t keepEvery = std::max<std::size_t>(1, options.keepEvery);
+    const std::size_t keepEvery = std::max<std::size_t>(1, options.alteration.keepEvery);
     for (std::size_t read = 0;
          (options.maxScans == 0 || read < options.maxScans) && reader.next(record); ++read) {
         if (read % keepEvery != 0) {
             ++summary.scansLeftOut;
             continue;
         }
-        if (options.keepBeamEvery > 1) {
-            record.scan = keepEveryBeam(*record.scan, options.keepBeamEvery);
+        if (options.alteration.keepBeamEvery > 1) {
+            record.scan = keepEveryBeam(*record.scan, options.alteration.keepBeamEvery);
             record.storedFeatures.reset();
         }
-        if (options.clipRange > 0) {
-            record.scan = clipRange(*record.scan, options.clipRange);
+        if (options.alteration.clipRange > 0) {
+            record.scan = clipRange(*record.scan, options.alteration.clipRange);
             record.storedFeatures.reset();
         }
-        if (options.dropOdometry)
+        if (options.alteration.dropOdometry)
             record.hasOdometry = false;
         if (summary.scans == 0) {
             summary.beamsPerScan = record.scan->getScanSize();
@@ -112,18 +112,19 @@ std::string describe(const LogConversionSummary& s, const std::string& inputPath
     std::string text = inputPath + buf;
     if (s.adjustedTimestamps > 0)
         text += ", " + std::to_string(s.adjustedTimestamps) + " timestamps repaired";
-    if (options.dropOdometry)
+    if (options.alteration.dropOdometry)
         text += ", odometry left out";
     else if (s.scansWithoutOdometry > 0)
         text += ", " + std::to_string(s.scansWithoutOdometry) + " scans without odometry";
     if (s.scansLeftOut > 0) {
         text += ", " + std::to_string(s.scansLeftOut) + " scans left out (one kept in " +
-                std::to_string(options.keepEvery) + ")";
+                std::to_string(options.alteration.keepEvery) + ")";
     }
-    if (options.keepBeamEvery > 1)
-        text += ", one beam kept in " + std::to_string(options.keepBeamEvery);
-    if (options.clipRange > 0) {
-        std::snprintf(buf, sizeof buf, ", readings from %.2f m on invalid", options.clipRange);
+    if (options.alteration.keepBeamEvery > 1)
+        text += ", one beam kept in " + std::to_string(options.alteration.keepBeamEvery);
+    if (options.alteration.clipRange > 0) {
+        std::snprintf(buf, sizeof buf, ", readings from %.2f m on invalid",
+                      options.alteration.clipRange);
         text += buf;
     }
     text += "\n";

@@ -7,6 +7,7 @@
 // factor, peak RSS, and the loop closures of TopoSLAM's graph engine (SlamBenchmarkReport.h).
 #include <toposlam/evaluation/SlamEngineRun.h>
 #include <toposlam/evaluation/SlamEvaluation.h>
+#include <toposlam/io/LogConversion.h>
 #include <toposlam/io/ProgressCallback.h>
 
 #include <cstddef>
@@ -35,19 +36,11 @@ struct SlamBenchmarkOptions {
     /// (the trajectories aligned on one plot) into this folder; "" = none.
     std::string imageDir;
     double stampTolerance = StampedPoseLookup::kDefaultTolerance;
-    /// Run every log with one scan in this many (toposlam-convert --keep-every: the log as a
-    /// laser with a lower scan rate would have recorded it), named `<log>-1in<N>`; scored on
-    /// the reference's relations between kept scans. 1 = the logs as recorded.
-    std::size_t keepEvery = 1;
-    /// ... and with one beam in this many of each scan (toposlam-convert --keep-beam-every:
-    /// a laser with that many times the angle between beams), named `<log>-beams1in<N>`.
-    std::size_t keepBeamEvery = 1;
-    /// ... and with readings at or beyond this range (m) invalid (toposlam-convert
-    /// --clip-range: a laser that sees less far), named `<log>-to<R>m`. 0 = as recorded.
-    double clipRange = 0;
-    /// ... and without its odometry (toposlam-convert --no-odometry: a laser-only log), named
-    /// `<log>-laseronly`.
-    bool dropOdometry = false;
+    /// Run every log as another robot would have recorded it (toposlam-convert --keep-every,
+    /// --keep-beam-every, --clip-range, --no-odometry), named `<log>-1in<N>`,
+    /// `<log>-beams1in<N>`, `<log>-to<R>m`, `<log>-laseronly`; scored on the reference's
+    /// relations between kept scans. The default: the logs as recorded.
+    io::LogAlteration alteration;
 };
 
 /// One table row: an engine on a log, and its score when it ran.
@@ -101,7 +94,8 @@ class SlamBenchmark {
     SlamBenchmarkResult run(const io::ProgressCallback& progress = {}) const;
 
   private:
-    /// `recorded`, or with one scan in keepEvery (converted into workDirectory), run and scored.
+    /// `recorded`, or as options.alteration changes it (converted into workDirectory), run and
+    /// scored.
     SlamBenchmarkLogResult runLog(const SlamBenchmarkLog& recorded,
                                   const std::string& workDirectory,
                                   const io::ProgressCallback& progress, std::size_t& done,

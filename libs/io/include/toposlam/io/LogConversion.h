@@ -11,17 +11,9 @@
 
 namespace toposlam::io {
 
-struct LogConversionOptions {
-    LaserLogOptions read;
-    /// Output rawlog ("" = none); gzip-compressed if it ends in ".gz".
-    std::string rawlogPath;
-    RawlogFormat rawlogFormat = RawlogFormat::Observations;
-    /// Output trajectory ("" = none): the odometry at each scan as "fileStamp x y yaw"
-    /// (Trajectory.h). The stamps are the scans' fileStamps, so relation files match them.
-    /// Scans without odometry are left out.
-    std::string odometryTrajectoryPath;
-    /// Read only the first this many scans of the input (0 = all).
-    std::size_t maxScans = 0;
+/// What a conversion changes in the log, each as another robot would have recorded it (the
+/// defaults change nothing).
+struct LogAlteration {
     /// Keep one scan in this many (the first, then every keepEvery-th): the log as a laser
     /// with a lower scan rate would have recorded it. The odometry is the pose at each kept
     /// scan, so an increment spans the scans left out. 1 = every scan.
@@ -39,6 +31,24 @@ struct LogConversionOptions {
     /// would have recorded it. Observations format: no CObservationOdometry; sensory frames:
     /// empty action collections.
     bool dropOdometry = false;
+
+    /// Whether any of the above changes the log.
+    bool any() const { return keepEvery > 1 || keepBeamEvery > 1 || clipRange > 0 || dropOdometry; }
+};
+
+struct LogConversionOptions {
+    LaserLogOptions read;
+    /// Output rawlog ("" = none); gzip-compressed if it ends in ".gz".
+    std::string rawlogPath;
+    RawlogFormat rawlogFormat = RawlogFormat::Observations;
+    /// Output trajectory ("" = none): the odometry at each scan as "fileStamp x y yaw"
+    /// (Trajectory.h). The stamps are the scans' fileStamps, so relation files match them.
+    /// Scans without odometry are left out.
+    std::string odometryTrajectoryPath;
+    /// Read only the first this many scans of the input (0 = all).
+    std::size_t maxScans = 0;
+    /// What to change in the log (as recorded by default).
+    LogAlteration alteration;
     /// Called after each scan with (fraction of the input parsed, scans so far).
     ProgressCallback progress;
 };
@@ -54,13 +64,13 @@ struct LogConversionSummary {
     double firstStamp = 0, lastStamp = 0;  ///< fileStamps, s
 };
 
-/// `scan` with one beam in `keepEvery` kept, each in its own direction (LogConversionOptions::
+/// `scan` with one beam in `keepEvery` kept, each in its own direction (LogAlteration::
 /// keepBeamEvery). A scan of one beam, or keepEvery <= 1, comes back as a copy.
 mrpt::obs::CObservation2DRangeScan::Ptr keepEveryBeam(
     const mrpt::obs::CObservation2DRangeScan& scan, std::size_t keepEvery);
 
 /// `scan` with every reading at or beyond `range` (m) invalid and its maxRange at most `range`
-/// (LogConversionOptions::clipRange).
+/// (LogAlteration::clipRange).
 mrpt::obs::CObservation2DRangeScan::Ptr clipRange(const mrpt::obs::CObservation2DRangeScan& scan,
                                                   double range);
 

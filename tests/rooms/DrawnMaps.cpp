@@ -348,25 +348,43 @@ DrawnMap cabinetPocket() {
     return m;
 }
 
-DrawnMap cubicles() {
+// A 13.2 x 8 m hall with three 3.2 x 2.4 m cubicles along its top wall (x in [1.2, 4.4],
+// [4.5, 7.7], [7.8, 11.0], y in [6.6, 9]; partitions 0.1 m), each cubicle's front a stub of
+// `stub` m on both sides of its opening (y in [6.5, 6.6]). `post(x0, x1, front)` may add
+// obstacles around each front.
+template <typename Post>
+DrawnMap cubicleRow(double stub, Post post) {
     DrawnMap m;
     m.image = cv::Mat(200, 300, CV_8U, cv::Scalar(128));
     cv::Mat& img = m.image;
     fill(img, 1, 1, 14.4, 9.2, 0);
     fill(img, 1.2, 1.2, 14.2, 9, 255);
-    // Cubicles x in [1.2, 4.4], [4.5, 7.7], [7.8, 11.0], y in [6.6, 9]; partitions 0.1 m.
-    const double front = 6.5;  // front stubs y in [6.5, 6.6]
+    const double front = 6.5;
     for (double x : {4.4, 7.7, 11.0})
         fill(img, x, front, x + 0.1, 9, 0);
     for (double x0 : {1.2, 4.5, 7.8}) {
         const double x1 = x0 + 3.2;
-        fill(img, x0, front, x0 + 0.6, front + 0.1, 0);  // stubs on both sides of the opening
-        fill(img, x1 - 0.6, front, x1, front + 0.1, 0);
-        m.doors.push_back({{0.5 * (x0 + x1), front + 0.05}, 2.0});
+        fill(img, x0, front, x0 + stub, front + 0.1, 0);
+        fill(img, x1 - stub, front, x1, front + 0.1, 0);
+        post(img, x0 + stub, x1 - stub, front);
+        m.doors.push_back({{0.5 * (x0 + x1), front + 0.05}, 3.2 - 2 * stub});
         m.rooms.push_back({0.5 * (x0 + x1), 8});
     }
     m.rooms.push_back({7, 3});
     return m;
+}
+
+DrawnMap cubicles() {
+    return cubicleRow(0.6, [](cv::Mat&, double, double, double) {});
+}
+
+DrawnMap raggedCubicles() {
+    // Two posts 0.2 m back from the stubs' ends (a, b), on either side of the front: the
+    // nearest obstacles to the opening's middle, off every straight cut through the opening.
+    return cubicleRow(0.75, [](cv::Mat& img, double a, double b, double front) {
+        fill(img, a + 0.1, front + 0.3, a + 0.25, front + 0.45, 0);
+        fill(img, b - 0.25, front - 0.35, b - 0.1, front - 0.2, 0);
+    });
 }
 
 DrawnMap doubleDoors() {

@@ -56,6 +56,12 @@ DrawnMap singleRoom();
 /// partitions with 0.6 m stubs at the front, so each cubicle opens to the hall through 2.0 m
 /// framed by wall ends (wider than any door). 4 rooms, 3 openings.
 DrawnMap cubicles();
+/// cubicles() with 0.75 m stubs and posts 0.2 m back from the stubs' ends, the left one on the
+/// cubicle's side, the right one on the hall's (as a SLAM grid draws ragged wall ends, or a
+/// plant beside an opening): the middle of each 1.7 m opening lies 0.65 m from an obstacle,
+/// nearer than half its width, and no straight cut between the posts is door-wide and framed by
+/// walls. 4 rooms, 3 openings.
+DrawnMap raggedCubicles();
 /// A 2 m corridor below four rooms in a row, each entered through a double door in the
 /// corridor's 0.1 m wall: clear openings 1.45, 1.5, 1.55 and 1.6 m, around the widest door
 /// (1.6 m between the jamb cells' centres is the 1.55 m one). 5 rooms, 4 doors.

@@ -151,7 +151,7 @@ DoorFilters::Rooms RoomSegmenter::findRooms(const FreeSpace& space,
     std::vector<std::pair<double, double>> widths = {
         {door.doorWidth - door.doorWidthTolerance, door.doorWidth + door.doorWidthTolerance}};
     if (medialAxis && ws.wide.searches())
-        widths.push_back(ws.wide.widths());
+        widths.push_back(ws.wide.axisWidths());
     const std::vector<std::vector<cv::Point>> axes =
         medialAxis ? DoorSearchPaths::fromMedialAxis(space, ws.clearance, widths)
                    : std::vector<std::vector<cv::Point>>{};

@@ -36,6 +36,7 @@ WideOpeningDetector::WideOpeningDetector(const Options& options,
                                          const DoorFilters::Options& filters)
     : options_(options),
       minWidth_(door.doorWidth + door.doorWidthTolerance),
+      axisMinWidth_(door.doorWidth),
       detector_(wideRange(options, door)),
       filters_(wideTests(options, filters)) {}
 
@@ -47,7 +48,8 @@ std::vector<VirtualDoor> WideOpeningDetector::detect(
         return {};
     std::vector<cv::Point> ownAxis;
     if (pathCells.empty() && medialAxis == nullptr)
-        ownAxis = DoorSearchPaths::fromMedialAxis(space, clearance, minWidth_, options_.maxWidth);
+        ownAxis =
+            DoorSearchPaths::fromMedialAxis(space, clearance, axisMinWidth_, options_.maxWidth);
     const std::vector<cv::Point>& cells =
         !pathCells.empty() ? pathCells : (medialAxis != nullptr ? *medialAxis : ownAxis);
     const std::vector<double> local =

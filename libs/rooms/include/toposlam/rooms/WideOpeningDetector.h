@@ -50,9 +50,9 @@ class WideOpeningDetector {
                         const DoorFilters::Options& filters);
 
     /// The wide openings of `space` (pixels). `pathCells`: the trajectory cells, or empty to
-    /// search the medial axis at the clearance of a wide opening's middle; `directions`: the
+    /// search the medial axis at the clearances of axisWidths(); `directions`: the
     /// main directions; `walls`: step 2's segments. Empty when disabled. `medialAxis`: that
-    /// medial axis when the caller has it (DoorSearchPaths::fromMedialAxis over widths());
+    /// medial axis when the caller has it (DoorSearchPaths::fromMedialAxis over axisWidths());
     /// nullptr: found here.
     std::vector<VirtualDoor> detect(const FreeSpace& space, const Clearance& clearance,
                                     const std::vector<cv::Point>& pathCells,
@@ -65,12 +65,18 @@ class WideOpeningDetector {
     bool searches() const { return options_.enabled && options_.maxWidth > minWidth_; }
     /// The widths {min, max} (m) of the openings it searches.
     std::pair<double, double> widths() const { return {minWidth_, options_.maxWidth}; }
+    /// The widths {min, max} (m) whose middles' clearance the medial axis is searched at: from
+    /// the door width w, not the widest door, because a ragged opening's middle lies nearer
+    /// an obstacle than half its width (a wall end drawn cell by cell on a SLAM grid, a post
+    /// beside the opening); each cut found is still measured against widths().
+    std::pair<double, double> axisWidths() const { return {axisMinWidth_, options_.maxWidth}; }
 
     const Options& options() const { return options_; }
 
   private:
     Options options_;
-    double minWidth_ = 0;  ///< m, the widest door
+    double minWidth_ = 0;      ///< m, the widest door
+    double axisMinWidth_ = 0;  ///< m, the door width w
     VirtualDoorDetector detector_;
     DoorFilters filters_;
 };

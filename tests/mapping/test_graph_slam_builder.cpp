@@ -167,7 +167,7 @@ TEST(CGraphSlamBuilder, AppOutputsAreReadByMrpt) {
 }
 
 // The summary names the loop rules that are off instead of counting what they could not do,
-// and says whether the odometry's distances were calibrated.
+// and says whether the odometry's distances were calibrated, and how long they read.
 TEST(CGraphSlamBuilder, SummarySaysWhichLoopRulesRan) {
     const test::TempDir dir;
     test::writeRawlog(roomTour(), dir.file("tour.rawlog"));
@@ -203,9 +203,19 @@ TEST(CGraphSlamBuilder, SummarySaysWhichLoopRulesRan) {
         EXPECT_EQ(loops.at("contested_rule").get<bool>(), on);
         const auto odometry = io::loadJsonFile(out + "/summary.json").at("odometry");
         EXPECT_EQ(odometry.at("calibration").get<bool>(), on);
-        EXPECT_EQ(odometry.at("calibration_distance_m").get<double>() > 0, on);
-        EXPECT_NE(text.find(on ? "odometry: distances " : "(odometry_calibration off)"),
-                  std::string::npos)
+        // The evidence is gathered either way (this tour's odometry reads 3 % long); only the
+        // calibration applies it, and the summary suggests it when it is off.
+        EXPECT_GT(odometry.at("calibration_distance_m").get<double>(), 10);
+        const double estimate = odometry.at("estimated_scale").get<double>();
+        EXPECT_NEAR(estimate, 0.97, 0.01);
+        EXPECT_EQ(odometry.at("distance_scale").get<double>(), on ? estimate : 1.0);
+        EXPECT_NE(
+            text.find(on ? "odometry: distances scaled by " : "(odometry_calibration off); over "),
+            std::string::npos)
+            << text;
+        EXPECT_EQ(
+            text.find("odometry_calibration = true keeps that out of the map") != std::string::npos,
+            !on)
             << text;
         // Every along-heading check is listed, the held ones among them.
         const auto registration = io::loadJsonFile(out + "/summary.json").at("registration");

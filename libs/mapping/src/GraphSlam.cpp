@@ -184,11 +184,12 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     // it (not held at the odometry's position along the heading; not after a jump), and not
     // among people close by: walking along with the robot, they make ICP take back some of
     // its step (ten people in the office: the scale 0.4 % short, 0.1 % without such scans).
-    if (options_.odometryCalibration.enabled && odometryIncrement && !prediction.odometryJumped &&
-        r.method == RegistrationMethod::Icp && !r.heldAlongHeading() &&
-        !registration_.seesForegroundObjects(polar_)) {
+    // Counted also with odometry_calibration off, for the summary to say what it would do.
+    if (odometryIncrement && !prediction.odometryJumped && r.method == RegistrationMethod::Icp &&
+        !r.heldAlongHeading() && !registration_.seesForegroundObjects(polar_)) {
         odometryCalibration_.observe(*odometryIncrement, step, r.rawCovariance);
         stats_.odometryScale = odometryCalibration_.scale();
+        stats_.odometryScaleEstimate = odometryCalibration_.estimate();
         stats_.odometryCalibrationDistance = odometryCalibration_.evidenceDistance();
     }
     doubtSinceKeyframe_ = doubtSinceKeyframe_ || r.method != RegistrationMethod::Icp;

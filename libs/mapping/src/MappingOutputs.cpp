@@ -31,10 +31,27 @@ double percent(std::size_t part, std::size_t whole) {
     return whole > 0 ? 100.0 * double(part) / double(whole) : 0.0;
 }
 
+/// An odometry whose distances are off by this much (percent) stretches or shrinks a long
+/// corridor visibly (a 50 m corridor by a metre): the summary suggests odometry_calibration.
+constexpr double kSuggestCalibrationPercent = 2.0;
+
 // How the odometry's distances were taken (odometry_calibration).
 std::string odometryLine(const MappingResult& r, const SlamStatistics& st) {
-    if (!r.odometryCalibration)
-        return line("odometry: distances as read (odometry_calibration off)");
+    // How long the odometry reads by the scale the well-registered scans show (percent).
+    const auto longBy = [](double scale) { return 100.0 * (1.0 / scale - 1.0); };
+    if (!r.odometryCalibration) {
+        if (st.odometryCalibrationDistance <= 0)
+            return line("odometry: distances as read (odometry_calibration off)");
+        // Where the laser fixes nothing along a corridor, that error stays in the map.
+        const double off = longBy(st.odometryScaleEstimate);
+        return line(
+            "odometry: distances as read (odometry_calibration off); over %.0f m of "
+            "well-registered motion it read %.1f %% %s%s",
+            st.odometryCalibrationDistance, std::abs(off), off >= 0 ? "long" : "short",
+            std::abs(off) >= kSuggestCalibrationPercent
+                ? ": in long corridors odometry_calibration = true keeps that out of the map"
+                : "");
+    }
     if (st.odometryScale == 1.0) {
         return line(
             "odometry: distances as read (%.1f m of well-registered motion, fewer than "
@@ -44,8 +61,8 @@ std::string odometryLine(const MappingResult& r, const SlamStatistics& st) {
     return line(
         "odometry: distances scaled by %.4f, learnt from %.0f m of well-registered motion (the "
         "odometry reads %.1f %% %s)",
-        st.odometryScale, st.odometryCalibrationDistance,
-        100.0 * std::abs(1.0 / st.odometryScale - 1.0), st.odometryScale < 1.0 ? "long" : "short");
+        st.odometryScale, st.odometryCalibrationDistance, std::abs(longBy(st.odometryScale)),
+        st.odometryScale < 1.0 ? "long" : "short");
 }
 }  // namespace
 
@@ -188,6 +205,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
         j["odometry"] = {{"scans_without", st->scansWithoutOdometry},
                          {"calibration", r.odometryCalibration},
                          {"distance_scale", st->odometryScale},
+                         {"estimated_scale", st->odometryScaleEstimate},
                          {"calibration_distance_m", st->odometryCalibrationDistance}};
         j["loops"] = {{"candidates", st->loopCandidates},
                       {"accepted", st->loopsAccepted},

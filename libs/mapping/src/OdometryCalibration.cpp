@@ -33,7 +33,7 @@ CPose2D OdometryCalibration::corrected(const CPose2D& increment) const {
 void OdometryCalibration::observe(const CPose2D& odometry, const CPose2D& registered,
                                   const mrpt::math::CMatrixDouble33& covariance) {
     const double length = odometry.norm();
-    if (!options_.enabled || length < kMinStep)
+    if (length < kMinStep)  // gathered whether enabled or not: the summary reports it
         return;
     // Worst position variance: the larger eigenvalue of the 2x2 position block.
     const Eigen::Matrix2d position = covariance.asEigen().topLeftCorner<2, 2>();

@@ -39,7 +39,8 @@ class OdometryCalibration {
     /// One registered scan: the odometry's raw increment since the previous scan, the motion
     /// registration found over the same scans (both in the previous scan's robot frame) and
     /// registration's covariance of (x, y, phi) (m^2, rad^2). Least squares over all such
-    /// scans: scale = sum(registered . odometry) / sum(|odometry|^2).
+    /// scans: scale = sum(registered . odometry) / sum(|odometry|^2). Counted also when not
+    /// enabled (estimate() then says what the calibration would do; scale() stays 1).
     void observe(const mrpt::poses::CPose2D& odometry, const mrpt::poses::CPose2D& registered,
                  const mrpt::math::CMatrixDouble33& covariance);
 

@@ -49,8 +49,10 @@ struct SlamStatistics {
     /// the robot's last registered motion instead.
     std::size_t scansWithoutOdometry = 0;
     /// Distance scale applied to the odometry at the end (odometry_calibration; 1 = none),
-    /// and the odometry distance of the well-registered scans it was learnt from (m).
+    /// the scale the well-registered scans show, applied or not, and the odometry distance of
+    /// those scans (m).
     double odometryScale = 1.0;
+    double odometryScaleEstimate = 1.0;
     double odometryCalibrationDistance = 0;
     // Loop closure
     std::size_t loopCandidates = 0;     ///< candidate pairs verified by the graph matcher

@@ -4,6 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 namespace toposlam::rooms {
 
@@ -22,6 +26,31 @@ bool isDoorWidth(const cv::Point& a, const cv::Point& b, double target, double t
                  double& width) {
     width = detail::cellDistance(a.x - b.x, a.y - b.y);
     return std::abs(width - target) < tolerance;
+}
+
+// Keeps the first of the doors with the same two jamb cells, in order: the path cells along one
+// cut line all find it, and the filters would test it again for each (half the candidates on
+// Bormann's maps).
+void keepEachCutOnce(std::vector<VirtualDoor>& doors) {
+    const auto bits = [](int v) { return static_cast<std::uint64_t>(v) & 0xffff; };
+    std::vector<std::pair<std::uint64_t, std::size_t>> cuts(doors.size());
+    for (std::size_t i = 0; i < doors.size(); ++i) {
+        const VirtualDoor& d = doors[i];
+        const bool aFirst = std::tie(d.jambA.y, d.jambA.x) <= std::tie(d.jambB.y, d.jambB.x);
+        const cv::Point& p = aFirst ? d.jambA : d.jambB;
+        const cv::Point& q = aFirst ? d.jambB : d.jambA;
+        cuts[i] = {bits(p.x) << 48 | bits(p.y) << 32 | bits(q.x) << 16 | bits(q.y), i};
+    }
+    std::sort(cuts.begin(), cuts.end());
+    std::vector<char> keep(doors.size(), 0);
+    for (std::size_t k = 0; k < cuts.size(); ++k)
+        keep[cuts[k].second] = k == 0 || cuts[k].first != cuts[k - 1].first;
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < doors.size(); ++i) {
+        if (keep[i])
+            doors[kept++] = doors[i];
+    }
+    doors.resize(kept);
 }
 
 }  // namespace
@@ -97,6 +126,7 @@ std::vector<VirtualDoor> VirtualDoorDetector::detect(
         if (localSection(p, localDirections[i], found))
             doors.push_back(found);
     }
+    keepEachCutOnce(doors);
     return doors;
 }
 

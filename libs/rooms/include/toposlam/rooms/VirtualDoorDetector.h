@@ -51,7 +51,8 @@ class VirtualDoorDetector {
     /// `directions`: search directions in image radians (the paper: phi1, phi2), tried in
     /// order, the first that yields a door wins (at most one door per path cell). With
     /// localDirection, every direction that yields a door gives one, `localDirections[i]`
-    /// included for pathCells[i].
+    /// included for pathCells[i]. Each cut (pair of jamb cells) is returned once, as the first
+    /// path cell found it.
     std::vector<VirtualDoor> detect(const FreeSpace& space, const std::vector<cv::Point>& pathCells,
                                     const std::vector<double>& directions,
                                     const std::vector<double>& localDirections = {}) const;

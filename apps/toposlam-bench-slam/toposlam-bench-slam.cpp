@@ -5,6 +5,7 @@
 // by libs/evaluation (SlamBenchmark, SimulatedSlamLogs); this app reads the options and prints.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/cli/LogAlterationArgs.h>
 #include <toposlam/cli/NumberArg.h>
 #include <toposlam/cli/UsageError.h>
 #include <toposlam/evaluation/ChildProcess.h>
@@ -110,10 +111,7 @@ struct Arguments {
     TCLAP::ValueArg<std::string> data, logs, engines, config, icpSlam, icpSlamConfig, keep, images,
         json, simPlans, simRobots, simSeeds, simDir, simConfig;
     cli::NumberArg<double> timeout;
-    cli::NumberArg<std::size_t> keepEvery;
-    cli::NumberArg<std::size_t> keepBeamEvery;
-    cli::NumberArg<double> clipRange;
-    TCLAP::SwitchArg noOdometry;
+    cli::LogAlterationArgs alteration;
 };
 
 Arguments::Arguments()
@@ -185,26 +183,11 @@ Arguments::Arguments()
       timeout("", "timeout",
               "Kill a run after this many seconds of wall time (0: no limit, the default).", 0.0,
               cli::NumberRange<double>::nonNegative(1e6), "seconds", cmd),
-      keepEvery("", "keep-every",
-                "Run every log with one scan in N (toposlam-convert --keep-every: the log as a "
-                "laser with an N times lower scan rate would have recorded it), named "
-                "<log>-1inN and scored on the relations between kept scans. Default: 1 = the "
-                "logs as recorded",
-                1, cli::NumberRange<std::size_t>::closed(1, 1000), "N", cmd),
-      keepBeamEvery("", "keep-beam-every",
-                    "Run every log with one beam in N of each scan (toposlam-convert "
-                    "--keep-beam-every: a laser with N times the angle between beams), named "
-                    "<log>-beams1inN. Default: 1 = every beam",
-                    1, cli::NumberRange<std::size_t>::closed(1, 1000), "N", cmd),
-      clipRange("", "clip-range",
-                "Run every log with its readings at or beyond this range invalid "
-                "(toposlam-convert --clip-range: a laser that sees less far), named <log>-toRm. "
-                "Default: 0 = as recorded",
-                0.0, cli::NumberRange<double>::nonNegative(1000), "m", cmd),
-      noOdometry("", "no-odometry",
-                 "Run every log without its odometry (toposlam-convert --no-odometry: a "
-                 "laser-only log), named <log>-laseronly",
-                 cmd) {}
+      alteration(
+          cmd, {"Every log runs so, named <log>-1inN and scored on the relations "
+                "between kept scans.",
+                "Every log runs so, named <log>-beams1inN.", "Every log runs so, named <log>-toRm.",
+                "Every log runs so, named <log>-laseronly."}) {}
 
 // "/work/wt/../shared/data" -> "/work/shared/data": shorter names in the table.
 std::string tidy(const std::string& path) {
@@ -269,10 +252,7 @@ evaluation::SlamBenchmarkOptions benchmarkOptions(Arguments& a) {
     options.engines = parseEngines(a.engines.getValue());
     options.keepDir = a.keep.getValue();
     options.imageDir = a.images.getValue();
-    options.alteration.keepEvery = a.keepEvery.getValue();
-    options.alteration.keepBeamEvery = a.keepBeamEvery.getValue();
-    options.alteration.clipRange = a.clipRange.getValue();
-    options.alteration.dropOdometry = a.noOdometry.getValue();
+    options.alteration = a.alteration.alteration();
     evaluation::SlamEngineSetup& setup = options.setup;
     setup.timeoutSeconds = a.timeout.getValue();
     setup.slamConfig = tidy(a.config.getValue());

@@ -4,6 +4,7 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <toposlam/classes/TopoSlamClasses.h>
 #include <toposlam/cli/CommandLine.h>
+#include <toposlam/cli/LogAlterationArgs.h>
 #include <toposlam/cli/MapReadingArgs.h>
 #include <toposlam/cli/NumberArg.h>
 #include <toposlam/io/GridMapIO.h>
@@ -68,10 +69,7 @@ struct Arguments {
     cli::NumberArg<double> maxRange;
     TCLAP::ValueArg<std::string> laserOffset;
     cli::NumberArg<std::size_t> maxScans;
-    cli::NumberArg<std::size_t> keepEvery;
-    cli::NumberArg<std::size_t> keepBeamEvery;
-    cli::NumberArg<double> clipRange;
-    TCLAP::SwitchArg noOdometry;
+    cli::LogAlterationArgs alteration;
     cli::NumberArg<double> resolution;
     TCLAP::ValueArg<std::string> origin;
     cli::MapReadingArgs mapReading;
@@ -110,27 +108,10 @@ Arguments::Arguments()
                   false, "", "x,y,yaw", cmd),
       maxScans("", "max-scans", "Read only the first N scans of the log. Default: 0 = all", 0,
                cli::NumberRange<std::size_t>::nonNegative(1000000000), "N", cmd),
-      keepEvery("", "keep-every",
-                "Keep one scan in N (the first, then every Nth): the log as a laser with an N "
-                "times lower scan rate would have recorded it; the odometry is the pose at each "
-                "kept scan. A relation file still matches the kept scans' stamps. Default: 1 = "
-                "every scan",
-                1, cli::NumberRange<std::size_t>::closed(1, 1000), "N", cmd),
-      keepBeamEvery("", "keep-beam-every",
-                    "Keep one beam in N of each scan (the first, then every Nth): the log as a "
-                    "laser with N times the angle between beams would have recorded it; each "
-                    "kept beam keeps its direction. Features stored with the scans are left out. "
-                    "Default: 1 = every beam",
-                    1, cli::NumberRange<std::size_t>::closed(1, 1000), "N", cmd),
-      clipRange("", "clip-range",
-                "Readings at or beyond this range become invalid and the scans' maximum range "
-                "is at most this: the log as a laser that sees less far would have recorded it. "
-                "Default: 0 = as recorded",
-                0.0, cli::NumberRange<double>::nonNegative(1000), "m", cmd),
-      noOdometry("", "no-odometry",
-                 "Leave the odometry out: the log as a robot without wheel odometry would have "
-                 "recorded it (a laser-only log)",
-                 cmd),
+      alteration(cmd, {"A relation file still matches the kept scans' stamps.",
+                       "Features stored with the scans are left out.", "",
+                       "Observations format: no odometry observations; sensory frames: "
+                       "empty action collections."}),
       resolution(
           "", "resolution",
           "Maps: cell size in m for an input image (overrides its .yaml sidecar). "
@@ -155,15 +136,13 @@ void refuseLogOptions(const Arguments& a) {
         {a.label.isSet(), "--label"},
         {a.maxRange.isSet(), "--carmen-max-range"},
         {a.laserOffset.isSet(), "--laser-offset"},
-        {a.maxScans.isSet(), "--max-scans"},
-        {a.keepEvery.isSet(), "--keep-every"},
-        {a.keepBeamEvery.isSet(), "--keep-beam-every"},
-        {a.clipRange.isSet(), "--clip-range"},
-        {a.noOdometry.isSet(), "--no-odometry"}};
+        {a.maxScans.isSet(), "--max-scans"}};
     for (const auto& [set, name] : logOptions) {
         if (set)
             throw cli::UsageError(std::string(name) + " is for laser logs, not grid maps");
     }
+    for (const std::string& name : a.alteration.given())
+        throw cli::UsageError(name + " is for laser logs, not grid maps");
 }
 
 int convertMap(Arguments& a) {
@@ -196,7 +175,7 @@ io::LogConversionOptions logOptions(Arguments& a) {
     }
     if (a.output.getValue().empty() && a.odometryTrajectory.getValue().empty())
         throw cli::UsageError("nothing to do: give -o and/or --odometry-trajectory");
-    if (a.noOdometry.getValue() && a.odometryTrajectory.isSet())
+    if (a.alteration.alteration().dropOdometry && a.odometryTrajectory.isSet())
         throw cli::UsageError("--no-odometry leaves no odometry for --odometry-trajectory");
     io::LogConversionOptions options;
     options.read.scanLabel = a.label.getValue();
@@ -210,10 +189,7 @@ io::LogConversionOptions logOptions(Arguments& a) {
                                                        : io::RawlogFormat::Observations;
     options.odometryTrajectoryPath = a.odometryTrajectory.getValue();
     options.maxScans = a.maxScans.getValue();
-    options.alteration.keepEvery = a.keepEvery.getValue();
-    options.alteration.keepBeamEvery = a.keepBeamEvery.getValue();
-    options.alteration.clipRange = a.clipRange.getValue();
-    options.alteration.dropOdometry = a.noOdometry.getValue();
+    options.alteration = a.alteration.alteration();
     return options;
 }
 

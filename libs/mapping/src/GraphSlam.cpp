@@ -189,7 +189,9 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
         !r.heldAlongHeading() && !registration_.seesForegroundObjects(polar_)) {
         odometryCalibration_.observe(*odometryIncrement, step, r.rawCovariance);
         stats_.odometryScale = odometryCalibration_.scale();
-        stats_.odometryScaleEstimate = odometryCalibration_.estimate();
+        // Reported once there is as much evidence as the calibration waits for.
+        if (odometryCalibration_.evidenceDistance() >= options_.odometryCalibration.minDistance)
+            stats_.odometryScaleEstimate = odometryCalibration_.estimate();
         stats_.odometryCalibrationDistance = odometryCalibration_.evidenceDistance();
     }
     doubtSinceKeyframe_ = doubtSinceKeyframe_ || r.method != RegistrationMethod::Icp;

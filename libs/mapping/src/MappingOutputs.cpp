@@ -40,7 +40,7 @@ std::string odometryLine(const MappingResult& r, const SlamStatistics& st) {
     // How long the odometry reads by the scale the well-registered scans show (percent).
     const auto longBy = [](double scale) { return 100.0 * (1.0 / scale - 1.0); };
     if (!r.odometryCalibration) {
-        if (st.odometryCalibrationDistance <= 0)
+        if (st.odometryScaleEstimate == 1.0)  // too little evidence to tell (or none)
             return line("odometry: distances as read (odometry_calibration off)");
         // Where the laser fixes nothing along a corridor, that error stays in the map.
         const double off = longBy(st.odometryScaleEstimate);

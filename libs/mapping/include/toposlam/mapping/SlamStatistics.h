@@ -49,8 +49,8 @@ struct SlamStatistics {
     /// the robot's last registered motion instead.
     std::size_t scansWithoutOdometry = 0;
     /// Distance scale applied to the odometry at the end (odometry_calibration; 1 = none),
-    /// the scale the well-registered scans show, applied or not, and the odometry distance of
-    /// those scans (m).
+    /// the scale the well-registered scans show, applied or not (1 until they cover
+    /// odometry_calibration_min_distance), and the odometry distance of those scans (m).
     double odometryScale = 1.0;
     double odometryScaleEstimate = 1.0;
     double odometryCalibrationDistance = 0;

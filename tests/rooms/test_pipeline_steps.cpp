@@ -18,8 +18,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <random>
 #include <set>
+#include <string>
 #include <vector>
 
 using namespace toposlam::rooms;
@@ -280,6 +282,36 @@ TEST(Clearance, RidgeDirectionIsTheDoorLine) {
     const Clearance transposed(spaceOf(t).free);
     const double a = transposed.acrossRidge({40, 60});
     EXPECT_LT(std::min(a, M_PI - a), 0.15);
+}
+
+TEST(Clearance, IsOpenCvsFiveByFiveDistanceTransformToTheBit) {
+    cv::RNG rng(59);
+    Clearance clearance;  // one object: compute() reuses its buffers across sizes
+    auto expectSame = [&](const cv::Mat& free, const std::string& what) {
+        cv::Mat expected;
+        cv::distanceTransform(free, expected, cv::DIST_L2, cv::DIST_MASK_5);
+        clearance.compute(free);
+        ASSERT_EQ(clearance.distances().size(), free.size()) << what;
+        EXPECT_EQ(cv::norm(expected, clearance.distances(), cv::NORM_INF), 0) << what;
+    };
+    // Widths around the four-pixel steps, one-pixel strips, and an image with no obstacle
+    // (every distance "far"); obstacles from sparse to dense.
+    for (const cv::Size size : {cv::Size(1, 1), cv::Size(7, 1), cv::Size(1, 7), cv::Size(5, 5),
+                                cv::Size(13, 9), cv::Size(64, 37), cv::Size(203, 150)}) {
+        for (const double obstacles : {0.0, 0.002, 0.05, 0.5}) {
+            cv::Mat free(size, CV_8U);
+            for (int r = 0; r < free.rows; ++r) {
+                for (int c = 0; c < free.cols; ++c)
+                    free.at<std::uint8_t>(r, c) = rng.uniform(0.0, 1.0) < obstacles ? 0 : 255;
+            }
+            expectSame(free, std::to_string(size.width) + "x" + std::to_string(size.height) +
+                                 " obstacles " + std::to_string(obstacles));
+        }
+    }
+    // A drawn map, whole and as a view into it (the segmenter passes its cropped free space).
+    const FreeSpace space = spaceOf(twoRooms(0.9));
+    expectSame(space.free, "two rooms");
+    expectSame(space.free(cv::Rect(3, 5, space.free.cols - 10, space.free.rows - 7)), "a view");
 }
 
 TEST(DoorSearchPaths, MedialAxisCrossesTheDoor) {

@@ -1,5 +1,6 @@
 #include <toposlam/rooms/DoorSearchPaths.h>
 
+#include "ChamferDistance.h"
 #include "GridRay.h"
 
 #include <opencv2/imgproc.hpp>
@@ -43,7 +44,7 @@ std::vector<cv::Point> DoorSearchPaths::fromTrajectory(
 }
 
 void Clearance::compute(const cv::Mat& free) {
-    cv::distanceTransform(free, distance_, cv::DIST_L2, cv::DIST_MASK_5);
+    detail::chamferDistance5x5(free, distance_, rows_);
 }
 
 double Clearance::acrossRidge(const cv::Point& p) const {

@@ -24,7 +24,8 @@
 namespace toposlam::rooms {
 
 /// Clearance of the free space: for every cell the Euclidean distance (pixels, 5x5-mask
-/// distance transform) to the nearest non-free cell. compute() reuses its image.
+/// distance transform: cv::distanceTransform's DIST_L2 / DIST_MASK_5 values, computed in half
+/// its time) to the nearest non-free cell. compute() reuses its image.
 class Clearance {
   public:
     Clearance() = default;
@@ -45,6 +46,7 @@ class Clearance {
 
   private:
     cv::Mat distance_;
+    std::vector<int> rows_;  // compute()'s scratch
 };
 
 class DoorSearchPaths {

@@ -82,5 +82,21 @@ TEST(ForegroundObjects, TwoPeopleAreTwoObjects) {
         EXPECT_TRUE(!out.valid(b) || out.range(b) > 2.0) << "beam " << b;
 }
 
+TEST(ForegroundObjects, AnySaysWhetherRemoveWouldLeaveSomethingOut) {
+    // The scans of the tests above, with and without objects in front.
+    const ForegroundObjectOptions options;
+    ForegroundObjects foreground;
+    for (const matching::PolarScan& scan :
+         {scanOf(3.0, {{0.8, 0.0, 0.25}}), scanOf(4.0, {{2.0, 0.0, 0.25}}),
+          scanOf(3.0, {{1.4, 0.0, 0.6}}), scanOf(1.3, {{1.2, 0.0, 0.1}}), scanOf(3.0, {}),
+          scanOf(3.0, {{1.0, -0.4, 0.25}, {1.0, 0.4, 0.25}}),
+          scanOf(3.0, {{4.0, 0.0, 0.25}, {1.0, 0.4, 0.25}})}) {
+        matching::PolarScan out;
+        EXPECT_EQ(ForegroundObjects::any(scan, options), foreground.remove(scan, options, out) > 0);
+    }
+    EXPECT_TRUE(ForegroundObjects::any(scanOf(3.0, {{0.8, 0.0, 0.25}}), options));
+    EXPECT_FALSE(ForegroundObjects::any(scanOf(3.0, {}), options));
+}
+
 }  // namespace
 }  // namespace toposlam::mapping

@@ -137,8 +137,8 @@ bool ScanRegistration::acceptable(const IcpAttempt& attempt, const CPose2D& star
     return attempt.overlap >= options_.minInlierRatio && plausibleCorrection(attempt.robot - start);
 }
 
-bool ScanRegistration::seesForegroundObjects(const matching::PolarScan& scan) {
-    return foreground_.remove(scan, foregroundOptions_, background_) > 0;
+bool ScanRegistration::seesForegroundObjects(const matching::PolarScan& scan) const {
+    return ForegroundObjects::any(scan, foregroundOptions_);
 }
 
 void ScanRegistration::checkAlongHeading(const matching::PolarScan& scan,

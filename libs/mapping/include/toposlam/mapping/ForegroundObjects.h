@@ -29,8 +29,16 @@ class ForegroundObjects {
     /// how many readings that left out; 0 leaves `out` untouched.
     std::size_t remove(const matching::PolarScan& scan, const ForegroundObjectOptions& options,
                        matching::PolarScan& out);
+    /// Whether `scan` shows any foreground object (remove() > 0), without copying it.
+    static bool any(const matching::PolarScan& scan, const ForegroundObjectOptions& options);
 
   private:
+    /// Calls found(first, last) with the beams of each foreground object in order, while it
+    /// returns true.
+    template <typename Found>
+    static void forEachObject(const matching::PolarScan& scan,
+                              const ForegroundObjectOptions& options, Found&& found);
+
     std::vector<float> ranges_;  // reused between calls
     std::vector<char> valid_;
 };

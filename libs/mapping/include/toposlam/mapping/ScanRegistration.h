@@ -122,7 +122,7 @@ class ScanRegistration {
 
     /// True when `scan` has objects close to the laser that stand in front of what lies behind
     /// them (people, mostly; ForegroundObjects.h with foreground_max_range and _width).
-    bool seesForegroundObjects(const matching::PolarScan& scan);
+    bool seesForegroundObjects(const matching::PolarScan& scan) const;
 
   private:
     struct IcpAttempt {

@@ -503,6 +503,31 @@ TEST(GraphSlam, RecoversFromAnOdometryJump) {
     EXPECT_LT(std::abs(finalError.phi()), 0.02);
 }
 
+TEST(GraphSlam, OdometryCatchingUpAfterAStallIsNotThePrediction) {
+    // The odometry stops updating for seven scans while the robot turns on the spot at a corner
+    // (as in logs that repeat the last odometry message), then reports the whole turn so far in
+    // one step: 40 deg where the robot turned 6, within the jump bounds (45 deg) but more than
+    // ICP may correct (20 deg). Taken for the prediction, ICP's answer is rejected and the
+    // graph matcher has to register the scan; OdometryLag predicts the last registered motion
+    // and ICP registers it.
+    const auto truth = test::drivePath({{1.5, 1.5}, {18.5, 1.5}, {18.5, 10.5}}, 0.1, 0.1);
+    auto drive = test::simulateDrive(ringCorridor(), truth, {}, 17);
+    std::size_t turnStart = 1;
+    while (std::abs(mrpt::math::wrapToPi(truth[turnStart].phi() - truth[0].phi())) < 1e-9)
+        ++turnStart;
+    for (std::size_t k = turnStart; k < turnStart + 6; ++k)
+        drive.odometry[k] = drive.odometry[turnStart - 1];
+    const SlamRun run = runSlam(drive);
+    const auto& stats = run.slam->statistics();
+    EXPECT_EQ(stats.odometryCatchUps, 1u);
+    EXPECT_EQ(stats.odometryJumps, 0u);
+    EXPECT_EQ(stats.registeredByGraphMatcher, 0u);
+    EXPECT_EQ(stats.registrationFailed, 0u);
+    const CPose2D atCatchUp = run.poses[turnStart + 6] - truth[turnStart + 6];
+    EXPECT_LT(std::abs(atCatchUp.phi()), mrpt::DEG2RAD(1.0));
+    EXPECT_LT(test::absoluteTrajectoryError(truth, run.poses), 0.05);
+}
+
 TEST(GraphSlam, LongStepsOfAFastRobotAreNotJumps) {
     // 0.6 m and up to 0.5 rad between scans (a robot at 1.2 m/s with a 2 Hz laser, or a log
     // thinned to a third): every step is beyond the jump bounds (0.5 m), but each is the motion

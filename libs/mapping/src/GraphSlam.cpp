@@ -81,6 +81,8 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
     // Without odometry (a laser-only log) the robot is predicted to move as it last did.
     CPose2D increment = odometryIncrement.value_or(lastMotion_);
     stats_.scansWithoutOdometry += !odometryIncrement;
+    const bool catchingUp =
+        odometryIncrement && odometryLag_.catchingUp(*odometryIncrement, lastMotion_);
     odometrySinceKeyframe_ += increment.norm();
     turnSinceKeyframe_ += std::abs(mrpt::math::wrapToPi(increment.phi()));
     // A jump is a step beyond the bounds that also departs from the last registered motion by
@@ -91,6 +93,12 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
         // odometry that catches up in one step jumps; the robot kept moving meanwhile).
         p.odometryJumped = true;
         ++stats_.odometryJumps;
+        increment = lastMotion_;
+    } else if (catchingUp) {
+        // Within the jump bounds but still catching up after a stall (OdometryLag.h): ICP
+        // starts from the last motion.
+        p.odometryLagging = true;
+        ++stats_.odometryCatchUps;
         increment = lastMotion_;
     }
     p.odometryStep = increment;
@@ -185,8 +193,9 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     // among people close by: walking along with the robot, they make ICP take back some of
     // its step (ten people in the office: the scale 0.4 % short, 0.1 % without such scans).
     // Counted also with odometry_calibration off, for the summary to say what it would do.
-    if (odometryIncrement && !prediction.odometryJumped && r.method == RegistrationMethod::Icp &&
-        !r.heldAlongHeading() && !registration_.seesForegroundObjects(polar_)) {
+    if (odometryIncrement && !prediction.odometryJumped && !prediction.odometryLagging &&
+        r.method == RegistrationMethod::Icp && !r.heldAlongHeading() &&
+        !registration_.seesForegroundObjects(polar_)) {
         odometryCalibration_.observe(*odometryIncrement, step, r.rawCovariance);
         stats_.odometryScale = odometryCalibration_.scale();
         // Reported once there is as much evidence as the calibration waits for.
@@ -211,7 +220,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     // the previous scan (not when it jumped: then the prediction was not the odometry's).
     ScanRecord& record = scans_.back();
     record.registrationVariance = 0.5 * (r.covariance(0, 0) + r.covariance(1, 1));
-    if (odometry && !prediction.odometryJumped)
+    if (odometry && !prediction.odometryJumped && !prediction.odometryLagging)
         record.odometry = odometry;
 }
 

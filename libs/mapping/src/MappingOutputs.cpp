@@ -108,13 +108,13 @@ std::string formatSummary(const MappingResult& r) {
             "%zu without foreground objects; %zu held at the odometry's position along the "
             "heading), %zu by the graph "
             "matcher (%.1f %%; %zu of them beyond a jump, confirmed on the submap), %zu failed "
-            "(%.1f %%, odometry kept); %zu odometry jumps; %zu predicted by the last motion "
-            "instead of the odometry",
+            "(%.1f %%, odometry kept); %zu odometry jumps; %zu odometry steps catching up "
+            "after a stall; %zu predicted by the last motion instead of the odometry",
             st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
             st->icpSecondStarts, st->icpWithoutForeground, st->icpHeldAlongHeading,
             st->registeredByGraphMatcher, percent(st->registeredByGraphMatcher, n),
             st->graphMatcherConfirmed, st->registrationFailed, percent(st->registrationFailed, n),
-            st->odometryJumps, st->lastMotionPredictions);
+            st->odometryJumps, st->odometryCatchUps, st->lastMotionPredictions);
         if (st->scansWithoutOdometry > 0)
             s += line(
                 "odometry: none for %zu of %zu scans, each of them predicted by the "
@@ -187,6 +187,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
                              {"last_motion_predictions", st->lastMotionPredictions},
                              {"failed", st->registrationFailed},
                              {"odometry_jumps", st->odometryJumps},
+                             {"odometry_catch_ups", st->odometryCatchUps},
                              {"registered_share", st->registeredShare()}};
         // Where ICP and the odometry disagreed along the heading, and what the scan said
         // (along_heading_check): the stamp is the scan's, as in trajectory.txt.

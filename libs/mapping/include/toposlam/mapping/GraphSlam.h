@@ -19,6 +19,7 @@
 #include <toposlam/mapping/Keyframe.h>
 #include <toposlam/mapping/LoopCloser.h>
 #include <toposlam/mapping/OdometryCalibration.h>
+#include <toposlam/mapping/OdometryLag.h>
 #include <toposlam/mapping/PoseGraph.h>
 #include <toposlam/mapping/ScanRegistration.h>
 #include <toposlam/mapping/SlamStatistics.h>
@@ -110,6 +111,7 @@ class GraphSlam {
     mrpt::poses::CPose2D current_;  ///< last scan's robot pose, world frame
     mrpt::math::CMatrixDouble33 currentCovariance_;
     mrpt::poses::CPose2D lastMotion_;         ///< the last scan's registered motion
+    OdometryLag odometryLag_;                 ///< the odometry stalling and catching up
     double travelled_ = 0;                    ///< m along the estimated trajectory
     double turned_ = 0;                       ///< rad turned along it (absolute)
     double odometrySinceKeyframe_ = 0;        ///< m by odometry since the last keyframe

@@ -95,6 +95,8 @@ struct Prediction {
     double distanceFromLastKeyframe = 0;    ///< m travelled by odometry since then
     double turnFromLastKeyframe = 0;        ///< rad turned by odometry since then
     bool odometryJumped = false;
+    /// The odometry is catching up after a stall (OdometryLag): the last motion was predicted.
+    bool odometryLagging = false;
     /// The odometry's step since the last scan as predicted (the last motion after a jump),
     /// and the robot's motion registered at the last scan (robot frame, m, rad).
     mrpt::poses::CPose2D odometryStep, lastMotion;

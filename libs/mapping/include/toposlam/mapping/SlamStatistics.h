@@ -45,6 +45,8 @@ struct SlamStatistics {
     std::size_t lastMotionPredictions = 0;
     std::size_t registrationFailed = 0;  ///< both failed: odometry prediction kept
     std::size_t odometryJumps = 0;       ///< odometry increments rejected as jumps
+    /// odometry increments taken for catching up after a stall (OdometryLag.h)
+    std::size_t odometryCatchUps = 0;
     /// Scans that came without an odometry increment (a laser-only log), each predicted by
     /// the robot's last registered motion instead.
     std::size_t scansWithoutOdometry = 0;

@@ -60,7 +60,9 @@ void chamferDistance5x5(const cv::Mat& free, cv::Mat& out, std::vector<int>& row
         const int* above2 = slot(r - 2);
         int c = 0;
         for (; c + 4 <= cols; c += 4) {
-            const v_int32x4 f = cv::v_reinterpret_as_s32(cv::v_load_expand_q(isFree + c));
+            // (Not v_load_expand_q: OpenCV's SSE version reads the four bytes as an int, which
+            // need not be aligned.)
+            const v_int32x4 f(isFree[c], isFree[c + 1], isFree[c + 2], isFree[c + 3]);
             cv::v_store(t + c, cv::v_select(f == zero, zero, fromOtherRows4(above, above2, c)));
         }
         for (; c < cols; ++c)

@@ -93,46 +93,43 @@ void labelRooms(const cv::Mat& free, const std::vector<int>& roomOfRegion, cv::M
 // unlabelled: it is a border).
 void labelIslands(const FreeSpace& space, cv::Mat& labels) {
     const cv::Mat& obstacles = space.obstacles;
-    std::vector<std::vector<std::pair<int, int>>> votes(space.obstacleOnBorder.size());
-    const cv::Point around[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-    const cv::Rect image(0, 0, labels.cols, labels.rows);
-    for (int r = 0; r < obstacles.rows; ++r) {
+    const std::uint8_t* onBorder = space.obstacleOnBorder.data();
+    const std::size_t count = space.obstacleOnBorder.size();
+    if (std::all_of(onBorder + std::min<std::size_t>(1, count), onBorder + count,
+                    [](std::uint8_t b) { return b != 0; })) {
+        return;  // no island
+    }
+    // Per island: the one room its free 4-neighbours are in, 0 while none is, kSeveral once two
+    // are.
+    constexpr int kSeveral = -1;
+    std::vector<int> roomOf(count, 0);
+    const int rows = obstacles.rows, cols = obstacles.cols;
+    for (int r = 0; r < rows; ++r) {
         const int* row = obstacles.ptr<int>(r);
-        for (int c = 0; c < obstacles.cols; ++c) {
+        const int* here = labels.ptr<int>(r);
+        const int* above = r > 0 ? labels.ptr<int>(r - 1) : nullptr;
+        const int* below = r + 1 < rows ? labels.ptr<int>(r + 1) : nullptr;
+        for (int c = 0; c < cols; ++c) {
             const auto island = static_cast<std::size_t>(row[c]);
-            if (island == 0 || space.obstacleOnBorder[island])
+            if (island == 0 || onBorder[island])
                 continue;
-            for (const cv::Point& o : around) {
-                const cv::Point q(c + o.x, r + o.y);
-                const int room = image.contains(q) ? labels.at<int>(q) : 0;
-                if (room <= 0)
-                    continue;
-                auto& v = votes[island];
-                auto it = std::find_if(v.begin(), v.end(),
-                                       [&](const auto& p) { return p.first == room; });
-                if (it == v.end())
-                    v.emplace_back(room, 1);
-                else
-                    ++it->second;
+            int& room = roomOf[island];
+            for (const int neighbour : {c + 1 < cols ? here[c + 1] : 0, c > 0 ? here[c - 1] : 0,
+                                        below ? below[c] : 0, above ? above[c] : 0}) {
+                if (neighbour > 0 && room != neighbour)
+                    room = room == 0 ? neighbour : kSeveral;
             }
         }
     }
-    std::vector<int> roomOf(votes.size(), 0);
-    bool any = false;
-    for (std::size_t i = 0; i < votes.size(); ++i) {
-        if (votes[i].size() == 1) {
-            roomOf[i] = votes[i].front().first;
-            any = true;
-        }
-    }
-    if (!any)
+    if (std::none_of(roomOf.begin(), roomOf.end(), [](int room) { return room > 0; }))
         return;  // no island inside one room: nothing to relabel
-    for (int r = 0; r < obstacles.rows; ++r) {
+    for (int r = 0; r < rows; ++r) {
         const int* row = obstacles.ptr<int>(r);
         int* out = labels.ptr<int>(r);
-        for (int c = 0; c < obstacles.cols; ++c) {
-            if (row[c] != 0 && roomOf[static_cast<std::size_t>(row[c])] != 0)
-                out[c] = roomOf[static_cast<std::size_t>(row[c])];
+        for (int c = 0; c < cols; ++c) {
+            const int room = row[c] != 0 ? roomOf[static_cast<std::size_t>(row[c])] : 0;
+            if (room > 0)
+                out[c] = room;
         }
     }
 }

@@ -22,6 +22,14 @@ TEST(OdometryLag, AfterAStallAnIncrementFarFromTheLastMotionIsACatchUp) {
     EXPECT_FALSE(lag.catchingUp(CPose2D(0, 0, mrpt::DEG2RAD(7.0)), kTurning));
 }
 
+TEST(OdometryLag, AStepShorterThanTheLastMotionIsNoCatchUp) {
+    // A backlog adds motion; a robot slowing down reads less (at a low scan rate by much).
+    OdometryLag lag;
+    const CPose2D fastTurn(0.6, 0.0, mrpt::DEG2RAD(20.0));
+    lag.catchingUp(kStill, fastTurn);  // stalled
+    EXPECT_FALSE(lag.catchingUp(CPose2D(0.6, 0.0, mrpt::DEG2RAD(3.0)), fastTurn));
+}
+
 TEST(OdometryLag, AStandstillIsNoStall) {
     OdometryLag lag;
     EXPECT_FALSE(lag.catchingUp(kStill, kStill));  // standing: zero odometry, no registered motion

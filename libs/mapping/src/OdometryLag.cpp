@@ -20,10 +20,14 @@ bool OdometryLag::catchingUp(const mrpt::poses::CPose2D& increment,
     if (catchUpLeft_ == 0)
         return false;
     --catchUpLeft_;
-    const mrpt::poses::CPose2D difference = (-lastMotion) + increment;
-    if (difference.norm() <= kAgreeDistance &&
-        std::abs(mrpt::math::wrapToPi(difference.phi())) <= kAgreeAngle) {
-        catchUpLeft_ = 0;  // in step with the robot again
+    // A backlog adds to the motion: a step that is not longer, nor turns farther, than the last
+    // registered one by the margins is the odometry in step with the robot again (one that
+    // reads less is the robot slowing down, which at a low scan rate is a large change too).
+    const double longer = increment.norm() - lastMotion.norm();
+    const double farther = std::abs(mrpt::math::wrapToPi(increment.phi())) -
+                           std::abs(mrpt::math::wrapToPi(lastMotion.phi()));
+    if (longer <= kAgreeDistance && farther <= kAgreeAngle) {
+        catchUpLeft_ = 0;
         return false;
     }
     return true;

@@ -10,10 +10,12 @@
 // off, a corridor mapped at an angle).
 //
 // A stall is an increment of exactly zero while the robot moved at the last scan (a robot
-// standing still reads zero too, but registers no motion). After a stall the odometry's
-// increments are taken for catching up, and the robot's last registered motion is predicted
-// instead, until an increment agrees with that motion (kAgreeDistance, kAgreeAngle) or for at
-// most kMaxCatchUpScans scans.
+// standing still reads zero too, but registers no motion). After a stall an increment that is
+// longer, or turns farther, than the robot's last registered motion by more than kAgreeDistance
+// or kAgreeAngle is taken for catching up, and that motion is predicted instead; the first
+// increment within the margins ends it, and so do kMaxCatchUpScans scans. (Only more motion
+// counts: a backlog adds to the step, while a robot slowing down reads less, and at a third of
+// mit-csail's scan rate its turn rate changes by 15 deg between two scans.)
 #include <mrpt/poses/CPose2D.h>
 
 namespace toposlam::mapping {
@@ -23,7 +25,8 @@ class OdometryLag {
     /// Registered motion above this (m, rad) per scan is the robot moving, not noise.
     static constexpr double kMovedDistance = 0.02;
     static constexpr double kMovedAngle = 0.0175;
-    /// An odometry increment this close (m, rad) to the last registered motion has caught up.
+    /// An odometry increment at most this much (m, rad) longer or farther turned than the last
+    /// registered motion has caught up.
     static constexpr double kAgreeDistance = 0.2;
     static constexpr double kAgreeAngle = 0.1745;
     /// Scans after a stall at most taken for catching up.

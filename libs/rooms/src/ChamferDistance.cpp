@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <climits>
 #include <cstdint>
-#include <cstring>
 
 namespace toposlam::rooms::detail {
 

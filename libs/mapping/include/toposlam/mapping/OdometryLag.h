@@ -24,11 +24,11 @@ class OdometryLag {
   public:
     /// Registered motion above this (m, rad) per scan is the robot moving, not noise.
     static constexpr double kMovedDistance = 0.02;
-    static constexpr double kMovedAngle = 0.0175;
+    static constexpr double kMovedAngle = 0.0175;  // 1 deg
     /// An odometry increment at most this much (m, rad) longer or farther turned than the last
     /// registered motion has caught up.
     static constexpr double kAgreeDistance = 0.2;
-    static constexpr double kAgreeAngle = 0.1745;
+    static constexpr double kAgreeAngle = 0.1745;  // 10 deg
     /// Scans after a stall at most taken for catching up.
     static constexpr int kMaxCatchUpScans = 5;
 

@@ -504,11 +504,11 @@ TEST(GraphSlam, RecoversFromAnOdometryJump) {
 }
 
 TEST(GraphSlam, OdometryCatchingUpAfterAStallIsNotThePrediction) {
-    // The odometry stops updating for seven scans while the robot turns on the spot at a corner
+    // The odometry stops updating for six scans while the robot turns on the spot at a corner
     // (as in logs that repeat the last odometry message), then reports the whole turn so far in
-    // one step: 40 deg where the robot turned 6, within the jump bounds (45 deg) but more than
-    // ICP may correct (20 deg). Taken for the prediction, ICP's answer is rejected and the
-    // graph matcher has to register the scan; OdometryLag predicts the last registered motion
+    // one step: 40 deg (seven steps) where the robot turned 6, within the jump bounds (45 deg) but
+    // more than ICP may correct (20 deg). Taken for the prediction, ICP's answer is rejected and
+    // the graph matcher has to register the scan; OdometryLag predicts the last registered motion
     // and ICP registers it.
     const auto truth = test::drivePath({{1.5, 1.5}, {18.5, 1.5}, {18.5, 10.5}}, 0.1, 0.1);
     auto drive = test::simulateDrive(ringCorridor(), truth, {}, 17);

@@ -257,6 +257,25 @@ TEST(VirtualDoorDetector, SameDoorsAsFullRaysFromEveryCell) {
     }
 }
 
+TEST(VirtualDoorDetector, DoorsAFullWordOfCellsApartAreTwoCuts) {
+    // The same door twice, 65536 cells apart (3.3 km at 5 cm, 655 m at 1 cm): two cuts, not one
+    // cut found twice, however the jamb cells would be packed into a key.
+    const cv::Mat door = twoRooms(0.9);
+    constexpr int kApart = 1 << 16;
+    FreeSpace space;
+    space.frame.resolution = kRes;
+    space.free = cv::Mat(door.rows, kApart + door.cols, CV_8U, cv::Scalar(255));
+    door.copyTo(space.free(cv::Rect(0, 0, door.cols, door.rows)));
+    door.copyTo(space.free(cv::Rect(kApart, 0, door.cols, door.rows)));
+    space.frame.cols = space.free.cols;
+    space.frame.rows = space.free.rows;
+    const auto doors =
+        VirtualDoorDetector().detect(space, {{60, 40}, {kApart + 60, 40}}, {0.0, M_PI / 2});
+    ASSERT_EQ(doors.size(), 2u);
+    EXPECT_EQ(doors[1].jambA.x - doors[0].jambA.x, kApart);
+    EXPECT_EQ(doors[1].jambA.y, doors[0].jambA.y);
+}
+
 TEST(VirtualDoorDetector, FindsDoorWideGapsOnly) {
     const std::vector<double> axes{0.0, M_PI / 2};
     for (const double gap : {0.7, 0.9, 1.2, 1.5}) {

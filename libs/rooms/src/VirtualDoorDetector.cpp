@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -32,19 +31,25 @@ bool isDoorWidth(const cv::Point& a, const cv::Point& b, double target, double t
 // cut line all find it, and the filters would test it again for each (half the candidates on
 // Bormann's maps).
 void keepEachCutOnce(std::vector<VirtualDoor>& doors) {
-    const auto bits = [](int v) { return static_cast<std::uint64_t>(v) & 0xffff; };
-    std::vector<std::pair<std::uint64_t, std::size_t>> cuts(doors.size());
+    struct Cut {
+        cv::Point first, second;  // the jamb cells, in raster order
+        std::size_t door;
+    };
+    std::vector<Cut> cuts(doors.size());
     for (std::size_t i = 0; i < doors.size(); ++i) {
         const VirtualDoor& d = doors[i];
         const bool aFirst = std::tie(d.jambA.y, d.jambA.x) <= std::tie(d.jambB.y, d.jambB.x);
-        const cv::Point& p = aFirst ? d.jambA : d.jambB;
-        const cv::Point& q = aFirst ? d.jambB : d.jambA;
-        cuts[i] = {bits(p.x) << 48 | bits(p.y) << 32 | bits(q.x) << 16 | bits(q.y), i};
+        cuts[i] = {aFirst ? d.jambA : d.jambB, aFirst ? d.jambB : d.jambA, i};
     }
-    std::sort(cuts.begin(), cuts.end());
+    const auto cell = [](const Cut& c) {
+        return std::tie(c.first.y, c.first.x, c.second.y, c.second.x);
+    };
+    // Stable: within one cut the doors stay in their order, the first comes first.
+    std::stable_sort(cuts.begin(), cuts.end(),
+                     [&](const Cut& a, const Cut& b) { return cell(a) < cell(b); });
     std::vector<char> keep(doors.size(), 0);
     for (std::size_t k = 0; k < cuts.size(); ++k)
-        keep[cuts[k].second] = k == 0 || cuts[k].first != cuts[k - 1].first;
+        keep[cuts[k].door] = k == 0 || cell(cuts[k]) != cell(cuts[k - 1]);
     std::size_t kept = 0;
     for (std::size_t i = 0; i < doors.size(); ++i) {
         if (keep[i])

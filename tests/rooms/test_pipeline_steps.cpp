@@ -1,4 +1,5 @@
 // The steps of the virtual-door pipeline one by one, on tiny hand-made inputs.
+#include <toposlam/rooms/ConnectedRuns.h>
 #include <toposlam/rooms/DoorFilters.h>
 #include <toposlam/rooms/DoorSearchPaths.h>
 #include <toposlam/rooms/FreeSpaceBinarizer.h>
@@ -14,6 +15,7 @@
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
+#include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -331,6 +333,116 @@ TEST(Clearance, IsOpenCvsFiveByFiveDistanceTransformToTheBit) {
     const FreeSpace space = spaceOf(twoRooms(0.9));
     expectSame(space.free, "two rooms");
     expectSame(space.free(cv::Rect(3, 5, space.free.cols - 10, space.free.rows - 7)), "a view");
+}
+
+namespace {
+
+// Random cells, set with probability `share` (0 or 255).
+cv::Mat randomCells(cv::RNG& rng, cv::Size size, double share) {
+    cv::Mat cells(size, CV_8U);
+    for (int r = 0; r < cells.rows; ++r) {
+        for (int c = 0; c < cells.cols; ++c)
+            cells.at<std::uint8_t>(r, c) = rng.uniform(0.0, 1.0) < share ? 255 : 0;
+    }
+    return cells;
+}
+
+}  // namespace
+
+TEST(ConnectedRuns, IsOpenCvsFourConnectedLabellingToTheLabel) {
+    cv::RNG rng(60);
+    ConnectedRuns runs;  // one object: find() reuses its buffers across sizes
+    const int threads = cv::getNumThreads();
+    cv::setNumThreads(1);  // OpenCV's parallel labelling numbers stripe by stripe
+    for (const cv::Size size : {cv::Size(1, 1), cv::Size(9, 1), cv::Size(1, 9), cv::Size(8, 8),
+                                cv::Size(17, 13), cv::Size(64, 37), cv::Size(203, 150)}) {
+        for (const double share : {0.0, 0.1, 0.5, 0.9, 1.0}) {
+            const cv::Mat cells = randomCells(rng, size, share);
+            const std::string what = std::to_string(size.width) + "x" +
+                                     std::to_string(size.height) + " share " +
+                                     std::to_string(share);
+            for (const auto which : {ConnectedRuns::Cells::NonZero, ConnectedRuns::Cells::Zero}) {
+                cv::Mat expected, labels;
+                const int n = cv::connectedComponents(
+                    which == ConnectedRuns::Cells::NonZero ? cells : cells == 0, expected, 4,
+                    CV_32S);
+                ASSERT_EQ(runs.find(cells, 4, which), n) << what;
+                runs.paint(labels);
+                EXPECT_EQ(cv::countNonZero(labels != expected), 0) << what;
+                std::vector<int> areas(static_cast<std::size_t>(n), 0);
+                for (auto it = expected.begin<int>(); it != expected.end<int>(); ++it) {
+                    if (*it != 0)
+                        ++areas[static_cast<std::size_t>(*it)];
+                }
+                EXPECT_EQ(runs.areas(), areas) << what;
+            }
+        }
+    }
+    cv::setNumThreads(threads);
+}
+
+TEST(ConnectedRuns, EightConnectedAreOpenCvsComponentsInRasterOrder) {
+    cv::RNG rng(8);
+    ConnectedRuns runs;
+    for (int trial = 0; trial < 40; ++trial) {
+        const cv::Mat cells =
+            randomCells(rng, {rng.uniform(1, 90), rng.uniform(1, 90)}, rng.uniform(0.05, 0.95));
+        cv::Mat expected, labels;
+        const int n = cv::connectedComponents(cells, expected, 8, CV_32S);
+        ASSERT_EQ(runs.find(cells, 8), n);
+        runs.paint(labels);
+        // The same components: a one-to-one map between the two numberings; and ours numbered
+        // in the raster order of their first cells.
+        std::vector<int> ours(static_cast<std::size_t>(n), -1), theirs(ours);
+        int next = 1;
+        for (int r = 0; r < cells.rows; ++r) {
+            for (int c = 0; c < cells.cols; ++c) {
+                const int a = labels.at<int>(r, c), b = expected.at<int>(r, c);
+                ASSERT_EQ(a == 0, b == 0);
+                if (a == 0)
+                    continue;
+                if (ours[static_cast<std::size_t>(b)] < 0) {
+                    ASSERT_EQ(a, next++);
+                    ours[static_cast<std::size_t>(b)] = a;
+                }
+                if (theirs[static_cast<std::size_t>(a)] < 0)
+                    theirs[static_cast<std::size_t>(a)] = b;
+                ASSERT_EQ(ours[static_cast<std::size_t>(b)], a);
+                ASSERT_EQ(theirs[static_cast<std::size_t>(a)], b);
+            }
+        }
+        EXPECT_EQ(next, n);
+    }
+}
+
+TEST(ConnectedRuns, DiagonalCellsJoinOnlyEightConnected) {
+    cv::Mat cells = cv::Mat::zeros(4, 4, CV_8U);
+    cells.at<std::uint8_t>(0, 0) = cells.at<std::uint8_t>(1, 1) = 255;
+    cells.at<std::uint8_t>(2, 3) = cells.at<std::uint8_t>(3, 2) = 255;
+    ConnectedRuns runs;
+    EXPECT_EQ(runs.find(cells, 4), 5);
+    EXPECT_EQ(runs.find(cells, 8), 3);
+    EXPECT_EQ(runs.areas(), (std::vector<int>{0, 2, 2}));
+    // The zero cells: the corner cell the second pair closes off, and the rest round both.
+    EXPECT_EQ(runs.find(cells, 4, ConnectedRuns::Cells::Zero), 3);
+    EXPECT_EQ(runs.areas(), (std::vector<int>{0, 11, 1}));
+    EXPECT_EQ(runs.find(cells, 8, ConnectedRuns::Cells::Zero), 2);
+}
+
+TEST(ConnectedRuns, LabelsAViewAndPaintsIntoOne) {
+    // The segmenter labels a box inside a larger image and paints into a box of another.
+    const FreeSpace space = spaceOf(twoRooms(0.9));
+    const cv::Rect box(3, 5, space.free.cols - 10, space.free.rows - 7);
+    ConnectedRuns runs;
+    cv::Mat expected;
+    const int n = cv::connectedComponents(space.free(box).clone(), expected, 4, CV_32S);
+    ASSERT_EQ(runs.find(space.free(box), 4), n);
+    cv::Mat whole(space.free.size(), CV_32S, cv::Scalar(-1));
+    cv::Mat view = whole(box);
+    runs.paint(view);
+    EXPECT_EQ(view.data, whole.ptr(box.y) + box.x * sizeof(int));  // painted in place
+    EXPECT_EQ(cv::countNonZero(view != expected), 0);
+    EXPECT_EQ(cv::countNonZero(whole == -1), static_cast<int>(whole.total() - box.area()));
 }
 
 TEST(DoorSearchPaths, MedialAxisCrossesTheDoor) {

@@ -2,7 +2,6 @@
 #include <toposlam/rooms/FreeSpaceBinarizer.h>
 
 #include "GridRay.h"
-#include "LabelAreas.h"
 
 #include <opencv2/imgproc.hpp>
 
@@ -27,10 +26,10 @@ void FreeSpaceBinarizer::removeSpecksAndLabelObstacles(cv::Mat& all, const cv::R
     const cv::Rect box =
         freeBox.empty() ? image : (freeBox + cv::Size(2, 2) - cv::Point(1, 1)) & image;
     cv::Mat inBox = all(box);
-    cv::bitwise_not(inBox, notFree_);
     out.obstacles.create(all.size(), CV_32S);
     cv::Mat labels = out.obstacles(box);
-    const int n = cv::connectedComponents(notFree_, labels, 8, CV_32S);
+    const int n = runs_.find(inBox, 8, ConnectedRuns::Cells::Zero);
+    runs_.paint(labels);
     CV_Assert(labels.data == out.obstacles.ptr(box.y) + box.x * sizeof(int));
     // Outside the box: the label of the ring on that side (rows above and below take the top and
     // bottom ring rows, which also hold the corners).
@@ -44,8 +43,7 @@ void FreeSpaceBinarizer::removeSpecksAndLabelObstacles(cv::Mat& all, const cv::R
         out.obstacles(cv::Rect(box.br().x, box.y, all.cols - box.br().x, box.height))
             .setTo(labels.at<int>(0, box.width - 1));
     }
-    std::vector<int> area(static_cast<std::size_t>(n), 0);
-    detail::countLabelAreas(labels, area);
+    const std::vector<int>& area = runs_.areas();
     // On the border: touching the box's edge (the ring is outside the free box, so joined to
     // the map's edge; where there is no ring the box edge is the map's edge).
     out.obstacleOnBorder.assign(static_cast<std::size_t>(n), 0);
@@ -73,14 +71,10 @@ void FreeSpaceBinarizer::removeSpecksAndLabelObstacles(cv::Mat& all, const cv::R
     }
     if (out.specksRemoved == 0)
         return;
-    for (int r = 0; r < rows; ++r) {
-        int* row = labels.ptr<int>(r);
-        auto* a = inBox.ptr<std::uint8_t>(r);
-        for (int c = 0; c < cols; ++c) {
-            if (speck[static_cast<std::size_t>(row[c])]) {
-                row[c] = 0;
-                a[c] = 255;
-            }
+    for (const ConnectedRuns::Run& run : runs_.runs()) {
+        if (speck[static_cast<std::size_t>(run.label)]) {
+            std::fill_n(labels.ptr<int>(run.row) + run.begin, run.end - run.begin, 0);
+            std::fill_n(inBox.ptr<std::uint8_t>(run.row) + run.begin, run.end - run.begin, 255);
         }
     }
 }
@@ -100,12 +94,8 @@ void FreeSpaceBinarizer::keepLargestComponent(const cv::Mat& all, const cv::Rect
                                               const std::string& sourceName, FreeSpace& out) const {
     // Only the bounding box of the free cells holds components; 4-connected components are
     // numbered in raster order, which the box keeps (so ties in area go the same way).
-    cv::Mat& labels = labels_;
-    // connectedComponents without stats: much faster on large maps; one pass gets the areas.
-    const int n = box.empty() ? 1 : cv::connectedComponents(all(box), labels, 4, CV_32S);
-    std::vector<int> area(static_cast<std::size_t>(n), 0);
-    if (!box.empty())
-        detail::countLabelAreas(labels, area);
+    const int n = box.empty() ? 1 : runs_.find(all(box), 4);
+    const std::vector<int>& area = runs_.areas();
     int best = 0;
     for (int i = 1; i < n; ++i) {
         if (area[static_cast<std::size_t>(i)] >
@@ -121,13 +111,18 @@ void FreeSpaceBinarizer::keepLargestComponent(const cv::Mat& all, const cv::Rect
     out.free.setTo(0);
     out.otherFree.create(all.size(), CV_8U);
     out.otherFree.setTo(0);
-    cv::Mat free = out.free(box), other = out.otherFree(box);
-    cv::compare(labels, best, free, cv::CMP_EQ);  // same size and type: into out.free
-    cv::compare(labels, 0, other, cv::CMP_NE);
-    CV_Assert(free.data == out.free.ptr(box.y) + box.x &&
-              other.data == out.otherFree.ptr(box.y) + box.x);
-    cv::bitwise_xor(other, free, other);  // free is inside: the rest
-    out.bounds = cv::boundingRect(free) + box.tl();
+    cv::Point first(box.width, box.height), last(-1, -1);  // of the largest region, in the box
+    for (const ConnectedRuns::Run& run : runs_.runs()) {
+        const bool largest = run.label == best;
+        cv::Mat& image = largest ? out.free : out.otherFree;
+        std::fill_n(image.ptr<std::uint8_t>(box.y + run.row) + box.x + run.begin,
+                    run.end - run.begin, 255);
+        if (largest) {
+            first = {std::min(first.x, run.begin), std::min(first.y, run.row)};
+            last = {std::max(last.x, run.end), std::max(last.y, run.row + 1)};
+        }
+    }
+    out.bounds = cv::Rect(first + box.tl(), last + box.tl());
     out.freeCells = static_cast<std::size_t>(area[static_cast<std::size_t>(best)]);
 }
 

@@ -1,6 +1,6 @@
 #include <toposlam/rooms/RegionBoundary.h>
 
-#include <opencv2/imgproc.hpp>
+#include <opencv2/core.hpp>
 
 #include <cstdint>
 
@@ -16,7 +16,8 @@ void RegionBoundary::measure(const FreeSpace& space, const RegionPartition& part
     const int rows = labels.rows, cols = labels.cols;
     // Outside: the unobserved cells (noWall, not free) connected to the edge of the image.
     cv::bitwise_and(space.noWall, ~space.free, unobserved_);
-    const int n = cv::connectedComponents(unobserved_, components_, 4, CV_32S);
+    const int n = runs_.find(unobserved_, 4);
+    runs_.paint(components_);
     outside_.assign(static_cast<std::size_t>(n), 0);
     auto mark = [&](int r, int c) {
         outside_[static_cast<std::size_t>(components_.at<int>(r, c))] = 1;

@@ -1,7 +1,5 @@
 #include <toposlam/rooms/RegionPartition.h>
 
-#include "LabelAreas.h"
-
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -13,10 +11,9 @@ void RegionPartition::compute(const cv::Mat& free, const std::vector<VirtualDoor
     free.copyTo(open_);
     for (const VirtualDoor& d : doors)
         cv::line(open_, d.jambA, d.jambB, cv::Scalar(0), 1, cv::LINE_8);
-    regionCount_ = cv::connectedComponents(open_, labels_, 4, CV_32S) - 1;
-    areas_.assign(static_cast<std::size_t>(regionCount_) + 1, 0);
-    detail::countLabelAreas(labels_, areas_);
-    areas_[0] = 0;
+    regionCount_ = runs_.find(open_, 4) - 1;
+    runs_.paint(labels_);
+    areas_ = runs_.areas();
 
     touching_.assign(doors.size(), {});
     const cv::Point around[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};

@@ -17,6 +17,7 @@
 // unseen rays, looks like a wall. FreeSpace::noWall marks the unknown cells away from every
 // occupied one: the door tests find no wall there (holes where the laser grazed a wall, next
 // to its occupied cells, stay wall). Drawn maps without unknown cells are not affected.
+#include <toposlam/rooms/ConnectedRuns.h>
 #include <toposlam/rooms/GridImageFrame.h>
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
@@ -112,8 +113,9 @@ class FreeSpaceBinarizer {
     void markNoWall(const cv::Mat& all, FreeSpace& out) const;
 
     Options options_;
-    // Scratch images, reused across calls (one binarizer per thread).
-    mutable cv::Mat all_, labels_, notFree_, nearOccupied_;
+    // Scratch, reused across calls (one binarizer per thread).
+    mutable cv::Mat all_, nearOccupied_;
+    mutable ConnectedRuns runs_;
 };
 
 }  // namespace toposlam::rooms

@@ -10,6 +10,7 @@
 // behind them they look like the building's edge). The minimum-area filter merges such a
 // region through its door like a too-small one (DoorFilters::Options::maxOpenBoundary). Drawn
 // maps without unknown cells have no open boundary.
+#include <toposlam/rooms/ConnectedRuns.h>
 #include <toposlam/rooms/FreeSpaceBinarizer.h>
 #include <toposlam/rooms/RegionPartition.h>
 
@@ -36,6 +37,7 @@ class RegionBoundary {
   private:
     std::vector<int> closed_, open_;
     cv::Mat unobserved_, components_;  // scratch, reused from call to call
+    ConnectedRuns runs_;
     std::vector<unsigned char> outside_;
 };
 

@@ -1,7 +1,8 @@
 #pragma once
 // Step 6 of the virtual-door method (sec. 1.5): the free space is cut along the door lines and
-// split into 4-connected regions by connected-component analysis. The door filters of step 5
-// (adjacency, minimum area) and the final rooms are read off this partition.
+// split into 4-connected regions by connected-component analysis (ConnectedRuns). The door filters
+// of step 5 (adjacency, minimum area) and the final rooms are read off this partition.
+#include <toposlam/rooms/ConnectedRuns.h>
 #include <toposlam/rooms/VirtualDoorDetector.h>
 
 #include <opencv2/core/mat.hpp>
@@ -39,6 +40,7 @@ class RegionPartition {
 
   private:
     cv::Mat open_;  // scratch
+    ConnectedRuns runs_;
     cv::Mat labels_;
     int regionCount_ = 0;
     std::vector<int> areas_;

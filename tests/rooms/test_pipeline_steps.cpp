@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <set>
 #include <string>
@@ -668,6 +669,38 @@ TEST(FreeSpaceBinarizer, KeepsTheLargestFreeRegionAboveTheThreshold) {
 // The obstacles are labelled in the free cells' bounding box only; they must still be the
 // 8-connected non-free components of the whole map (the same partition, whatever the numbering),
 // with "on the border" meaning "reaches the map's edge", also when free space touches the edge.
+TEST(FreeSpaceBinarizer, EveryLogOddsValueIsFreeUnknownOrOccupiedByItsProbability) {
+    // Every cell value a grid can hold, in rows of 37 cells (not a multiple of the sixteen cells
+    // tested at a time), the top and bottom rows free so that the largest region exists.
+    using Cell = mrpt::maps::COccupancyGridMap2D::cellType;
+    mrpt::maps::COccupancyGridMap2D grid(0, 3.7f, 0, 1.0f, 0.1f);
+    ASSERT_EQ(grid.getSizeX(), 37u);
+    ASSERT_EQ(grid.getSizeY(), 10u);
+    auto& raw = const_cast<std::vector<Cell>&>(grid.getRawMap());
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+        const bool edge = i < 37 || i >= raw.size() - 37;
+        raw[i] = edge ? std::numeric_limits<Cell>::max() : static_cast<Cell>(i * 7);
+    }
+    FreeSpaceBinarizer::Options options;
+    options.maxSpeckArea = 0;  // no speck made free: free = p(free) above the threshold
+    for (const double freeThreshold : {0.8, 0.98, 0.5, 0.3}) {
+        options.freeThreshold = freeThreshold;
+        const FreeSpace space = FreeSpaceBinarizer(options).binarize(grid);
+        for (int y = 0; y < 10; ++y) {
+            for (int x = 0; x < 37; ++x) {
+                const double p = grid.getCell(x, y);
+                const cv::Point cell(x, 9 - y);  // image layout: row 0 = top
+                const bool free = space.free.at<std::uint8_t>(cell) != 0 ||
+                                  space.otherFree.at<std::uint8_t>(cell) != 0;
+                EXPECT_EQ(free, p > freeThreshold) << x << "," << y << " p " << p;
+                const bool unknown = !space.unknown.empty() && space.unknown.at<std::uint8_t>(cell);
+                EXPECT_EQ(unknown, p >= options.occupiedThreshold && p <= freeThreshold)
+                    << x << "," << y << " p " << p;
+            }
+        }
+    }
+}
+
 TEST(FreeSpaceBinarizer, ObstaclesAreTheNonFreeComponentsOfTheWholeMap) {
     cv::RNG rng(7);
     for (int trial = 0; trial < 40; ++trial) {

@@ -239,8 +239,10 @@ RoomSegmenter::Result RoomSegmenter::segment(
     // labels are put back on the full frame.
     result.map = TopologicalMap::fromLabels(space.frame, labels, ws.clearance.distances());
     result.map.frame = fullSpace.frame;
-    result.map.labels = cv::Mat::zeros(fullSpace.frame.rows, fullSpace.frame.cols, CV_32S);
-    labels.copyTo(result.map.labels(roi));
+    cv::Mat fullLabels;  // a new image: the map must not share the workspace's labels
+    cv::copyMakeBorder(labels, fullLabels, roi.y, fullSpace.frame.rows - roi.br().y, roi.x,
+                       fullSpace.frame.cols - roi.br().x, cv::BORDER_CONSTANT, cv::Scalar(0));
+    result.map.labels = fullLabels;
     for (const DoorFilters::Rooms::Link& link : rooms.doors) {
         const VirtualDoor& d = result.afterDistance[link.door];
         Door out;

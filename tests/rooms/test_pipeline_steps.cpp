@@ -744,6 +744,23 @@ TEST(FreeSpaceBinarizer, ObstaclesAreTheNonFreeComponentsOfTheWholeMap) {
                 << "trial " << trial;
         }
         EXPECT_EQ(distinct.size(), static_cast<std::size_t>(n - 1)) << "trial " << trial;
+        // The island runs are the cells of the obstacles off the border, each cell once.
+        cv::Mat islands = cv::Mat::zeros(img.size(), CV_32S);
+        for (const auto& run : space.islandRuns) {
+            for (int c = run.begin; c < run.end; ++c) {
+                ASSERT_EQ(islands.at<int>(run.row, c), 0) << "trial " << trial;
+                islands.at<int>(run.row, c) = run.label;
+            }
+        }
+        for (int r = 0; r < img.rows; ++r) {
+            for (int c = 0; c < img.cols; ++c) {
+                const int ours = space.obstacles.at<int>(r, c);
+                const bool island =
+                    ours != 0 && !space.obstacleOnBorder[static_cast<std::size_t>(ours)];
+                ASSERT_EQ(islands.at<int>(r, c), island ? ours : 0)
+                    << "trial " << trial << " cell " << r << "," << c;
+            }
+        }
     }
 }
 

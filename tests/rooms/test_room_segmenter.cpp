@@ -117,6 +117,46 @@ TEST(RoomSegmenter, OfficeWithoutTrajectoryHasExactRoomsAndDoors) {
     EXPECT_EQ(result.map.adjacency().size(), 6u);
 }
 
+TEST(RoomSegmenter, AFreeStandingTableIsPartOfItsRoom) {
+    DrawnMap drawn = toposlam::rooms::test::singleRoom();
+    const GridImageFrame frame = toposlam::rooms::test::frameOf(drawn.image);
+    // A 1 x 0.5 m table in the middle of the room: an island of occupied cells.
+    const cv::Point corner = frame.toCell(3.5, 3.0), opposite = frame.toCell(4.5, 2.5);
+    cv::rectangle(drawn.image, corner, opposite, cv::Scalar(0), cv::FILLED);
+    for (const bool islands : {true, false}) {
+        RoomSegmenter::Options options;
+        options.labelIslands = islands;
+        options.maxFurnitureSize = 0;  // furniture pockets would give the table its room too
+        const auto map =
+            RoomSegmenter(options).segment(toposlam::rooms::test::gridOf(drawn.image)).map;
+        ASSERT_EQ(map.rooms.size(), 1u);
+        EXPECT_EQ(map.roomAt(4.0, 2.75), islands ? 1 : 0);
+        EXPECT_EQ(map.roomAt(0.5, 0.5), 0);  // outside the building
+    }
+}
+
+TEST(RoomSegmenter, AnIslandInAnUnreachableSpaceBeyondTheRoomsIsLeftAlone) {
+    // The rooms are cropped to the largest free region; an island in a smaller free space
+    // beyond that crop (a cupboard in a closed room seen through a window) has no room.
+    cv::Mat image(120, 260, CV_8U, cv::Scalar(128));
+    const GridImageFrame frame = toposlam::rooms::test::frameOf(image);
+    const auto box = [&](double x0, double y0, double x1, double y1, int value) {
+        cv::rectangle(image, frame.toCell(x0, y1), frame.toCell(x1, y0), cv::Scalar(value),
+                      cv::FILLED);
+    };
+    box(1, 1, 7.2, 5.2, 0);
+    box(1.2, 1.2, 7, 5, 255);
+    box(3.5, 2.5, 4.5, 3.0, 0);  // a table in the room
+    box(9, 1, 12.2, 4.2, 0);
+    box(9.2, 1.2, 12, 4, 255);
+    box(10.4, 2.4, 10.8, 2.8, 0);  // a cupboard in the closed room
+    const auto map = RoomSegmenter().segment(toposlam::rooms::test::gridOf(image)).map;
+    ASSERT_EQ(map.rooms.size(), 1u);
+    EXPECT_EQ(map.roomAt(4.0, 2.75), 1);
+    EXPECT_EQ(map.roomAt(10.6, 2.6), 0);
+    EXPECT_EQ(map.roomAt(9.5, 3.5), 0);
+}
+
 TEST(RoomSegmenter, OfficeWithTrajectoryHasExactRoomsAndDoors) {
     const DrawnMap drawn = toposlam::rooms::test::office();
     const auto result =

@@ -70,12 +70,15 @@ void FreeSpaceBinarizer::removeSpecksAndLabelObstacles(cv::Mat& all, const cv::R
             ++out.specksRemoved;
         }
     }
-    if (out.specksRemoved == 0)
-        return;
+    out.islandRuns.clear();
     for (const ConnectedRuns::Run& run : runs_.runs()) {
-        if (speck[static_cast<std::size_t>(run.label)]) {
+        const auto label = static_cast<std::size_t>(run.label);
+        if (speck[label]) {
             std::fill_n(labels.ptr<int>(run.row) + run.begin, run.end - run.begin, 0);
             std::fill_n(inBox.ptr<std::uint8_t>(run.row) + run.begin, run.end - run.begin, 255);
+        } else if (!out.obstacleOnBorder[label]) {
+            out.islandRuns.push_back(
+                {run.row + box.y, run.begin + box.x, run.end + box.x, run.label});
         }
     }
 }

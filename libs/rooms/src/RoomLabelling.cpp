@@ -92,45 +92,36 @@ void labelRooms(const cv::Mat& free, const std::vector<int>& roomOfRegion, cv::M
 // that one room (an island between two rooms, such as a free-standing partition, stays
 // unlabelled: it is a border).
 void labelIslands(const FreeSpace& space, cv::Mat& labels) {
-    const cv::Mat& obstacles = space.obstacles;
-    const std::uint8_t* onBorder = space.obstacleOnBorder.data();
-    const std::size_t count = space.obstacleOnBorder.size();
-    if (std::all_of(onBorder + std::min<std::size_t>(1, count), onBorder + count,
-                    [](std::uint8_t b) { return b != 0; })) {
-        return;  // no island
-    }
+    if (space.islandRuns.empty())
+        return;
     // Per island: the one room its free 4-neighbours are in, 0 while none is, kSeveral once two
-    // are.
+    // are. Along a run only its two ends have neighbours beside it (the rest is the island).
     constexpr int kSeveral = -1;
-    std::vector<int> roomOf(count, 0);
-    const int rows = obstacles.rows, cols = obstacles.cols;
-    for (int r = 0; r < rows; ++r) {
-        const int* row = obstacles.ptr<int>(r);
-        const int* here = labels.ptr<int>(r);
-        const int* above = r > 0 ? labels.ptr<int>(r - 1) : nullptr;
-        const int* below = r + 1 < rows ? labels.ptr<int>(r + 1) : nullptr;
-        for (int c = 0; c < cols; ++c) {
-            const auto island = static_cast<std::size_t>(row[c]);
-            if (island == 0 || onBorder[island])
+    std::vector<int> roomOf(space.obstacleOnBorder.size(), 0);
+    const int rows = labels.rows, cols = labels.cols;
+    for (const ConnectedRuns::Run& run : space.islandRuns) {
+        int& room = roomOf[static_cast<std::size_t>(run.label)];
+        const auto vote = [&room](int neighbour) {
+            if (neighbour > 0 && room != neighbour)
+                room = room == 0 ? neighbour : kSeveral;
+        };
+        const int* here = labels.ptr<int>(run.row);
+        if (run.begin > 0)
+            vote(here[run.begin - 1]);
+        if (run.end < cols)
+            vote(here[run.end]);
+        for (const int side : {run.row - 1, run.row + 1}) {
+            if (side < 0 || side >= rows)
                 continue;
-            int& room = roomOf[island];
-            for (const int neighbour : {c + 1 < cols ? here[c + 1] : 0, c > 0 ? here[c - 1] : 0,
-                                        below ? below[c] : 0, above ? above[c] : 0}) {
-                if (neighbour > 0 && room != neighbour)
-                    room = room == 0 ? neighbour : kSeveral;
-            }
+            const int* row = labels.ptr<int>(side);
+            for (int c = run.begin; c < run.end; ++c)
+                vote(row[c]);
         }
     }
-    if (std::none_of(roomOf.begin(), roomOf.end(), [](int room) { return room > 0; }))
-        return;  // no island inside one room: nothing to relabel
-    for (int r = 0; r < rows; ++r) {
-        const int* row = obstacles.ptr<int>(r);
-        int* out = labels.ptr<int>(r);
-        for (int c = 0; c < cols; ++c) {
-            const int room = row[c] != 0 ? roomOf[static_cast<std::size_t>(row[c])] : 0;
-            if (room > 0)
-                out[c] = room;
-        }
+    for (const ConnectedRuns::Run& run : space.islandRuns) {
+        const int room = roomOf[static_cast<std::size_t>(run.label)];
+        if (room > 0)
+            std::fill_n(labels.ptr<int>(run.row) + run.begin, run.end - run.begin, room);
     }
 }
 

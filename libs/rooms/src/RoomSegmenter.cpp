@@ -8,6 +8,7 @@
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <opencv2/core.hpp>
 
+#include <algorithm>
 #include <chrono>
 
 namespace toposlam::rooms {
@@ -26,6 +27,13 @@ FreeSpace cropToBounds(const FreeSpace& space, cv::Rect& roi) {
     out.unknown = space.unknown.empty() ? cv::Mat() : space.unknown(roi);
     out.wallHoleReach = space.wallHoleReach;
     out.obstacleOnBorder = space.obstacleOnBorder;
+    // Islands inside a smaller free region may lie beyond the crop, or across its edge.
+    out.islandRuns.clear();
+    for (const ConnectedRuns::Run& run : space.islandRuns) {
+        const int begin = std::max(run.begin, roi.x), end = std::min(run.end, roi.br().x);
+        if (run.row >= roi.y && run.row < roi.br().y && begin < end)
+            out.islandRuns.push_back({run.row - roi.y, begin - roi.x, end - roi.x, run.label});
+    }
     out.specksRemoved = space.specksRemoved;
     out.bounds = space.bounds - roi.tl();
     out.freeCells = space.freeCells;
@@ -209,7 +217,7 @@ RoomSegmenter::Result RoomSegmenter::segment(
     // Step 6: the rooms. Region labels become room ids in place; cut cells join a neighbour.
     cv::Mat& labels = ws.partition.mutableLabels();
     detail::labelRooms(space.free, rooms.roomOfRegion, labels);
-    if (options_.labelIslands && !space.obstacles.empty())
+    if (options_.labelIslands)
         detail::labelIslands(space, labels);
     const bool slivers = options_.maxSliverArea > 0 && !space.otherFree.empty();
     const auto maxSliverCells =

@@ -48,6 +48,9 @@ struct FreeSpace {
     /// Per obstacle number: 1 when it reaches the border of the map (the outer walls and all
     /// that is joined to them); [0] unused.
     std::vector<std::uint8_t> obstacleOnBorder;
+    /// The cells of the islands, the obstacles that do not reach the border (furniture, pillars):
+    /// runs along image rows, in raster order, each with its obstacle number.
+    std::vector<ConnectedRuns::Run> islandRuns;
     /// Specks made free (see maxSpeckArea).
     std::size_t specksRemoved = 0;
     /// CV_8U, 255 = where no wall can be: the cells of `free` and the unknown cells (p(free)

@@ -526,6 +526,30 @@ TEST(DoorFilters, MinimumAreaMergesSmallestFirstThroughTheWidestCut) {
     EXPECT_EQ(paper.doors[0].door, 2u);
 }
 
+TEST(RegionPartition, RunsAndCutCellsAreTheLabelImage) {
+    // Random free space cut by random lines, some crossing, some diagonal, some off the image's
+    // edge: the region runs paint the label image, and the cut cells are its free zeros.
+    cv::RNG rng(6);
+    RegionPartition partition;  // one object: compute() reuses its buffers
+    for (int trial = 0; trial < 20; ++trial) {
+        const cv::Mat free = randomCells(rng, {rng.uniform(20, 90), rng.uniform(20, 90)}, 0.9);
+        std::vector<VirtualDoor> doors;
+        for (int k = rng.uniform(0, 6); k > 0; --k) {
+            const cv::Point a(rng.uniform(0, free.cols), rng.uniform(0, free.rows));
+            const cv::Point b(rng.uniform(0, free.cols), rng.uniform(0, free.rows));
+            doors.push_back({a, b, cv::norm(a - b), 0, a});
+        }
+        partition.compute(free, doors);
+        cv::Mat painted = cv::Mat::zeros(free.size(), CV_32S);
+        for (const auto& run : partition.regionRuns())
+            painted(cv::Rect(run.begin, run.row, run.end - run.begin, 1)).setTo(run.label);
+        EXPECT_EQ(cv::countNonZero(painted != partition.labels()), 0) << "trial " << trial;
+        std::vector<cv::Point> cuts;
+        cv::findNonZero((free != 0) & (partition.labels() == 0), cuts);  // raster order
+        EXPECT_EQ(partition.cutCells(), cuts) << "trial " << trial;
+    }
+}
+
 TEST(DoorFilters, ConstrictionRejectsCorridorCrossSections) {
     // A 1 m corridor, 6 m long, between two rooms: its cross-sections are door-wide but the
     // corridor does not widen within a door width of them; the doorway at its end does.

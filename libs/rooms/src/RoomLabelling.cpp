@@ -46,31 +46,26 @@ int nearestRoomAcrossWall(const std::vector<cv::Point>& pocket, const cv::Mat& l
 
 }  // namespace
 
-// Region labels become room ids in place (`roomOfRegion`; region 0, the cuts and the non-free
-// cells, stays 0), and the free cells left unlabelled (the door cuts) get the label of the
-// nearest labelled cell: 4-connected breadth-first growth from the labelled cells next to them,
-// in raster order, never leaving `free`.
-void labelRooms(const cv::Mat& free, const std::vector<int>& roomOfRegion, cv::Mat& labels) {
+// Region labels become room ids in place, run by run (`roomOfRegion` gives every region a room),
+// and the free cells left unlabelled (the door cuts) get the label of the nearest labelled cell:
+// 4-connected breadth-first growth from the labelled cells next to them, taken cut cell by cut
+// cell in raster order, never leaving `free`.
+void labelRooms(const cv::Mat& free, const RegionPartition& partition,
+                const std::vector<int>& roomOfRegion, cv::Mat& labels) {
+    for (const ConnectedRuns::Run& run : partition.regionRuns()) {
+        std::fill_n(labels.ptr<int>(run.row) + run.begin, run.end - run.begin,
+                    roomOfRegion[static_cast<std::size_t>(run.label)]);
+    }
     const cv::Point around[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
     auto inside = [&](const cv::Point& q) {
         return q.x >= 0 && q.y >= 0 && q.x < labels.cols && q.y < labels.rows;
     };
     std::deque<cv::Point> queue;
-    for (int r = 0; r < labels.rows; ++r) {
-        int* row = labels.ptr<int>(r);
-        const auto* f = free.ptr<std::uint8_t>(r);
-        for (int c = 0; c < labels.cols; ++c) {
-            const int region = row[c];
-            row[c] = roomOfRegion[static_cast<std::size_t>(region)];
-            if (region != 0 || f[c] == 0)
-                continue;
-            // An unlabelled free cell: its labelled neighbours seed the growth (a region is
-            // labelled when its room is, whether it was renamed yet or not).
-            for (const cv::Point& o : around) {
-                const cv::Point q(c + o.x, r + o.y);
-                if (inside(q) && labels.at<int>(q) != 0)
-                    queue.push_back(q);
-            }
+    for (const cv::Point& cut : partition.cutCells()) {
+        for (const cv::Point& o : around) {
+            const cv::Point q = cut + o;
+            if (inside(q) && labels.at<int>(q) != 0)
+                queue.push_back(q);
         }
     }
     while (!queue.empty()) {
@@ -133,10 +128,9 @@ void labelIslands(const FreeSpace& space, cv::Mat& labels) {
 // within `wallReach` cells (0: none), whatever its size if it is a line. Larger pockets, those
 // between two rooms, and those reaching the edge of the (cropped) image, which may go on beyond
 // it, stay unlabelled. `cells`, `pocket` and `votes` are scratch.
-void labelSlivers(const cv::Mat& otherFree, std::size_t maxCells, int wallReach, cv::Mat& labels,
-                  std::vector<cv::Point>& cells, std::vector<cv::Point>& pocket,
-                  std::vector<std::pair<int, int>>& votes) {
-    cv::findNonZero(otherFree, cells);        // empty when there is no pocket
+void labelSlivers(const cv::Mat& otherFree, const std::vector<cv::Point>& cells,
+                  std::size_t maxCells, int wallReach, cv::Mat& labels,
+                  std::vector<cv::Point>& pocket, std::vector<std::pair<int, int>>& votes) {
     constexpr int kVisited = -1, kLeft = -2;  // in this pocket; in a pocket left unlabelled
     const cv::Rect image(0, 0, labels.cols, labels.rows);
     for (const cv::Point& seed : cells) {

@@ -90,7 +90,7 @@ struct RoomSegmenter::Workspace {
     WallThickness wallThickness;
     RegionPartition partition;
     RegionBoundary boundary;
-    std::vector<cv::Point> sliverCells, sliver;    // labelSlivers' scratch
+    std::vector<cv::Point> sliverCells, sliver;    // otherFree's cells; labelSlivers' scratch
     std::vector<std::pair<int, int>> sliverVotes;  // room, cells: nearestRoomAcrossWall's
     FurniturePockets furniture;
 };
@@ -216,15 +216,17 @@ RoomSegmenter::Result RoomSegmenter::segment(
 
     // Step 6: the rooms. Region labels become room ids in place; cut cells join a neighbour.
     cv::Mat& labels = ws.partition.mutableLabels();
-    detail::labelRooms(space.free, rooms.roomOfRegion, labels);
+    detail::labelRooms(space.free, ws.partition, rooms.roomOfRegion, labels);
     if (options_.labelIslands)
         detail::labelIslands(space, labels);
     const bool slivers = options_.maxSliverArea > 0 && !space.otherFree.empty();
     const auto maxSliverCells =
         static_cast<std::size_t>(options_.maxSliverArea / space.frame.cellArea());
-    if (slivers)
-        detail::labelSlivers(space.otherFree, maxSliverCells, 0, labels, ws.sliverCells, ws.sliver,
+    if (slivers) {
+        cv::findNonZero(space.otherFree, ws.sliverCells);  // empty when there is no pocket
+        detail::labelSlivers(space.otherFree, ws.sliverCells, maxSliverCells, 0, labels, ws.sliver,
                              ws.sliverVotes);
+    }
     if (options_.maxFurnitureSize > 0) {
         // A line bounding a room's box holds at least the narrowest door's width of the room;
         // cells within half the thickest wall beyond a door's half width do not count.
@@ -238,9 +240,9 @@ RoomSegmenter::Result RoomSegmenter::segment(
         // Once more, now that furniture has its room (a gap behind a desk touches the desk),
         // and across walls: the pockets inside a wall join the nearest room.
         detail::labelSlivers(
-            space.otherFree, maxSliverCells,
+            space.otherFree, ws.sliverCells, maxSliverCells,
             static_cast<int>(0.5 * options_.filters.maxWallThickness / space.frame.resolution),
-            labels, ws.sliverCells, ws.sliver, ws.sliverVotes);
+            labels, ws.sliver, ws.sliverVotes);
     }
     lap("labels");
     // Room geometry on the cropped frame (world coordinates do not depend on the crop), then the

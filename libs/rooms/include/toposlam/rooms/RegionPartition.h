@@ -31,6 +31,10 @@ class RegionPartition {
     int regionCount() const { return regionCount_; }
     /// Cells per region; index = label, [0] unused.
     const std::vector<int>& areas() const { return areas_; }
+    /// The regions' cells run by run (ConnectedRuns::Run::label = region), in raster order.
+    const std::vector<ConnectedRuns::Run>& regionRuns() const { return runs_.runs(); }
+    /// The free cells on the door cuts (in no region), in raster order.
+    const std::vector<cv::Point>& cutCells() const { return cutCells_; }
     std::size_t doorCount() const { return touching_.size(); }
     /// The regions 4-adjacent to the cut of door `door` with their number of contacts, most
     /// contacts first. A door that separates something touches at least two.
@@ -41,6 +45,7 @@ class RegionPartition {
   private:
     cv::Mat open_;  // scratch
     ConnectedRuns runs_;
+    std::vector<cv::Point> cutCells_;
     cv::Mat labels_;
     int regionCount_ = 0;
     std::vector<int> areas_;

@@ -701,6 +701,30 @@ TEST(GraphSlam, ANarrowLaserIsReportedAsAWeakFrontEnd) {
     EXPECT_FALSE(mapping::summaryJson(wide).at("weak_front_end").get<bool>());
 }
 
+TEST(MappingOutputs, AnOdometryScaleOfExactlyOneIsEvidenceNotItsAbsence) {
+    // The summary tells "too little evidence" from the flag, not from the estimate's value.
+    mapping::MappingResult result;
+    result.statistics.emplace();
+    mapping::SlamStatistics& st = *result.statistics;
+    st.scans = st.registeredByIcp = 100;
+    st.odometryCalibrationDistance = 4;
+    EXPECT_NE(mapping::formatSummary(result).find(
+                  "odometry: distances as read (odometry_calibration off)\n"),
+              std::string::npos)
+        << mapping::formatSummary(result);
+    st.odometryCalibrationDistance = 25;
+    st.odometryScaleEstimated = true;  // the scans covered the distance: the odometry is exact
+    EXPECT_NE(mapping::formatSummary(result).find("over 25 m of well-registered motion it read "
+                                                  "0.0 % long"),
+              std::string::npos)
+        << mapping::formatSummary(result);
+    EXPECT_TRUE(mapping::summaryJson(result).at("odometry").at("scale_estimated").get<bool>());
+    result.odometryCalibration = true;
+    EXPECT_NE(mapping::formatSummary(result).find("distances scaled by 1.0000, learnt from 25 m"),
+              std::string::npos)
+        << mapping::formatSummary(result);
+}
+
 TEST(GraphSlam, ARobotLaserLogMapsTheRobotNotItsLaser) {
     // The bundled office log written as a new-style CARMEN log (ROBOTLASER1, as the Freiburg
     // clinic log): each line states the laser's pose (0.2 m ahead of the robot) and the

@@ -206,6 +206,7 @@ TEST(CGraphSlamBuilder, SummarySaysWhichLoopRulesRan) {
         // The evidence is gathered either way (this tour's odometry reads 3 % long); only the
         // calibration applies it, and the summary suggests it when it is off.
         EXPECT_GT(odometry.at("calibration_distance_m").get<double>(), 10);
+        EXPECT_TRUE(odometry.at("scale_estimated").get<bool>());
         const double estimate = odometry.at("estimated_scale").get<double>();
         EXPECT_NEAR(estimate, 0.97, 0.01);
         EXPECT_EQ(odometry.at("distance_scale").get<double>(), on ? estimate : 1.0);

@@ -199,8 +199,10 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
         odometryCalibration_.observe(*odometryIncrement, step, r.rawCovariance);
         stats_.odometryScale = odometryCalibration_.scale();
         // Reported once there is as much evidence as the calibration waits for.
-        if (odometryCalibration_.evidenceDistance() >= options_.odometryCalibration.minDistance)
+        if (odometryCalibration_.evidenceDistance() >= options_.odometryCalibration.minDistance) {
             stats_.odometryScaleEstimate = odometryCalibration_.estimate();
+            stats_.odometryScaleEstimated = true;
+        }
         stats_.odometryCalibrationDistance = odometryCalibration_.evidenceDistance();
     }
     doubtSinceKeyframe_ = doubtSinceKeyframe_ || r.method != RegistrationMethod::Icp;

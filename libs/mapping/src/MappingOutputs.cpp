@@ -40,7 +40,7 @@ std::string odometryLine(const MappingResult& r, const SlamStatistics& st) {
     // How long the odometry reads by the scale the well-registered scans show (percent).
     const auto longBy = [](double scale) { return 100.0 * (1.0 / scale - 1.0); };
     if (!r.odometryCalibration) {
-        if (st.odometryScaleEstimate == 1.0)  // too little evidence to tell (or none)
+        if (!st.odometryScaleEstimated)  // too little evidence to tell (or none)
             return line("odometry: distances as read (odometry_calibration off)");
         // Where the laser fixes nothing along a corridor, that error stays in the map.
         const double off = longBy(st.odometryScaleEstimate);
@@ -52,7 +52,7 @@ std::string odometryLine(const MappingResult& r, const SlamStatistics& st) {
                 ? ": in long corridors odometry_calibration = true keeps that out of the map"
                 : "");
     }
-    if (st.odometryScale == 1.0) {
+    if (!st.odometryScaleEstimated) {
         return line(
             "odometry: distances as read (%.1f m of well-registered motion, fewer than "
             "odometry_calibration_min_distance)",
@@ -207,6 +207,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
                          {"calibration", r.odometryCalibration},
                          {"distance_scale", st->odometryScale},
                          {"estimated_scale", st->odometryScaleEstimate},
+                         {"scale_estimated", st->odometryScaleEstimated},
                          {"calibration_distance_m", st->odometryCalibrationDistance}};
         j["loops"] = {{"candidates", st->loopCandidates},
                       {"accepted", st->loopsAccepted},

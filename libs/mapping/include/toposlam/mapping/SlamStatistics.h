@@ -56,6 +56,9 @@ struct SlamStatistics {
     double odometryScale = 1.0;
     double odometryScaleEstimate = 1.0;
     double odometryCalibrationDistance = 0;
+    /// The well-registered scans covered odometry_calibration_min_distance: the estimate says
+    /// something (and with odometry_calibration on, odometryScale is applied), even if it is 1.
+    bool odometryScaleEstimated = false;
     // Loop closure
     std::size_t loopCandidates = 0;     ///< candidate pairs verified by the graph matcher
     std::size_t loopsUnmatched = 0;     ///< the matcher found no reliable match

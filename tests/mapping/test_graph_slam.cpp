@@ -725,6 +725,21 @@ TEST(MappingOutputs, AnOdometryScaleOfExactlyOneIsEvidenceNotItsAbsence) {
         << mapping::formatSummary(result);
 }
 
+TEST(MappingOutputs, CountsAgreeInNumber) {
+    mapping::MappingResult result;
+    result.statistics.emplace();
+    mapping::SlamStatistics& st = *result.statistics;
+    st.scans = st.registeredByIcp = 100;
+    st.submaps = st.optimizations = st.odometryJumps = st.loopCandidates = 1;
+    st.odometryCatchUps = 2;
+    const std::string summary = mapping::formatSummary(result);
+    for (const char* phrase :
+         {" in 1 submap;", "; 1 odometry jump; 2 odometry steps catching up after a stall;",
+          "loop closures: 1 candidate verified,", "(1 run)"}) {
+        EXPECT_NE(summary.find(phrase), std::string::npos) << phrase << "\n" << summary;
+    }
+}
+
 TEST(GraphSlam, ARobotLaserLogMapsTheRobotNotItsLaser) {
     // The bundled office log written as a new-style CARMEN log (ROBOTLASER1, as the Freiburg
     // clinic log): each line states the laser's pose (0.2 m ahead of the robot) and the

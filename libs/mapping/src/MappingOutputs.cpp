@@ -27,6 +27,11 @@ std::string line(const char* format, ...) {
     return std::string(buffer) + "\n";
 }
 
+// "1 odometry jump", "2 odometry jumps".
+std::string counted(std::size_t n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
 double percent(std::size_t part, std::size_t whole) {
     return whole > 0 ? 100.0 * double(part) / double(whole) : 0.0;
 }
@@ -99,8 +104,8 @@ std::string formatSummary(const MappingResult& r) {
     }
     if (const auto& st = r.statistics) {
         const std::size_t n = st->scans > 1 ? st->scans - 1 : 0;
-        s += line("keyframes: %zu in %zu submaps; the scans between them placed by %s",
-                  st->keyframes, st->submaps,
+        s += line("keyframes: %zu in %s; the scans between them placed by %s", st->keyframes,
+                  counted(st->submaps, "submap", "submaps").c_str(),
                   r.smoothedScans ? "registration and odometry together"
                                   : "registration alone (smooth_scans off)");
         s += line(
@@ -108,13 +113,15 @@ std::string formatSummary(const MappingResult& r) {
             "%zu without foreground objects; %zu held at the odometry's position along the "
             "heading), %zu by the graph "
             "matcher (%.1f %%; %zu of them beyond a jump, confirmed on the submap), %zu failed "
-            "(%.1f %%, odometry kept); %zu odometry jumps; %zu odometry steps catching up "
-            "after a stall; %zu predicted by the last motion instead of the odometry",
+            "(%.1f %%, odometry kept); %s; %s catching up after a stall; %zu predicted by the "
+            "last motion instead of the odometry",
             st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
             st->icpSecondStarts, st->icpWithoutForeground, st->icpHeldAlongHeading,
             st->registeredByGraphMatcher, percent(st->registeredByGraphMatcher, n),
             st->graphMatcherConfirmed, st->registrationFailed, percent(st->registrationFailed, n),
-            st->odometryJumps, st->odometryCatchUps, st->lastMotionPredictions);
+            counted(st->odometryJumps, "odometry jump", "odometry jumps").c_str(),
+            counted(st->odometryCatchUps, "odometry step", "odometry steps").c_str(),
+            st->lastMotionPredictions);
         if (st->scansWithoutOdometry > 0)
             s += line(
                 "odometry: none for %zu of %zu scans, each of them predicted by the "
@@ -130,15 +137,16 @@ std::string formatSummary(const MappingResult& r) {
                                                              " beyond the gate on agreeing evidence"
                                                        : "acceptance beyond the gate off";
         s += line(
-            "loop closures: %zu candidates verified, %zu accepted (%s, %s), %zu not matched, %zu "
+            "loop closures: %s verified, %zu accepted (%s, %s), %zu not matched, %zu "
             "rejected by the consistency checks, %zu withdrawn after optimisation",
-            st->loopCandidates, st->loopsAccepted, guessFree.c_str(), contested.c_str(),
-            st->loopsUnmatched, st->loopsGateRejected, st->loopsWithdrawn);
+            counted(st->loopCandidates, "candidate", "candidates").c_str(), st->loopsAccepted,
+            guessFree.c_str(), contested.c_str(), st->loopsUnmatched, st->loopsGateRejected,
+            st->loopsWithdrawn);
         s += line(
             "CPU time: front end %.2f s, loop search %.2f s (%.2f s of it on worker threads), "
-            "optimisation %.2f s (%zu runs)",
+            "optimisation %.2f s (%s)",
             st->frontEndSeconds, st->loopSeconds, st->offloadedSeconds, st->optimizationSeconds,
-            st->optimizations);
+            counted(st->optimizations, "run", "runs").c_str());
     }
     s += line("grid: %u x %u cells of %.2f m, x [%.2f, %.2f] y [%.2f, %.2f] m", r.grid.getSizeX(),
               r.grid.getSizeY(), r.grid.getResolution(), r.grid.getXMin(), r.grid.getXMax(),

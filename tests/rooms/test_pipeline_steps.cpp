@@ -725,6 +725,21 @@ TEST(FreeSpaceBinarizer, EveryLogOddsValueIsFreeUnknownOrOccupiedByItsProbabilit
     }
 }
 
+TEST(FreeSpaceBinarizer, AnUnknownSpeckMadeFreeIsNoLongerUnknown) {
+    // A room of a SLAM grid: free inside, unknown outside, one unseen cell in the middle.
+    cv::Mat img(30, 40, CV_8U, cv::Scalar(128));
+    img(cv::Rect(2, 2, 30, 20)) = 0;
+    img(cv::Rect(3, 3, 28, 18)) = 255;
+    img.at<std::uint8_t>(10, 15) = 128;  // image layout: row 10, column 15
+    const FreeSpace space = FreeSpaceBinarizer().binarize(toposlam::rooms::test::gridOf(img));
+    EXPECT_EQ(space.specksRemoved, 1u);
+    EXPECT_NE(space.free.at<std::uint8_t>(10, 15), 0);
+    ASSERT_FALSE(space.unknown.empty());  // the unknown outside stays
+    EXPECT_EQ(space.unknown.at<std::uint8_t>(10, 15), 0);
+    EXPECT_NE(space.unknown.at<std::uint8_t>(25, 35), 0);
+    EXPECT_EQ(cv::countNonZero(space.unknown & space.free), 0);
+}
+
 TEST(FreeSpaceBinarizer, ObstaclesAreTheNonFreeComponentsOfTheWholeMap) {
     cv::RNG rng(7);
     for (int trial = 0; trial < 40; ++trial) {

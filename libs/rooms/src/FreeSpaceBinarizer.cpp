@@ -76,6 +76,10 @@ void FreeSpaceBinarizer::removeSpecksAndLabelObstacles(cv::Mat& all, const cv::R
         if (speck[label]) {
             std::fill_n(labels.ptr<int>(run.row) + run.begin, run.end - run.begin, 0);
             std::fill_n(inBox.ptr<std::uint8_t>(run.row) + run.begin, run.end - run.begin, 255);
+            if (!out.unknown.empty()) {  // a speck made free is no longer unknown
+                std::fill_n(out.unknown.ptr<std::uint8_t>(box.y + run.row) + box.x + run.begin,
+                            run.end - run.begin, 0);
+            }
         } else if (!out.obstacleOnBorder[label]) {
             out.islandRuns.push_back(
                 {run.row + box.y, run.begin + box.x, run.end + box.x, run.label});
@@ -130,10 +134,10 @@ void FreeSpaceBinarizer::keepLargestComponent(const cv::Mat& all, const cv::Rect
     out.freeCells = static_cast<std::size_t>(area[static_cast<std::size_t>(best)]);
 }
 
-// out.noWall from `all` (255 = free, specks included) and out.unknown (255 = unknown cell).
+// out.noWall from `all` (255 = free, specks included) and out.unknown (255 = unknown cell; the
+// specks made free were cleared from it as they were freed).
 void FreeSpaceBinarizer::markNoWall(const cv::Mat& all, FreeSpace& out) const {
     cv::Mat& unknown = out.unknown;
-    cv::bitwise_and(unknown, ~all, unknown);  // specks made free are no longer unknown
     if (cv::countNonZero(unknown) == 0) {
         out.noWall.release();
         out.unknown.release();

@@ -15,7 +15,6 @@
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
-#include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -353,8 +352,6 @@ cv::Mat randomCells(cv::RNG& rng, cv::Size size, double share) {
 TEST(ConnectedRuns, IsOpenCvsFourConnectedLabellingToTheLabel) {
     cv::RNG rng(60);
     ConnectedRuns runs;  // one object: find() reuses its buffers across sizes
-    const int threads = cv::getNumThreads();
-    cv::setNumThreads(1);  // OpenCV's parallel labelling numbers stripe by stripe
     for (const cv::Size size : {cv::Size(1, 1), cv::Size(9, 1), cv::Size(1, 9), cv::Size(8, 8),
                                 cv::Size(17, 13), cv::Size(64, 37), cv::Size(203, 150)}) {
         for (const double share : {0.0, 0.1, 0.5, 0.9, 1.0}) {
@@ -379,7 +376,6 @@ TEST(ConnectedRuns, IsOpenCvsFourConnectedLabellingToTheLabel) {
             }
         }
     }
-    cv::setNumThreads(threads);
 }
 
 TEST(ConnectedRuns, EightConnectedAreOpenCvsComponentsInRasterOrder) {

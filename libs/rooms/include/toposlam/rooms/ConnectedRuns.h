@@ -5,10 +5,10 @@
 // dozen runs. Joining each run to the runs it touches in the row above is then a few dozen
 // steps per row instead of one per cell, and a component's area (or its box, or its cells)
 // comes from its runs without another pass over the image.
-// The labels are those of cv::connectedComponents single-threaded with 4-connectivity (its
-// SAUF algorithm): 1, 2, ... in the raster order of each component's first cell, 0 for the
-// other cells. With 8-connectivity the components are the same as OpenCV's, numbered the same
-// way (OpenCV's 8-connected labelling numbers them by 2x2 blocks instead).
+// The labels are those of cv::connectedComponents with 4-connectivity (its SAUF algorithm):
+// 1, 2, ... in the raster order of each component's first cell, 0 for the other cells. With
+// 8-connectivity the components are the same as OpenCV's, numbered the same way (OpenCV's
+// 8-connected labelling numbers them by 2x2 blocks instead).
 #include <opencv2/core/mat.hpp>
 
 #include <vector>

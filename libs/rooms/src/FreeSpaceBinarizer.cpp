@@ -168,9 +168,9 @@ FreeSpace FreeSpaceBinarizer::binarize(const COccupancyGridMap2D& grid,
 namespace {
 
 // The log-odds values of an occupancy grid's cells whose p(free) passes a test: a range, as
-// p(free) grows with the log-odds (empty when none passes).
+// p(free) grows with the log-odds (empty, lowest > highest, when none passes).
 struct LogOddsRange {
-    int lowest = 0, highest = -1;
+    int lowest, highest;
 
     // out[c] = 255 where cells[c] is in the range, 0 elsewhere; sixteen cells at a time
     // (cv::inRange has no vectorised path for signed bytes).
@@ -204,8 +204,6 @@ LogOddsRange logOddsWhere(const Test& passes) {
     // One range: every value between its ends passes.
     for (int v = range.lowest; v <= range.highest; ++v)
         CV_Assert(passes(COccupancyGridMap2D::l2p(static_cast<Cell>(v))));
-    if (range.lowest > range.highest)
-        return LogOddsRange{};
     return range;
 }
 

@@ -315,10 +315,11 @@ TEST(Clearance, IsOpenCvsFiveByFiveDistanceTransformToTheBit) {
         ASSERT_EQ(clearance.distances().size(), free.size()) << what;
         EXPECT_EQ(cv::norm(expected, clearance.distances(), cv::NORM_INF), 0) << what;
     };
-    // Widths around the four-pixel steps, one-pixel strips, and an image with no obstacle
-    // (every distance "far"); obstacles from sparse to dense.
-    for (const cv::Size size : {cv::Size(1, 1), cv::Size(7, 1), cv::Size(1, 7), cv::Size(5, 5),
-                                cv::Size(13, 9), cv::Size(64, 37), cv::Size(203, 150)}) {
+    // Widths around the blocks of four (and whole blocks), one-pixel strips, and an image with no
+    // obstacle (every distance "far"); obstacles from sparse to dense.
+    for (const cv::Size size :
+         {cv::Size(1, 1), cv::Size(7, 1), cv::Size(1, 7), cv::Size(4, 3), cv::Size(8, 2),
+          cv::Size(5, 5), cv::Size(13, 9), cv::Size(64, 37), cv::Size(203, 150)}) {
         for (const double obstacles : {0.0, 0.002, 0.05, 0.5}) {
             cv::Mat free(size, CV_8U);
             for (int r = 0; r < free.rows; ++r) {

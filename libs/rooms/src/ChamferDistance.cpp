@@ -28,6 +28,12 @@ inline int fromOtherRows(const int* near, const int* next, int c) {
     return std::min(m, near[c] + kStep);
 }
 
+using cv::v_int32x4;
+
+// Beyond any distance plus two steps, and still that plus two steps without overflow: what
+// lies outside a block of four when its own cells are combined.
+constexpr int kBeyond = INT_MAX >> 1;
+
 }  // namespace
 
 void chamferDistance5x5(const cv::Mat& free, cv::Mat& out, std::vector<int>& rowsScratch) {
@@ -41,9 +47,13 @@ void chamferDistance5x5(const cv::Mat& free, cv::Mat& out, std::vector<int>& row
     auto slot = [&](int r) {
         return rowsScratch.data() + static_cast<std::size_t>((r + 3) % 3) * width + 2;
     };
-    using cv::v_int32x4;
     const v_int32x4 step = cv::v_setall_s32(kStep), diagonal = cv::v_setall_s32(kDiagonal),
                     knight = cv::v_setall_s32(kKnight), zero = cv::v_setzero_s32();
+    const v_int32x4 beyond = cv::v_setall_s32(kBeyond), twoSteps = cv::v_setall_s32(2 * kStep),
+                    far = cv::v_setall_s32(kFar);
+    // What a distance gains in each lane of a block from the cell before (after) the block.
+    const v_int32x4 rampRight(kStep, 2 * kStep, 3 * kStep, 4 * kStep),
+        rampLeft(4 * kStep, 3 * kStep, 2 * kStep, kStep);
     auto fromOtherRows4 = [&](const int* near, const int* next, int c) {
         v_int32x4 m = cv::v_min(cv::v_load(next + c - 1), cv::v_load(next + c + 1)) + knight;
         m = cv::v_min(m, cv::v_min(cv::v_load(near + c - 2), cv::v_load(near + c + 2)) + knight);
@@ -66,9 +76,24 @@ void chamferDistance5x5(const cv::Mat& free, cv::Mat& out, std::vector<int>& row
         }
         for (; c < cols; ++c)
             t[c] = isFree[c] ? fromOtherRows(above, above2, c) : 0;
+        // left = min(t[c], left + kStep) from c = 0 on, four cells at a time: the block's
+        // own cells first (each with the one, then the two, before it), then what comes from
+        // the left of the block; that goes on to the next block as one scalar, so the blocks
+        // wait on one add and one min each. Integer minima of sums: the same values as one by
+        // one.
         int* pass = out.ptr<int>(r);  // the integer distances wait in `out`
         int left = kFar;
-        for (c = 0; c < cols; ++c) {
+        for (c = 0; c + 4 <= cols; c += 4) {
+            v_int32x4 v = cv::v_load(t + c);
+            v = cv::v_min(v, cv::v_rotate_left<1>(v, beyond) + step);
+            v = cv::v_min(v, cv::v_rotate_left<2>(v, beyond) + twoSteps);
+            const int last = cv::v_extract_n<3>(v);
+            v = cv::v_min(v, cv::v_setall_s32(left) + rampRight);
+            cv::v_store(t + c, v);
+            cv::v_store(pass + c, v);
+            left = std::min(last, left + 4 * kStep);
+        }
+        for (; c < cols; ++c) {
             left = std::min(t[c], left + kStep);
             t[c] = pass[c] = left;
         }
@@ -77,6 +102,7 @@ void chamferDistance5x5(const cv::Mat& free, cv::Mat& out, std::vector<int>& row
     // Backward pass, bottom to top: the terms from below, then the one from the right.
     std::fill(rowsScratch.begin(), rowsScratch.end(), kFar);
     const float scale = 1.f / (1 << kShift);
+    const cv::v_float32x4 scale4 = cv::v_setall_f32(scale);
     for (int r = rows - 1; r >= 0; --r) {
         int* t = slot(r);
         const int* below = slot(r + 1);
@@ -87,12 +113,25 @@ void chamferDistance5x5(const cv::Mat& free, cv::Mat& out, std::vector<int>& row
             cv::v_store(t + c, cv::v_min(cv::v_load(pass + c), fromOtherRows4(below, below2, c)));
         for (; c < cols; ++c)
             t[c] = std::min(pass[c], fromOtherRows(below, below2, c));
+        // right = min(t[c], right + kStep) from the last cell back, as forward: the cells past
+        // the last whole block of four one by one, then the blocks.
         float* distance = out.ptr<float>(r);
+        const int blocks = cols - cols % 4;
         int right = kFar;
-        for (c = cols - 1; c >= 0; --c) {
+        for (c = cols - 1; c >= blocks; --c) {
             right = std::min(t[c], right + kStep);
             t[c] = right;
             distance[c] = static_cast<float>(std::min(right, kFar)) * scale;  // as OpenCV caps
+        }
+        for (c = blocks - 4; c >= 0; c -= 4) {
+            v_int32x4 v = cv::v_load(t + c);
+            v = cv::v_min(v, cv::v_rotate_right<1>(v, beyond) + step);
+            v = cv::v_min(v, cv::v_rotate_right<2>(v, beyond) + twoSteps);
+            const int first = cv::v_extract_n<0>(v);
+            v = cv::v_min(v, cv::v_setall_s32(right) + rampLeft);
+            cv::v_store(t + c, v);
+            cv::v_store(distance + c, cv::v_cvt_f32(cv::v_min(v, far)) * scale4);
+            right = std::min(first, right + 4 * kStep);
         }
     }
 }

@@ -6,6 +6,7 @@
 #include <toposlam/rooms/FurniturePockets.h>
 #include <toposlam/rooms/LineMerger.h>
 #include <toposlam/rooms/MainDirectionVoter.h>
+#include <toposlam/rooms/ProbabilisticHough.h>
 #include <toposlam/rooms/RegionBoundary.h>
 #include <toposlam/rooms/RegionPartition.h>
 #include <toposlam/rooms/VirtualDoorDetector.h>
@@ -425,6 +426,68 @@ TEST(ConnectedRuns, DiagonalCellsJoinOnlyEightConnected) {
     EXPECT_EQ(runs.find(cells, 4, ConnectedRuns::Cells::Zero), 3);
     EXPECT_EQ(runs.areas(), (std::vector<int>{0, 11, 1}));
     EXPECT_EQ(runs.find(cells, 8, ConnectedRuns::Cells::Zero), 2);
+}
+
+TEST(ProbabilisticHough, IsOpenCvsHoughLinesPToTheSegment) {
+    cv::RNG rng(61);
+    ProbabilisticHough hough;  // one object: find() reuses its buffers across sizes and steps
+    auto expectSame = [&](const cv::Mat& image, const ProbabilisticHough::Parameters& p,
+                          const std::string& what) {
+        std::vector<cv::Vec4i> expected, ours;
+        cv::HoughLinesP(image, expected, p.rho, p.theta, p.threshold, p.minLineLength,
+                        p.maxLineGap);
+        hough.find(image, p, ours);
+        EXPECT_EQ(ours, expected) << what;
+    };
+    // Walls at any angle, 4- and 8-connected, with gaps and specks, on images whose widths
+    // fall on and off the blocks of four angles; the steps and thresholds the extractor uses
+    // and others.
+    std::vector<std::pair<cv::Mat, std::string>> images;
+    for (const cv::Size size : {cv::Size(1, 9), cv::Size(9, 1), cv::Size(37, 23), cv::Size(120, 80),
+                                cv::Size(203, 150)}) {
+        for (const int walls : {0, 3, 12}) {
+            cv::Mat image = cv::Mat::zeros(size, CV_8U);
+            for (int k = 0; k < walls; ++k) {
+                const cv::Point a(rng.uniform(0, size.width), rng.uniform(0, size.height));
+                const cv::Point b(rng.uniform(0, size.width), rng.uniform(0, size.height));
+                cv::line(image, a, b, cv::Scalar(255), 1, k % 2 == 0 ? cv::LINE_8 : cv::LINE_4);
+            }
+            for (int k = 0; k < size.area() / 50; ++k)
+                image.at<std::uint8_t>(rng.uniform(0, size.height), rng.uniform(0, size.width)) ^=
+                    255;
+            images.emplace_back(image, std::to_string(size.width) + "x" +
+                                           std::to_string(size.height) + " walls " +
+                                           std::to_string(walls));
+        }
+    }
+    // The wall faces of a drawn map, whole and as a view into it (the extractor's crop).
+    const FreeSpace space = spaceOf(twoRooms(0.9));
+    cv::Mat grown, faces;
+    cv::dilate(space.free, grown, cv::Mat());
+    cv::bitwise_xor(grown, space.free, faces);
+    images.emplace_back(faces, "two rooms");
+    images.emplace_back(faces(cv::Rect(3, 5, faces.cols - 10, faces.rows - 7)), "a view");
+    for (const auto& [image, name] : images) {
+        for (const double degrees : {1.0, 0.5, 2.0, 3.0}) {
+            for (const int threshold : {2, 8, 20}) {
+                ProbabilisticHough::Parameters p;
+                p.theta = degrees * CV_PI / 180;
+                p.threshold = threshold;
+                p.minLineLength = threshold == 8 ? 10 : 0;
+                p.maxLineGap = threshold == 2 ? 0 : 2;
+                expectSame(image, p,
+                           name + " at " + std::to_string(degrees) + " deg, threshold " +
+                               std::to_string(threshold));
+            }
+        }
+        ProbabilisticHough::Parameters coarse;  // two-pixel distance steps
+        coarse.rho = 2;
+        coarse.theta = CV_PI / 180;
+        coarse.threshold = 5;
+        coarse.minLineLength = 4;
+        coarse.maxLineGap = 3;
+        expectSame(image, coarse, name + " at rho 2");
+    }
 }
 
 TEST(ConnectedRuns, LabelsAViewAndPaintsIntoOne) {

@@ -19,14 +19,16 @@ std::vector<LineSegment> HoughLineExtractor::extract(const FreeSpace& space) con
     cv::bitwise_xor(grown_, free, boundary_);  // free is inside grown: xor = grown minus free
     const cv::Mat& boundary = boundary_;
 
-    std::vector<cv::Vec4i> raw;
-    cv::HoughLinesP(
-        boundary, raw, 1.0, options_.angleResolutionDeg * M_PI / 180.0,
-        std::max(2, static_cast<int>(std::lround(detail::toCells(options_.minVotesLength, res)))),
-        detail::toCells(options_.minLineLength, res), detail::toCells(options_.maxLineGap, res));
+    ProbabilisticHough::Parameters hough;
+    hough.theta = options_.angleResolutionDeg * M_PI / 180.0;
+    hough.threshold =
+        std::max(2, static_cast<int>(std::lround(detail::toCells(options_.minVotesLength, res))));
+    hough.minLineLength = detail::toCells(options_.minLineLength, res);
+    hough.maxLineGap = detail::toCells(options_.maxLineGap, res);
+    hough_.find(boundary, hough, raw_);
     std::vector<LineSegment> lines;
-    lines.reserve(raw.size());
-    for (const cv::Vec4i& l : raw) {
+    lines.reserve(raw_.size());
+    for (const cv::Vec4i& l : raw_) {
         lines.push_back(
             {cv::Point2f(static_cast<float>(l[0] + roi.x), static_cast<float>(l[1] + roi.y)),
              cv::Point2f(static_cast<float>(l[2] + roi.x), static_cast<float>(l[3] + roi.y))});

@@ -1,10 +1,12 @@
 #pragma once
 // Step 2a of the virtual-door method (sec. 1.4.1): straight wall segments by the progressive
-// probabilistic Hough transform (OpenCV HoughLinesP) on the non-free cells that border the
-// free space: the wall faces the robot saw (unknown space beyond them does not vote) and, on
-// SLAM grids, also the unknown cells at the edges of shadows and of the unexplored space.
+// probabilistic Hough transform (OpenCV's HoughLinesP, computed by ProbabilisticHough) on the
+// non-free cells that border the free space: the wall faces the robot saw (unknown space beyond
+// them does not vote) and, on SLAM grids, also the unknown cells at the edges of shadows and of
+// the unexplored space.
 #include <toposlam/rooms/FreeSpaceBinarizer.h>
 #include <toposlam/rooms/LineSegment.h>
+#include <toposlam/rooms/ProbabilisticHough.h>
 
 #include <opencv2/core/mat.hpp>
 
@@ -31,7 +33,10 @@ class HoughLineExtractor {
 
   private:
     Options options_;
-    mutable cv::Mat grown_, boundary_;  // scratch, reused across calls
+    // Scratch, reused across calls.
+    mutable cv::Mat grown_, boundary_;
+    mutable ProbabilisticHough hough_;
+    mutable std::vector<cv::Vec4i> raw_;
 };
 
 }  // namespace toposlam::rooms

@@ -1,7 +1,9 @@
 #include <toposlam/rooms/FurniturePockets.h>
 
 #include "GridRay.h"
+#include "LabelRuns.h"
 
+#include <opencv2/core/hal/intrin.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -35,6 +37,22 @@ void trimToFullLines(const std::vector<int>& histogram, double minCount, double 
         --end;
     lo = origin + static_cast<double>(first);
     hi = origin + static_cast<double>(end);
+}
+
+/// Calls found(k) for each unlabelled (0) cell of row[begin, end), in order; four cells at a
+/// time: next to a room's run most cells are the room's.
+template <class Found>
+void forEachUnlabelled(const int* row, int begin, int end, Found found) {
+    const cv::v_int32x4 zero = cv::v_setzero_s32();
+    for (int k = begin; k < end;) {
+        if (k + 4 <= end && !cv::v_check_any(cv::v_load(row + k) == zero)) {
+            k += 4;
+            continue;
+        }
+        if (row[k] == 0)
+            found(k);
+        ++k;
+    }
 }
 
 }  // namespace
@@ -80,8 +98,7 @@ void FurniturePockets::measureBoxes(double cosine, double sine, double minSideCe
         const auto* door = nearDoor_.ptr<std::uint8_t>(y);
         for (int x = 0; x < labels.cols;) {
             const int x0 = x, label = row[x0];
-            while (x < labels.cols && row[x] == label)
-                ++x;
+            x = detail::runEnd(row, x0, labels.cols);
             if (label <= 0)
                 continue;
             RoomBox& b = box(label);
@@ -93,11 +110,8 @@ void FurniturePockets::measureBoxes(double cosine, double sine, double minSideCe
             for (const int ny : {y - 1, y + 1}) {
                 if (ny < 0 || ny >= labels.rows)
                     continue;
-                const int* other = labels.ptr<int>(ny);
-                for (int k = x0; k < x; ++k) {
-                    if (other[k] == 0)
-                        b.seeds.emplace_back(k, ny);
-                }
+                forEachUnlabelled(labels.ptr<int>(ny), x0, x,
+                                  [&](int k) { b.seeds.emplace_back(k, ny); });
             }
             // How many of the room's cells each line across it holds; not counting the cells
             // near a door (the room's half of a door opening reaches into the wall).

@@ -1,5 +1,7 @@
 #include <toposlam/rooms/TopologicalMap.h>
 
+#include "LabelRuns.h"
+
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -30,8 +32,7 @@ std::vector<RoomCells> roomCells(const cv::Mat& labels, const cv::Mat& depth) {
         for (int c = 0; c < labels.cols;) {
             const int id = row[c];
             const int start = c;
-            while (c < labels.cols && row[c] == id)
-                ++c;
+            c = detail::runEnd(row, start, labels.cols);
             if (id <= 0)
                 continue;
             if (static_cast<std::size_t>(id) > acc.size())
@@ -45,11 +46,22 @@ std::vector<RoomCells> roomCells(const cv::Mat& labels, const cv::Mat& depth) {
             a.maxCol = std::max(a.maxCol, c - 1);
             a.minRow = std::min(a.minRow, r);
             a.maxRow = std::max(a.maxRow, r);
-            for (int k = start; k < c; ++k) {
-                if (d[k] > a.deepest) {
-                    a.deepest = d[k];
-                    a.anchor = {k, r};
-                }
+            // The run's deepest cell, the first of its greatest depth; it is the room's if deeper
+            // than every cell before.
+            int k = start;
+            float deepest = a.deepest;
+            cv::v_float32x4 deepest4 = cv::v_setall_f32(deepest);
+            for (; k + 4 <= c; k += 4)
+                deepest4 = cv::v_max(deepest4, cv::v_load(d + k));
+            deepest = std::max(deepest, cv::v_reduce_max(deepest4));
+            for (; k < c; ++k)
+                deepest = std::max(deepest, d[k]);
+            if (deepest > a.deepest) {
+                k = start;
+                while (d[k] != deepest)
+                    ++k;
+                a.deepest = deepest;
+                a.anchor = {k, r};
             }
         }
     }

@@ -13,6 +13,7 @@
 #include <toposlam/rooms/WallThickness.h>
 
 #include "DrawnMaps.h"
+#include "GridRay.h"
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
@@ -426,6 +427,42 @@ TEST(ConnectedRuns, DiagonalCellsJoinOnlyEightConnected) {
     EXPECT_EQ(runs.find(cells, 4, ConnectedRuns::Cells::Zero), 3);
     EXPECT_EQ(runs.areas(), (std::vector<int>{0, 11, 1}));
     EXPECT_EQ(runs.find(cells, 8, ConnectedRuns::Cells::Zero), 2);
+}
+
+TEST(RayPattern, IsTheWalkOfItsRayFromEveryCell) {
+    // A pattern is walked once per direction and then looked up from any cell: it must give
+    // the cell walkRay() gives, also where the ray leaves the mask (outside counts as not set)
+    // and from outside it, at full length and cut short.
+    cv::RNG rng(61);
+    cv::Mat mask(23, 37, CV_8U);
+    for (int r = 0; r < mask.rows; ++r) {
+        for (int c = 0; c < mask.cols; ++c)
+            mask.at<std::uint8_t>(r, c) = rng.uniform(0.0, 1.0) < 0.08 ? 0 : 255;
+    }
+    for (const double degrees : {0.0, 0.5, 17.0, 45.0, 90.0, 135.0, 180.0, 200.0, 270.0, 301.0}) {
+        const double ux = std::cos(degrees * M_PI / 180), uy = std::sin(degrees * M_PI / 180);
+        for (const double reach : {21.0, 6.0}) {
+            const detail::RayPattern pattern(ux, uy, reach, mask);
+            for (int y = -1; y <= mask.rows; ++y) {
+                for (int x = -1; x <= mask.cols; ++x) {
+                    const cv::Point from(x, y);
+                    for (const double length : {reach, 0.5 * reach}) {
+                        cv::Point expected(-100, -100), hit(-100, -100);
+                        const bool walked = detail::walkRay(
+                            from, ux, uy, length,
+                            [&](int cx, int cy) { return !detail::isSet(mask, cx, cy); }, expected);
+                        const bool found = length == reach
+                                               ? pattern.firstUnset(mask, from, hit)
+                                               : pattern.firstUnset(mask, from, length, hit);
+                        ASSERT_EQ(found, walked) << degrees << " deg from " << from;
+                        if (walked) {
+                            ASSERT_EQ(hit, expected) << degrees << " deg from " << from;
+                        }
+                    }
+                }
+            }
+        }
+    }
 }
 
 TEST(ProbabilisticHough, IsOpenCvsHoughLinesPToTheSegment) {

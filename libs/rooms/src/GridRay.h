@@ -177,7 +177,15 @@ class RayPattern {
             },
             unused);
         offsets_.reserve(cells_.size());
+        boxes_.reserve(cells_.size());
         for (const cv::Point& c : cells_) {
+            Box box{c, c};
+            if (!boxes_.empty()) {
+                box.low = {std::min(c.x, boxes_.back().low.x), std::min(c.y, boxes_.back().low.y)};
+                box.high = {std::max(c.x, boxes_.back().high.x),
+                            std::max(c.y, boxes_.back().high.y)};
+            }
+            boxes_.push_back(box);
             reach_ = std::max({reach_, std::abs(c.x), std::abs(c.y)});
             offsets_.push_back(
                 static_cast<std::ptrdiff_t>(c.y) * static_cast<std::ptrdiff_t>(mask.step[0]) + c.x);
@@ -201,15 +209,33 @@ class RayPattern {
     // The first `count` cells of the pattern.
     bool firstUnset(const cv::Mat& mask, const cv::Point& from, cv::Point& hit,
                     std::size_t count) const {
-        if (isInterior(mask, from, reach_)) {
+        const cv::Rect image(0, 0, mask.cols, mask.rows);
+        if (image.contains(from)) {
+            // Near the border: the cells before the first one outside the mask, found by
+            // bisection on the boxes of the first cells (inside while the box is), are read
+            // unchecked; the first one outside is not set.
+            std::size_t inside = count;
+            if (!isInterior(mask, from, reach_)) {
+                inside = static_cast<std::size_t>(
+                    std::partition_point(boxes_.begin(),
+                                         boxes_.begin() + static_cast<std::ptrdiff_t>(count),
+                                         [&](const Box& box) {
+                                             return image.contains(from + box.low) &&
+                                                    image.contains(from + box.high);
+                                         }) -
+                    boxes_.begin());
+            }
             const std::uint8_t* start = mask.ptr<std::uint8_t>(from.y) + from.x;
-            for (std::size_t k = 0; k < count; ++k) {
+            for (std::size_t k = 0; k < inside; ++k) {
                 if (start[offsets_[k]] == 0) {
                     hit = from + cells_[k];
                     return true;
                 }
             }
-            return false;
+            if (inside == count)
+                return false;
+            hit = from + cells_[inside];
+            return true;
         }
         for (std::size_t k = 0; k < count; ++k) {
             if (!isSet(mask, from.x + cells_[k].x, from.y + cells_[k].y)) {
@@ -223,6 +249,10 @@ class RayPattern {
     std::vector<cv::Point> cells_;
     std::vector<double> entries_;  // ray parameter where each cell is entered (non-decreasing)
     std::vector<std::ptrdiff_t> offsets_;
+    struct Box {
+        cv::Point low, high;  // the lowest and highest x and y
+    };
+    std::vector<Box> boxes_;  // [k]: the box of cells 0..k
     int reach_ = 0;
 };
 

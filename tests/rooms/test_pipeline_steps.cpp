@@ -783,7 +783,19 @@ TEST(FreeSpaceBinarizer, KeepsTheLargestFreeRegionAboveTheThreshold) {
     // Unknown (0.5) is never free; a cell at p(free) 0.7 is free at 0.6, not at 0.8.
     auto g = grid;
     g.setCell(30, 0, 0.7f);
-    EXPECT_EQ(cv::countNonZero(FreeSpaceBinarizer({0.6}).binarize(g).otherFree), 26);
+    const FreeSpace lower = FreeSpaceBinarizer({0.6}).binarize(g);
+    EXPECT_EQ(cv::countNonZero(lower.otherFree), 26);
+    // The smaller regions' runs are their cells, in raster order.
+    cv::Mat painted = cv::Mat::zeros(lower.otherFree.size(), CV_8U);
+    for (std::size_t k = 0; k < lower.otherFreeRuns.size(); ++k) {
+        const ConnectedRuns::Run& run = lower.otherFreeRuns[k];
+        if (k > 0) {
+            const ConnectedRuns::Run& before = lower.otherFreeRuns[k - 1];
+            EXPECT_TRUE(run.row > before.row || (run.row == before.row && run.begin > before.end));
+        }
+        painted.row(run.row).colRange(run.begin, run.end).setTo(255);
+    }
+    EXPECT_EQ(cv::countNonZero(painted != lower.otherFree), 0);
     EXPECT_EQ(cv::countNonZero(FreeSpaceBinarizer({0.8}).binarize(g).otherFree), 25);
 }
 

@@ -119,6 +119,7 @@ void FreeSpaceBinarizer::keepLargestComponent(const cv::Mat& all, const cv::Rect
     out.free.setTo(0);
     out.otherFree.create(all.size(), CV_8U);
     out.otherFree.setTo(0);
+    out.otherFreeRuns.clear();
     cv::Point first(box.width, box.height), last(-1, -1);  // of the largest region, in the box
     for (const ConnectedRuns::Run& run : runs_.runs()) {
         const bool largest = run.label == best;
@@ -128,6 +129,9 @@ void FreeSpaceBinarizer::keepLargestComponent(const cv::Mat& all, const cv::Rect
         if (largest) {
             first = {std::min(first.x, run.begin), std::min(first.y, run.row)};
             last = {std::max(last.x, run.end), std::max(last.y, run.row + 1)};
+        } else {
+            out.otherFreeRuns.push_back(
+                {box.y + run.row, box.x + run.begin, box.x + run.end, run.label});
         }
     }
     out.bounds = cv::Rect(first + box.tl(), last + box.tl());

@@ -15,6 +15,17 @@ namespace toposlam::rooms {
 
 namespace {
 
+// The parts of `runs` inside `roi`, in its coordinates.
+void clipRuns(const std::vector<ConnectedRuns::Run>& runs, const cv::Rect& roi,
+              std::vector<ConnectedRuns::Run>& out) {
+    out.clear();
+    for (const ConnectedRuns::Run& run : runs) {
+        const int begin = std::max(run.begin, roi.x), end = std::min(run.end, roi.br().x);
+        if (run.row >= roi.y && run.row < roi.br().y && begin < end)
+            out.push_back({run.row - roi.y, begin - roi.x, end - roi.x, run.label});
+    }
+}
+
 // The free region's bounding box plus one ring of background: all later steps work there.
 FreeSpace cropToBounds(const FreeSpace& space, cv::Rect& roi) {
     roi = (space.bounds + cv::Size(2, 2) - cv::Point(1, 1)) &
@@ -27,13 +38,10 @@ FreeSpace cropToBounds(const FreeSpace& space, cv::Rect& roi) {
     out.unknown = space.unknown.empty() ? cv::Mat() : space.unknown(roi);
     out.wallHoleReach = space.wallHoleReach;
     out.obstacleOnBorder = space.obstacleOnBorder;
-    // Islands inside a smaller free region may lie beyond the crop, or across its edge.
-    out.islandRuns.clear();
-    for (const ConnectedRuns::Run& run : space.islandRuns) {
-        const int begin = std::max(run.begin, roi.x), end = std::min(run.end, roi.br().x);
-        if (run.row >= roi.y && run.row < roi.br().y && begin < end)
-            out.islandRuns.push_back({run.row - roi.y, begin - roi.x, end - roi.x, run.label});
-    }
+    // Islands inside a smaller free region, and smaller free regions, may lie beyond the crop,
+    // or across its edge.
+    clipRuns(space.islandRuns, roi, out.islandRuns);
+    clipRuns(space.otherFreeRuns, roi, out.otherFreeRuns);
     out.specksRemoved = space.specksRemoved;
     out.bounds = space.bounds - roi.tl();
     out.freeCells = space.freeCells;
@@ -223,7 +231,11 @@ RoomSegmenter::Result RoomSegmenter::segment(
     const auto maxSliverCells =
         static_cast<std::size_t>(options_.maxSliverArea / space.frame.cellArea());
     if (slivers) {
-        cv::findNonZero(space.otherFree, ws.sliverCells);  // empty when there is no pocket
+        ws.sliverCells.clear();  // empty when there is no pocket
+        for (const ConnectedRuns::Run& run : space.otherFreeRuns) {
+            for (int x = run.begin; x < run.end; ++x)
+                ws.sliverCells.emplace_back(x, run.row);
+        }
         detail::labelSlivers(space.otherFree, ws.sliverCells, maxSliverCells, 0, labels, ws.sliver,
                              ws.sliverVotes);
     }

@@ -38,6 +38,9 @@ struct FreeSpace {
     cv::Mat free;
     /// CV_8U, 255 = free cell of any other (smaller) free region.
     cv::Mat otherFree;
+    /// The cells of otherFree: runs along image rows, in raster order, each with the number of
+    /// its free region.
+    std::vector<ConnectedRuns::Run> otherFreeRuns;
     /// Bounding box of the cells of `free`.
     cv::Rect bounds;
     /// Number of cells of `free`.

@@ -14,6 +14,7 @@
 
 #include "DrawnMaps.h"
 #include "GridRay.h"
+#include "LabelRuns.h"
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
@@ -427,6 +428,29 @@ TEST(ConnectedRuns, DiagonalCellsJoinOnlyEightConnected) {
     EXPECT_EQ(runs.find(cells, 4, ConnectedRuns::Cells::Zero), 3);
     EXPECT_EQ(runs.areas(), (std::vector<int>{0, 11, 1}));
     EXPECT_EQ(runs.find(cells, 8, ConnectedRuns::Cells::Zero), 2);
+}
+
+TEST(LabelRuns, RunEndIsWhereTheLabelChanges) {
+    // Rows of every length around the blocks of four, runs from one cell to many.
+    cv::RNG rng(61);
+    for (int cols = 1; cols <= 19; ++cols) {
+        for (int trial = 0; trial < 50; ++trial) {
+            std::vector<int> row(static_cast<std::size_t>(cols));
+            int label = 0;
+            for (int& cell : row) {
+                if (rng.uniform(0, 5) == 0)
+                    label = rng.uniform(-1, 3);
+                cell = label;
+            }
+            for (int x = 0; x < cols; ++x) {
+                int end = x;
+                while (end < cols &&
+                       row[static_cast<std::size_t>(end)] == row[static_cast<std::size_t>(x)])
+                    ++end;
+                ASSERT_EQ(detail::runEnd(row.data(), x, cols), end) << cols << " cells from " << x;
+            }
+        }
+    }
 }
 
 TEST(RayPattern, IsTheWalkOfItsRayFromEveryCell) {

@@ -2,6 +2,7 @@
 
 #include "LabelRuns.h"
 
+#include <opencv2/core/hal/intrin.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>

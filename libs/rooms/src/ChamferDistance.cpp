@@ -34,6 +34,32 @@ using cv::v_int32x4;
 // lies outside a block of four when its own cells are combined.
 constexpr int kBeyond = INT_MAX >> 1;
 
+// value = min(cell, value + kStep) walked over a block of four cells `v`, towards its last lane
+// (Forward) or its first: the block's own cells first (each with the one, then the two, before
+// it), then `carry`, the value before the block, which becomes the value at its end. The blocks
+// wait on one another for one add and one min each. Integer minima of sums: the same values as
+// cell by cell.
+template <bool Forward>
+v_int32x4 runningMinimum4(v_int32x4 v, int& carry) {
+    const v_int32x4 beyond = cv::v_setall_s32(kBeyond);
+    int end = 0;
+    if constexpr (Forward) {
+        v = cv::v_min(v, cv::v_rotate_left<1>(v, beyond) + cv::v_setall_s32(kStep));
+        v = cv::v_min(v, cv::v_rotate_left<2>(v, beyond) + cv::v_setall_s32(2 * kStep));
+        end = cv::v_extract_n<3>(v);
+        v = cv::v_min(v,
+                      cv::v_setall_s32(carry) + v_int32x4(kStep, 2 * kStep, 3 * kStep, 4 * kStep));
+    } else {
+        v = cv::v_min(v, cv::v_rotate_right<1>(v, beyond) + cv::v_setall_s32(kStep));
+        v = cv::v_min(v, cv::v_rotate_right<2>(v, beyond) + cv::v_setall_s32(2 * kStep));
+        end = cv::v_extract_n<0>(v);
+        v = cv::v_min(v,
+                      cv::v_setall_s32(carry) + v_int32x4(4 * kStep, 3 * kStep, 2 * kStep, kStep));
+    }
+    carry = std::min(end, carry + 4 * kStep);
+    return v;
+}
+
 }  // namespace
 
 void chamferDistance5x5(const cv::Mat& free, cv::Mat& out, std::vector<int>& rowsScratch) {
@@ -49,11 +75,7 @@ void chamferDistance5x5(const cv::Mat& free, cv::Mat& out, std::vector<int>& row
     };
     const v_int32x4 step = cv::v_setall_s32(kStep), diagonal = cv::v_setall_s32(kDiagonal),
                     knight = cv::v_setall_s32(kKnight), zero = cv::v_setzero_s32();
-    const v_int32x4 beyond = cv::v_setall_s32(kBeyond), twoSteps = cv::v_setall_s32(2 * kStep),
-                    far = cv::v_setall_s32(kFar);
-    // What a distance gains in each lane of a block from the cell before (after) the block.
-    const v_int32x4 rampRight(kStep, 2 * kStep, 3 * kStep, 4 * kStep),
-        rampLeft(4 * kStep, 3 * kStep, 2 * kStep, kStep);
+    const v_int32x4 far = cv::v_setall_s32(kFar);
     auto fromOtherRows4 = [&](const int* near, const int* next, int c) {
         v_int32x4 m = cv::v_min(cv::v_load(next + c - 1), cv::v_load(next + c + 1)) + knight;
         m = cv::v_min(m, cv::v_min(cv::v_load(near + c - 2), cv::v_load(near + c + 2)) + knight);
@@ -76,22 +98,13 @@ void chamferDistance5x5(const cv::Mat& free, cv::Mat& out, std::vector<int>& row
         }
         for (; c < cols; ++c)
             t[c] = isFree[c] ? fromOtherRows(above, above2, c) : 0;
-        // left = min(t[c], left + kStep) from c = 0 on, four cells at a time: the block's
-        // own cells first (each with the one, then the two, before it), then what comes from
-        // the left of the block; that goes on to the next block as one scalar, so the blocks
-        // wait on one add and one min each. Integer minima of sums: the same values as one by
-        // one.
+        // left = min(t[c], left + kStep) from c = 0 on, four cells at a time.
         int* pass = out.ptr<int>(r);  // the integer distances wait in `out`
         int left = kFar;
         for (c = 0; c + 4 <= cols; c += 4) {
-            v_int32x4 v = cv::v_load(t + c);
-            v = cv::v_min(v, cv::v_rotate_left<1>(v, beyond) + step);
-            v = cv::v_min(v, cv::v_rotate_left<2>(v, beyond) + twoSteps);
-            const int last = cv::v_extract_n<3>(v);
-            v = cv::v_min(v, cv::v_setall_s32(left) + rampRight);
+            const v_int32x4 v = runningMinimum4<true>(cv::v_load(t + c), left);
             cv::v_store(t + c, v);
             cv::v_store(pass + c, v);
-            left = std::min(last, left + 4 * kStep);
         }
         for (; c < cols; ++c) {
             left = std::min(t[c], left + kStep);
@@ -124,14 +137,9 @@ void chamferDistance5x5(const cv::Mat& free, cv::Mat& out, std::vector<int>& row
             distance[c] = static_cast<float>(std::min(right, kFar)) * scale;  // as OpenCV caps
         }
         for (c = blocks - 4; c >= 0; c -= 4) {
-            v_int32x4 v = cv::v_load(t + c);
-            v = cv::v_min(v, cv::v_rotate_right<1>(v, beyond) + step);
-            v = cv::v_min(v, cv::v_rotate_right<2>(v, beyond) + twoSteps);
-            const int first = cv::v_extract_n<0>(v);
-            v = cv::v_min(v, cv::v_setall_s32(right) + rampLeft);
+            const v_int32x4 v = runningMinimum4<false>(cv::v_load(t + c), right);
             cv::v_store(t + c, v);
             cv::v_store(distance + c, cv::v_cvt_f32(cv::v_min(v, far)) * scale4);
-            right = std::min(first, right + 4 * kStep);
         }
     }
 }

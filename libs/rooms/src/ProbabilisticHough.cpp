@@ -64,8 +64,7 @@ bool ProbabilisticHough::takeLine(int x, int y, int n, int minLength, int maxGap
             const cv::Point p = pixelAt(px, py);
             if (p.x < 0 || p.x >= width_ || p.y < 0 || p.y >= height_)
                 break;
-            if (mask_[static_cast<std::size_t>(p.y) * static_cast<std::size_t>(width_) +
-                      static_cast<std::size_t>(p.x)] != 0) {
+            if (maskAt(p) != 0) {
                 gap = 0;
                 ends[k] = p;
             } else if (++gap > maxGap) {
@@ -83,9 +82,7 @@ bool ProbabilisticHough::takeLine(int x, int y, int n, int minLength, int maxGap
         const int dx = k == 0 ? dx0 : -dx0, dy = k == 0 ? dy0 : -dy0;
         for (int px = x0, py = y0;; px += dx, py += dy) {
             const cv::Point p = pixelAt(px, py);
-            std::uint8_t& set =
-                mask_[static_cast<std::size_t>(p.y) * static_cast<std::size_t>(width_) +
-                      static_cast<std::size_t>(p.x)];
+            std::uint8_t& set = maskAt(p);
             if (set != 0) {
                 if (isSegment) {
                     cellsOf(p.x, p.y);
@@ -160,10 +157,8 @@ void ProbabilisticHough::find(const cv::Mat& image, const Parameters& p,
         const auto pick = static_cast<std::size_t>(random.uniform(0, count));
         const cv::Point pixel = pixels_[pick];
         pixels_[pick] = pixels_[static_cast<std::size_t>(count - 1)];
-        if (mask_[static_cast<std::size_t>(pixel.y) * static_cast<std::size_t>(width_) +
-                  static_cast<std::size_t>(pixel.x)] == 0) {
+        if (maskAt(pixel) == 0)
             continue;  // drawn with an earlier line
-        }
         // Its votes; then the strongest line, the first angle with the most votes.
         cellsOf(pixel.x, pixel.y);
         int* cells = cells_.data();

@@ -36,6 +36,11 @@ class ProbabilisticHough {
     void find(const cv::Mat& image, const Parameters& p, std::vector<cv::Vec4i>& lines);
 
   private:
+    // The mask's cell of pixel p (inside the image).
+    std::uint8_t& maskAt(const cv::Point& p) {
+        return mask_[static_cast<std::size_t>(p.y) * static_cast<std::size_t>(width_) +
+                     static_cast<std::size_t>(p.x)];
+    }
     // Writes the accumulator index of the cell (angle n, distance of pixel (x, y)) for every
     // angle into cells_.
     void cellsOf(int x, int y);

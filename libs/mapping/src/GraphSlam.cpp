@@ -92,6 +92,7 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
         // Wheels do not teleport: predict the motion of the last scan instead (a stalled
         // odometry that catches up in one step jumps; the robot kept moving meanwhile).
         p.odometryJumped = true;
+        p.jumpedStep = increment;
         ++stats_.odometryJumps;
         increment = lastMotion_;
     } else if (catchingUp) {
@@ -166,6 +167,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     const Registration r =
         registration_.registerScan(polar_, sensorOnRobot, prediction, extract, features_);
     stats_.lastMotionPredictions += r.byLastMotion;
+    stats_.odometryJumpsBorneOut += r.jumpBorneOut;
     if (r.alongHeading) {
         stats_.alongHeadingChecks.push_back(*r.alongHeading);
         stats_.alongHeadingChecks.back().scan = stats_.scans - 1;

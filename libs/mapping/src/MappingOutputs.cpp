@@ -113,13 +113,15 @@ std::string formatSummary(const MappingResult& r) {
             "%zu without foreground objects; %zu held at the odometry's position along the "
             "heading), %zu by the graph "
             "matcher (%.1f %%; %zu of them beyond a jump, confirmed on the submap), %zu failed "
-            "(%.1f %%, odometry kept); %s; %s catching up after a stall; %zu predicted by the "
-            "last motion instead of the odometry",
+            "(%.1f %%, odometry kept); %s (%zu of them borne out by the scan: a fast turn); %s "
+            "catching up after a stall; %zu predicted by the last motion instead of the "
+            "odometry",
             st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
             st->icpSecondStarts, st->icpWithoutForeground, st->icpHeldAlongHeading,
             st->registeredByGraphMatcher, percent(st->registeredByGraphMatcher, n),
             st->graphMatcherConfirmed, st->registrationFailed, percent(st->registrationFailed, n),
             counted(st->odometryJumps, "odometry jump", "odometry jumps").c_str(),
+            st->odometryJumpsBorneOut,
             counted(st->odometryCatchUps, "odometry step", "odometry steps").c_str(),
             st->lastMotionPredictions);
         if (st->scansWithoutOdometry > 0)
@@ -195,6 +197,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
                              {"last_motion_predictions", st->lastMotionPredictions},
                              {"failed", st->registrationFailed},
                              {"odometry_jumps", st->odometryJumps},
+                             {"odometry_jumps_borne_out", st->odometryJumpsBorneOut},
                              {"odometry_catch_ups", st->odometryCatchUps},
                              {"registered_share", st->registeredShare()}};
         // Where ICP and the odometry disagreed along the heading, and what the scan said

@@ -267,9 +267,11 @@ const Prediction& ScanRegistration::preferredPrediction(const matching::PolarSca
                                                         const CPose2D& sensorOnRobot,
                                                         const Prediction& prediction,
                                                         std::optional<IcpAttempt>& started) {
-    if (!options_.confirmLargeCorrections || prediction.odometryJumped || !prediction.submap ||
+    if (!options_.confirmLargeCorrections || !prediction.submap ||
         prediction.submap->map().size() == 0 || scan.validCount() == 0)
         return prediction;
+    if (prediction.odometryJumped)
+        return jumpBorneOut(scan, sensorOnRobot, prediction, started);
     // The last motion's pose is the odometry's, less the odometry's step, plus that motion.
     const CPose2D toMotion = (-prediction.odometryStep) + prediction.lastMotion;
     if (toMotion.norm() <= options_.icpMaxDistance)
@@ -294,6 +296,32 @@ const Prediction& ScanRegistration::preferredPrediction(const matching::PolarSca
     motionPrediction_ = prediction;
     motionPrediction_.inSubmap = byMotion;
     motionPrediction_.fromLastKeyframe = prediction.fromLastKeyframe + toMotion;
+    return motionPrediction_;
+}
+
+const Prediction& ScanRegistration::jumpBorneOut(const matching::PolarScan& scan,
+                                                 const CPose2D& sensorOnRobot,
+                                                 const Prediction& prediction,
+                                                 std::optional<IcpAttempt>& started) {
+    // The odometry's pose is the last motion's, less that motion, plus the odometry's step.
+    const CPose2D toOdometry = (-prediction.odometryStep) + prediction.jumpedStep;
+    const Submap& submap = *prediction.submap;
+    const CPose2D byOdometry = prediction.inSubmap + toOdometry;
+    IcpAttempt fromOdometry = icpFrom(scan, sensorOnRobot, submap, byOdometry);
+    if (!acceptable(fromOdometry, byOdometry))
+        return prediction;
+    // A real jump (a stall caught up in one step) puts ICP from the odometry off the robot:
+    // along a corridor it may fit as well as from the last motion, but not clearly better.
+    const IcpAttempt fromMotion = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap);
+    if (!bearsOut(submap.map(), scan, sensorOnRobot, fromOdometry.robot, fromMotion.robot,
+                  options_.secondOpinionMargin))
+        return prediction;
+    started = std::move(fromOdometry);
+    motionPrediction_ = prediction;
+    motionPrediction_.odometryJumped = false;
+    motionPrediction_.odometryStep = prediction.jumpedStep;
+    motionPrediction_.inSubmap = byOdometry;
+    motionPrediction_.fromLastKeyframe = prediction.fromLastKeyframe + toOdometry;
     return motionPrediction_;
 }
 

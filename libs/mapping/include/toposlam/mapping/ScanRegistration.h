@@ -9,7 +9,11 @@
 //     ICP first runs from both, and the last motion replaces the odometry as the prediction
 //     when both end at the same pose or it puts second_opinion_margin more of the scan on the
 //     submap (odometry that counts reversing as driving forward: fr079 at a third of its scan
-//     rate).
+//     rate). Conversely, after an odometry jump (the prediction is then the last motion),
+//     ICP also runs from the odometry's own step, and that step is the prediction when ICP
+//     from it passes the tests below and ends where ICP from the last motion does or puts
+//     second_opinion_margin more of the scan on the submap: at a low scan rate a fast turn
+//     departs from the last motion by as much as a jump (mit-csail at a quarter of its rate).
 //     With second_opinion on (the default), when ICP has not settled (no convergence, and a
 //     residual over twice the recent median), it is run again from the graph matcher's answer
 //     and from the prediction turned either way, and the start that explains clearly more of
@@ -71,6 +75,9 @@ struct Registration {
     /// Predicted by the robot's last motion instead of the odometry's step
     /// (confirm_large_corrections).
     bool byLastMotion = false;
+    /// Predicted by the odometry's step although it was judged a jump: the scan bore it out
+    /// (a fast turn at a low scan rate; confirm_large_corrections).
+    bool jumpBorneOut = false;
     /// The along-heading check's evidence when it ran (its `scan` is left 0: the caller knows
     /// which scan this is).
     std::optional<AlongHeadingCheck> alongHeading;
@@ -95,6 +102,8 @@ struct Prediction {
     double distanceFromLastKeyframe = 0;    ///< m travelled by odometry since then
     double turnFromLastKeyframe = 0;        ///< rad turned by odometry since then
     bool odometryJumped = false;
+    /// After a jump, the odometry's own step that was judged one (robot frame, m, rad).
+    mrpt::poses::CPose2D jumpedStep;
     /// The odometry is catching up after a stall (OdometryLag): the last motion was predicted.
     bool odometryLagging = false;
     /// The odometry's step since the last scan as predicted (the last motion after a jump),
@@ -189,13 +198,22 @@ class ScanRegistration {
     /// from the last motion ends where ICP from the odometry does, or puts
     /// second_opinion_margin more of `scan` on the submap, or passes tryIcp()'s overlap and
     /// correction tests and puts more of `scan` on it where ICP from the odometry fails them
-    /// (confirm_large_corrections). When it
+    /// (confirm_large_corrections). After an odometry jump, jumpBorneOut() instead. When it
     /// compared the two, `started` gets the ICP run from the prediction returned, so that it
     /// is not run again.
     const Prediction& preferredPrediction(const matching::PolarScan& scan,
                                           const mrpt::poses::CPose2D& sensorOnRobot,
                                           const Prediction& prediction,
                                           std::optional<IcpAttempt>& started);
+    /// After an odometry jump (`prediction` is the last motion): the same with the odometry's
+    /// own step (kept in motionPrediction_) when ICP from it passes tryIcp()'s overlap and
+    /// correction tests and ends where ICP from the last motion does, or puts
+    /// second_opinion_margin more of `scan` on the submap (confirm_large_corrections); then
+    /// `started` gets that ICP run. Otherwise `prediction`.
+    const Prediction& jumpBorneOut(const matching::PolarScan& scan,
+                                   const mrpt::poses::CPose2D& sensorOnRobot,
+                                   const Prediction& prediction,
+                                   std::optional<IcpAttempt>& started);
     /// Median residual RMS of the last accepted ICP registrations (m; 0 before there are
     /// enough): the scale of "a residual well above the recent ones" for this laser and place.
     double typicalResidual() const;
@@ -227,7 +245,8 @@ Registration ScanRegistration::registerScan(const matching::PolarScan& scan,
     std::optional<IcpAttempt> started;
     const Prediction& prediction =
         preferredPrediction(scan, sensorOnRobot, odometryPrediction, started);
-    out.byLastMotion = &prediction != &odometryPrediction;
+    out.jumpBorneOut = odometryPrediction.odometryJumped && !prediction.odometryJumped;
+    out.byLastMotion = !out.jumpBorneOut && &prediction != &odometryPrediction;
     if (!prediction.odometryJumped &&
         tryIcp(scan, sensorOnRobot, prediction, out, started ? &*started : nullptr)) {
         if (icpUnsettled_ && prediction.lastKeyframe) {  // set only with second_opinion on

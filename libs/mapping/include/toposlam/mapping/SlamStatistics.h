@@ -45,6 +45,9 @@ struct SlamStatistics {
     std::size_t lastMotionPredictions = 0;
     std::size_t registrationFailed = 0;  ///< both failed: odometry prediction kept
     std::size_t odometryJumps = 0;       ///< odometry increments rejected as jumps
+    /// Of those, steps the scan bore out all the same, which predicted it (a fast turn at a low
+    /// scan rate; confirm_large_corrections).
+    std::size_t odometryJumpsBorneOut = 0;
     /// odometry increments taken for catching up after a stall (OdometryLag.h)
     std::size_t odometryCatchUps = 0;
     /// Scans that came without an odometry increment (a laser-only log), each predicted by

@@ -758,6 +758,9 @@ TEST(MappingOutputs, CountsAgreeInNumber) {
           "loop closures: 1 candidate verified,", "(1 run)"}) {
         EXPECT_NE(summary.find(phrase), std::string::npos) << phrase << "\n" << summary;
     }
+    st.odometryJumps = 0;  // no jumps: nothing said of those borne out
+    const std::string noJumps = mapping::formatSummary(result);
+    EXPECT_NE(noJumps.find("; 0 odometry jumps; 2 odometry steps"), std::string::npos) << noJumps;
 }
 
 TEST(GraphSlam, ARobotLaserLogMapsTheRobotNotItsLaser) {

@@ -108,21 +108,22 @@ std::string formatSummary(const MappingResult& r) {
                   counted(st->submaps, "submap", "submaps").c_str(),
                   r.smoothedScans ? "registration and odometry together"
                                   : "registration alone (smooth_scans off)");
+        std::string jumps = counted(st->odometryJumps, "odometry jump", "odometry jumps");
+        if (st->odometryJumps > 0)
+            jumps += " (" + std::to_string(st->odometryJumpsBorneOut) +
+                     " of them borne out by the scan: a fast turn)";
         s += line(
             "registration: %zu by ICP (%.1f %%; %zu unsettled, %zu of them from a second start; "
             "%zu without foreground objects; %zu held at the odometry's position along the "
             "heading), %zu by the graph "
             "matcher (%.1f %%; %zu of them beyond a jump, confirmed on the submap), %zu failed "
-            "(%.1f %%, odometry kept); %s (%zu of them borne out by the scan: a fast turn); %s "
-            "catching up after a stall; %zu predicted by the last motion instead of the "
-            "odometry",
+            "(%.1f %%, odometry kept); %s; %s catching up after a stall; %zu predicted by the "
+            "last motion instead of the odometry",
             st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
             st->icpSecondStarts, st->icpWithoutForeground, st->icpHeldAlongHeading,
             st->registeredByGraphMatcher, percent(st->registeredByGraphMatcher, n),
             st->graphMatcherConfirmed, st->registrationFailed, percent(st->registrationFailed, n),
-            counted(st->odometryJumps, "odometry jump", "odometry jumps").c_str(),
-            st->odometryJumpsBorneOut,
-            counted(st->odometryCatchUps, "odometry step", "odometry steps").c_str(),
+            jumps.c_str(), counted(st->odometryCatchUps, "odometry step", "odometry steps").c_str(),
             st->lastMotionPredictions);
         if (st->scansWithoutOdometry > 0)
             s += line(

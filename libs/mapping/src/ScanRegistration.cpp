@@ -293,9 +293,14 @@ const Prediction& ScanRegistration::preferredPrediction(const matching::PolarSca
         return prediction;
     }
     started = std::move(fromMotion);
+    return shifted(prediction, toMotion);
+}
+
+const Prediction& ScanRegistration::shifted(const Prediction& prediction, const CPose2D& shift) {
     motionPrediction_ = prediction;
-    motionPrediction_.inSubmap = byMotion;
-    motionPrediction_.fromLastKeyframe = prediction.fromLastKeyframe + toMotion;
+    motionPrediction_.odometryStep = prediction.odometryStep + shift;
+    motionPrediction_.inSubmap = prediction.inSubmap + shift;
+    motionPrediction_.fromLastKeyframe = prediction.fromLastKeyframe + shift;
     return motionPrediction_;
 }
 
@@ -317,11 +322,8 @@ const Prediction& ScanRegistration::jumpBorneOut(const matching::PolarScan& scan
                   options_.secondOpinionMargin))
         return prediction;
     started = std::move(fromOdometry);
-    motionPrediction_ = prediction;
+    shifted(prediction, toOdometry);
     motionPrediction_.odometryJumped = false;
-    motionPrediction_.odometryStep = prediction.jumpedStep;
-    motionPrediction_.inSubmap = byOdometry;
-    motionPrediction_.fromLastKeyframe = prediction.fromLastKeyframe + toOdometry;
     return motionPrediction_;
 }
 

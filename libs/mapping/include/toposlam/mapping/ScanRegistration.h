@@ -214,6 +214,10 @@ class ScanRegistration {
                                    const mrpt::poses::CPose2D& sensorOnRobot,
                                    const Prediction& prediction,
                                    std::optional<IcpAttempt>& started);
+    /// `prediction` with the predicted step since the last scan followed by `shift` (robot
+    /// frame), kept in motionPrediction_: the alternatives preferredPrediction() and
+    /// jumpBorneOut() choose.
+    const Prediction& shifted(const Prediction& prediction, const mrpt::poses::CPose2D& shift);
     /// Median residual RMS of the last accepted ICP registrations (m; 0 before there are
     /// enough): the scale of "a residual well above the recent ones" for this laser and place.
     double typicalResidual() const;
@@ -226,7 +230,7 @@ class ScanRegistration {
     /// Robot pose (submap frame) where the last ICP that tryIcp rejected ended; empty when
     /// tryIcp accepted, or did not run ICP.
     std::optional<mrpt::poses::CPose2D> failedIcp_;
-    Prediction motionPrediction_;  ///< preferredPrediction()'s alternative
+    Prediction motionPrediction_;  ///< shifted()'s prediction
     matching::PointToLineIcp icp_;
     matching::IcpOptions icpOptions_;
     matching::GraphScanMatcher matcher_;

@@ -102,6 +102,7 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
         ++stats_.odometryCatchUps;
         increment = lastMotion_;
     }
+    p.odometryPredicted = odometryIncrement && !p.odometryJumped && !p.odometryLagging;
     p.odometryStep = increment;
     p.lastMotion = lastMotion_;
     const CPose2D predicted = current_ + increment;
@@ -168,6 +169,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
         registration_.registerScan(polar_, sensorOnRobot, prediction, extract, features_);
     stats_.lastMotionPredictions += r.byLastMotion;
     stats_.odometryJumpsBorneOut += r.jumpBorneOut;
+    stats_.icpUnsettledRefused += r.unsettledRefused;
     if (r.alongHeading) {
         stats_.alongHeadingChecks.push_back(*r.alongHeading);
         stats_.alongHeadingChecks.back().scan = stats_.scans - 1;

@@ -62,6 +62,10 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
             "... the prediction turned by +-1 and +-2 times this (0: no turned starts)")
         .atLeast(0)
         .atMost(90);
+    s.real("unsettled_max_chi2", unsettledMaxChi2, "",
+           "ICP that has not settled is taken only within this chi-square (3 dof) of the "
+           "odometry model's step (0 = off)")
+        .atLeast(0);
     s.real("foreground_check", foregroundCheck, "m",
            "ICP correcting the prediction by more than this along the heading runs again "
            "without small objects near the laser (people); 0 = off")

@@ -113,17 +113,19 @@ std::string formatSummary(const MappingResult& r) {
             jumps += " (" + std::to_string(st->odometryJumpsBorneOut) +
                      " of them borne out by the scan: a fast turn)";
         s += line(
-            "registration: %zu by ICP (%.1f %%; %zu unsettled, %zu of them from a second start; "
+            "registration: %zu by ICP (%.1f %%; %zu unsettled, %zu of them from a second start, "
+            "%zu more refused beyond the odometry's noise; "
             "%zu without foreground objects; %zu held at the odometry's position along the "
             "heading), %zu by the graph "
             "matcher (%.1f %%; %zu of them beyond a jump, confirmed on the submap), %zu failed "
             "(%.1f %%, odometry kept); %s; %s catching up after a stall; %zu predicted by the "
             "last motion instead of the odometry",
             st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
-            st->icpSecondStarts, st->icpWithoutForeground, st->icpHeldAlongHeading,
-            st->registeredByGraphMatcher, percent(st->registeredByGraphMatcher, n),
-            st->graphMatcherConfirmed, st->registrationFailed, percent(st->registrationFailed, n),
-            jumps.c_str(), counted(st->odometryCatchUps, "odometry step", "odometry steps").c_str(),
+            st->icpSecondStarts, st->icpUnsettledRefused, st->icpWithoutForeground,
+            st->icpHeldAlongHeading, st->registeredByGraphMatcher,
+            percent(st->registeredByGraphMatcher, n), st->graphMatcherConfirmed,
+            st->registrationFailed, percent(st->registrationFailed, n), jumps.c_str(),
+            counted(st->odometryCatchUps, "odometry step", "odometry steps").c_str(),
             st->lastMotionPredictions);
         if (st->scansWithoutOdometry > 0)
             s += line(
@@ -191,6 +193,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
         j["registration"] = {{"icp", st->registeredByIcp},
                              {"icp_unsettled", st->icpUnsettled},
                              {"icp_second_start", st->icpSecondStarts},
+                             {"icp_unsettled_refused", st->icpUnsettledRefused},
                              {"icp_without_foreground", st->icpWithoutForeground},
                              {"icp_held_along_heading", st->icpHeldAlongHeading},
                              {"graph_matcher", st->registeredByGraphMatcher},

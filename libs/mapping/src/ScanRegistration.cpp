@@ -126,6 +126,18 @@ ScanRegistration::IcpAttempt ScanRegistration::icpFrom(const matching::PolarScan
     return a;
 }
 
+bool ScanRegistration::outrunsOdometry(const Prediction& prediction, const CPose2D& pose) const {
+    if (!(options_.unsettledMaxChi2 > 0) || !prediction.odometryPredicted)
+        return false;
+    const CPose2D correction = pose - prediction.inSubmap;
+    const Eigen::Vector3d e(correction.x(), correction.y(), mrpt::math::wrapToPi(correction.phi()));
+    const CMatrixDouble33 c =
+        odometryCovariance(prediction.odometryStep.norm(),
+                           std::abs(mrpt::math::wrapToPi(prediction.odometryStep.phi())));
+    const double chi2 = e.dot(c.asEigen().ldlt().solve(e));
+    return chi2 > options_.unsettledMaxChi2;
+}
+
 bool ScanRegistration::plausibleCorrection(const CPose2D& correction) const {
     return correction.norm() <= options_.maxCorrectionDistance &&
            std::abs(mrpt::math::wrapToPi(correction.phi())) <= options_.maxCorrectionAngle &&
@@ -220,7 +232,13 @@ bool ScanRegistration::tryIcp(const matching::PolarScan& scan, const CPose2D& se
     return true;
 }
 
-void ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPose2D& sensorOnRobot,
+bool ScanRegistration::settled(const IcpAttempt& attempt) const {
+    const double typical = typicalResidual();
+    return attempt.icp.converged ||
+           (typical > 0 && attempt.icp.residualRms <= kUnsettledResidualRatio * typical);
+}
+
+bool ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPose2D& sensorOnRobot,
                                      const Prediction& prediction, const Registration* matched,
                                      Registration& icp) {
     const Submap& submap = *prediction.submap;
@@ -243,8 +261,12 @@ void ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
     std::size_t bestOn =
         onMap(icp.pose) + std::size_t(options_.secondOpinionMargin * double(scan.validCount()));
     std::optional<IcpAttempt> best;
+    std::array<CPose2D, 5> settledEnds;  // where the starts' ICP settled
+    std::size_t settledCount = 0;
     for (std::size_t i = 0; i < count; ++i) {
         IcpAttempt alt = icpFrom(scan, sensorOnRobot, submap, starts[i]);
+        if (settled(alt))
+            settledEnds[settledCount++] = alt.robot;
         const std::size_t altOn = onMap(alt.robot);
         if (altOn <= bestOn || (!prediction.odometryJumped &&
                                 beyondOdometryJump(options_, alt.robot - prediction.inSubmap))) {
@@ -253,14 +275,18 @@ void ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
         bestOn = altOn;
         best = alt;
     }
-    if (!best)
-        return;
-    icp.pose = best->robot;
-    icp.overlap = best->overlap;
-    icp.rawCovariance = best->icp.covariance;
-    icp.covariance = edgeCovariance(best->icp.covariance, prediction.distanceFromLastKeyframe,
-                                    prediction.turnFromLastKeyframe);
-    icp.secondStart = true;
+    if (best) {
+        icp.pose = best->robot;
+        icp.overlap = best->overlap;
+        icp.rawCovariance = best->icp.covariance;
+        icp.covariance = edgeCovariance(best->icp.covariance, prediction.distanceFromLastKeyframe,
+                                        prediction.turnFromLastKeyframe);
+        icp.secondStart = true;
+    }
+    // Far beyond the odometry's noise an answer counts only where some start settled.
+    return !outrunsOdometry(prediction, icp.pose) ||
+           std::any_of(settledEnds.begin(), settledEnds.begin() + settledCount,
+                       [&](const CPose2D& end) { return sameEnd(end, icp.pose); });
 }
 
 const Prediction& ScanRegistration::preferredPrediction(const matching::PolarScan& scan,
@@ -301,6 +327,7 @@ const Prediction& ScanRegistration::shifted(const Prediction& prediction, const 
     motionPrediction_.odometryStep = prediction.odometryStep + shift;
     motionPrediction_.inSubmap = prediction.inSubmap + shift;
     motionPrediction_.fromLastKeyframe = prediction.fromLastKeyframe + shift;
+    motionPrediction_.odometryPredicted = false;
     return motionPrediction_;
 }
 
@@ -324,6 +351,7 @@ const Prediction& ScanRegistration::jumpBorneOut(const matching::PolarScan& scan
     started = std::move(fromOdometry);
     shifted(prediction, toOdometry);
     motionPrediction_.odometryJumped = false;
+    motionPrediction_.odometryPredicted = true;  // the odometry's own step, borne out
     return motionPrediction_;
 }
 

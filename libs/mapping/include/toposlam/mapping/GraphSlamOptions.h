@@ -52,6 +52,15 @@ struct GraphSlamOptions : public config::Options {
     bool secondOpinion = true;
     double secondOpinionMargin = 0.25;
     double secondOpinionTurn = 0.15;  ///< rad (8.6 deg)
+    /// The second opinion's answer (unsettled ICP from the prediction, or a second start) that
+    /// corrects the odometry's step by more than this chi-square (3 dof) of the odometry model
+    /// for that step (odometry_sigma_*) counts only where one of the second starts settled;
+    /// otherwise the scan goes to the graph matcher, then keeps the odometry. Applies where
+    /// the odometry's own step was predicted (not the last motion). 0 = off. 100 is ten
+    /// sigmas: real odometries erred by up to 9 (mit-csail's 14-16 deg turns, fr079's reversing),
+    /// and ICP among people crowding the laser ended 12 off (0.3 m ahead, 17 deg turned), with
+    /// every other start unsettled too.
+    double unsettledMaxChi2 = 100;
     /// When ICP corrects the prediction by more than this along the robot's heading (m; 0 =
     /// off), it is run again without the scan's small objects close to the laser
     /// (ForegroundObjects.h), and that answer is taken when it keeps less than half of the

@@ -67,6 +67,9 @@ struct Registration {
     bool secondStart = false;
     /// ICP had not settled, so a second start was tried (second_opinion on).
     bool unsettled = false;
+    /// ... and no start settled where the odometry model allows (unsettled_max_chi2): the scan
+    /// went to the graph matcher instead.
+    bool unsettledRefused = false;
     /// ICP without the scan's foreground objects (foreground_check), which took back the step.
     bool withoutForeground = false;
     /// The graph matcher's answer beyond the jump bounds, confirmed by ICP on the submap
@@ -106,6 +109,9 @@ struct Prediction {
     mrpt::poses::CPose2D jumpedStep;
     /// The odometry is catching up after a stall (OdometryLag): the last motion was predicted.
     bool odometryLagging = false;
+    /// The prediction is the odometry's own step (not the last motion: no jump, no stall, a log
+    /// with odometry), so the odometry model bounds its error.
+    bool odometryPredicted = false;
     /// The odometry's step since the last scan as predicted (the last motion after a jump),
     /// and the robot's motion registered at the last scan (robot frame, m, rad).
     mrpt::poses::CPose2D odometryStep, lastMotion;
@@ -134,6 +140,12 @@ class ScanRegistration {
     /// True when `scan` has objects close to the laser that stand in front of what lies behind
     /// them (people, mostly; ForegroundObjects.h with foreground_max_range and _width).
     bool seesForegroundObjects(const matching::PolarScan& scan) const;
+
+    /// True when `pose` (robot, in the prediction's submap frame) corrects the odometry's
+    /// predicted step by more than unsettled_max_chi2 (a chi-square, 3 dof) of the odometry
+    /// model for that step (odometryCovariance).
+    /// False when the prediction is not the odometry's own step or the rule is off.
+    bool outrunsOdometry(const Prediction& prediction, const mrpt::poses::CPose2D& pose) const;
 
   private:
     struct IcpAttempt {
@@ -189,10 +201,14 @@ class ScanRegistration {
     /// ICP from `prediction` ended in `icp` without settling: ICP again from the graph
     /// matcher's answer `matched` (when it has one) and from the prediction turned by +-1 and
     /// +-2 second_opinion_turn; the end that puts at least second_opinion_margin more of the
-    /// scan's readings on the submap than `icp` replaces it.
-    void secondOpinion(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
+    /// scan's readings on the submap than `icp` replaces it. Returns false when the answer
+    /// outruns the odometry (outrunsOdometry) and none of those starts settled there: no answer.
+    bool secondOpinion(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                        const Prediction& prediction, const Registration* matched,
                        Registration& icp);
+    /// ICP that converged, or ended with a residual within kUnsettledResidualRatio of the
+    /// recent registrations'.
+    bool settled(const IcpAttempt& attempt) const;
     /// `prediction`, or the same with the robot's last motion instead of the odometry's step
     /// (kept in motionPrediction_) when the two are farther apart than ICP reaches and ICP
     /// from the last motion ends where ICP from the odometry does, or puts
@@ -253,15 +269,21 @@ Registration ScanRegistration::registerScan(const matching::PolarScan& scan,
     out.byLastMotion = !out.jumpBorneOut && &prediction != &odometryPrediction;
     if (!prediction.odometryJumped &&
         tryIcp(scan, sensorOnRobot, prediction, out, started ? &*started : nullptr)) {
-        if (icpUnsettled_ && prediction.lastKeyframe) {  // set only with second_opinion on
-            out.unsettled = true;
-            extractFeatures(features);
-            Registration matched;
-            const bool found =
-                tryGraphMatcher(scan, sensorOnRobot, prediction, features, nullptr, matched);
-            secondOpinion(scan, sensorOnRobot, prediction, found ? &matched : nullptr, out);
-        }
-        return out;
+        if (!icpUnsettled_ || !prediction.lastKeyframe)  // set only with second_opinion on
+            return out;
+        out.unsettled = true;
+        extractFeatures(features);
+        Registration matched;
+        const bool found =
+            tryGraphMatcher(scan, sensorOnRobot, prediction, features, nullptr, matched);
+        if (secondOpinion(scan, sensorOnRobot, prediction, found ? &matched : nullptr, out))
+            return out;
+        // Settled from no start, and ten sigmas or more off the odometry's step: no pose fits
+        // the scan clearly (people close around the laser), and the odometry knows better.
+        failedIcp_ = out.pose;
+        out.unsettledRefused = true;
+        out.secondStart = false;
+        out.overlap = 0;
     }
     if (prediction.lastKeyframe) {
         extractFeatures(features);

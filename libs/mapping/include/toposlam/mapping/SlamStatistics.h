@@ -29,6 +29,9 @@ struct SlamStatistics {
     /// Of those, not settled (ScanRegistration.h; with second_opinion on), and how many of
     /// these a second start replaced.
     std::size_t icpUnsettled = 0, icpSecondStarts = 0;
+    /// Unsettled ICP refused: from no start did it settle within the odometry model's noise
+    /// (unsettled_max_chi2); those scans count as registered by the graph matcher or failed.
+    std::size_t icpUnsettledRefused = 0;
     /// Of those, registered without the scan's foreground objects (foreground_check).
     std::size_t icpWithoutForeground = 0;
     /// Of those, kept at the odometry's position along the heading (along_heading_check).

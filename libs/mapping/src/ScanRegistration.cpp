@@ -217,9 +217,7 @@ bool ScanRegistration::tryIcp(const matching::PolarScan& scan, const CPose2D& se
     if (options_.secondOpinion) {
         // Not settled: no convergence, and a residual well above the recent ones (a start too
         // far off for ICP's basin, typically the heading).
-        const double typical = typicalResidual();
-        icpUnsettled_ = !best.icp.converged && typical > 0 &&
-                        best.icp.residualRms > kUnsettledResidualRatio * typical;
+        icpUnsettled_ = !settled(best);
         recentResiduals_[residualCount_++ % recentResiduals_.size()] = best.icp.residualRms;
     }
     out.method = RegistrationMethod::Icp;
@@ -233,9 +231,9 @@ bool ScanRegistration::tryIcp(const matching::PolarScan& scan, const CPose2D& se
 }
 
 bool ScanRegistration::settled(const IcpAttempt& attempt) const {
-    const double typical = typicalResidual();
-    return attempt.icp.converged ||
-           (typical > 0 && attempt.icp.residualRms <= kUnsettledResidualRatio * typical);
+    const double typical = typicalResidual();  // 0: too few registrations to judge, settled
+    return attempt.icp.converged || typical <= 0 ||
+           attempt.icp.residualRms <= kUnsettledResidualRatio * typical;
 }
 
 bool ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPose2D& sensorOnRobot,

@@ -207,7 +207,8 @@ class ScanRegistration {
                        const Prediction& prediction, const Registration* matched,
                        Registration& icp);
     /// ICP that converged, or ended with a residual within kUnsettledResidualRatio of the
-    /// recent registrations'.
+    /// recent registrations' (or before there are enough to judge); tryIcp's "unsettled" is
+    /// its negation.
     bool settled(const IcpAttempt& attempt) const;
     /// `prediction`, or the same with the robot's last motion instead of the odometry's step
     /// (kept in motionPrediction_) when the two are farther apart than ICP reaches and ICP

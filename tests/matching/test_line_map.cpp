@@ -134,6 +134,34 @@ TEST(LineMap, CountsTheScansThatSawEachPoint) {
     EXPECT_EQ(map.scans(), 0u);
 }
 
+// firstScan: the scan that first showed a surface. A second scan's readings of the same wall
+// fuse into the first scan's points, which keep it; what only the second scan saw is its own.
+TEST(LineMap, RemembersTheScanThatFirstShowedEachSurface) {
+    using matching::SurfacePoint;
+    std::vector<SurfacePoint> wall, wallAndCorner;
+    // Readings 0.2 m apart: each lookup finds the reading of the same spot, never a neighbour.
+    for (double x = -1; x <= 1; x += 0.2)  // the wall y = 1
+        wall.push_back({x, 1, 0, -1});
+    wallAndCorner = wall;
+    for (double y = -1; y <= 0.9; y += 0.2)  // and the wall x = 1.5, seen only from the second
+        wallAndCorner.push_back({1.5, y, -1, 0});
+    LineMap map;
+    map.insertSurface(wall, mrpt::poses::CPose2D(0, 0, 0));
+    map.insertSurface(wallAndCorner, mrpt::poses::CPose2D(0, 0, 0));
+    std::size_t first = 0, second = 0;
+    for (const LineMapPoint& p : map.points()) {
+        if (p.y > 0.95 && p.x < 1.05) {
+            EXPECT_EQ(p.firstScan, 1u) << p.x << ", " << p.y;
+            ++first;
+        } else if (p.x > 1.45) {
+            EXPECT_EQ(p.firstScan, 2u) << p.x << ", " << p.y;
+            ++second;
+        }
+    }
+    EXPECT_EQ(first, wall.size()) << "the second scan's readings of the wall fused into it";
+    EXPECT_EQ(second, wallAndCorner.size() - wall.size());
+}
+
 // clear() empties the map but keeps its memory; the refilled map answers as a new one does.
 TEST(LineMap, AnswersAfterClearAsANewMapDoes) {
     LineMap reused, fresh;

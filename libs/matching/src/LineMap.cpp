@@ -79,7 +79,7 @@ void LineMap::insertSurface(const std::vector<SurfacePoint>& points,
         m.nx = float(c * p.nx - s * p.ny);
         m.ny = float(s * p.nx + c * p.ny);
         m.weight = 1;
-        m.lastScan = scans_;
+        m.lastScan = m.firstScan = scans_;
         inMapFrame_.push_back(m);
         minX = std::min(minX, m.x), maxX = std::max(maxX, m.x);
         minY = std::min(minY, m.y), maxY = std::max(maxY, m.y);

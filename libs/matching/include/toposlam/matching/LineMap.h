@@ -29,6 +29,9 @@ struct LineMapPoint {
     /// is somewhere else in every scan, so its points keep one.
     std::uint32_t views = 1;
     std::uint32_t lastScan = 0;  ///< the insertScan / insertSurface call that last saw it
+    /// The insertScan / insertSurface call that made it (observations fused into it later do
+    /// not change it): which scan first showed the map this surface.
+    std::uint32_t firstScan = 0;
 };
 
 /// A reading with the normal of its local line, in the sensor frame of its scan (m): what a

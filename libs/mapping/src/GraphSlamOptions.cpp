@@ -24,6 +24,9 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
     s.integer("submap_keyframes", submapKeyframes, "keyframes",
               "per submap; two overlapping submaps are active")
         .within(2, 10000);
+    s.flag("submap_parts", submapParts,
+           "a keyframe placed by odometry alone starts a part of each submap; a scan is tied to "
+           "the part most of its readings lie on, not always to the anchor");
     s.real("map_resolution", mapResolution, "m", "lookup cells of the submaps' line maps")
         .within(0.005, 1);
     s.real("map_fuse_distance", mapFuseDistance, "m",

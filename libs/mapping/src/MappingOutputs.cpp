@@ -104,8 +104,14 @@ std::string formatSummary(const MappingResult& r) {
     }
     if (const auto& st = r.statistics) {
         const std::size_t n = st->scans > 1 ? st->scans - 1 : 0;
-        s += line("keyframes: %zu in %s; the scans between them placed by %s", st->keyframes,
-                  counted(st->submaps, "submap", "submaps").c_str(),
+        const std::string parts =
+            st->tiedToLaterPart == 0
+                ? std::string()
+                : " (" + std::to_string(st->tiedToLaterPart) +
+                      " of them tied to the part of their submap after a keyframe placed by "
+                      "odometry alone)";
+        s += line("keyframes: %zu in %s%s; the scans between them placed by %s", st->keyframes,
+                  counted(st->submaps, "submap", "submaps").c_str(), parts.c_str(),
                   r.smoothedScans ? "registration and odometry together"
                                   : "registration alone (smooth_scans off)");
         std::string jumps = counted(st->odometryJumps, "odometry jump", "odometry jumps");
@@ -189,6 +195,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
     if (const auto& st = r.statistics) {
         j["keyframes"] = st->keyframes;
         j["submaps"] = st->submaps;
+        j["keyframes_tied_to_later_part"] = st->tiedToLaterPart;
         j["smoothed_scans"] = r.smoothedScans;
         j["registration"] = {{"icp", st->registeredByIcp},
                              {"icp_unsettled", st->icpUnsettled},

@@ -1,5 +1,7 @@
 #include <toposlam/mapping/Submap.h>
 
+#include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace toposlam::mapping {
@@ -13,12 +15,49 @@ Submap::Submap(std::size_t anchor, matching::LineMap&& reused)
 }
 
 void Submap::insert(const Keyframe& kf, const mrpt::poses::CPose2D& robotInSubmap) {
+    const bool newPart = kf.placedByOdometry && !keyframes_.empty();
     keyframes_.push_back(kf.id);
     map_.insertSurface(kf.surface, robotInSubmap + kf.sensorOnRobot);
+    if (newPart)
+        parts_.push_back({kf.id, map_.scans()});
+}
+
+std::vector<std::size_t> Submap::partStarts() const {
+    std::vector<std::size_t> starts{anchor_};
+    for (const Part& p : parts_)
+        starts.push_back(p.keyframe);
+    return starts;
+}
+
+std::size_t Submap::partHolding(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensor,
+                                double distance) const {
+    if (parts_.empty())
+        return anchor_;
+    readingsPerPart_.assign(parts_.size() + 1, 0);
+    const double c = std::cos(sensor.phi()), s = std::sin(sensor.phi());
+    for (std::size_t i = 0; i < scan.size(); ++i) {
+        if (!scan.valid(i))
+            continue;
+        const mrpt::math::TPoint2D& p = scan.point(i);
+        const double qx = sensor.x() + c * p.x - s * p.y, qy = sensor.y() + s * p.x + c * p.y;
+        const matching::LineMapPoint* m = map_.nearest(qx, qy);
+        if (!m || std::abs(m->nx * (qx - m->x) + m->ny * (qy - m->y)) > distance)
+            continue;
+        const auto part = std::upper_bound(
+            parts_.begin(), parts_.end(), m->firstScan,
+            [](std::uint32_t first, const Part& q) { return first < q.firstScan; });
+        ++readingsPerPart_[std::size_t(part - parts_.begin())];
+    }
+    // Ties go to the earlier part: the anchor keeps a scan that fits both equally.
+    const std::size_t most =
+        std::size_t(std::max_element(readingsPerPart_.begin(), readingsPerPart_.end()) -
+                    readingsPerPart_.begin());
+    return most == 0 ? anchor_ : parts_[most - 1].keyframe;
 }
 
 void Submap::clear() {
     keyframes_.clear();
+    parts_.clear();
     map_.clear();
 }
 

@@ -84,7 +84,7 @@ class GraphSlam {
                      const mrpt::poses::CPose2D& pose,
                      features::CObservationLaserFeatures::Ptr features);
     /// The edges that place a new keyframe (registration or fallback).
-    void addKeyframeEdges(const Registration& r, const Keyframe& kf);
+    void addKeyframeEdges(const Registration& r, Keyframe& kf);
     void updateSubmaps(const Keyframe& kf);
     std::size_t firstActiveKeyframe() const;
     /// Optimises after loops were accepted, over the window or the whole graph (see

@@ -21,6 +21,11 @@ struct GraphSlamOptions : public config::Options {
     /// Keyframes per submap. Two submaps are active and overlap by half: a scan is matched
     /// against the older (fuller) one, keyframes go into both.
     std::size_t submapKeyframes = 20;
+    /// A keyframe placed by odometry alone starts a part of each submap it goes into, and a
+    /// scan registered on a submap is tied to the start of the part most of its readings lie
+    /// on (Submap.h), not always to the anchor (false: always to the anchor, and the previous
+    /// keyframe's edge at ICP's covariance).
+    bool submapParts = true;
     double mapResolution = 0.05;    ///< m, lookup cells of the submaps' line maps
     double mapFuseDistance = 0.05;  ///< m, observations this close to a map point are fused
     /// m: a map point counts one more view when another keyframe puts a reading this close.

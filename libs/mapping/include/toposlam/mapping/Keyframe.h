@@ -1,6 +1,7 @@
 #pragma once
 // A keyframe of the graph SLAM: a scan kept for good, with what the back end and the loop
 // closer need of it, computed once when it is made.
+#include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 #include <toposlam/features/CObservationLaserFeatures.h>
@@ -9,6 +10,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace toposlam::mapping {
@@ -38,6 +40,15 @@ struct Keyframe {
     /// keyframe may the graph be off by more than its covariances say (LoopCloser: contested
     /// matches).
     bool frontEndDoubt = false;
+    /// Placed by odometry alone (neither ICP nor the graph matcher could place this scan): the
+    /// odometry's covariance over the step from the previous keyframe, its edge's. Such a
+    /// keyframe may be off by more than that (a fault of the odometry's), and it starts a part
+    /// of each submap it goes into (Submap.h).
+    std::optional<mrpt::math::CMatrixDouble33> placedByOdometry;
+    /// The keyframe placed by odometry alone that starts the part of a submap this one is tied
+    /// to (itself, when it is one); kNoPart when it is tied to a submap's anchor.
+    std::size_t part = kNoPart;
+    static constexpr std::size_t kNoPart = std::size_t(-1);
     ScanSignature signature{};
 };
 

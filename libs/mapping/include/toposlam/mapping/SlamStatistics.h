@@ -24,6 +24,9 @@ struct SlamStatistics {
     std::size_t scans = 0;
     std::size_t keyframes = 0;
     std::size_t submaps = 0;
+    /// Keyframes registered by ICP that are tied to a part of their submap started by a keyframe
+    /// placed by odometry alone, not to its anchor (submap_parts; Submap.h).
+    std::size_t tiedToLaterPart = 0;
     // Registration of each scan (the first scan is the origin and counts in none of them).
     std::size_t registeredByIcp = 0;  ///< point-to-line ICP against the local submap
     /// Of those, not settled (ScanRegistration.h; with second_opinion on), and how many of

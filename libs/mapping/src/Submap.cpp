@@ -1,7 +1,6 @@
 #include <toposlam/mapping/Submap.h>
 
 #include <algorithm>
-#include <cmath>
 #include <utility>
 
 namespace toposlam::mapping {
@@ -34,20 +33,13 @@ std::size_t Submap::partHolding(const matching::PolarScan& scan, const mrpt::pos
     if (parts_.empty())
         return anchor_;
     readingsPerPart_.assign(parts_.size() + 1, 0);
-    const double c = std::cos(sensor.phi()), s = std::sin(sensor.phi());
-    for (std::size_t i = 0; i < scan.size(); ++i) {
-        if (!scan.valid(i))
-            continue;
-        const mrpt::math::TPoint2D& p = scan.point(i);
-        const double qx = sensor.x() + c * p.x - s * p.y, qy = sensor.y() + s * p.x + c * p.y;
-        const matching::LineMapPoint* m = map_.nearest(qx, qy);
-        if (!m || std::abs(m->nx * (qx - m->x) + m->ny * (qy - m->y)) > distance)
-            continue;
-        const auto part = std::upper_bound(
-            parts_.begin(), parts_.end(), m->firstScan,
-            [](std::uint32_t first, const Part& q) { return first < q.firstScan; });
-        ++readingsPerPart_[std::size_t(part - parts_.begin())];
-    }
+    matching::forEachReadingOnSurface(
+        map_, scan, sensor, distance, [&](const matching::LineMapPoint& m) {
+            const auto part = std::upper_bound(
+                parts_.begin(), parts_.end(), m.firstScan,
+                [](std::uint32_t first, const Part& q) { return first < q.firstScan; });
+            ++readingsPerPart_[std::size_t(part - parts_.begin())];
+        });
     // Ties go to the earlier part: the anchor keeps a scan that fits both equally.
     const std::size_t most =
         std::size_t(std::max_element(readingsPerPart_.begin(), readingsPerPart_.end()) -

@@ -261,16 +261,8 @@ IcpResult PointToLineIcp::refineOnMap(const LineMap& map, const PolarScan& curre
 
 std::size_t PointToLineIcp::countOnMap(const LineMap& map, const PolarScan& current,
                                        const mrpt::poses::CPose2D& pose, double distance) {
-    const double c = std::cos(pose.phi()), s = std::sin(pose.phi());
     std::size_t on = 0;
-    for (std::size_t i = 0; i < current.size(); ++i) {
-        if (!current.valid(i))
-            continue;
-        const mrpt::math::TPoint2D& p = current.point(i);
-        const double qx = pose.x() + c * p.x - s * p.y, qy = pose.y() + s * p.x + c * p.y;
-        const LineMapPoint* m = map.nearest(qx, qy);
-        on += m && std::abs(m->nx * (qx - m->x) + m->ny * (qy - m->y)) <= distance;
-    }
+    forEachReadingOnSurface(map, current, pose, distance, [&](const LineMapPoint&) { ++on; });
     return on;
 }
 

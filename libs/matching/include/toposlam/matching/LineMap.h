@@ -134,6 +134,24 @@ class LineMap {
     std::uint32_t scans_ = 0;
 };
 
+/// Calls visit(mapPoint) for every valid reading of `scan`, seen from SENSOR pose `sensor` (map
+/// frame), that lies within `distance` (m) of the local line of its nearest map point (any point
+/// within the map's radius): the readings a pose explains, and the map points that explain them.
+template <typename Visit>
+void forEachReadingOnSurface(const LineMap& map, const PolarScan& scan,
+                             const mrpt::poses::CPose2D& sensor, double distance, Visit&& visit) {
+    const double c = std::cos(sensor.phi()), s = std::sin(sensor.phi());
+    for (std::size_t i = 0; i < scan.size(); ++i) {
+        if (!scan.valid(i))
+            continue;
+        const mrpt::math::TPoint2D& p = scan.point(i);
+        const double qx = sensor.x() + c * p.x - s * p.y, qy = sensor.y() + s * p.x + c * p.y;
+        const LineMapPoint* m = map.nearest(qx, qy);
+        if (m && std::abs(m->nx * (qx - m->x) + m->ny * (qy - m->y)) <= distance)
+            visit(*m);
+    }
+}
+
 /// The readings of `scan` within options.maxRange that have a local line (fitLocalLine with
 /// options.maxJoinDistance, reaching as far as the scan's noise asks), with its normal, in the
 /// sensor frame; `out` is replaced.

@@ -188,6 +188,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
             break;
         case RegistrationMethod::Odometry:
             ++stats_.registrationFailed;
+            stats_.matcherRefusedForeground += r.matcherRefusedForeground;
             break;
     }
     const CPose2D pose = graph_.pose(r.reference) + r.pose;

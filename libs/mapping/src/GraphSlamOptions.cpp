@@ -105,6 +105,9 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "corrections of the odometry beyond these bounds (the graph matcher's, up to twice "
            "them; the last motion as the prediction) are used when ICP on the submap confirms "
            "them");
+    s.flag("matcher_foreground_check", matcherForegroundCheck,
+           "a graph-matcher answer where ICP was rejected must be borne out by the scan without "
+           "its foreground objects (people close by)");
     s.real("odometry_sigma_xy", odometrySigmaXY, "m",
            "odometry-only edges: position noise floor ...")
         .above(0);

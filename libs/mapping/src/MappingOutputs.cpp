@@ -124,13 +124,15 @@ std::string formatSummary(const MappingResult& r) {
             "%zu without foreground objects; %zu held at the odometry's position along the "
             "heading), %zu by the graph "
             "matcher (%.1f %%; %zu of them beyond a jump, confirmed on the submap), %zu failed "
-            "(%.1f %%, odometry kept); %s; %s catching up after a stall; %zu predicted by the "
+            "(%.1f %%, odometry kept; %zu of them with a graph-matcher answer only foreground "
+            "objects bore out); %s; %s catching up after a stall; %zu predicted by the "
             "last motion instead of the odometry",
             st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
             st->icpSecondStarts, st->icpUnsettledRefused, st->icpWithoutForeground,
             st->icpHeldAlongHeading, st->registeredByGraphMatcher,
             percent(st->registeredByGraphMatcher, n), st->graphMatcherConfirmed,
-            st->registrationFailed, percent(st->registrationFailed, n), jumps.c_str(),
+            st->registrationFailed, percent(st->registrationFailed, n),
+            st->matcherRefusedForeground, jumps.c_str(),
             counted(st->odometryCatchUps, "odometry step", "odometry steps").c_str(),
             st->lastMotionPredictions);
         if (st->scansWithoutOdometry > 0)
@@ -207,6 +209,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
                              {"graph_matcher_confirmed", st->graphMatcherConfirmed},
                              {"last_motion_predictions", st->lastMotionPredictions},
                              {"failed", st->registrationFailed},
+                             {"failed_matcher_refused_foreground", st->matcherRefusedForeground},
                              {"odometry_jumps", st->odometryJumps},
                              {"odometry_jumps_borne_out", st->odometryJumpsBorneOut},
                              {"odometry_catch_ups", st->odometryCatchUps},

@@ -111,6 +111,15 @@ struct GraphSlamOptions : public config::Options {
     ///    prediction, when the two are farther apart than icpMaxDistance and ICP from the
     ///    last motion ends where ICP from the odometry does or fits by that margin better.
     bool confirmLargeCorrections = true;
+    /// Where ICP from the prediction was rejected for too little of the scan on the submap
+    /// (its correction within the bounds above) and the graph matcher answers elsewhere, the
+    /// answer must be borne out without the scan's foreground objects (foregroundMaxRange,
+    /// foregroundMaxWidth): ICP on the submap started at the answer ends where ICP from the
+    /// prediction did, or the rest of the scan puts alongHeadingMargin more of its readings
+    /// on the submap there; otherwise the scan keeps the prediction. People walking along
+    /// with the robot stand in the last keyframe one step back, and the matcher, fitted to
+    /// them, takes back the robot's step along a corridor whose walls fix nothing along it.
+    bool matcherForegroundCheck = true;
     /// Odometry noise (standard deviations) for edges that only odometry supports: a floor,
     /// plus a share of the distance travelled and of the angle turned.
     double odometrySigmaXY = 0.02;           ///< m

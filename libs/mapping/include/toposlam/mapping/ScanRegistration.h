@@ -75,6 +75,9 @@ struct Registration {
     /// The graph matcher's answer beyond the jump bounds, confirmed by ICP on the submap
     /// (confirm_large_corrections).
     bool confirmedOnSubmap = false;
+    /// The graph matcher answered, but only the scan's foreground objects bore its answer out
+    /// against where ICP ended (matcher_foreground_check): the scan kept the prediction.
+    bool matcherRefusedForeground = false;
     /// Predicted by the robot's last motion instead of the odometry's step
     /// (confirm_large_corrections).
     bool byLastMotion = false;
@@ -184,7 +187,9 @@ class ScanRegistration {
     /// The graph matcher against the last keyframe. An answer beyond the odometry's jump
     /// bounds is a look-alike unless the odometry jumped, or `failedIcp` (where ICP from the
     /// prediction ended, rejected; null when it was not tried or not rejected) is given and
-    /// confirmOnSubmap() confirms it.
+    /// confirmOnSubmap() confirms it. An answer within them is refused when `failedIcp`
+    /// stayed within the correction bounds (rejected for its overlap) and
+    /// bornOutWithoutForeground() says only the scan's foreground objects bear the answer out.
     bool tryGraphMatcher(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                          const Prediction& prediction, const features::ScanFeatures& features,
                          const mrpt::poses::CPose2D* failedIcp, Registration& out);
@@ -197,6 +202,17 @@ class ScanRegistration {
     bool confirmOnSubmap(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                          const Prediction& prediction, const mrpt::poses::CPose2D& matched,
                          const mrpt::poses::CPose2D& failedIcp, Registration& out);
+    /// matcher_foreground_check: whether the graph matcher's robot pose `matched` (in the last
+    /// keyframe's frame) stands against `failedIcp` (where ICP from the prediction ended,
+    /// rejected, in the submap's frame) without the scan's foreground objects. True when the
+    /// scan has none, or ICP on the submap started at `matched` ends where `failedIcp` is, or
+    /// the rest of the scan puts along_heading_margin more of its readings on the submap
+    /// there than at `failedIcp`. People walking along with the robot stand in the last
+    /// keyframe one step back; fitted to them, the matcher takes back the robot's step.
+    bool bornOutWithoutForeground(const matching::PolarScan& scan,
+                                  const mrpt::poses::CPose2D& sensorOnRobot,
+                                  const Prediction& prediction, const mrpt::poses::CPose2D& matched,
+                                  const mrpt::poses::CPose2D& failedIcp);
 
     /// ICP from `prediction` ended in `icp` without settling: ICP again from the graph
     /// matcher's answer `matched` (when it has one) and from the prediction turned by +-1 and

@@ -50,7 +50,10 @@ struct SlamStatistics {
     /// registered them (confirm_large_corrections).
     std::size_t lastMotionPredictions = 0;
     std::size_t registrationFailed = 0;  ///< both failed: odometry prediction kept
-    std::size_t odometryJumps = 0;       ///< odometry increments rejected as jumps
+    /// Of those, scans whose graph-matcher answer only their foreground objects bore out
+    /// (matcher_foreground_check).
+    std::size_t matcherRefusedForeground = 0;
+    std::size_t odometryJumps = 0;  ///< odometry increments rejected as jumps
     /// Of those, steps the scan bore out all the same, which predicted it (a fast turn at a low
     /// scan rate; confirm_large_corrections).
     std::size_t odometryJumpsBorneOut = 0;

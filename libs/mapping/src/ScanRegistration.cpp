@@ -243,10 +243,7 @@ bool ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
     std::array<CPose2D, 5> starts;
     std::size_t count = 0;
     if (matched) {
-        // The matcher's pose is in its keyframe's frame; the keyframe in the submap's frame is
-        // the prediction less the motion predicted since that keyframe.
-        const CPose2D keyframeInSubmap = prediction.inSubmap + (-prediction.fromLastKeyframe);
-        starts[count++] = keyframeInSubmap + matched->pose;
+        starts[count++] = prediction.lastKeyframeInSubmap() + matched->pose;
     }
     if (options_.secondOpinionTurn > 0) {
         for (const double k : {-2.0, -1.0, 1.0, 2.0})
@@ -411,8 +408,7 @@ bool ScanRegistration::bornOutWithoutForeground(const matching::PolarScan& scan,
     if (!prediction.submap || foreground_.remove(scan, foregroundOptions_, background_) == 0)
         return true;
     const Submap& submap = *prediction.submap;
-    // The last keyframe in the submap's frame, as in secondOpinion().
-    const CPose2D start = prediction.inSubmap + (-prediction.fromLastKeyframe) + matched;
+    const CPose2D start = prediction.lastKeyframeInSubmap() + matched;
     const IcpAttempt icp = icpFrom(scan, sensorOnRobot, submap, start);
     // The along-heading check's margin: the people's pull is along the heading too. (A
     // quarter, second_opinion_margin, refused right answers that fitted 16 % more at fr079's
@@ -430,8 +426,7 @@ bool ScanRegistration::confirmOnSubmap(const matching::PolarScan& scan,
         std::abs(mrpt::math::wrapToPi(correction.phi())) > 2 * options_.odometryJumpAngle)
         return false;
     const Submap& submap = *prediction.submap;
-    // The last keyframe in the submap's frame, as in secondOpinion().
-    const CPose2D start = prediction.inSubmap + (-prediction.fromLastKeyframe) + matched;
+    const CPose2D start = prediction.lastKeyframeInSubmap() + matched;
     const IcpAttempt icp = icpFrom(scan, sensorOnRobot, submap, start);
     if (!acceptable(icp, start))
         return false;

@@ -118,6 +118,11 @@ struct Prediction {
     /// The odometry's step since the last scan as predicted (the last motion after a jump),
     /// and the robot's motion registered at the last scan (robot frame, m, rad).
     mrpt::poses::CPose2D odometryStep, lastMotion;
+
+    /// The last keyframe's robot pose in the submap's frame: the prediction less the motion
+    /// predicted since that keyframe. A pose in that keyframe's frame (the graph matcher's
+    /// answer) composed onto it is in the submap's frame.
+    mrpt::poses::CPose2D lastKeyframeInSubmap() const { return inSubmap + (-fromLastKeyframe); }
 };
 
 class ScanRegistration {

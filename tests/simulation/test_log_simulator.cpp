@@ -103,6 +103,37 @@ TEST(LogSimulator, PeopleOnlyShortenRangesAndDoAppear) {
     EXPECT_GT(occluded, 0u) << "15 people in the office never crossed the laser's view";
 }
 
+TEST(LogSimulator, AStalledOdometryRepeatsItsReadingThenCatchesUp) {
+    // The same walk with a noisy odometry, without and with stalls: stalls draw from their own
+    // generator, so every reading is either the stall-free log's (the odometry caught up) or
+    // the one before it (frozen), for at most stall_max_scans scans in a row; the scans are
+    // the same.
+    const io::Trajectory2D gt = corridorWalk();
+    LogSimulationOptions steady = SimulatorConfig::defaultLog(), stalling = steady;
+    stalling.odometry.stallProbability = 0.3;
+    stalling.odometry.stallMaxScans = 2;
+    LogSimulator a(officeGrid(), gt, steady), b(officeGrid(), gt, stalling);
+    io::LaserLogRecord ra, rb;
+    CPose2D previous;
+    std::size_t frozen = 0, inARow = 0, longest = 0;
+    while (a.next(ra) && b.next(rb)) {
+        const bool repeated = ra.index > 0 && rb.odometry == previous;
+        if (repeated && !(rb.odometry == ra.odometry)) {
+            ++frozen;
+            longest = std::max(longest, ++inARow);
+        } else {
+            ASSERT_EQ(rb.odometry, ra.odometry) << "scan " << ra.index << ": caught up";
+            inARow = 0;
+        }
+        previous = rb.odometry;
+        ASSERT_EQ(ra.scan->getScanSize(), rb.scan->getScanSize());
+        for (std::size_t i = 0; i < ra.scan->getScanSize(); ++i)
+            ASSERT_EQ(ra.scan->getScanRange(i), rb.scan->getScanRange(i));
+    }
+    EXPECT_GE(frozen, 3u) << "40 scans at 30 %: stalls must have happened";
+    EXPECT_LE(longest, 2u);
+}
+
 TEST(LogSimulator, RawlogRoundTripsThroughTheLogReaderInBothFormats) {
     const io::Trajectory2D gt = corridorWalk();
     const LogSimulationOptions options = SimulatorConfig::defaultLog();  // with noise

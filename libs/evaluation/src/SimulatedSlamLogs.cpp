@@ -38,6 +38,11 @@ const std::vector<SimulatedRobot>& simulatedRobots() {
           {"Odometry", "trans_std_m_per_sqrt_m", "0.045"},
           {"Odometry", "trans_std_m_per_sqrt_rad", "0.015"}}},
         {"people", "lms1xx laser; 15 people walking about at 0.8-1.3 m/s", {"--people", "15"}, {}},
+        {"stalling-odometry",
+         "lms1xx laser; odometry that stalls at 5 % of the scans for 1-3 scans, then catches up "
+         "in one reading",
+         {},
+         {{"Odometry", "stall_probability", "0.05"}, {"Odometry", "stall_max_scans", "3"}}},
     };
     return robots;
 }

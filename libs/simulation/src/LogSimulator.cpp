@@ -40,7 +40,8 @@ LogSimulator::LogSimulator(const mrpt::maps::COccupancyGridMap2D& map, io::Traje
       clearance_(map, options.world.thresholds),
       odometry_(options.odometry),
       laserRng_(options.seed),
-      odometryRng_(options.seed + 1) {
+      odometryRng_(options.seed + 1),
+      stallRng_(options.seed + 3) {
     if (options.people.count > 0) {
         const auto& p0 = groundTruth_.front().pose;
         people_ = std::make_unique<MovingObstacles>(
@@ -88,10 +89,25 @@ bool LogSimulator::next(io::LaserLogRecord& record) {
     record.index = next_;
     record.fileStamp = now.stamp;
     record.scan = scan;
-    record.odometry = odometry_.pose();
+    record.odometry = odometryReading();
     record.hasOdometry = true;
     ++next_;
     return true;
+}
+
+CPose2D LogSimulator::odometryReading() {
+    if (stalledScans_ > 0) {
+        --stalledScans_;
+        return stalledReading_;
+    }
+    // A fresh reading, which the next 1 to stallMaxScans scans may repeat: the reading after
+    // them carries all the motion since.
+    stalledReading_ = odometry_.pose();
+    const OdometryErrorModel& model = options_.odometry;
+    if (model.stallProbability > 0 &&
+        std::uniform_real_distribution<double>(0, 1)(stallRng_) < model.stallProbability)
+        stalledScans_ = std::uniform_int_distribution<int>(1, model.stallMaxScans)(stallRng_);
+    return stalledReading_;
 }
 
 std::size_t simulateLogToFiles(const mrpt::maps::COccupancyGridMap2D& map,

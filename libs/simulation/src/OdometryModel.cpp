@@ -42,6 +42,12 @@ void OdometryErrorModel::declare(config::OptionsSchema& s) {
     s.converted("trans_std_m_per_sqrt_rad", alpha4, squared, root, "m/sqrt(rad)",
                 "distance error std after turning 1 rad")
         .atLeast(0);
+    s.real("stall_probability", stallProbability, "",
+           "chance per fresh reading that the odometry freezes after it (a stall; 0 = never)")
+        .within(0, 1);
+    s.integer("stall_max_scans", stallMaxScans, "scans",
+              "a stall repeats that reading for the next 1 to this many scans, then catches up")
+        .within(1, 1000);
 }
 
 OdometryModel::OdometryModel(const OdometryErrorModel& model, const mrpt::poses::CPose2D& start)

@@ -52,6 +52,10 @@ class LogSimulator {
     const std::vector<Disc>& people() const { return world_.discs(); }
 
   private:
+    /// The odometry reading of this scan: the integrated odometry, or during a stall the
+    /// reading before it.
+    mrpt::poses::CPose2D odometryReading();
+
     LogSimulationOptions options_;
     io::Trajectory2D groundTruth_;
     GridWorld world_;
@@ -59,6 +63,11 @@ class LogSimulator {
     std::unique_ptr<MovingObstacles> people_;
     OdometryModel odometry_;
     std::mt19937 laserRng_, odometryRng_;
+    /// Odometry stalls (OdometryErrorModel::stallProbability): its own draws, so that logs
+    /// without stalls stay as they were.
+    std::mt19937 stallRng_;
+    int stalledScans_ = 0;                 ///< scans the current stall still repeats the reading
+    mrpt::poses::CPose2D stalledReading_;  ///< the reading it repeats
     std::size_t next_ = 0;
 };
 

@@ -46,6 +46,12 @@ struct OdometryErrorModel : public config::Options {
     double alpha2 = mrpt::square(mrpt::DEG2RAD(0.5));
     double alpha3 = 0.015 * 0.015;  ///< m^2 of translation variance per m driven ((1.5 cm)^2)
     double alpha4 = 0.005 * 0.005;  ///< m^2 of translation variance per rad turned ((0.5 cm)^2)
+    /// Stalls (a fault, not drift; used by LogSimulator): after each fresh reading, with this
+    /// probability, the odometry freezes and the next 1 to stallMaxScans scans repeat that
+    /// reading; the one after them reports the whole motion since, as logs whose odometry
+    /// messages stop for a moment do (MIT CSAIL's). 0 = never.
+    double stallProbability = 0;
+    int stallMaxScans = 3;
 
     /// Perfect odometry: readings equal the true motion.
     static OdometryErrorModel exact();

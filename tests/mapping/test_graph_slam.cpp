@@ -65,9 +65,11 @@ struct SlamRun {
     std::vector<CPose2D> poses;
 };
 
-/// `loopThreads`: 0 keeps the file's setting; `adjust` changes the options after loading.
+/// `loopThreads`: 0 keeps the file's setting; `adjust` and `adjustMatcher` change the options
+/// after loading.
 SlamRun runSlam(const test::SimulatedDrive& drive, std::size_t loopThreads = 0,
-                const std::function<void(mapping::GraphSlamOptions&)>& adjust = {}) {
+                const std::function<void(mapping::GraphSlamOptions&)>& adjust = {},
+                const std::function<void(matching::GraphMatcherOptions&)>& adjustMatcher = {}) {
     const mrpt::config::CConfigFile ini(test::configIni("toposlam-slam.ini"));
     mapping::GraphSlamOptions options;
     options.loadFromConfigFile(ini, "GraphSlam");
@@ -77,6 +79,8 @@ SlamRun runSlam(const test::SimulatedDrive& drive, std::size_t loopThreads = 0,
         adjust(options);
     matching::GraphMatcherOptions matcher;
     matcher.loadFromConfigFile(ini, "GraphScanMatcher");
+    if (adjustMatcher)
+        adjustMatcher(matcher);
     SlamRun run;
     run.slam = std::make_unique<mapping::GraphSlam>(
         options, matcher, features::makeFeatureExtractor(options.extractor, &ini),
@@ -529,6 +533,29 @@ TEST(GraphSlam, NoOdometryGlitchIsBorneOut) {
     }
 }
 
+TEST(GraphSlam, AnOdometryStallAlongABareCorridorIsBridged) {
+    // Down a corridor whose walls fix nothing along it, 0.3 m between scans, the odometry
+    // stalls for two scans (it repeats its reading) and the next reading carries all three
+    // steps. ICP keeps the stall's standstill for its two scans; the reading after it, less
+    // that standstill, is the step (bridge_odometry_stalls). Predicted by the last motion
+    // instead (a standstill), the robot would lose the stall's 0.9 m for good.
+    const auto truth = test::drivePath({{1.5, 1.5}, {6.5, 1.5}, {6.5, 3.25}, {45, 3.25}}, 0.3);
+    std::size_t stall = 0;
+    while (truth[stall].x() < 25)
+        ++stall;
+    auto drive = test::simulateDrive(roomAndBareCorridor(), truth, {}, 31);
+    drive.odometry[stall] = drive.odometry[stall + 1] = drive.odometry[stall - 1];
+    const auto along = [&](const SlamRun& run) { return run.poses.back().x() - truth.back().x(); };
+
+    const SlamRun run = runSlam(drive);
+    EXPECT_EQ(run.slam->statistics().odometryStallsBridged, 1u);
+    EXPECT_EQ(run.slam->statistics().registrationFailed, 0u);
+    EXPECT_LT(std::abs(along(run)), 0.1);
+    const SlamRun unbridged =
+        runSlam(drive, 0, [](mapping::GraphSlamOptions& o) { o.bridgeOdometryStalls = false; });
+    EXPECT_LT(along(unbridged), -0.5) << "the corridor must be blind for this test";
+}
+
 TEST(GraphSlam, AGlitchAlongABareCorridorIsNotBorneOut) {
     // Down a corridor whose walls fix nothing along it, the odometry jumps 0.6 m ahead. ICP
     // from there passes every test (it does not move along the corridor) and fits the scan as
@@ -571,7 +598,8 @@ TEST(GraphSlam, OdometryCatchingUpAfterAStallIsNotThePrediction) {
     // one step: 40 deg (seven steps) where the robot turned 6, within the jump bounds (45 deg) but
     // more than ICP may correct (20 deg). Taken for the prediction, ICP's answer is rejected and
     // the graph matcher has to register the scan; OdometryLag predicts the last registered motion
-    // and ICP registers it.
+    // and ICP registers it. (ICP saw the robot move during the stall, its last 0.1 m to the
+    // corner, so the stall is not bridged.)
     const auto truth = test::drivePath({{1.5, 1.5}, {18.5, 1.5}, {18.5, 10.5}}, 0.1, 0.1);
     auto drive = test::simulateDrive(ringCorridor(), truth, {}, 17);
     std::size_t turnStart = 1;
@@ -582,12 +610,56 @@ TEST(GraphSlam, OdometryCatchingUpAfterAStallIsNotThePrediction) {
     const SlamRun run = runSlam(drive);
     const auto& stats = run.slam->statistics();
     EXPECT_EQ(stats.odometryCatchUps, 1u);
+    EXPECT_EQ(stats.odometryStallsBridged, 0u);
     EXPECT_EQ(stats.odometryJumps, 0u);
     EXPECT_EQ(stats.registeredByGraphMatcher, 0u);
     EXPECT_EQ(stats.registrationFailed, 0u);
     const CPose2D atCatchUp = run.poses[turnStart + 6] - truth[turnStart + 6];
     EXPECT_LT(std::abs(atCatchUp.phi()), mrpt::DEG2RAD(1.0));
     EXPECT_LT(test::absoluteTrajectoryError(truth, run.poses), 0.05);
+}
+
+TEST(GraphSlam, ATurnTheOdometryOvershotIsFoundBetweenItAndTheLastMotion) {
+    // 0.4 m between scans; at the first corner the robot turns 15, 60 and 15 deg in three
+    // scans, and the odometry reads the 60 deg step as 84 (it stalled and caught up past the
+    // turn, as mit-csail's does at a quarter of its scans). That step departs from the last
+    // motion (15 deg) by more than the jump bounds (45 deg), and ICP from the odometry's step,
+    // 24 deg off, would correct it by more than it may (20 deg). Here the graph matcher finds
+    // the turn; where it finds nothing (mit-csail's scan had too few segments), ICP from starts
+    // between the last motion and the odometry's step does. Without either the scan keeps the
+    // last motion.
+    std::vector<CPose2D> truth = test::drivePath({{1.5, 1.5}, {18.5, 1.5}}, 0.4);
+    truth.emplace_back(18.5, 1.5, mrpt::DEG2RAD(15.0));
+    const std::size_t overshot = truth.size();
+    truth.emplace_back(18.5, 1.5, mrpt::DEG2RAD(75.0));
+    const auto onward = test::drivePath({{18.5, 1.5}, {18.5, 10.5}, {12, 10.5}}, 0.4);
+    truth.insert(truth.end(), onward.begin(), onward.end());
+    auto drive = test::simulateDrive(ringCorridor(), truth, {}, 29);
+    // That step reads 24 deg more; every other step as it was.
+    const CPose2D atStep = drive.odometry[overshot];
+    for (std::size_t i = overshot; i < drive.odometry.size(); ++i)
+        drive.odometry[i] =
+            atStep + CPose2D(0, 0, mrpt::DEG2RAD(24.0)) + (drive.odometry[i] - atStep);
+    const auto turnError = [&](const SlamRun& run) {
+        return std::abs((run.poses[overshot] - truth[overshot]).phi());
+    };
+
+    const SlamRun run = runSlam(drive);
+    const auto& stats = run.slam->statistics();
+    ASSERT_EQ(stats.odometryJumps, 1u) << "the overshot step must look like a jump";
+    EXPECT_EQ(stats.odometryJumpsBorneOut, 0u);
+    EXPECT_EQ(stats.odometryJumpsBetween, 0u) << "the graph matcher placed it";
+    EXPECT_LT(turnError(run), mrpt::DEG2RAD(1.0));
+
+    const auto noMatch = [](matching::GraphMatcherOptions& m) { m.minInlierRatio = 1.1; };
+    const SlamRun matcherless = runSlam(drive, 0, {}, noMatch);
+    EXPECT_EQ(matcherless.slam->statistics().odometryJumpsBetween, 1u);
+    EXPECT_LT(turnError(matcherless), mrpt::DEG2RAD(1.0));
+
+    const SlamRun neither = runSlam(
+        drive, 0, [](mapping::GraphSlamOptions& o) { o.jumpSearchStep = 0; }, noMatch);
+    EXPECT_GE(neither.slam->statistics().registrationFailed, 1u);
+    EXPECT_GT(turnError(neither), mrpt::DEG2RAD(40.0)) << "the last motion, 45 deg short";
 }
 
 TEST(GraphSlam, LongStepsOfAFastRobotAreNotJumps) {
@@ -943,14 +1015,17 @@ TEST(MappingOutputs, CountsAgreeInNumber) {
     const std::string summary = mapping::formatSummary(result);
     for (const char* phrase :
          {" in 1 submap;",
-          "; 1 odometry jump (0 of them borne out by the scan: a fast turn); 2 odometry steps "
-          "catching up after a stall;",
+          "; 1 odometry jump (0 of them borne out by the scan: a fast turn; 0 placed by ICP "
+          "between the odometry's step and the last motion); 0 odometry stalls bridged, 2 "
+          "odometry steps catching up after a stall;",
           "loop closures: 1 candidate verified,", "(1 run)"}) {
         EXPECT_NE(summary.find(phrase), std::string::npos) << phrase << "\n" << summary;
     }
     st.odometryJumps = 0;  // no jumps: nothing said of those borne out
     const std::string noJumps = mapping::formatSummary(result);
-    EXPECT_NE(noJumps.find("; 0 odometry jumps; 2 odometry steps"), std::string::npos) << noJumps;
+    EXPECT_NE(noJumps.find("; 0 odometry jumps; 0 odometry stalls bridged, 2 odometry steps"),
+              std::string::npos)
+        << noJumps;
 }
 
 TEST(GraphSlam, ARobotLaserLogMapsTheRobotNotItsLaser) {

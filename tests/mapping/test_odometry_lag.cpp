@@ -22,6 +22,45 @@ TEST(OdometryLag, AfterAStallAnIncrementFarFromTheLastMotionIsACatchUp) {
     EXPECT_FALSE(lag.catchingUp(CPose2D(0, 0, mrpt::DEG2RAD(7.0)), kTurning));
 }
 
+TEST(OdometryLag, TheReadingAfterAStallRegistrationSawNothingOfIsTheStep) {
+    // Down a corridor: the odometry repeats its reading for two scans and registration, with
+    // nothing to fix the motion along it, keeps them where the stall left them (turned by ICP's
+    // noise, a degree).
+    OdometryLag lag;
+    const CPose2D ahead(0.3, 0.0, 0.0), jitter(0.004, -0.002, mrpt::DEG2RAD(1.2));
+    lag.registered(ahead, ahead);  // fresh odometry, the robot moving
+    EXPECT_FALSE(lag.bridges(ahead, ahead));
+    lag.registered(kStill, jitter);
+    lag.registered(kStill, kStill);
+    EXPECT_EQ(lag.repeatedScans(), 2);
+    EXPECT_FALSE(lag.bridges(kStill, kStill));
+    // The reading after: the three steps since the last fresh one.
+    const CPose2D reading = ahead + ahead + ahead;
+    // Not a robot that stopped and set off again: more than a step.
+    EXPECT_FALSE(lag.bridges(CPose2D(0.05, 0, 0), kStill));
+    ASSERT_TRUE(lag.bridges(reading, kStill));
+    const CPose2D step = lag.stepSinceStall(reading);
+    const CPose2D expected = (-jitter) + reading;  // from where the stall's scans were put
+    EXPECT_NEAR(step.x(), expected.x(), 1e-12);
+    EXPECT_NEAR(step.y(), expected.y(), 1e-12);
+    EXPECT_NEAR(step.phi(), expected.phi(), 1e-12);
+    lag.registered(reading, step);
+    EXPECT_EQ(lag.repeatedScans(), 0);
+    EXPECT_FALSE(lag.bridges(ahead, step));
+}
+
+TEST(OdometryLag, AStallRegistrationSawTheRobotMoveInOrAStandstillIsNotBridged) {
+    const CPose2D ahead(0.3, 0.0, 0.0), turning(0.1, 0.0, mrpt::DEG2RAD(10.0));
+    OdometryLag seen;  // registration found the motion during the stall: the last one predicts
+    seen.registered(ahead, ahead);
+    seen.registered(kStill, turning);
+    EXPECT_FALSE(seen.bridges(ahead + turning + turning, turning));
+    OdometryLag standing;  // the robot stood still: the odometry rightly read nothing
+    standing.registered(kStill, kStill);
+    standing.registered(kStill, kStill);
+    EXPECT_FALSE(standing.bridges(ahead, kStill));
+}
+
 TEST(OdometryLag, AStepShorterThanTheLastMotionIsNoCatchUp) {
     // A backlog adds motion; a robot slowing down reads less (at a low scan rate by much).
     OdometryLag lag;

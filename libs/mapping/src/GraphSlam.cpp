@@ -81,14 +81,25 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
     // Without odometry (a laser-only log) the robot is predicted to move as it last did.
     CPose2D increment = odometryIncrement.value_or(lastMotion_);
     stats_.scansWithoutOdometry += !odometryIncrement;
-    const bool catchingUp =
-        odometryIncrement && odometryLag_.catchingUp(*odometryIncrement, lastMotion_);
+    const bool bridged = odometryIncrement && options_.bridgeOdometryStalls &&
+                         odometryLag_.bridges(*odometryIncrement, lastMotion_);
+    bool catchingUp = odometryIncrement && odometryLag_.catchingUp(*odometryIncrement, lastMotion_);
+    // A catch-up after a stall registration saw no motion in: not the last motion (none), but
+    // the reading less what was registered, over that many scan intervals (a jump only beyond
+    // the bounds for all of them).
+    double intervals = 1;
+    if (bridged) {
+        increment = odometryLag_.stepSinceStall(*odometryIncrement);
+        intervals += odometryLag_.repeatedScans();
+        catchingUp = false;
+        ++stats_.odometryStallsBridged;
+    }
     odometrySinceKeyframe_ += increment.norm();
     turnSinceKeyframe_ += std::abs(mrpt::math::wrapToPi(increment.phi()));
     // A jump is a step beyond the bounds that also departs from the last registered motion by
     // more than them: at a low scan rate, or on a fast robot, every step is long.
-    if (beyondOdometryJump(options_, increment) &&
-        beyondOdometryJump(options_, (-lastMotion_) + increment)) {
+    if (beyondOdometryJump(options_, increment, intervals) &&
+        beyondOdometryJump(options_, (-lastMotion_) + increment, intervals)) {
         // Wheels do not teleport: predict the motion of the last scan instead (a stalled
         // odometry that catches up in one step jumps; the robot kept moving meanwhile).
         p.odometryJumped = true;
@@ -102,6 +113,7 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
         ++stats_.odometryCatchUps;
         increment = lastMotion_;
     }
+    p.odometryBridged = bridged;
     p.odometryPredicted = odometryIncrement && !p.odometryJumped && !p.odometryLagging;
     p.odometryStep = increment;
     p.lastMotion = lastMotion_;
@@ -169,6 +181,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
         registration_.registerScan(polar_, sensorOnRobot, prediction, extract, features_);
     stats_.lastMotionPredictions += r.byLastMotion;
     stats_.odometryJumpsBorneOut += r.jumpBorneOut;
+    stats_.odometryJumpsBetween += r.jumpBetween;
     stats_.icpUnsettledRefused += r.unsettledRefused;
     if (r.alongHeading) {
         stats_.alongHeadingChecks.push_back(*r.alongHeading);
@@ -199,8 +212,8 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     // its step (ten people in the office: the scale 0.4 % short, 0.1 % without such scans).
     // Counted also with odometry_calibration off, for the summary to say what it would do.
     if (odometryIncrement && !prediction.odometryJumped && !prediction.odometryLagging &&
-        r.method == RegistrationMethod::Icp && !r.heldAlongHeading() &&
-        !registration_.seesForegroundObjects(polar_)) {
+        !prediction.odometryBridged && r.method == RegistrationMethod::Icp &&
+        !r.heldAlongHeading() && !registration_.seesForegroundObjects(polar_)) {
         odometryCalibration_.observe(*odometryIncrement, step, r.rawCovariance);
         stats_.odometryScale = odometryCalibration_.scale();
         // Reported once there is as much evidence as the calibration waits for.
@@ -211,6 +224,8 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
         stats_.odometryCalibrationDistance = odometryCalibration_.evidenceDistance();
     }
     doubtSinceKeyframe_ = doubtSinceKeyframe_ || r.method != RegistrationMethod::Icp;
+    if (odometry)
+        odometryLag_.registered(*odometry, step);
     lastMotion_ = step;
     travelled_ += step.norm();
     turned_ += std::abs(mrpt::math::wrapToPi(step.phi()));
@@ -228,7 +243,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     ScanRecord& record = scans_.back();
     record.registrationVariance = 0.5 * (r.covariance(0, 0) + r.covariance(1, 1));
     if (odometry && !prediction.odometryJumped && !prediction.odometryLagging)
-        record.odometry = odometry;
+        record.odometry = prediction.odometryBridged ? prediction.odometryStep : *odometry;
 }
 
 void GraphSlam::addKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,

@@ -108,6 +108,15 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
     s.flag("matcher_foreground_check", matcherForegroundCheck,
            "a graph-matcher answer where ICP was rejected must be borne out by the scan without "
            "its foreground objects (people close by)");
+    s.angle("jump_search_step", jumpSearchStep,
+            "after an odometry jump neither its step nor the last motion bears out, ICP also "
+            "starts between the two, this far apart in heading (0 = off)")
+        .atLeast(0)
+        .atMost(90);
+    s.flag("bridge_odometry_stalls", bridgeOdometryStalls,
+           "where registration saw no translation during an odometry stall, the first reading "
+           "after it predicts the motion since the last reading that changed, less the motion "
+           "registered meanwhile");
     s.real("odometry_sigma_xy", odometrySigmaXY, "m",
            "odometry-only edges: position noise floor ...")
         .above(0);

@@ -6,6 +6,7 @@
 #include <toposlam/io/TextFile.h>
 #include <toposlam/mapping/MappingOutputs.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -19,12 +20,17 @@ namespace toposlam::mapping {
 namespace {
 std::string line(const char* format, ...) __attribute__((format(printf, 1, 2)));
 std::string line(const char* format, ...) {
-    char buffer[512];
-    va_list args;
+    va_list args, again;
     va_start(args, format);
-    std::vsnprintf(buffer, sizeof buffer, format, args);
+    va_copy(again, args);
+    // Measured first: the registration line runs past any fixed buffer (it was cut at 512).
+    const int length = std::vsnprintf(nullptr, 0, format, args);
     va_end(args);
-    return std::string(buffer) + "\n";
+    std::string out(static_cast<std::size_t>(std::max(length, 0)) + 1, '\0');
+    std::vsnprintf(out.data(), out.size(), format, again);
+    va_end(again);
+    out.back() = '\n';  // in place of the terminating zero
+    return out;
 }
 
 // "1 odometry jump", "2 odometry jumps".
@@ -117,7 +123,9 @@ std::string formatSummary(const MappingResult& r) {
         std::string jumps = counted(st->odometryJumps, "odometry jump", "odometry jumps");
         if (st->odometryJumps > 0)
             jumps += " (" + std::to_string(st->odometryJumpsBorneOut) +
-                     " of them borne out by the scan: a fast turn)";
+                     " of them borne out by the scan: a fast turn; " +
+                     std::to_string(st->odometryJumpsBetween) +
+                     " placed by ICP between the odometry's step and the last motion)";
         s += line(
             "registration: %zu by ICP (%.1f %%; %zu unsettled, %zu of them from a second start, "
             "%zu more refused beyond the odometry's noise; "
@@ -125,14 +133,14 @@ std::string formatSummary(const MappingResult& r) {
             "heading), %zu by the graph "
             "matcher (%.1f %%; %zu of them beyond a jump, confirmed on the submap), %zu failed "
             "(%.1f %%, odometry kept; %zu of them with a graph-matcher answer only foreground "
-            "objects bore out); %s; %s catching up after a stall; %zu predicted by the "
-            "last motion instead of the odometry",
+            "objects bore out); %s; %zu odometry stalls bridged, %s catching up after a "
+            "stall; %zu predicted by the last motion instead of the odometry",
             st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
             st->icpSecondStarts, st->icpUnsettledRefused, st->icpWithoutForeground,
             st->icpHeldAlongHeading, st->registeredByGraphMatcher,
             percent(st->registeredByGraphMatcher, n), st->graphMatcherConfirmed,
             st->registrationFailed, percent(st->registrationFailed, n),
-            st->matcherRefusedForeground, jumps.c_str(),
+            st->matcherRefusedForeground, jumps.c_str(), st->odometryStallsBridged,
             counted(st->odometryCatchUps, "odometry step", "odometry steps").c_str(),
             st->lastMotionPredictions);
         if (st->scansWithoutOdometry > 0)
@@ -212,7 +220,9 @@ nlohmann::json summaryJson(const MappingResult& r) {
                              {"failed_matcher_refused_foreground", st->matcherRefusedForeground},
                              {"odometry_jumps", st->odometryJumps},
                              {"odometry_jumps_borne_out", st->odometryJumpsBorneOut},
+                             {"odometry_jumps_between", st->odometryJumpsBetween},
                              {"odometry_catch_ups", st->odometryCatchUps},
+                             {"odometry_stalls_bridged", st->odometryStallsBridged},
                              {"registered_share", st->registeredShare()}};
         // Where ICP and the odometry disagreed along the heading, and what the scan said
         // (along_heading_check): the stamp is the scan's, as in trajectory.txt.

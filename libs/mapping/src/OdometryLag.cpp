@@ -6,11 +6,16 @@
 
 namespace toposlam::mapping {
 
+namespace {
+bool zero(const mrpt::poses::CPose2D& increment) {
+    return increment.x() == 0 && increment.y() == 0 && increment.phi() == 0;
+}
+}  // namespace
+
 bool OdometryLag::catchingUp(const mrpt::poses::CPose2D& increment,
                              const mrpt::poses::CPose2D& lastMotion) {
-    if (increment.x() == 0 && increment.y() == 0 && increment.phi() == 0) {
-        stalled_ = lastMotion.norm() > kMovedDistance ||
-                   std::abs(mrpt::math::wrapToPi(lastMotion.phi())) > kMovedAngle;
+    if (zero(increment)) {
+        stalled_ = moved(lastMotion);
         return false;
     }
     if (stalled_) {
@@ -23,14 +28,52 @@ bool OdometryLag::catchingUp(const mrpt::poses::CPose2D& increment,
     // A backlog adds to the motion: a step that is not longer, nor turns farther, than the last
     // registered one by the margins is the odometry in step with the robot again (one that
     // reads less is the robot slowing down, which at a low scan rate is a large change too).
-    const double longer = increment.norm() - lastMotion.norm();
-    const double farther = std::abs(mrpt::math::wrapToPi(increment.phi())) -
-                           std::abs(mrpt::math::wrapToPi(lastMotion.phi()));
-    if (longer <= kAgreeDistance && farther <= kAgreeAngle) {
+    if (!exceeds(increment, lastMotion)) {
         catchUpLeft_ = 0;
         return false;
     }
     return true;
+}
+
+bool OdometryLag::exceeds(const mrpt::poses::CPose2D& increment,
+                          const mrpt::poses::CPose2D& lastMotion) {
+    const double longer = increment.norm() - lastMotion.norm();
+    const double farther = std::abs(mrpt::math::wrapToPi(increment.phi())) -
+                           std::abs(mrpt::math::wrapToPi(lastMotion.phi()));
+    return longer > kAgreeDistance || farther > kAgreeAngle;
+}
+
+bool OdometryLag::moved(const mrpt::poses::CPose2D& motion) {
+    return motion.norm() > kMovedDistance ||
+           std::abs(mrpt::math::wrapToPi(motion.phi())) > kMovedAngle;
+}
+
+bool OdometryLag::bridges(const mrpt::poses::CPose2D& increment,
+                          const mrpt::poses::CPose2D& lastMotion) const {
+    // Translation only: a corridor fixes the heading, and ICP turns the stall's scans by its
+    // noise (a degree or so) while it cannot see them move along it.
+    return repeatedScans_ > 0 && !zero(increment) && movedBeforeStall_ &&
+           sinceReading_.norm() <= kMovedDistance && exceeds(increment, lastMotion);
+}
+
+mrpt::poses::CPose2D OdometryLag::stepSinceStall(const mrpt::poses::CPose2D& increment) const {
+    return (-sinceReading_) + increment;
+}
+
+void OdometryLag::registered(const mrpt::poses::CPose2D& increment,
+                             const mrpt::poses::CPose2D& step) {
+    if (zero(increment)) {
+        if (repeatedScans_++ == 0) {
+            movedBeforeStall_ = moved(lastStep_);
+            sinceReading_ = step;
+        } else {
+            sinceReading_ = sinceReading_ + step;
+        }
+    } else {
+        repeatedScans_ = 0;
+        sinceReading_ = mrpt::poses::CPose2D();
+    }
+    lastStep_ = step;
 }
 
 }  // namespace toposlam::mapping

@@ -71,9 +71,9 @@ CMatrixDouble33 clampEigen(const CMatrixDouble33& c, const Eigen::Vector3d& floo
 }
 }  // namespace
 
-bool beyondOdometryJump(const GraphSlamOptions& options, const CPose2D& motion) {
-    return motion.norm() > options.odometryJumpDistance ||
-           std::abs(mrpt::math::wrapToPi(motion.phi())) > options.odometryJumpAngle;
+bool beyondOdometryJump(const GraphSlamOptions& options, const CPose2D& motion, double scans) {
+    return motion.norm() > scans * options.odometryJumpDistance ||
+           std::abs(mrpt::math::wrapToPi(motion.phi())) > scans * options.odometryJumpAngle;
 }
 
 ScanRegistration::ScanRegistration(const GraphSlamOptions& options,
@@ -288,6 +288,7 @@ const Prediction& ScanRegistration::preferredPrediction(const matching::PolarSca
                                                         const CPose2D& sensorOnRobot,
                                                         const Prediction& prediction,
                                                         std::optional<IcpAttempt>& started) {
+    jumpedIcpEnd_.reset();
     if (!options_.confirmLargeCorrections || !prediction.submap ||
         prediction.submap->map().size() == 0 || scan.validCount() == 0)
         return prediction;
@@ -335,8 +336,10 @@ const Prediction& ScanRegistration::jumpBorneOut(const matching::PolarScan& scan
     const Submap& submap = *prediction.submap;
     const CPose2D byOdometry = prediction.inSubmap + toOdometry;
     IcpAttempt fromOdometry = icpFrom(scan, sensorOnRobot, submap, byOdometry);
-    if (!acceptable(fromOdometry, byOdometry))
+    if (!acceptable(fromOdometry, byOdometry)) {
+        jumpedIcpEnd_ = fromOdometry.robot;  // for jumpBetween(), should the matcher fail too
         return prediction;
+    }
     // A real jump (a stall caught up in one step) puts ICP from the odometry off the robot:
     // along a corridor it may fit as well as from the last motion, but not clearly better.
     const IcpAttempt fromMotion = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap);
@@ -347,6 +350,74 @@ const Prediction& ScanRegistration::jumpBorneOut(const matching::PolarScan& scan
     shifted(prediction, toOdometry);
     motionPrediction_.odometryJumped = false;
     motionPrediction_.odometryPredicted = true;  // the odometry's own step, borne out
+    return motionPrediction_;
+}
+
+const Prediction& ScanRegistration::jumpBetween(const matching::PolarScan& scan,
+                                                const CPose2D& sensorOnRobot,
+                                                const Prediction& prediction,
+                                                std::optional<IcpAttempt>& started) {
+    if (!(options_.jumpSearchStep > 0) || !jumpedIcpEnd_ || !prediction.odometryJumped)
+        return prediction;
+    const CPose2D fromOdometry = *jumpedIcpEnd_;
+    // Steps from the last motion (the prediction's) to the odometry's, in the robot frame of
+    // the last scan: the robot's true step lies between them when the odometry stalled.
+    const CPose2D& from = prediction.odometryStep;
+    const CPose2D& to = prediction.jumpedStep;
+    const double dx = to.x() - from.x(), dy = to.y() - from.y();
+    const double dphi = mrpt::math::wrapToPi(to.phi() - from.phi());
+    const int intervals = std::min(
+        kMaxJumpIntervals,
+        static_cast<int>(std::max(std::ceil(std::abs(dphi) / options_.jumpSearchStep),
+                                  std::ceil(std::hypot(dx, dy) / options_.icpMaxDistance))));
+    if (intervals < 2)
+        return prediction;  // nothing between that ICP from either end would not reach
+    const Submap& submap = *prediction.submap;
+    const matching::LineMap& map = submap.map();
+    // ICP from each start between. Its correction may not be bounded sideways as tryIcp()'s
+    // is: a start interpolated between two steps is off the arc the robot turned on.
+    std::size_t count = 0;
+    for (int k = 1; k < intervals; ++k) {
+        const double a = double(k) / intervals;
+        const CPose2D step(from.x() + a * dx, from.y() + a * dy, from.phi() + a * dphi);
+        const CPose2D start = prediction.inSubmap + ((-from) + step);
+        IcpAttempt& attempt = betweenAttempts_[count];
+        attempt = icpFrom(scan, sensorOnRobot, submap, start);
+        const CPose2D correction = attempt.robot - start;
+        if (attempt.overlap >= options_.minInlierRatio &&
+            correction.norm() <= options_.maxCorrectionDistance &&
+            std::abs(mrpt::math::wrapToPi(correction.phi())) <= options_.maxCorrectionAngle)
+            ++count;
+    }
+    // The best end that another start (or ICP from the odometry's step) also reached: a
+    // basin, not a place one start happened to stop in.
+    const IcpAttempt* best = nullptr;
+    std::size_t bestOn = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const CPose2D& end = betweenAttempts_[i].robot;
+        bool agreed = sameEnd(end, fromOdometry);
+        for (std::size_t j = 0; j < count && !agreed; ++j)
+            agreed = j != i && sameEnd(end, betweenAttempts_[j].robot);
+        const std::size_t on = agreed ? readingsOnMap(map, scan, end + sensorOnRobot) : 0;
+        if (agreed && (!best || on > bestOn)) {
+            best = &betweenAttempts_[i];
+            bestOn = on;
+        }
+    }
+    if (!best)
+        return prediction;
+    // As for the odometry's own step: clearly better than ICP from the last motion.
+    const IcpAttempt fromMotion = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap);
+    const bool onlyBetweenPasses =
+        !acceptable(fromMotion, prediction.inSubmap) &&
+        bestOn > readingsOnMap(map, scan, fromMotion.robot + sensorOnRobot);
+    if (!onlyBetweenPasses && !bearsOut(map, scan, sensorOnRobot, best->robot, fromMotion.robot,
+                                        options_.secondOpinionMargin))
+        return prediction;
+    // Predicted where the starts agreed, and registered there by the ICP that ended there.
+    shifted(prediction, best->robot - prediction.inSubmap);
+    started = *best;
+    motionPrediction_.odometryJumped = false;
     return motionPrediction_;
 }
 

@@ -120,6 +120,20 @@ struct GraphSlamOptions : public config::Options {
     /// with the robot stand in the last keyframe one step back, and the matcher, fitted to
     /// them, takes back the robot's step along a corridor whose walls fix nothing along it.
     bool matcherForegroundCheck = true;
+    /// After an odometry jump that neither ICP from the odometry's step (confirm_large_corrections)
+    /// nor the graph matcher places, ICP also starts between the odometry's step and the last
+    /// motion, at most this far apart in heading (rad; 0 = off) and icpMaxDistance in
+    /// position: a stalled odometry that catches up in one step overshoots the turn or falls
+    /// short of it, and the robot turned somewhere between. An end two starts reach is taken
+    /// if it puts secondOpinionMargin more of the scan on the submap than ICP from the last
+    /// motion (ScanRegistration::jumpBetween).
+    double jumpSearchStep = 15 * M_PI / 180;
+    /// The first odometry reading after readings that repeated exactly (a stall) is the motion
+    /// since the last reading that changed. Where registration saw no translation during the
+    /// stall (along a corridor its scans keep the stall's standstill, and the last motion is
+    /// none), the step predicted is that reading less the motion registered meanwhile, not the
+    /// last motion (OdometryLag.h).
+    bool bridgeOdometryStalls = true;
     /// Odometry noise (standard deviations) for edges that only odometry supports: a floor,
     /// plus a share of the distance travelled and of the angle turned.
     double odometrySigmaXY = 0.02;           ///< m

@@ -31,7 +31,10 @@
 //     Without a jump, an answer that corrects the prediction by more than a jump is a
 //     look-alike unless ICP on the submap, started there, confirms it (confirm_large_
 //     corrections: odometry that counts reversing as driving forward);
-//  3. if both fail, the odometry prediction, with the odometry model's covariance.
+//  3. after an odometry jump that neither placed, ICP from starts between the last motion and
+//     the odometry's step (jump_search_step): a stalled odometry that caught up past the turn
+//     or short of it (mit-csail at a quarter of its rate);
+//  4. if all fail, the odometry prediction, with the odometry model's covariance.
 // Poses are ROBOT poses (the laser's mounting offset is applied here), in the frame of the
 // reference keyframe the result names (m, rad).
 #include <mrpt/math/CMatrixFixed.h>
@@ -84,6 +87,10 @@ struct Registration {
     /// Predicted by the odometry's step although it was judged a jump: the scan bore it out
     /// (a fast turn at a low scan rate; confirm_large_corrections).
     bool jumpBorneOut = false;
+    /// After a jump that neither ICP from the odometry's step nor the graph matcher placed: ICP
+    /// from a start between the odometry's step and the last motion (the odometry caught up
+    /// past the turn or short of it; jump_search_step).
+    bool jumpBetween = false;
     /// The along-heading check's evidence when it ran (its `scan` is left 0: the caller knows
     /// which scan this is).
     std::optional<AlongHeadingCheck> alongHeading;
@@ -95,7 +102,10 @@ struct Registration {
 /// True when `motion` goes farther than options.odometryJumpDistance or turns more than
 /// options.odometryJumpAngle: more than the robot moves between two scans, whether it is an
 /// odometry increment (a jump) or a registration's correction of the odometry (a look-alike).
-bool beyondOdometryJump(const GraphSlamOptions& options, const mrpt::poses::CPose2D& motion);
+/// `scans`: the motion covers that many scan intervals (the bounds grow with them; a step
+/// bridged over an odometry stall).
+bool beyondOdometryJump(const GraphSlamOptions& options, const mrpt::poses::CPose2D& motion,
+                        double scans = 1);
 
 /// Where the scan is expected from odometry, in the frames the registration works in.
 struct Prediction {
@@ -112,6 +122,9 @@ struct Prediction {
     mrpt::poses::CPose2D jumpedStep;
     /// The odometry is catching up after a stall (OdometryLag): the last motion was predicted.
     bool odometryLagging = false;
+    /// The first reading after a stall: the step is that reading less the motion registered
+    /// during the stall (OdometryLag::stepSinceStall; bridge_odometry_stalls).
+    bool odometryBridged = false;
     /// The prediction is the odometry's own step (not the last motion: no jump, no stall, a log
     /// with odometry), so the odometry model bounds its error.
     bool odometryPredicted = false;
@@ -252,6 +265,18 @@ class ScanRegistration {
                                    const mrpt::poses::CPose2D& sensorOnRobot,
                                    const Prediction& prediction,
                                    std::optional<IcpAttempt>& started);
+    /// After an odometry jump that jumpBorneOut() did not bear out because ICP from the
+    /// odometry's step failed tryIcp()'s tests, and the graph matcher did not answer
+    /// either: ICP from starts between the last motion and the odometry's step
+    /// (jump_search_step apart in heading, icp_max_distance in position). An end with the
+    /// overlap and within the correction bounds (not the sideways one: the starts are off
+    /// the arc the robot turned on) that another start, or ICP from the odometry's step,
+    /// also reached, and that puts second_opinion_margin more of `scan` on the submap than
+    /// ICP from the last motion (or more, where that ICP fails the tests), is the prediction
+    /// (the best such end; `started` gets its ICP run). Otherwise `prediction`.
+    const Prediction& jumpBetween(const matching::PolarScan& scan,
+                                  const mrpt::poses::CPose2D& sensorOnRobot,
+                                  const Prediction& prediction, std::optional<IcpAttempt>& started);
     /// `prediction` with the predicted step since the last scan followed by `shift` (robot
     /// frame), kept in motionPrediction_: the alternatives preferredPrediction() and
     /// jumpBorneOut() choose.
@@ -268,7 +293,13 @@ class ScanRegistration {
     /// Robot pose (submap frame) where the last ICP that tryIcp rejected ended; empty when
     /// tryIcp accepted, or did not run ICP.
     std::optional<mrpt::poses::CPose2D> failedIcp_;
+    /// Where ICP from a jumped odometry's step ended when it failed tryIcp()'s tests
+    /// (jumpBorneOut(); reset for every scan).
+    std::optional<mrpt::poses::CPose2D> jumpedIcpEnd_;
     Prediction motionPrediction_;  ///< shifted()'s prediction
+    /// jumpBetween()'s starts: at most this many intervals (a 120 deg catch-up at 15 deg).
+    static constexpr int kMaxJumpIntervals = 8;
+    std::array<IcpAttempt, kMaxJumpIntervals - 1> betweenAttempts_;  ///< reused
     matching::PointToLineIcp icp_;
     matching::IcpOptions icpOptions_;
     matching::GraphScanMatcher matcher_;
@@ -313,6 +344,14 @@ Registration ScanRegistration::registerScan(const matching::PolarScan& scan,
             prediction.odometryJumped || !failedIcp_ ? nullptr : &*failedIcp_;
         if (tryGraphMatcher(scan, sensorOnRobot, prediction, features, failedIcp, out))
             return out;
+    }
+    // Neither ICP from the jumped odometry's step nor the matcher placed the scan: the
+    // odometry may have caught up past the turn or short of it.
+    std::optional<IcpAttempt> between;
+    const Prediction& searched = jumpBetween(scan, sensorOnRobot, prediction, between);
+    if (between && tryIcp(scan, sensorOnRobot, searched, out, &*between)) {
+        out.jumpBetween = true;
+        return out;
     }
     out.method = RegistrationMethod::Odometry;
     out.reference = prediction.lastKeyframe ? prediction.lastKeyframe->id : 0;

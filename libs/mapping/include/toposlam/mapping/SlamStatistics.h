@@ -57,8 +57,15 @@ struct SlamStatistics {
     /// Of those, steps the scan bore out all the same, which predicted it (a fast turn at a low
     /// scan rate; confirm_large_corrections).
     std::size_t odometryJumpsBorneOut = 0;
+    /// Of the others, placed by neither ICP from the odometry's step nor the graph matcher, those
+    /// ICP placed from a start between the odometry's step and the last motion
+    /// (jump_search_step): the odometry caught up past the turn or short of it.
+    std::size_t odometryJumpsBetween = 0;
     /// odometry increments taken for catching up after a stall (OdometryLag.h)
     std::size_t odometryCatchUps = 0;
+    /// first odometry readings after a stall, predicted as the motion since the last reading
+    /// that changed less the motion registered meanwhile (bridge_odometry_stalls)
+    std::size_t odometryStallsBridged = 0;
     /// Scans that came without an odometry increment (a laser-only log), each predicted by
     /// the robot's last registered motion instead.
     std::size_t scansWithoutOdometry = 0;

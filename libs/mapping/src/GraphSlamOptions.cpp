@@ -109,8 +109,9 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "a graph-matcher answer where ICP was rejected must be borne out by the scan without "
            "its foreground objects (people close by)");
     s.angle("jump_search_step", jumpSearchStep,
-            "after an odometry jump neither its step nor the last motion bears out, ICP also "
-            "starts between the two, this far apart in heading (0 = off)")
+            "after an odometry jump that neither ICP from its step nor the graph matcher places, "
+            "ICP also starts between that step and the last motion, this far apart in heading "
+            "(0 = off)")
         .atLeast(0)
         .atMost(90);
     s.flag("bridge_odometry_stalls", bridgeOdometryStalls,

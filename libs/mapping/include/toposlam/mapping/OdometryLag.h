@@ -20,12 +20,14 @@
 // That holds where registration saw the robot move during the stall. Where nothing fixes the
 // motion (along a corridor) the stall's scans stay where the stall left them: registration sees
 // no translation, and the last registered motion, a standstill, is no prediction at all. The
-// first reading after the stall holds all the motion since the last reading that changed; that
-// reading, less the motion registered since, is then the step from the last scan
-// (stepSinceStall(); bridge_odometry_stalls). Only then: the reading after a stall is not
-// always all of it (mit-csail: 7.6 deg where the robot turned 25, the rest in the next
-// readings; 85.5 where it turned 68.8), and bridged whatever registration saw, intel with every
-// other beam went from 0.017 to 0.044 m and mit-csail read by a 5.6 m laser from 0.032 to 0.046.
+// first reading after the stall holds all the motion since the last reading that changed; so a
+// catch-up after such a stall is predicted as that reading less the motion registered since
+// (bridges(), stepSinceStall(); bridge_odometry_stalls). Only there: the reading after a stall
+// is not always all of it (mit-csail: 7.6 deg where the robot turned 25, the rest in the next
+// readings; 85.5 where it turned 68.8), and a robot that stopped and set off again reads no
+// catch-up (bridged wherever registration saw no translation, intel with every other beam went
+// from 0.017 to 0.044 m; bridged everywhere, mit-csail read by a 5.6 m laser from 0.032 to
+// 0.046 m too).
 #include <mrpt/poses/CPose2D.h>
 
 namespace toposlam::mapping {

@@ -122,8 +122,9 @@ struct Prediction {
     mrpt::poses::CPose2D jumpedStep;
     /// The odometry is catching up after a stall (OdometryLag): the last motion was predicted.
     bool odometryLagging = false;
-    /// The first reading after a stall: the step is that reading less the motion registered
-    /// during the stall (OdometryLag::stepSinceStall; bridge_odometry_stalls).
+    /// A catch-up after a stall registration saw no translation in: the step is the reading
+    /// less the motion registered during the stall (OdometryLag::stepSinceStall;
+    /// bridge_odometry_stalls).
     bool odometryBridged = false;
     /// The prediction is the odometry's own step (not the last motion: no jump, no stall, a log
     /// with odometry), so the odometry model bounds its error.

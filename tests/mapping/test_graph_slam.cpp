@@ -537,8 +537,9 @@ TEST(GraphSlam, AnOdometryStallAlongABareCorridorIsBridged) {
     // Down a corridor whose walls fix nothing along it, 0.3 m between scans, the odometry
     // stalls for two scans (it repeats its reading) and the next reading carries all three
     // steps. ICP keeps the stall's standstill for its two scans; the reading after it, less
-    // that standstill, is the step (bridge_odometry_stalls). Predicted by the last motion
-    // instead (a standstill), the robot would lose the stall's 0.9 m for good.
+    // that standstill, is the step (bridge_odometry_stalls), and the stall's two scans are
+    // placed between. Predicted by the last motion instead (a standstill), the robot would
+    // lose the stall's 0.9 m for good.
     const auto truth = test::drivePath({{1.5, 1.5}, {6.5, 1.5}, {6.5, 3.25}, {45, 3.25}}, 0.3);
     std::size_t stall = 0;
     while (truth[stall].x() < 25)
@@ -549,8 +550,12 @@ TEST(GraphSlam, AnOdometryStallAlongABareCorridorIsBridged) {
 
     const SlamRun run = runSlam(drive);
     EXPECT_EQ(run.slam->statistics().odometryStallsBridged, 1u);
+    EXPECT_EQ(run.slam->statistics().stalledScansPlaced, 2u);
     EXPECT_EQ(run.slam->statistics().registrationFailed, 0u);
     EXPECT_LT(std::abs(along(run)), 0.1);
+    // Where the robot was during the stall (left behind, they would be 0.3 and 0.6 m short).
+    for (const std::size_t i : {stall, stall + 1})
+        EXPECT_LT(std::abs(run.poses[i].x() - truth[i].x()), 0.1) << "scan " << i;
     const SlamRun unbridged =
         runSlam(drive, 0, [](mapping::GraphSlamOptions& o) { o.bridgeOdometryStalls = false; });
     EXPECT_LT(along(unbridged), -0.5) << "the corridor must be blind for this test";
@@ -1016,14 +1021,15 @@ TEST(MappingOutputs, CountsAgreeInNumber) {
     for (const char* phrase :
          {" in 1 submap;",
           "; 1 odometry jump (0 of them borne out by the scan: a fast turn; 0 placed by ICP "
-          "between the odometry's step and the last motion); 0 odometry stalls bridged, 2 "
-          "odometry steps catching up after a stall;",
+          "between the odometry's step and the last motion); 0 odometry stalls bridged (0 of "
+          "their scans placed between), 2 odometry steps catching up after a stall;",
           "loop closures: 1 candidate verified,", "(1 run)"}) {
         EXPECT_NE(summary.find(phrase), std::string::npos) << phrase << "\n" << summary;
     }
     st.odometryJumps = 0;  // no jumps: nothing said of those borne out
     const std::string noJumps = mapping::formatSummary(result);
-    EXPECT_NE(noJumps.find("; 0 odometry jumps; 0 odometry stalls bridged, 2 odometry steps"),
+    EXPECT_NE(noJumps.find("; 0 odometry jumps; 0 odometry stalls bridged (0 of their scans "
+                           "placed between), 2 odometry steps"),
               std::string::npos)
         << noJumps;
 }

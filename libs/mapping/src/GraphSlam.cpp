@@ -84,13 +84,15 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
     const bool bridged = odometryIncrement && options_.bridgeOdometryStalls &&
                          odometryLag_.bridges(*odometryIncrement, lastMotion_);
     bool catchingUp = odometryIncrement && odometryLag_.catchingUp(*odometryIncrement, lastMotion_);
-    // A catch-up after a stall registration saw no motion in: not the last motion (none), but
-    // the reading less what was registered, over that many scan intervals (a jump only beyond
-    // the bounds for all of them).
+    // A catch-up after a stall registration saw too little of: not the last motion, but the
+    // reading less what was registered, over that many scan intervals (a jump only beyond the
+    // bounds for all of them).
     double intervals = 1;
     if (bridged) {
         increment = odometryLag_.stepSinceStall(*odometryIncrement);
         intervals += odometryLag_.repeatedScans();
+        p.stallScans = odometryLag_.repeatedScans();
+        p.stallScansBehind = odometryLag_.stallScansBehind(*odometryIncrement);
         catchingUp = false;
         ++stats_.odometryStallsBridged;
     }
@@ -244,6 +246,32 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     record.registrationVariance = 0.5 * (r.covariance(0, 0) + r.covariance(1, 1));
     if (odometry && !prediction.odometryJumped && !prediction.odometryLagging)
         record.odometry = prediction.odometryBridged ? prediction.odometryStep : *odometry;
+    if (prediction.odometryBridged && prediction.stallScansBehind && odometry)
+        placeStalledScans(std::size_t(prediction.stallScans), *odometry);
+}
+
+void GraphSlam::placeStalledScans(std::size_t stallScans, const CPose2D& reading) {
+    const std::size_t last = scans_.size() - 1;  // the catch-up scan
+    if (last < stallScans + 1)
+        return;
+    const std::size_t before = last - stallScans - 1;  // its reading was the last that changed
+    const CPose2D from = scanPose(before), to = scanPose(last);
+    const double intervals = double(stallScans + 1);
+    const CPose2D share(reading.x() / intervals, reading.y() / intervals,
+                        reading.phi() / intervals);
+    for (std::size_t k = 1; k <= stallScans; ++k) {
+        const std::size_t i = before + k;
+        ScanRecord& s = scans_[i];
+        if (keyframes_[s.keyframe].scanIndex == i)
+            continue;  // a keyframe stays where the graph has it
+        const double a = double(k) / intervals;
+        const CPose2D placed(from.x() + a * (to.x() - from.x()), from.y() + a * (to.y() - from.y()),
+                             scanPose(i).phi());
+        s.fromKeyframe = placed - graph_.pose(s.keyframe);
+        s.odometry = share;
+        ++stats_.stalledScansPlaced;
+    }
+    scans_[last].odometry = share;
 }
 
 void GraphSlam::addKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,

@@ -115,9 +115,10 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
         .atLeast(0)
         .atMost(90);
     s.flag("bridge_odometry_stalls", bridgeOdometryStalls,
-           "where registration saw no translation during an odometry stall, the first reading "
-           "after it predicts the motion since the last reading that changed, less the motion "
-           "registered meanwhile");
+           "where registration saw less of an odometry stall than the reading after it holds "
+           "(no translation, or 0.2 m less without turning), that reading less the motion "
+           "registered meanwhile is the step predicted, and the stall's scans registration left "
+           "behind are placed between");
     s.real("odometry_sigma_xy", odometrySigmaXY, "m",
            "odometry-only edges: position noise floor ...")
         .above(0);

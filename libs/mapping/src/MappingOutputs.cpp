@@ -133,14 +133,16 @@ std::string formatSummary(const MappingResult& r) {
             "heading), %zu by the graph "
             "matcher (%.1f %%; %zu of them beyond a jump, confirmed on the submap), %zu failed "
             "(%.1f %%, odometry kept; %zu of them with a graph-matcher answer only foreground "
-            "objects bore out); %s; %zu odometry stalls bridged, %s catching up after a "
-            "stall; %zu predicted by the last motion instead of the odometry",
+            "objects bore out); %s; %zu odometry stalls bridged (%zu of their scans placed "
+            "between), %s catching up after a stall; %zu predicted by the last motion instead "
+            "of the odometry",
             st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
             st->icpSecondStarts, st->icpUnsettledRefused, st->icpWithoutForeground,
             st->icpHeldAlongHeading, st->registeredByGraphMatcher,
             percent(st->registeredByGraphMatcher, n), st->graphMatcherConfirmed,
             st->registrationFailed, percent(st->registrationFailed, n),
             st->matcherRefusedForeground, jumps.c_str(), st->odometryStallsBridged,
+            st->stalledScansPlaced,
             counted(st->odometryCatchUps, "odometry step", "odometry steps").c_str(),
             st->lastMotionPredictions);
         if (st->scansWithoutOdometry > 0)
@@ -223,6 +225,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
                              {"odometry_jumps_between", st->odometryJumpsBetween},
                              {"odometry_catch_ups", st->odometryCatchUps},
                              {"odometry_stalls_bridged", st->odometryStallsBridged},
+                             {"stalled_scans_placed", st->stalledScansPlaced},
                              {"registered_share", st->registeredShare()}};
         // Where ICP and the odometry disagreed along the heading, and what the scan said
         // (along_heading_check): the stamp is the scan's, as in trajectory.txt.

@@ -48,12 +48,26 @@ bool OdometryLag::moved(const mrpt::poses::CPose2D& motion) {
            std::abs(mrpt::math::wrapToPi(motion.phi())) > kMovedAngle;
 }
 
+bool OdometryLag::turned(const mrpt::poses::CPose2D& motion) {
+    return std::abs(mrpt::math::wrapToPi(motion.phi())) > kAgreeAngle;
+}
+
 bool OdometryLag::bridges(const mrpt::poses::CPose2D& increment,
                           const mrpt::poses::CPose2D& lastMotion) const {
-    // Translation only: a corridor fixes the heading, and ICP turns the stall's scans by its
-    // noise (a degree or so) while it cannot see them move along it.
-    return repeatedScans_ > 0 && !zero(increment) && movedBeforeStall_ &&
-           sinceReading_.norm() <= kMovedDistance && exceeds(increment, lastMotion);
+    if (repeatedScans_ == 0 || zero(increment) || !movedBeforeStall_ ||
+        !exceeds(increment, lastMotion))
+        return false;
+    // Translation: a corridor fixes the heading, and ICP turns the stall's scans by its noise
+    // (a degree or so) while it cannot see how far they went along it. Not where it saw the
+    // robot turn: a turn shows walls across, and there the reading is what may fall short.
+    return sinceReading_.norm() <= kMovedDistance ||
+           (!turned(sinceReading_) && increment.norm() - sinceReading_.norm() > kAgreeDistance);
+}
+
+bool OdometryLag::stallScansBehind(const mrpt::poses::CPose2D& increment) const {
+    const double scans = repeatedScans_;
+    return !turned(sinceReading_) &&
+           sinceReading_.norm() < increment.norm() * scans / (scans + 1) - kAgreeDistance;
 }
 
 mrpt::poses::CPose2D OdometryLag::stepSinceStall(const mrpt::poses::CPose2D& increment) const {

@@ -138,15 +138,17 @@ bool ScanRegistration::outrunsOdometry(const Prediction& prediction, const CPose
     return chi2 > options_.unsettledMaxChi2;
 }
 
-bool ScanRegistration::plausibleCorrection(const CPose2D& correction) const {
+bool ScanRegistration::plausibleCorrection(const CPose2D& correction, bool boundSideways) const {
     return correction.norm() <= options_.maxCorrectionDistance &&
            std::abs(mrpt::math::wrapToPi(correction.phi())) <= options_.maxCorrectionAngle &&
-           (options_.maxLateralCorrection <= 0 ||
+           (!boundSideways || options_.maxLateralCorrection <= 0 ||
             std::abs(correction.y()) <= options_.maxLateralCorrection);
 }
 
-bool ScanRegistration::acceptable(const IcpAttempt& attempt, const CPose2D& start) const {
-    return attempt.overlap >= options_.minInlierRatio && plausibleCorrection(attempt.robot - start);
+bool ScanRegistration::acceptable(const IcpAttempt& attempt, const CPose2D& start,
+                                  bool boundSideways) const {
+    return attempt.overlap >= options_.minInlierRatio &&
+           plausibleCorrection(attempt.robot - start, boundSideways);
 }
 
 bool ScanRegistration::seesForegroundObjects(const matching::PolarScan& scan) const {
@@ -374,8 +376,8 @@ const Prediction& ScanRegistration::jumpBetween(const matching::PolarScan& scan,
         return prediction;  // nothing between that ICP from either end would not reach
     const Submap& submap = *prediction.submap;
     const matching::LineMap& map = submap.map();
-    // ICP from each start between. Its correction may not be bounded sideways as tryIcp()'s
-    // is: a start interpolated between two steps is off the arc the robot turned on.
+    // ICP from each start between, its correction not bounded sideways: a start interpolated
+    // between two steps is off the arc the robot turned on.
     std::size_t count = 0;
     for (int k = 1; k < intervals; ++k) {
         const double a = double(k) / intervals;
@@ -383,10 +385,7 @@ const Prediction& ScanRegistration::jumpBetween(const matching::PolarScan& scan,
         const CPose2D start = prediction.inSubmap + ((-from) + step);
         IcpAttempt& attempt = betweenAttempts_[count];
         attempt = icpFrom(scan, sensorOnRobot, submap, start);
-        const CPose2D correction = attempt.robot - start;
-        if (attempt.overlap >= options_.minInlierRatio &&
-            correction.norm() <= options_.maxCorrectionDistance &&
-            std::abs(mrpt::math::wrapToPi(correction.phi())) <= options_.maxCorrectionAngle)
+        if (acceptable(attempt, start, /*boundSideways=*/false))
             ++count;
     }
     // The best end that another start (or ICP from the odometry's step) also reached: a

@@ -80,6 +80,12 @@ class GraphSlam {
                           const features::CObservationLaserFeatures::Ptr& storedFeatures);
     Prediction predict(const std::optional<mrpt::poses::CPose2D>& odometryIncrement);
     bool isKeyframe(const Registration& r, const mrpt::poses::CPose2D& pose) const;
+    /// The last `stallScans` scans before this one, a bridged stall's that registration left
+    /// behind (Prediction::stallScansBehind), placed at even steps between the scan before the
+    /// stall and this one (the robot at a steady speed), each keeping its heading; their
+    /// odometry, and this scan's, is the reading's share of each scan interval. `reading`: the
+    /// odometry since the scan before the stall (its frame, m, rad). Keyframes stay.
+    void placeStalledScans(std::size_t stallScans, const mrpt::poses::CPose2D& reading);
     void addKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan, const Registration& r,
                      const mrpt::poses::CPose2D& pose,
                      features::CObservationLaserFeatures::Ptr features);

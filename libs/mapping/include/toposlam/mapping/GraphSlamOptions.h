@@ -129,10 +129,11 @@ struct GraphSlamOptions : public config::Options {
     /// motion (ScanRegistration::jumpBetween).
     double jumpSearchStep = 15 * M_PI / 180;
     /// The first odometry reading after readings that repeated exactly (a stall) is the motion
-    /// since the last reading that changed. Where registration saw no translation during the
-    /// stall (along a corridor its scans keep the stall's standstill, and the last motion is
-    /// none), the step predicted is that reading less the motion registered meanwhile, not the
-    /// last motion (OdometryLag.h).
+    /// since the last reading that changed. Where registration saw less of the stall than that
+    /// (along a corridor its scans keep the stall's standstill or go part of the way; not where
+    /// it saw the robot turn), the step predicted is that reading less the motion registered
+    /// meanwhile, not the last motion, and the stall's scans registration left behind are
+    /// placed between (OdometryLag.h, GraphSlam::placeStalledScans).
     bool bridgeOdometryStalls = true;
     /// Odometry noise (standard deviations) for edges that only odometry supports: a floor,
     /// plus a share of the distance travelled and of the angle turned.

@@ -18,16 +18,19 @@
 // mit-csail's scan rate its turn rate changes by 15 deg between two scans.)
 //
 // That holds where registration saw the robot move during the stall. Where nothing fixes the
-// motion (along a corridor) the stall's scans stay where the stall left them: registration sees
-// no translation, and the last registered motion, a standstill, is no prediction at all. The
-// first reading after the stall holds all the motion since the last reading that changed; so a
-// catch-up after such a stall is predicted as that reading less the motion registered since
-// (bridges(), stepSinceStall(); bridge_odometry_stalls). Only there: the reading after a stall
-// is not always all of it (mit-csail: 7.6 deg where the robot turned 25, the rest in the next
-// readings; 85.5 where it turned 68.8), and a robot that stopped and set off again reads no
-// catch-up (bridged wherever registration saw no translation, intel with every other beam went
-// from 0.017 to 0.044 m; bridged everywhere, mit-csail read by a 5.6 m laser from 0.032 to
-// 0.046 m too).
+// motion (along a corridor) the stall's scans stay where the stall left them, or go part of
+// the way: the last registered motion is then too short a prediction. The first reading after
+// the stall holds all the motion since the last reading that changed; so a catch-up after a
+// stall in which registration saw no translation, or, along a straight stretch (registration
+// saw the robot turn by at most kAgreeAngle), less than the reading by more than
+// kAgreeDistance, is predicted as that reading less the motion registered since (bridges(),
+// stepSinceStall(); bridge_odometry_stalls). Where registration left the stall's scans short of
+// the reading's share per scan by that margin (stallScansBehind()), they are placed between
+// (GraphSlam). Only there: the reading after a stall is not always all of it (mit-csail: 7.6
+// deg where the robot turned 25, the rest in the next readings; 85.5 where it turned 68.8:
+// bridged during such turns, mit-csail read by a 5.6 m laser went from 0.032 to 0.046 m), and
+// a robot that stopped and set off again reads no catch-up (bridged wherever registration saw
+// no translation, intel with every other beam went from 0.017 to 0.044 m).
 #include <mrpt/poses/CPose2D.h>
 
 namespace toposlam::mapping {
@@ -50,10 +53,11 @@ class OdometryLag {
     bool catchingUp(const mrpt::poses::CPose2D& increment, const mrpt::poses::CPose2D& lastMotion);
 
     /// True when `increment` is the first that moves after increments of exactly zero that
-    /// followed a registered motion (a stall; not a robot that stood still), registration saw
-    /// no translation since (at most kMovedDistance), and `increment` is longer, or turns
-    /// farther, than `lastMotion` by more than kAgreeDistance or kAgreeAngle (a catch-up): then
-    /// stepSinceStall() is the step to predict.
+    /// followed a registered motion (a stall; not a robot that stood still), is longer, or
+    /// turns farther, than `lastMotion` by more than kAgreeDistance or kAgreeAngle (a
+    /// catch-up), and registration saw no translation since (at most kMovedDistance) or, not
+    /// turning by more than kAgreeAngle, a translation shorter than the reading's by more than
+    /// kAgreeDistance: then stepSinceStall() is the step to predict.
     bool bridges(const mrpt::poses::CPose2D& increment,
                  const mrpt::poses::CPose2D& lastMotion) const;
     /// The step from the last scan that `increment` (which bridges()) reads: the motion since
@@ -65,10 +69,16 @@ class OdometryLag {
     void registered(const mrpt::poses::CPose2D& increment, const mrpt::poses::CPose2D& step);
     /// Scans since the last increment that moved (0 when the last one did).
     int repeatedScans() const { return repeatedScans_; }
+    /// For `increment` that bridges(): registration left the stall's scans behind along a
+    /// straight stretch, the translation registered over them shorter than the reading's
+    /// share of those scan intervals (of repeatedScans() + 1) by more than kAgreeDistance.
+    bool stallScansBehind(const mrpt::poses::CPose2D& increment) const;
 
   private:
     /// More than kMovedDistance or kMovedAngle.
     static bool moved(const mrpt::poses::CPose2D& motion);
+    /// Turns by more than kAgreeAngle.
+    static bool turned(const mrpt::poses::CPose2D& motion);
     /// Longer, or turning farther, than `lastMotion` by more than kAgreeDistance or kAgreeAngle.
     static bool exceeds(const mrpt::poses::CPose2D& increment,
                         const mrpt::poses::CPose2D& lastMotion);

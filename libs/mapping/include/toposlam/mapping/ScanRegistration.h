@@ -122,10 +122,14 @@ struct Prediction {
     mrpt::poses::CPose2D jumpedStep;
     /// The odometry is catching up after a stall (OdometryLag): the last motion was predicted.
     bool odometryLagging = false;
-    /// A catch-up after a stall registration saw no translation in: the step is the reading
-    /// less the motion registered during the stall (OdometryLag::stepSinceStall;
-    /// bridge_odometry_stalls).
+    /// A catch-up after a stall registration saw too little of (OdometryLag::bridges): the
+    /// step is the reading less the motion registered during the stall
+    /// (OdometryLag::stepSinceStall; bridge_odometry_stalls).
     bool odometryBridged = false;
+    /// When bridged: the stall's scans (its repeated readings) before this one, and whether
+    /// registration left them behind (OdometryLag::stallScansBehind).
+    int stallScans = 0;
+    bool stallScansBehind = false;
     /// The prediction is the odometry's own step (not the last motion: no jump, no stall, a log
     /// with odometry), so the odometry model bounds its error.
     bool odometryPredicted = false;
@@ -177,11 +181,16 @@ class ScanRegistration {
     };
     IcpAttempt icpFrom(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                        const Submap& submap, const mrpt::poses::CPose2D& start);
-    /// The correction passes max_correction_distance, _angle and max_lateral_correction.
-    bool plausibleCorrection(const mrpt::poses::CPose2D& correction) const;
+    /// The correction passes max_correction_distance, _angle and, when `boundSideways`,
+    /// max_lateral_correction.
+    bool plausibleCorrection(const mrpt::poses::CPose2D& correction,
+                             bool boundSideways = true) const;
     /// ICP that started at `start` passes as a registration: min_inlier_ratio of the scan on
-    /// the map and a plausible correction of `start`.
-    bool acceptable(const IcpAttempt& attempt, const mrpt::poses::CPose2D& start) const;
+    /// the map and a plausible correction of `start`. `boundSideways = false` for starts off
+    /// the arc the robot moved on (interpolated between two steps), where a sideways
+    /// correction is expected.
+    bool acceptable(const IcpAttempt& attempt, const mrpt::poses::CPose2D& start,
+                    bool boundSideways = true) const;
     /// The checks of a large correction along the heading, on `icp`, ICP from the prediction.
     /// The foreground check (foreground_check): replaced by ICP without the scan's foreground
     /// objects when that keeps less than half of the correction. Then the along-heading check

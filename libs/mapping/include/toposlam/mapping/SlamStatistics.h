@@ -63,10 +63,13 @@ struct SlamStatistics {
     std::size_t odometryJumpsBetween = 0;
     /// odometry increments taken for catching up after a stall (OdometryLag.h)
     std::size_t odometryCatchUps = 0;
-    /// catch-ups after an odometry stall registration saw no translation in, predicted as the
-    /// reading (the motion since the last reading that changed) less the motion registered
-    /// meanwhile (bridge_odometry_stalls)
+    /// catch-ups after an odometry stall registration saw too little of (OdometryLag::bridges),
+    /// predicted as the reading (the motion since the last reading that changed) less the
+    /// motion registered meanwhile (bridge_odometry_stalls)
     std::size_t odometryStallsBridged = 0;
+    /// the scans of those stalls registration had left behind, placed between the scan before
+    /// the stall and the catch-up (GraphSlam::placeStalledScans)
+    std::size_t stalledScansPlaced = 0;
     /// Scans that came without an odometry increment (a laser-only log), each predicted by
     /// the robot's last registered motion instead.
     std::size_t scansWithoutOdometry = 0;

@@ -246,7 +246,10 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     record.registrationVariance = 0.5 * (r.covariance(0, 0) + r.covariance(1, 1));
     if (odometry && !prediction.odometryJumped && !prediction.odometryLagging)
         record.odometry = prediction.odometryBridged ? prediction.odometryStep : *odometry;
-    if (prediction.odometryBridged && prediction.stallScansBehind && odometry)
+    // Not after a bridged step judged a jump the scan did not bear out: the reading was not
+    // taken for the motion then.
+    if (prediction.odometryBridged && prediction.stallScansBehind && odometry &&
+        (!prediction.odometryJumped || r.jumpBorneOut))
         placeStalledScans(std::size_t(prediction.stallScans), *odometry);
 }
 

@@ -3,6 +3,10 @@
 #include <mrpt/core/bits_math.h>
 #include <toposlam/mapping/OdometryLag.h>
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 namespace toposlam::mapping {
 namespace {
 
@@ -69,10 +73,27 @@ TEST(OdometryLag, ACatchUpBeyondWhatRegistrationSawAlongAStraightStretchIsBridge
     EXPECT_FALSE(followed.stallScansBehind(reading));
 }
 
-TEST(OdometryLag, AStallRegistrationSawTheRobotTurnInOrAStandstillIsNotBridged) {
-    // A turn shows walls across, so registration saw it; there it is the reading that may fall
-    // short of the stall (mit-csail: 7.6 deg where the robot turned 25), and the last motion
-    // predicts.
+TEST(OdometryLag, ACatchUpThatTurnedAsRegistrationSawIsBridged) {
+    // In a bend: registration saw the stall's turn (17 deg; a turn shows walls across) but not
+    // how far the robot went along the walls; the reading after it turned as far and holds the
+    // 1.3 m the robot went over the stall's three scans and its own.
+    const CPose2D ahead(0.35, 0.0, 0.0), turnSeen(0.004, -0.04, mrpt::DEG2RAD(14.5)),
+        restSeen(-0.002, -0.013, mrpt::DEG2RAD(2.4)), reading(1.27, 0.33, mrpt::DEG2RAD(16.5));
+    OdometryLag lag;
+    lag.registered(ahead, ahead);
+    lag.registered(kStill, turnSeen);
+    lag.registered(kStill, restSeen);
+    lag.registered(kStill, kStill);
+    ASSERT_TRUE(lag.bridges(reading, kStill));
+    EXPECT_TRUE(lag.stallScansBehind(reading));
+    // Had it turned 12 deg less than registration saw, it would be the reading that fell short.
+    EXPECT_FALSE(lag.bridges(CPose2D(1.27, 0.33, mrpt::DEG2RAD(4.5)), kStill));
+}
+
+TEST(OdometryLag, AStallWhoseReadingDidNotTurnAsRegistrationSawOrAStandstillIsNotBridged) {
+    // A turn shows walls across, so registration saw it; a reading that turned otherwise
+    // (mit-csail: 7.6 deg where the robot turned 25) is not the stall's motion, and the last
+    // motion predicts.
     const CPose2D ahead(0.3, 0.0, 0.0), turning(0.1, 0.0, mrpt::DEG2RAD(15.0));
     OdometryLag seen;
     seen.registered(ahead, ahead);
@@ -82,6 +103,32 @@ TEST(OdometryLag, AStallRegistrationSawTheRobotTurnInOrAStandstillIsNotBridged) 
     standing.registered(kStill, kStill);
     standing.registered(kStill, kStill);
     EXPECT_FALSE(standing.bridges(ahead, kStill));
+}
+
+TEST(OdometryLag, AScanChangesWhereTheRobotMovedNotWhereOnePersonWalked) {
+    // 181 beams over 180 deg in a room: a wall 3 m ahead, and a step of 0.3 m towards it.
+    std::vector<float> before(181), moved(181), person(181);
+    for (std::size_t b = 0; b < before.size(); ++b) {
+        const double bearing = mrpt::DEG2RAD(double(b) - 90.0);
+        const double c = std::max(0.2, std::abs(std::cos(bearing)));
+        before[b] = float(3.0 / c);
+        moved[b] = float(2.7 / c);
+        person[b] = before[b];
+    }
+    for (std::size_t b = 90; b < 93; ++b)
+        person[b] = 1.5f;  // 3 beams of 181 (1.7 %)
+    const std::vector<char> valid(181, 1);
+    matching::PolarScan a, still, ahead, walkedBy, other;
+    a.assign(-M_PI / 2, M_PI / 180, before, valid, 20);
+    still.assign(-M_PI / 2, M_PI / 180, before, valid, 20);
+    ahead.assign(-M_PI / 2, M_PI / 180, moved, valid, 20);
+    walkedBy.assign(-M_PI / 2, M_PI / 180, person, valid, 20);
+    other.assign(-M_PI / 2, M_PI / 360, std::vector<float>(361, 3.0f), std::vector<char>(361, 1),
+                 20);
+    EXPECT_FALSE(OdometryLag::scanChanged(a, still));
+    EXPECT_TRUE(OdometryLag::scanChanged(a, ahead));
+    EXPECT_FALSE(OdometryLag::scanChanged(a, walkedBy));
+    EXPECT_TRUE(OdometryLag::scanChanged(a, other));  // another laser: nothing says it stood
 }
 
 TEST(OdometryLag, AStepShorterThanTheLastMotionIsNoCatchUp) {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <utility>
 
 namespace toposlam::mapping {
 
@@ -116,6 +117,9 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
         increment = lastMotion_;
     }
     p.odometryBridged = bridged;
+    // A stall, not a stop: the scan changed.
+    p.odometryStalled = odometryIncrement && odometryLag_.stalled() &&
+                        OdometryLag::scanChanged(previousPolar_, polar_);
     p.odometryPredicted = odometryIncrement && !p.odometryJumped && !p.odometryLagging;
     p.odometryStep = increment;
     p.lastMotion = lastMotion_;
@@ -157,6 +161,7 @@ void GraphSlam::processScan(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
 void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
                                  const std::optional<CPose2D>& odometryIncrement,
                                  const features::CObservationLaserFeatures::Ptr& storedFeatures) {
+    std::swap(previousPolar_, polar_);  // both keep their storage
     polar_.assign(*scan);
     bool haveFeatures = false;
     const auto extract = [&](features::ScanFeatures& f) {
@@ -244,7 +249,9 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     // the previous scan (not when it jumped: then the prediction was not the odometry's).
     ScanRecord& record = scans_.back();
     record.registrationVariance = 0.5 * (r.covariance(0, 0) + r.covariance(1, 1));
-    if (odometry && !prediction.odometryJumped && !prediction.odometryLagging)
+    // Nor from a stalled reading, whose zero is no measurement of the motion.
+    if (odometry && !prediction.odometryJumped && !prediction.odometryLagging &&
+        !(prediction.odometryStalled && options_.predictStallsByLastMotion))
         record.odometry = prediction.odometryBridged ? prediction.odometryStep : *odometry;
     // Not after a bridged step judged a jump the scan did not bear out: the reading was not
     // taken for the motion then.

@@ -116,9 +116,13 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
         .atMost(90);
     s.flag("bridge_odometry_stalls", bridgeOdometryStalls,
            "where registration saw less of an odometry stall than the reading after it holds "
-           "(no translation, or 0.2 m less without turning), that reading less the motion "
-           "registered meanwhile is the step predicted, and the stall's scans registration left "
-           "behind are placed between");
+           "(no translation, or 0.2 m less where the reading turned as far as registration saw, "
+           "within 10 deg), that reading less the motion registered meanwhile is the step "
+           "predicted, and the stall's scans registration left behind are placed between");
+    s.flag("predict_stalls_by_last_motion", predictStallsByLastMotion,
+           "in an odometry stall (a reading repeated exactly while the robot moved and the scan "
+           "changed) ICP also starts from the last registered motion, and the standstill stays "
+           "only where the scan bears it out (second_opinion_margin)");
     s.real("odometry_sigma_xy", odometrySigmaXY, "m",
            "odometry-only edges: position noise floor ...")
         .above(0);

@@ -1,5 +1,6 @@
 #include <mrpt/math/wrap2pi.h>
 #include <toposlam/mapping/MapRange.h>
+#include <toposlam/mapping/OdometryLag.h>
 #include <toposlam/mapping/ScanRegistration.h>
 
 #include <Eigen/Dense>
@@ -291,8 +292,11 @@ const Prediction& ScanRegistration::preferredPrediction(const matching::PolarSca
                                                         const Prediction& prediction,
                                                         std::optional<IcpAttempt>& started) {
     jumpedIcpEnd_.reset();
-    if (!options_.confirmLargeCorrections || !prediction.submap ||
-        prediction.submap->map().size() == 0 || scan.validCount() == 0)
+    if (!prediction.submap || prediction.submap->map().size() == 0 || scan.validCount() == 0)
+        return prediction;
+    if (prediction.odometryStalled && options_.predictStallsByLastMotion)
+        return standstillBorneOut(scan, sensorOnRobot, prediction, started);
+    if (!options_.confirmLargeCorrections)
         return prediction;
     if (prediction.odometryJumped)
         return jumpBorneOut(scan, sensorOnRobot, prediction, started);
@@ -314,6 +318,30 @@ const Prediction& ScanRegistration::preferredPrediction(const matching::PolarSca
     if (!onlyMotionPasses && !bearsOut(submap.map(), scan, sensorOnRobot, fromMotion.robot,
                                        fromOdometry.robot, options_.secondOpinionMargin)) {
         started = std::move(fromOdometry);
+        return prediction;
+    }
+    started = std::move(fromMotion);
+    return shifted(prediction, toMotion);
+}
+
+const Prediction& ScanRegistration::standstillBorneOut(const matching::PolarScan& scan,
+                                                       const CPose2D& sensorOnRobot,
+                                                       const Prediction& prediction,
+                                                       std::optional<IcpAttempt>& started) {
+    // The stalled odometry's step is zero; the last motion is the robot's as far as anything
+    // says. Along a corridor whose walls fix nothing along it ICP keeps whichever start it
+    // gets, and from the standstill the stall's scans stay behind (keyframes among them, which
+    // the scans after are registered against). Turns are left alone: the laser fixes them.
+    const CPose2D toMotion = (-prediction.odometryStep) + prediction.lastMotion;
+    if (toMotion.norm() <= OdometryLag::kMovedDistance)
+        return prediction;
+    const Submap& submap = *prediction.submap;
+    IcpAttempt fromStandstill = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap);
+    IcpAttempt fromMotion = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap + toMotion);
+    if (sameEnd(fromStandstill.robot, fromMotion.robot) ||
+        bearsOut(submap.map(), scan, sensorOnRobot, fromStandstill.robot, fromMotion.robot,
+                 options_.secondOpinionMargin)) {
+        started = std::move(fromStandstill);
         return prediction;
     }
     started = std::move(fromMotion);

@@ -126,6 +126,7 @@ class GraphSlam {
     std::size_t loopsWaiting_ = 0;            ///< accepted loops not yet optimised
     std::size_t lastGlobalOptimization_ = 0;  ///< newest keyframe at the last global one
     matching::PolarScan polar_;               ///< the current scan (workspace)
+    matching::PolarScan previousPolar_;       ///< the scan before it
     features::ScanFeatures features_;         ///< the current scan's features (workspace)
     /// The last keyframe's readings, for the graph matcher (Prediction::lastKeyframeReadings;
     /// keyframes do not keep theirs).

@@ -130,11 +130,19 @@ struct GraphSlamOptions : public config::Options {
     double jumpSearchStep = 15 * M_PI / 180;
     /// The first odometry reading after readings that repeated exactly (a stall) is the motion
     /// since the last reading that changed. Where registration saw less of the stall than that
-    /// (along a corridor its scans keep the stall's standstill or go part of the way; not where
-    /// it saw the robot turn), the step predicted is that reading less the motion registered
-    /// meanwhile, not the last motion, and the stall's scans registration left behind are
-    /// placed between (OdometryLag.h, GraphSlam::placeStalledScans).
+    /// (along a corridor its scans keep the stall's standstill or go part of the way; where it
+    /// saw the robot turn, only if the reading turned as far), the step predicted is that
+    /// reading less the motion registered meanwhile, not the last motion, and the stall's
+    /// scans registration left behind are placed between (OdometryLag.h,
+    /// GraphSlam::placeStalledScans).
     bool bridgeOdometryStalls = true;
+    /// A stalled reading (repeated exactly while the robot moved, and the scan changed:
+    /// OdometryLag::scanChanged, not a robot that stopped) says nothing about the motion: ICP
+    /// also starts from the last registered motion, and the standstill stays only where the
+    /// scan fits it by secondOpinionMargin more or both starts end together
+    /// (ScanRegistration::standstillBorneOut); the stalled reading is no odometry for the
+    /// scans between keyframes either. Not after a turn on the spot (the laser fixes turns).
+    bool predictStallsByLastMotion = true;
     /// Odometry noise (standard deviations) for edges that only odometry supports: a floor,
     /// plus a share of the distance travelled and of the angle turned.
     double odometrySigmaXY = 0.02;           ///< m

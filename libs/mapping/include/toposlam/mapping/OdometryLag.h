@@ -19,19 +19,22 @@
 //
 // That holds where registration saw the robot move during the stall. Where nothing fixes the
 // motion (along a corridor) the stall's scans stay where the stall left them, or go part of
-// the way: the last registered motion is then too short a prediction. The first reading after
+// the way: the last registered motion is then too short a prediction. (Registration also
+// starts the stall's scans from the last motion, ScanRegistration::standstillBorneOut, which
+// along a corridor keeps them moving; predict_stalls_by_last_motion.) The first reading after
 // the stall holds all the motion since the last reading that changed; so a catch-up after a
-// stall in which registration saw no translation, or, along a straight stretch (registration
-// saw the robot turn by at most kAgreeAngle), less than the reading by more than
-// kAgreeDistance, is predicted as that reading less the motion registered since (bridges(),
-// stepSinceStall(); bridge_odometry_stalls). Where registration left the stall's scans short of
-// the reading's share per scan by that margin (stallScansBehind()), they are placed between
-// (GraphSlam). Only there: the reading after a stall is not always all of it (mit-csail: 7.6
-// deg where the robot turned 25, the rest in the next readings; 85.5 where it turned 68.8:
-// bridged during such turns, mit-csail read by a 5.6 m laser went from 0.032 to 0.046 m), and
-// a robot that stopped and set off again reads no catch-up (bridged wherever registration saw
-// no translation, intel with every other beam went from 0.017 to 0.044 m).
+// stall in which registration saw no translation, or less than the reading by more than
+// kAgreeDistance where the reading turned as far as registration saw (within kAgreeAngle;
+// turnedAsRegistered()), is predicted as that reading less the motion registered since
+// (bridges(), stepSinceStall(); bridge_odometry_stalls). Where registration left the stall's
+// scans short of the reading's share per scan by that margin (stallScansBehind()), they are
+// placed between (GraphSlam). Only there: the reading after a stall is not always all of it
+// (mit-csail: 7.6 deg where the robot turned 25, the rest in the next readings; 85.5 where it
+// turned 68.8: bridged during every turn, mit-csail read by a 5.6 m laser went from 0.032 to
+// 0.046 m), and a robot that stopped and set off again reads no catch-up (bridged wherever
+// registration saw no translation, intel with every other beam went from 0.017 to 0.044 m).
 #include <mrpt/poses/CPose2D.h>
+#include <toposlam/matching/PolarScan.h>
 
 namespace toposlam::mapping {
 
@@ -46,6 +49,16 @@ class OdometryLag {
     static constexpr double kAgreeAngle = 0.1745;  // 10 deg
     /// Scans after a stall at most taken for catching up.
     static constexpr int kMaxCatchUpScans = 5;
+    /// A reading that changed by more than this (m) between two scans ...
+    static constexpr double kChangedRange = 0.1;
+    /// ... in at least this share of the beams valid in both: the robot moved between them.
+    static constexpr double kChangedShare = 0.02;
+
+    /// True when `now` differs from `before` (the scan before it, same laser) by more than
+    /// kChangedRange in at least kChangedShare of the beams valid in both: the robot moved.
+    /// A robot that stopped reads the same zero as an odometry that stalled, but sees the
+    /// same ranges again (along a corridor with nothing along it, a moving robot does too).
+    static bool scanChanged(const matching::PolarScan& before, const matching::PolarScan& now);
 
     /// `increment`: the odometry since the last scan (robot frame of the last scan, m, rad);
     /// `lastMotion`: the motion registered at the last scan (same frame). True when the
@@ -55,9 +68,9 @@ class OdometryLag {
     /// True when `increment` is the first that moves after increments of exactly zero that
     /// followed a registered motion (a stall; not a robot that stood still), is longer, or
     /// turns farther, than `lastMotion` by more than kAgreeDistance or kAgreeAngle (a
-    /// catch-up), and registration saw no translation since (at most kMovedDistance) or, not
-    /// turning by more than kAgreeAngle, a translation shorter than the reading's by more than
-    /// kAgreeDistance: then stepSinceStall() is the step to predict.
+    /// catch-up), and registration saw no translation since (at most kMovedDistance) or, where
+    /// the reading turned as registered (turnedAsRegistered()), a translation shorter than the
+    /// reading's by more than kAgreeDistance: then stepSinceStall() is the step to predict.
     bool bridges(const mrpt::poses::CPose2D& increment,
                  const mrpt::poses::CPose2D& lastMotion) const;
     /// The step from the last scan that `increment` (which bridges()) reads: the motion since
@@ -69,9 +82,13 @@ class OdometryLag {
     void registered(const mrpt::poses::CPose2D& increment, const mrpt::poses::CPose2D& step);
     /// Scans since the last increment that moved (0 when the last one did).
     int repeatedScans() const { return repeatedScans_; }
-    /// For `increment` that bridges(): registration left the stall's scans behind along a
-    /// straight stretch, the translation registered over them shorter than the reading's
-    /// share of those scan intervals (of repeatedScans() + 1) by more than kAgreeDistance.
+    /// The increment last given to catchingUp() was a stall: exactly zero while the robot
+    /// moved at the scan before (more than kMovedDistance or kMovedAngle).
+    bool stalled() const { return stalled_; }
+    /// For `increment` that bridges(): registration left the stall's scans behind where the
+    /// reading turned as registered, the translation registered over them shorter than the
+    /// reading's share of those scan intervals (of repeatedScans() + 1) by more than
+    /// kAgreeDistance.
     bool stallScansBehind(const mrpt::poses::CPose2D& increment) const;
 
   private:
@@ -79,6 +96,9 @@ class OdometryLag {
     static bool moved(const mrpt::poses::CPose2D& motion);
     /// Turns by more than kAgreeAngle.
     static bool turned(const mrpt::poses::CPose2D& motion);
+    /// Registration saw no turn since the last reading that changed (at most kAgreeAngle), or
+    /// `increment` turned as far as it saw, within kAgreeAngle.
+    bool turnedAsRegistered(const mrpt::poses::CPose2D& increment) const;
     /// Longer, or turning farther, than `lastMotion` by more than kAgreeDistance or kAgreeAngle.
     static bool exceeds(const mrpt::poses::CPose2D& increment,
                         const mrpt::poses::CPose2D& lastMotion);

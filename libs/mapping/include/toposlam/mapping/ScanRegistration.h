@@ -122,6 +122,10 @@ struct Prediction {
     mrpt::poses::CPose2D jumpedStep;
     /// The odometry is catching up after a stall (OdometryLag): the last motion was predicted.
     bool odometryLagging = false;
+    /// The odometry's reading repeated exactly while the robot moved at the last scan, and
+    /// the scan changed (a stall, not a stop: OdometryLag::stalled(), scanChanged()): its
+    /// step of zero says nothing about the motion.
+    bool odometryStalled = false;
     /// A catch-up after a stall registration saw too little of (OdometryLag::bridges): the
     /// step is the reading less the motion registered during the stall
     /// (OdometryLag::stepSinceStall; bridge_odometry_stalls).
@@ -259,7 +263,8 @@ class ScanRegistration {
     /// from the last motion ends where ICP from the odometry does, or puts
     /// second_opinion_margin more of `scan` on the submap, or passes tryIcp()'s overlap and
     /// correction tests and puts more of `scan` on it where ICP from the odometry fails them
-    /// (confirm_large_corrections). After an odometry jump, jumpBorneOut() instead. When it
+    /// (confirm_large_corrections). After an odometry jump, jumpBorneOut() instead; in a stall,
+    /// standstillBorneOut() (predict_stalls_by_last_motion). When it
     /// compared the two, `started` gets the ICP run from the prediction returned, so that it
     /// is not run again.
     const Prediction& preferredPrediction(const matching::PolarScan& scan,
@@ -275,6 +280,15 @@ class ScanRegistration {
                                    const mrpt::poses::CPose2D& sensorOnRobot,
                                    const Prediction& prediction,
                                    std::optional<IcpAttempt>& started);
+    /// In an odometry stall (`prediction` is a standstill): the same with the robot's last
+    /// motion (kept in motionPrediction_) unless that motion translated at most
+    /// OdometryLag::kMovedDistance (a turn the laser fixes anywhere), or ICP from both ends
+    /// at the same pose, or ICP from the standstill puts second_opinion_margin more of `scan`
+    /// on the submap. `started` gets the ICP run from the prediction returned.
+    const Prediction& standstillBorneOut(const matching::PolarScan& scan,
+                                         const mrpt::poses::CPose2D& sensorOnRobot,
+                                         const Prediction& prediction,
+                                         std::optional<IcpAttempt>& started);
     /// After an odometry jump that jumpBorneOut() did not bear out because ICP from the
     /// odometry's step failed tryIcp()'s tests, and the graph matcher did not answer
     /// either: ICP from starts between the last motion and the odometry's step

@@ -118,8 +118,8 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
     }
     p.odometryBridged = bridged;
     // A stall, not a stop: the scan changed.
-    p.odometryStalled = odometryIncrement && odometryLag_.stalled() &&
-                        OdometryLag::scanChanged(previousPolar_, polar_);
+    p.odometryStalled = options_.predictStallsByLastMotion && odometryIncrement &&
+                        odometryLag_.stalled() && OdometryLag::scanChanged(previousPolar_, polar_);
     p.odometryPredicted = odometryIncrement && !p.odometryJumped && !p.odometryLagging;
     p.odometryStep = increment;
     p.lastMotion = lastMotion_;
@@ -251,7 +251,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     record.registrationVariance = 0.5 * (r.covariance(0, 0) + r.covariance(1, 1));
     // Nor from a stalled reading, whose zero is no measurement of the motion.
     if (odometry && !prediction.odometryJumped && !prediction.odometryLagging &&
-        !(prediction.odometryStalled && options_.predictStallsByLastMotion))
+        !prediction.odometryStalled)
         record.odometry = prediction.odometryBridged ? prediction.odometryStep : *odometry;
     // Not after a bridged step judged a jump the scan did not bear out: the reading was not
     // taken for the motion then.

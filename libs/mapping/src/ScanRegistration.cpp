@@ -294,7 +294,7 @@ const Prediction& ScanRegistration::preferredPrediction(const matching::PolarSca
     jumpedIcpEnd_.reset();
     if (!prediction.submap || prediction.submap->map().size() == 0 || scan.validCount() == 0)
         return prediction;
-    if (prediction.odometryStalled && options_.predictStallsByLastMotion)
+    if (prediction.odometryStalled)
         return standstillBorneOut(scan, sensorOnRobot, prediction, started);
     if (!options_.confirmLargeCorrections)
         return prediction;
@@ -338,8 +338,8 @@ const Prediction& ScanRegistration::standstillBorneOut(const matching::PolarScan
     const Submap& submap = *prediction.submap;
     IcpAttempt fromStandstill = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap);
     IcpAttempt fromMotion = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap + toMotion);
-    if (sameEnd(fromStandstill.robot, fromMotion.robot) ||
-        bearsOut(submap.map(), scan, sensorOnRobot, fromStandstill.robot, fromMotion.robot,
+    // Kept where both ended at the same pose, or the standstill's fits clearly more.
+    if (bearsOut(submap.map(), scan, sensorOnRobot, fromStandstill.robot, fromMotion.robot,
                  options_.secondOpinionMargin)) {
         started = std::move(fromStandstill);
         return prediction;

@@ -124,7 +124,7 @@ struct Prediction {
     bool odometryLagging = false;
     /// The odometry's reading repeated exactly while the robot moved at the last scan, and
     /// the scan changed (a stall, not a stop: OdometryLag::stalled(), scanChanged()): its
-    /// step of zero says nothing about the motion.
+    /// step of zero says nothing about the motion. Only with predict_stalls_by_last_motion.
     bool odometryStalled = false;
     /// A catch-up after a stall registration saw too little of (OdometryLag::bridges): the
     /// step is the reading less the motion registered during the stall

@@ -105,6 +105,12 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "corrections of the odometry beyond these bounds (the graph matcher's, up to twice "
            "them; the last motion as the prediction) are used when ICP on the submap confirms "
            "them");
+    s.real("jump_choice_margin", jumpChoiceMargin, "",
+           "after an odometry jump, the odometry's step, the last motion or the graph matcher's "
+           "answer is preferred over another when ICP from it puts this share more of the "
+           "scan's readings on the submap")
+        .atLeast(0)
+        .atMost(1);
     s.flag("matcher_foreground_check", matcherForegroundCheck,
            "a graph-matcher answer where ICP was rejected must be borne out by the scan without "
            "its foreground objects (people close by)");

@@ -139,17 +139,18 @@ bool ScanRegistration::outrunsOdometry(const Prediction& prediction, const CPose
     return chi2 > options_.unsettledMaxChi2;
 }
 
-bool ScanRegistration::plausibleCorrection(const CPose2D& correction, bool boundSideways) const {
+bool ScanRegistration::plausibleCorrection(const CPose2D& correction, bool boundSideways,
+                                           double sidewaysScale) const {
     return correction.norm() <= options_.maxCorrectionDistance &&
            std::abs(mrpt::math::wrapToPi(correction.phi())) <= options_.maxCorrectionAngle &&
            (!boundSideways || options_.maxLateralCorrection <= 0 ||
-            std::abs(correction.y()) <= options_.maxLateralCorrection);
+            std::abs(correction.y()) <= sidewaysScale * options_.maxLateralCorrection);
 }
 
 bool ScanRegistration::acceptable(const IcpAttempt& attempt, const CPose2D& start,
-                                  bool boundSideways) const {
+                                  bool boundSideways, double sidewaysScale) const {
     return attempt.overlap >= options_.minInlierRatio &&
-           plausibleCorrection(attempt.robot - start, boundSideways);
+           plausibleCorrection(attempt.robot - start, boundSideways, sidewaysScale);
 }
 
 bool ScanRegistration::seesForegroundObjects(const matching::PolarScan& scan) const {
@@ -292,6 +293,7 @@ const Prediction& ScanRegistration::preferredPrediction(const matching::PolarSca
                                                         const Prediction& prediction,
                                                         std::optional<IcpAttempt>& started) {
     jumpedIcpEnd_.reset();
+    readingIcp_.reset();
     if (!prediction.submap || prediction.submap->map().size() == 0 || scan.validCount() == 0)
         return prediction;
     if (prediction.odometryStalled)
@@ -366,16 +368,25 @@ const Prediction& ScanRegistration::jumpBorneOut(const matching::PolarScan& scan
     const Submap& submap = *prediction.submap;
     const CPose2D byOdometry = prediction.inSubmap + toOdometry;
     IcpAttempt fromOdometry = icpFrom(scan, sensorOnRobot, submap, byOdometry);
-    if (!acceptable(fromOdometry, byOdometry)) {
+    // The odometry's sideways error grows with the step: max_lateral_correction is for steps
+    // up to the jump distance (a 1.1 m step at a third of the scan rate is 0.1 m off sideways).
+    const double sidewaysScale =
+        std::max(1.0, prediction.jumpedStep.norm() / options_.odometryJumpDistance);
+    if (!acceptable(fromOdometry, byOdometry, true, sidewaysScale)) {
         jumpedIcpEnd_ = fromOdometry.robot;  // for jumpBetween(), should the matcher fail too
+        readingIcp_ = fromOdometry;
         return prediction;
     }
     // A real jump (a stall caught up in one step) puts ICP from the odometry off the robot:
-    // along a corridor it may fit as well as from the last motion, but not clearly better.
+    // along a corridor it may fit as well as from the last motion, but not better. Where ICP
+    // from the last motion fails the tests, that motion is off the robot instead.
     const IcpAttempt fromMotion = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap);
-    if (!bearsOut(submap.map(), scan, sensorOnRobot, fromOdometry.robot, fromMotion.robot,
-                  options_.secondOpinionMargin))
+    if (acceptable(fromMotion, prediction.inSubmap, /*boundSideways=*/false) &&
+        !bearsOut(submap.map(), scan, sensorOnRobot, fromOdometry.robot, fromMotion.robot,
+                  options_.jumpChoiceMargin)) {
+        readingIcp_ = std::move(fromOdometry);
         return prediction;
+    }
     started = std::move(fromOdometry);
     shifted(prediction, toOdometry);
     motionPrediction_.odometryJumped = false;
@@ -471,6 +482,9 @@ bool ScanRegistration::tryGraphMatcher(const matching::PolarScan& scan,
     if (!m.reliable())
         return false;
     const CPose2D pose = kf.sensorOnRobot + m.pose + (-sensorOnRobot);
+    if (prediction.odometryJumped && options_.confirmLargeCorrections &&
+        jumpMatchRefused(scan, sensorOnRobot, prediction, pose))
+        return false;
     // Unless the odometry jumped, it bounds the answer: a correction it would have counted as
     // a jump is a look-alike match (a corridor seen the other way round), not the robot's
     // motion. Guess-free answers are exactly the ones that can land there.
@@ -497,6 +511,69 @@ bool ScanRegistration::tryGraphMatcher(const matching::PolarScan& scan,
                                     prediction.turnFromLastKeyframe);
     out.overlap = 0;
     return true;
+}
+
+bool ScanRegistration::jumpMatchRefused(const matching::PolarScan& scan,
+                                        const CPose2D& sensorOnRobot, const Prediction& prediction,
+                                        const CPose2D& matched) {
+    // The odometry's step, in the last keyframe's frame like `matched`.
+    const CPose2D byReading =
+        prediction.fromLastKeyframe + ((-prediction.odometryStep) + prediction.jumpedStep);
+    const CPose2D fromMotion = matched - prediction.fromLastKeyframe;
+    const CPose2D fromReading = matched - byReading;
+    // A stall caught up in one step is off by the stall's motion, within the jump bounds of
+    // the scans it lasted; the matcher's look-alikes are metres off (a corridor seen the other
+    // way round: 2.7 m and 180 deg, `gen51` at a third of its scans).
+    if (beyondOdometryJump(options_, fromMotion, 2) && beyondOdometryJump(options_, fromReading, 2))
+        return true;
+    if (!beyondOdometryJump(options_, fromMotion) || !beyondOdometryJump(options_, fromReading) ||
+        !readingIcp_ || !prediction.submap)
+        return false;
+    const Submap& submap = *prediction.submap;
+    const CPose2D start = prediction.lastKeyframeInSubmap() + matched;
+    const IcpAttempt icp = icpFrom(scan, sensorOnRobot, submap, start);
+    const IcpAttempt& reading = *readingIcp_;
+    // Where ICP from the odometry's step corrected it plausibly, the step is a candidate the
+    // answer must beat; where it did not, the answer only must not fit clearly worse.
+    const CPose2D readingStart = prediction.lastKeyframeInSubmap() + byReading;
+    if (plausibleCorrection(reading.robot - readingStart, /*boundSideways=*/false))
+        return !bearsOut(submap.map(), scan, sensorOnRobot, icp.robot, reading.robot,
+                         options_.jumpChoiceMargin);
+    return !sameEnd(icp.robot, reading.robot) &&
+           bearsOut(submap.map(), scan, sensorOnRobot, reading.robot, icp.robot,
+                    options_.jumpChoiceMargin);
+}
+
+bool ScanRegistration::keepJumpedReading(const matching::PolarScan& scan,
+                                         const CPose2D& sensorOnRobot, const Prediction& prediction,
+                                         Registration& out) {
+    if (!prediction.odometryJumped || !readingIcp_ || !prediction.submap)
+        return false;
+    const IcpAttempt& reading = *readingIcp_;
+    const Submap& submap = *prediction.submap;
+    const CPose2D byReading =
+        prediction.inSubmap + ((-prediction.odometryStep) + prediction.jumpedStep);
+    if (!plausibleCorrection(reading.robot - byReading, /*boundSideways=*/false))
+        return false;
+    const IcpAttempt fromMotion = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap);
+    if (sameEnd(reading.robot, fromMotion.robot) ||
+        !bearsOut(submap.map(), scan, sensorOnRobot, reading.robot, fromMotion.robot,
+                  options_.jumpChoiceMargin))
+        return false;
+    answerOnSubmap(reading, prediction, RegistrationMethod::Icp, out);
+    out.jumpBorneOut = true;
+    return true;
+}
+
+void ScanRegistration::answerOnSubmap(const IcpAttempt& icp, const Prediction& prediction,
+                                      RegistrationMethod method, Registration& out) const {
+    out.method = method;
+    out.reference = prediction.submap->anchor();
+    out.pose = icp.robot;
+    out.overlap = icp.overlap;
+    out.rawCovariance = icp.icp.covariance;
+    out.covariance = edgeCovariance(icp.icp.covariance, prediction.distanceFromLastKeyframe,
+                                    prediction.turnFromLastKeyframe);
 }
 
 bool ScanRegistration::bornOutWithoutForeground(const matching::PolarScan& scan,
@@ -533,14 +610,8 @@ bool ScanRegistration::confirmOnSubmap(const matching::PolarScan& scan,
     if (!bearsOut(submap.map(), scan, sensorOnRobot, icp.robot, failedIcp,
                   options_.secondOpinionMargin))
         return false;
-    out.method = RegistrationMethod::GraphMatcher;
+    answerOnSubmap(icp, prediction, RegistrationMethod::GraphMatcher, out);
     out.confirmedOnSubmap = true;
-    out.reference = submap.anchor();
-    out.pose = icp.robot;
-    out.overlap = icp.overlap;
-    out.rawCovariance = icp.icp.covariance;
-    out.covariance = edgeCovariance(icp.icp.covariance, prediction.distanceFromLastKeyframe,
-                                    prediction.turnFromLastKeyframe);
     return true;
 }
 

@@ -111,6 +111,13 @@ struct GraphSlamOptions : public config::Options {
     ///    prediction, when the two are farther apart than icpMaxDistance and ICP from the
     ///    last motion ends where ICP from the odometry does or fits by that margin better.
     bool confirmLargeCorrections = true;
+    /// After an odometry jump (confirm_large_corrections), the scan chooses between the
+    /// odometry's step, the robot's last motion and the graph matcher's answer: one is
+    /// preferred over another when ICP on the submap from it puts this share more of the
+    /// scan's valid readings within 5 cm of the submap. At a low scan rate a real step departs
+    /// from the last motion by as much as a jump, and the two fit alike only where the scan
+    /// sees new ground (ScanRegistration::jumpBorneOut, jumpMatchRefused, keepJumpedReading).
+    double jumpChoiceMargin = 0.05;
     /// Where ICP from the prediction was rejected for too little of the scan on the submap
     /// (its correction within the bounds above) and the graph matcher answers elsewhere, the
     /// answer must be borne out without the scan's foreground objects (foregroundMaxRange,

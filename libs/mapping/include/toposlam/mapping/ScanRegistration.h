@@ -11,9 +11,11 @@
 //     submap (odometry that counts reversing as driving forward: fr079 at a third of its scan
 //     rate). Conversely, after an odometry jump (the prediction is then the last motion),
 //     ICP also runs from the odometry's own step, and that step is the prediction when ICP
-//     from it passes the tests below and ends where ICP from the last motion does or puts
-//     second_opinion_margin more of the scan on the submap: at a low scan rate a fast turn
-//     departs from the last motion by as much as a jump (mit-csail at a quarter of its rate).
+//     from it passes the tests below (its sideways bound grown with the step's length) and
+//     ends where ICP from the last motion does, or puts jump_choice_margin more of the scan on
+//     the submap, or ICP from the last motion fails them: at a low scan rate a real step
+//     departs from the last motion by as much as a jump (mit-csail at a quarter of its rate;
+//     simulated tours at a third of their scans, 0.9 m and 45 deg between scans).
 //     With second_opinion on (the default), when ICP has not settled (no convergence, and a
 //     residual over twice the recent median), it is run again from the graph matcher's answer
 //     and from the prediction turned either way, and the start that explains clearly more of
@@ -30,11 +32,18 @@
 //     matcher against the last keyframe, from the prediction and, failing that, guess-free.
 //     Without a jump, an answer that corrects the prediction by more than a jump is a
 //     look-alike unless ICP on the submap, started there, confirms it (confirm_large_
-//     corrections: odometry that counts reversing as driving forward);
+//     corrections: odometry that counts reversing as driving forward). After a jump, an
+//     answer that is a jump away from both the odometry's step and the last motion must fit
+//     the submap better than ICP from the odometry's step (jumpMatchRefused);
 //  3. after an odometry jump that neither placed, ICP from starts between the last motion and
 //     the odometry's step (jump_search_step): a stalled odometry that caught up past the turn
 //     or short of it (mit-csail at a quarter of its rate);
-//  4. if all fail, the odometry prediction, with the odometry model's covariance.
+//  4. after a jump, ICP from the odometry's step where it fits the submap clearly better than
+//     ICP from the last motion, though it failed step 1's tests (keepJumpedReading: a step
+//     into new ground, little of the scan on the submap);
+//  5. if all fail, the odometry prediction, with the odometry model's covariance (after a
+//     jump, the last motion; where the last motion was preferred to the odometry's step
+//     without a jump, the odometry's step all the same: the scan bore out neither).
 // Poses are ROBOT poses (the laser's mounting offset is applied here), in the frame of the
 // reference keyframe the result names (m, rad).
 #include <mrpt/math/CMatrixFixed.h>
@@ -85,7 +94,9 @@ struct Registration {
     /// (confirm_large_corrections).
     bool byLastMotion = false;
     /// Predicted by the odometry's step although it was judged a jump: the scan bore it out
-    /// (a fast turn at a low scan rate; confirm_large_corrections).
+    /// (a fast turn at a low scan rate; confirm_large_corrections), or, where nothing else
+    /// registered the scan, ICP from that step fitted clearly better than from the last
+    /// motion (ScanRegistration::keepJumpedReading).
     bool jumpBorneOut = false;
     /// After a jump that neither ICP from the odometry's step nor the graph matcher placed: ICP
     /// from a start between the odometry's step and the last motion (the odometry caught up
@@ -186,15 +197,15 @@ class ScanRegistration {
     IcpAttempt icpFrom(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                        const Submap& submap, const mrpt::poses::CPose2D& start);
     /// The correction passes max_correction_distance, _angle and, when `boundSideways`,
-    /// max_lateral_correction.
-    bool plausibleCorrection(const mrpt::poses::CPose2D& correction,
-                             bool boundSideways = true) const;
+    /// max_lateral_correction times `sidewaysScale`.
+    bool plausibleCorrection(const mrpt::poses::CPose2D& correction, bool boundSideways = true,
+                             double sidewaysScale = 1) const;
     /// ICP that started at `start` passes as a registration: min_inlier_ratio of the scan on
     /// the map and a plausible correction of `start`. `boundSideways = false` for starts off
     /// the arc the robot moved on (interpolated between two steps), where a sideways
     /// correction is expected.
     bool acceptable(const IcpAttempt& attempt, const mrpt::poses::CPose2D& start,
-                    bool boundSideways = true) const;
+                    bool boundSideways = true, double sidewaysScale = 1) const;
     /// The checks of a large correction along the heading, on `icp`, ICP from the prediction.
     /// The foreground check (foreground_check): replaced by ICP without the scan's foreground
     /// objects when that keeps less than half of the correction. Then the along-heading check
@@ -225,6 +236,22 @@ class ScanRegistration {
     bool tryGraphMatcher(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                          const Prediction& prediction, const features::ScanFeatures& features,
                          const mrpt::poses::CPose2D* failedIcp, Registration& out);
+    /// After an odometry jump: the graph matcher's robot pose `matched` (in the last keyframe's
+    /// frame) is a look-alike when it is twice the jump bounds away from both the odometry's
+    /// step and the last motion (a stall caught up is off by less), or, beyond the bounds
+    /// themselves, when ICP on the submap started there does not fit jump_choice_margin
+    /// more of the scan than ICP from the odometry's step (readingIcp_) where that corrected
+    /// the step plausibly, or fits that much less where it did not.
+    bool jumpMatchRefused(const matching::PolarScan& scan,
+                          const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
+                          const mrpt::poses::CPose2D& matched);
+    /// After an odometry jump that nothing placed: ICP from the odometry's step (readingIcp_),
+    /// when it corrected the step within max_correction_distance and _angle and puts
+    /// jump_choice_margin more of the scan on the submap than ICP from the last motion, is
+    /// the answer, however little of the scan is on the submap (a step into new ground).
+    bool keepJumpedReading(const matching::PolarScan& scan,
+                           const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
+                           Registration& out);
     /// confirm_large_corrections: the graph matcher's robot pose `matched` (in the last
     /// keyframe's frame), at most twice the jump bounds from the prediction, confirmed by ICP
     /// on the submap started there: enough overlap, within the correction bounds of
@@ -246,6 +273,9 @@ class ScanRegistration {
                                   const Prediction& prediction, const mrpt::poses::CPose2D& matched,
                                   const mrpt::poses::CPose2D& failedIcp);
 
+    /// `out` becomes `icp`'s answer on the prediction's submap, registered by `method`.
+    void answerOnSubmap(const IcpAttempt& icp, const Prediction& prediction,
+                        RegistrationMethod method, Registration& out) const;
     /// ICP from `prediction` ended in `icp` without settling: ICP again from the graph
     /// matcher's answer `matched` (when it has one) and from the prediction turned by +-1 and
     /// +-2 second_opinion_turn; the end that puts at least second_opinion_margin more of the
@@ -273,9 +303,11 @@ class ScanRegistration {
                                           std::optional<IcpAttempt>& started);
     /// After an odometry jump (`prediction` is the last motion): the same with the odometry's
     /// own step (kept in motionPrediction_) when ICP from it passes tryIcp()'s overlap and
-    /// correction tests and ends where ICP from the last motion does, or puts
-    /// second_opinion_margin more of `scan` on the submap (confirm_large_corrections); then
-    /// `started` gets that ICP run. Otherwise `prediction`.
+    /// correction tests (the sideways bound grown with the step beyond odometry_jump_distance:
+    /// the odometry's sideways error grows with the distance) and ends where ICP from the last
+    /// motion does, or puts jump_choice_margin more of `scan` on the submap, or ICP from the
+    /// last motion fails those tests (but the sideways bound) (confirm_large_corrections);
+    /// then `started` gets that ICP run. Otherwise `prediction`.
     const Prediction& jumpBorneOut(const matching::PolarScan& scan,
                                    const mrpt::poses::CPose2D& sensorOnRobot,
                                    const Prediction& prediction,
@@ -320,6 +352,9 @@ class ScanRegistration {
     /// Where ICP from a jumped odometry's step ended when it failed tryIcp()'s tests
     /// (jumpBorneOut(); reset for every scan).
     std::optional<mrpt::poses::CPose2D> jumpedIcpEnd_;
+    /// After an odometry jump, ICP from the odometry's step when it did not become the
+    /// prediction (jumpBorneOut(); reset for every scan).
+    std::optional<IcpAttempt> readingIcp_;
     Prediction motionPrediction_;  ///< shifted()'s prediction
     /// jumpBetween()'s starts: at most this many intervals (a 120 deg catch-up at 15 deg).
     static constexpr int kMaxJumpIntervals = 8;
@@ -377,9 +412,17 @@ Registration ScanRegistration::registerScan(const matching::PolarScan& scan,
         out.jumpBetween = true;
         return out;
     }
+    // Or it did not jump at all, and the step went where the scan sees little of the submap.
+    if (keepJumpedReading(scan, sensorOnRobot, prediction, out))
+        return out;
     out.method = RegistrationMethod::Odometry;
     out.reference = prediction.lastKeyframe ? prediction.lastKeyframe->id : 0;
-    out.pose = prediction.fromLastKeyframe;
+    // The last motion, preferred to the odometry's step before ICP failed from it, has lost
+    // what made it preferable: the odometry's own step is the better guess (not in a stall or
+    // after a jump, where the odometry's step is not the robot's).
+    const bool odometryRather = out.byLastMotion && odometryPrediction.odometryPredicted &&
+                                !odometryPrediction.odometryStalled;
+    out.pose = (odometryRather ? odometryPrediction : prediction).fromLastKeyframe;
     out.covariance =
         odometryCovariance(prediction.distanceFromLastKeyframe, prediction.turnFromLastKeyframe);
     out.rawCovariance = out.covariance;

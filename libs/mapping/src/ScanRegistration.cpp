@@ -381,6 +381,7 @@ const Prediction& ScanRegistration::jumpBorneOut(const matching::PolarScan& scan
     // along a corridor it may fit as well as from the last motion, but not better. Where ICP
     // from the last motion fails the tests, that motion is off the robot instead.
     const IcpAttempt fromMotion = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap);
+    recordJumpChoice(submap, scan, sensorOnRobot, fromOdometry, fromMotion);
     if (acceptable(fromMotion, prediction.inSubmap, /*boundSideways=*/false) &&
         !bearsOut(submap.map(), scan, sensorOnRobot, fromOdometry.robot, fromMotion.robot,
                   options_.jumpChoiceMargin)) {
@@ -556,9 +557,17 @@ bool ScanRegistration::keepJumpedReading(const matching::PolarScan& scan,
     if (!plausibleCorrection(reading.robot - byReading, /*boundSideways=*/false))
         return false;
     const IcpAttempt fromMotion = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap);
-    if (sameEnd(reading.robot, fromMotion.robot) ||
-        !bearsOut(submap.map(), scan, sensorOnRobot, reading.robot, fromMotion.robot,
-                  options_.jumpChoiceMargin))
+    if (sameEnd(reading.robot, fromMotion.robot))
+        return false;
+    recordJumpChoice(submap, scan, sensorOnRobot, reading, fromMotion);
+    const matching::LineMap& map = submap.map();
+    const double margin = options_.jumpChoiceMargin;
+    // Undecided by the scan (both fit alike: new ground), this log's earlier jumps decide.
+    const bool odometryUsuallyRight =
+        jumpsForOdometry_ >= kJumpPriorCases && jumpsForOdometry_ > 2 * jumpsForLastMotion_;
+    if (!bearsOut(map, scan, sensorOnRobot, reading.robot, fromMotion.robot, margin) &&
+        (!odometryUsuallyRight ||
+         bearsOut(map, scan, sensorOnRobot, fromMotion.robot, reading.robot, margin)))
         return false;
     answerOnSubmap(reading, prediction, RegistrationMethod::Icp, out);
     out.jumpBorneOut = true;
@@ -574,6 +583,18 @@ void ScanRegistration::answerOnSubmap(const IcpAttempt& icp, const Prediction& p
     out.rawCovariance = icp.icp.covariance;
     out.covariance = edgeCovariance(icp.icp.covariance, prediction.distanceFromLastKeyframe,
                                     prediction.turnFromLastKeyframe);
+}
+
+void ScanRegistration::recordJumpChoice(const Submap& submap, const matching::PolarScan& scan,
+                                        const CPose2D& sensorOnRobot, const IcpAttempt& reading,
+                                        const IcpAttempt& motion) {
+    if (sameEnd(reading.robot, motion.robot))
+        return;
+    const double margin = options_.jumpChoiceMargin;
+    if (bearsOut(submap.map(), scan, sensorOnRobot, reading.robot, motion.robot, margin))
+        ++jumpsForOdometry_;
+    else if (bearsOut(submap.map(), scan, sensorOnRobot, motion.robot, reading.robot, margin))
+        ++jumpsForLastMotion_;
 }
 
 bool ScanRegistration::bornOutWithoutForeground(const matching::PolarScan& scan,

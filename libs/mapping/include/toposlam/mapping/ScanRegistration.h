@@ -40,7 +40,8 @@
 //     or short of it (mit-csail at a quarter of its rate);
 //  4. after a jump, ICP from the odometry's step where it fits the submap clearly better than
 //     ICP from the last motion, though it failed step 1's tests (keepJumpedReading: a step
-//     into new ground, little of the scan on the submap);
+//     into new ground, little of the scan on the submap), or fits as well and the log's
+//     earlier jumps were mostly the odometry's own steps;
 //  5. if all fail, the odometry prediction, with the odometry model's covariance (after a
 //     jump, the last motion; where the last motion was preferred to the odometry's step
 //     without a jump, the odometry's step all the same: the scan bore out neither).
@@ -249,6 +250,8 @@ class ScanRegistration {
     /// when it corrected the step within max_correction_distance and _angle and puts
     /// jump_choice_margin more of the scan on the submap than ICP from the last motion, is
     /// the answer, however little of the scan is on the submap (a step into new ground).
+    /// Where neither fits that much better, it is the answer when this log's jumps have
+    /// mostly been the odometry's own steps (jumpsForOdometry_).
     bool keepJumpedReading(const matching::PolarScan& scan,
                            const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
                            Registration& out);
@@ -273,6 +276,11 @@ class ScanRegistration {
                                   const Prediction& prediction, const mrpt::poses::CPose2D& matched,
                                   const mrpt::poses::CPose2D& failedIcp);
 
+    /// Counts a jump the scan decided clearly in jumpsForOdometry_ or jumpsForLastMotion_:
+    /// ICP from the odometry's step ended at `reading`, from the last motion at `motion`.
+    void recordJumpChoice(const Submap& submap, const matching::PolarScan& scan,
+                          const mrpt::poses::CPose2D& sensorOnRobot, const IcpAttempt& reading,
+                          const IcpAttempt& motion);
     /// `out` becomes `icp`'s answer on the prediction's submap, registered by `method`.
     void answerOnSubmap(const IcpAttempt& icp, const Prediction& prediction,
                         RegistrationMethod method, Registration& out) const;
@@ -355,6 +363,14 @@ class ScanRegistration {
     /// After an odometry jump, ICP from the odometry's step when it did not become the
     /// prediction (jumpBorneOut(); reset for every scan).
     std::optional<IcpAttempt> readingIcp_;
+    /// This log's jumps the scan decided clearly (recordJumpChoice): ICP from the odometry's
+    /// step fitted jump_choice_margin better than ICP from the last motion, or the reverse.
+    /// Whether a log's odometry is right at its jumps (long steps at a low scan rate) or off
+    /// (a stall caught up) is a property of the log; keepJumpedReading asks it where the scan
+    /// cannot tell.
+    int jumpsForOdometry_ = 0, jumpsForLastMotion_ = 0;
+    /// ... once the odometry's step has won this many times, and more than twice as often.
+    static constexpr int kJumpPriorCases = 3;
     Prediction motionPrediction_;  ///< shifted()'s prediction
     /// jumpBetween()'s starts: at most this many intervals (a 120 deg catch-up at 15 deg).
     static constexpr int kMaxJumpIntervals = 8;

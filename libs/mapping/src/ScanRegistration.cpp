@@ -294,6 +294,8 @@ const Prediction& ScanRegistration::preferredPrediction(const matching::PolarSca
                                                         std::optional<IcpAttempt>& started) {
     jumpedIcpEnd_.reset();
     readingIcp_.reset();
+    motionIcp_.reset();
+    jumpChoiceRecorded_ = false;
     if (!prediction.submap || prediction.submap->map().size() == 0 || scan.validCount() == 0)
         return prediction;
     if (prediction.odometryStalled)
@@ -364,7 +366,7 @@ const Prediction& ScanRegistration::jumpBorneOut(const matching::PolarScan& scan
                                                  const Prediction& prediction,
                                                  std::optional<IcpAttempt>& started) {
     // The odometry's pose is the last motion's, less that motion, plus the odometry's step.
-    const CPose2D toOdometry = (-prediction.odometryStep) + prediction.jumpedStep;
+    const CPose2D toOdometry = prediction.toJumpedReading();
     const Submap& submap = *prediction.submap;
     const CPose2D byOdometry = prediction.inSubmap + toOdometry;
     IcpAttempt fromOdometry = icpFrom(scan, sensorOnRobot, submap, byOdometry);
@@ -380,7 +382,7 @@ const Prediction& ScanRegistration::jumpBorneOut(const matching::PolarScan& scan
     // A real jump (a stall caught up in one step) puts ICP from the odometry off the robot:
     // along a corridor it may fit as well as from the last motion, but not better. Where ICP
     // from the last motion fails the tests, that motion is off the robot instead.
-    const IcpAttempt fromMotion = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap);
+    const IcpAttempt& fromMotion = icpFromLastMotion(scan, sensorOnRobot, prediction);
     recordJumpChoice(submap, scan, sensorOnRobot, fromOdometry, fromMotion);
     if (acceptable(fromMotion, prediction.inSubmap, /*boundSideways=*/false) &&
         !bearsOut(submap.map(), scan, sensorOnRobot, fromOdometry.robot, fromMotion.robot,
@@ -446,7 +448,7 @@ const Prediction& ScanRegistration::jumpBetween(const matching::PolarScan& scan,
     if (!best)
         return prediction;
     // As for the odometry's own step: clearly better than ICP from the last motion.
-    const IcpAttempt fromMotion = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap);
+    const IcpAttempt& fromMotion = icpFromLastMotion(scan, sensorOnRobot, prediction);
     const bool onlyBetweenPasses =
         !acceptable(fromMotion, prediction.inSubmap) &&
         bestOn > readingsOnMap(map, scan, fromMotion.robot + sensorOnRobot);
@@ -518,8 +520,7 @@ bool ScanRegistration::jumpMatchRefused(const matching::PolarScan& scan,
                                         const CPose2D& sensorOnRobot, const Prediction& prediction,
                                         const CPose2D& matched) {
     // The odometry's step, in the last keyframe's frame like `matched`.
-    const CPose2D byReading =
-        prediction.fromLastKeyframe + ((-prediction.odometryStep) + prediction.jumpedStep);
+    const CPose2D byReading = prediction.fromLastKeyframe + prediction.toJumpedReading();
     const CPose2D fromMotion = matched - prediction.fromLastKeyframe;
     const CPose2D fromReading = matched - byReading;
     // A stall caught up in one step is off by the stall's motion, within the jump bounds of
@@ -552,11 +553,10 @@ bool ScanRegistration::keepJumpedReading(const matching::PolarScan& scan,
         return false;
     const IcpAttempt& reading = *readingIcp_;
     const Submap& submap = *prediction.submap;
-    const CPose2D byReading =
-        prediction.inSubmap + ((-prediction.odometryStep) + prediction.jumpedStep);
+    const CPose2D byReading = prediction.inSubmap + prediction.toJumpedReading();
     if (!plausibleCorrection(reading.robot - byReading, /*boundSideways=*/false))
         return false;
-    const IcpAttempt fromMotion = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap);
+    const IcpAttempt& fromMotion = icpFromLastMotion(scan, sensorOnRobot, prediction);
     if (sameEnd(reading.robot, fromMotion.robot))
         return false;
     recordJumpChoice(submap, scan, sensorOnRobot, reading, fromMotion);
@@ -585,11 +585,21 @@ void ScanRegistration::answerOnSubmap(const IcpAttempt& icp, const Prediction& p
                                     prediction.turnFromLastKeyframe);
 }
 
+const ScanRegistration::IcpAttempt& ScanRegistration::icpFromLastMotion(
+    const matching::PolarScan& scan, const CPose2D& sensorOnRobot, const Prediction& prediction) {
+    if (!motionIcp_)
+        motionIcp_ = icpFrom(scan, sensorOnRobot, *prediction.submap, prediction.inSubmap);
+    return *motionIcp_;
+}
+
 void ScanRegistration::recordJumpChoice(const Submap& submap, const matching::PolarScan& scan,
                                         const CPose2D& sensorOnRobot, const IcpAttempt& reading,
                                         const IcpAttempt& motion) {
     if (sameEnd(reading.robot, motion.robot))
         return;
+    if (jumpChoiceRecorded_)
+        return;  // jumpBorneOut() and keepJumpedReading() see the same two ICP ends
+    jumpChoiceRecorded_ = true;
     const double margin = options_.jumpChoiceMargin;
     if (bearsOut(submap.map(), scan, sensorOnRobot, reading.robot, motion.robot, margin))
         ++jumpsForOdometry_;

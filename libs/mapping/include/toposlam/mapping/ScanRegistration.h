@@ -157,6 +157,9 @@ struct Prediction {
     /// predicted since that keyframe. A pose in that keyframe's frame (the graph matcher's
     /// answer) composed onto it is in the submap's frame.
     mrpt::poses::CPose2D lastKeyframeInSubmap() const { return inSubmap + (-fromLastKeyframe); }
+    /// After a jump: from the predicted pose (the last motion's) to the odometry's reading,
+    /// in the robot frame of the prediction (m, rad).
+    mrpt::poses::CPose2D toJumpedReading() const { return (-odometryStep) + jumpedStep; }
 };
 
 class ScanRegistration {
@@ -276,7 +279,13 @@ class ScanRegistration {
                                   const Prediction& prediction, const mrpt::poses::CPose2D& matched,
                                   const mrpt::poses::CPose2D& failedIcp);
 
-    /// Counts a jump the scan decided clearly in jumpsForOdometry_ or jumpsForLastMotion_:
+    /// After an odometry jump, ICP from the jumped prediction's own pose (the last motion):
+    /// run once per scan, kept in motionIcp_ for the jump's later steps.
+    const IcpAttempt& icpFromLastMotion(const matching::PolarScan& scan,
+                                        const mrpt::poses::CPose2D& sensorOnRobot,
+                                        const Prediction& prediction);
+    /// Counts a jump the scan decided clearly in jumpsForOdometry_ or jumpsForLastMotion_, once
+    /// per scan:
     /// ICP from the odometry's step ended at `reading`, from the last motion at `motion`.
     void recordJumpChoice(const Submap& submap, const matching::PolarScan& scan,
                           const mrpt::poses::CPose2D& sensorOnRobot, const IcpAttempt& reading,
@@ -363,6 +372,12 @@ class ScanRegistration {
     /// After an odometry jump, ICP from the odometry's step when it did not become the
     /// prediction (jumpBorneOut(); reset for every scan).
     std::optional<IcpAttempt> readingIcp_;
+    /// After an odometry jump, ICP from the last motion (icpFromLastMotion(); reset for every
+    /// scan).
+    std::optional<IcpAttempt> motionIcp_;
+    /// This scan's jump went before the log's prior once (recordJumpChoice(); reset for every
+    /// scan): a jump is one case, however many of the jump's steps ask.
+    bool jumpChoiceRecorded_ = false;
     /// This log's jumps the scan decided clearly (recordJumpChoice): ICP from the odometry's
     /// step fitted jump_choice_margin better than ICP from the last motion, or the reverse.
     /// Whether a log's odometry is right at its jumps (long steps at a low scan rate) or off

@@ -106,13 +106,14 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
         // Wheels do not teleport: predict the motion of the last scan instead (a stalled
         // odometry that catches up in one step jumps; the robot kept moving meanwhile).
         p.odometryJumped = true;
-        p.jumpedStep = increment;
+        p.readingStep = increment;
         ++stats_.odometryJumps;
         increment = lastMotion_;
     } else if (catchingUp) {
         // Within the jump bounds but still catching up after a stall (OdometryLag.h): ICP
         // starts from the last motion.
         p.odometryLagging = true;
+        p.readingStep = increment;
         ++stats_.odometryCatchUps;
         increment = lastMotion_;
     }
@@ -189,6 +190,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     stats_.lastMotionPredictions += r.byLastMotion;
     stats_.odometryJumpsBorneOut += r.jumpBorneOut;
     stats_.odometryJumpsBetween += r.jumpBetween;
+    stats_.odometryCatchUpsKept += r.catchUpReadingKept;
     stats_.icpUnsettledRefused += r.unsettledRefused;
     if (r.alongHeading) {
         stats_.alongHeadingChecks.push_back(*r.alongHeading);

@@ -134,8 +134,9 @@ std::string formatSummary(const MappingResult& r) {
             "matcher (%.1f %%; %zu of them beyond a jump, confirmed on the submap), %zu failed "
             "(%.1f %%, odometry kept; %zu of them with a graph-matcher answer only foreground "
             "objects bore out); %s; %zu odometry stalls bridged (%zu of their scans placed "
-            "between), %s catching up after a stall; %zu predicted by the last motion instead "
-            "of the odometry",
+            "between), %s catching up after a stall (%zu of them placed by ICP from the "
+            "reading where nothing from the last motion placed them); %zu predicted by the "
+            "last motion instead of the odometry",
             st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
             st->icpSecondStarts, st->icpUnsettledRefused, st->icpWithoutForeground,
             st->icpHeldAlongHeading, st->registeredByGraphMatcher,
@@ -144,7 +145,7 @@ std::string formatSummary(const MappingResult& r) {
             st->matcherRefusedForeground, jumps.c_str(), st->odometryStallsBridged,
             st->stalledScansPlaced,
             counted(st->odometryCatchUps, "odometry step", "odometry steps").c_str(),
-            st->lastMotionPredictions);
+            st->odometryCatchUpsKept, st->lastMotionPredictions);
         if (st->scansWithoutOdometry > 0)
             s += line(
                 "odometry: none for %zu of %zu scans, each of them predicted by the "
@@ -224,6 +225,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
                              {"odometry_jumps_borne_out", st->odometryJumpsBorneOut},
                              {"odometry_jumps_between", st->odometryJumpsBetween},
                              {"odometry_catch_ups", st->odometryCatchUps},
+                             {"odometry_catch_ups_kept", st->odometryCatchUpsKept},
                              {"odometry_stalls_bridged", st->odometryStallsBridged},
                              {"stalled_scans_placed", st->stalledScansPlaced},
                              {"registered_share", st->registeredShare()}};

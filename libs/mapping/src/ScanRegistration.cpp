@@ -366,14 +366,14 @@ const Prediction& ScanRegistration::jumpBorneOut(const matching::PolarScan& scan
                                                  const Prediction& prediction,
                                                  std::optional<IcpAttempt>& started) {
     // The odometry's pose is the last motion's, less that motion, plus the odometry's step.
-    const CPose2D toOdometry = prediction.toJumpedReading();
+    const CPose2D toOdometry = prediction.toReading();
     const Submap& submap = *prediction.submap;
     const CPose2D byOdometry = prediction.inSubmap + toOdometry;
     IcpAttempt fromOdometry = icpFrom(scan, sensorOnRobot, submap, byOdometry);
     // The odometry's sideways error grows with the step: max_lateral_correction is for steps
     // up to the jump distance (a 1.1 m step at a third of the scan rate is 0.1 m off sideways).
     const double sidewaysScale =
-        std::max(1.0, prediction.jumpedStep.norm() / options_.odometryJumpDistance);
+        std::max(1.0, prediction.readingStep.norm() / options_.odometryJumpDistance);
     if (!acceptable(fromOdometry, byOdometry, true, sidewaysScale)) {
         jumpedIcpEnd_ = fromOdometry.robot;  // for jumpBetween(), should the matcher fail too
         readingIcp_ = fromOdometry;
@@ -407,7 +407,7 @@ const Prediction& ScanRegistration::jumpBetween(const matching::PolarScan& scan,
     // Steps from the last motion (the prediction's) to the odometry's, in the robot frame of
     // the last scan: the robot's true step lies between them when the odometry stalled.
     const CPose2D& from = prediction.odometryStep;
-    const CPose2D& to = prediction.jumpedStep;
+    const CPose2D& to = prediction.readingStep;
     const double dx = to.x() - from.x(), dy = to.y() - from.y();
     const double dphi = mrpt::math::wrapToPi(to.phi() - from.phi());
     const int intervals = std::min(
@@ -491,8 +491,7 @@ bool ScanRegistration::tryGraphMatcher(const matching::PolarScan& scan,
     // Unless the odometry jumped, it bounds the answer: a correction it would have counted as
     // a jump is a look-alike match (a corridor seen the other way round), not the robot's
     // motion. Guess-free answers are exactly the ones that can land there.
-    if (!prediction.odometryJumped &&
-        beyondOdometryJump(options_, pose - prediction.fromLastKeyframe)) {
+    if (!prediction.odometryJumped && answerBeyondJump(prediction, pose, 1)) {
         return options_.confirmLargeCorrections && failedIcp &&
                confirmOnSubmap(scan, sensorOnRobot, prediction, pose, *failedIcp, out);
     }
@@ -520,7 +519,7 @@ bool ScanRegistration::jumpMatchRefused(const matching::PolarScan& scan,
                                         const CPose2D& sensorOnRobot, const Prediction& prediction,
                                         const CPose2D& matched) {
     // The odometry's step, in the last keyframe's frame like `matched`.
-    const CPose2D byReading = prediction.fromLastKeyframe + prediction.toJumpedReading();
+    const CPose2D byReading = prediction.fromLastKeyframe + prediction.toReading();
     const CPose2D fromMotion = matched - prediction.fromLastKeyframe;
     const CPose2D fromReading = matched - byReading;
     // A stall caught up in one step is off by the stall's motion, within the jump bounds of
@@ -546,6 +545,22 @@ bool ScanRegistration::jumpMatchRefused(const matching::PolarScan& scan,
                     options_.jumpChoiceMargin);
 }
 
+bool ScanRegistration::keepCaughtUpReading(const matching::PolarScan& scan,
+                                           const CPose2D& sensorOnRobot,
+                                           const Prediction& prediction, Registration& out) {
+    if (!prediction.odometryLagging || !prediction.submap)
+        return false;
+    // A catch-up is a guess from the size of the step alone: at a low scan rate a turn on the
+    // spot after a stall reads as much more turn than the last motion, and is the robot's.
+    const CPose2D byReading = prediction.inSubmap + prediction.toReading();
+    const IcpAttempt fromReading = icpFrom(scan, sensorOnRobot, *prediction.submap, byReading);
+    if (!acceptable(fromReading, byReading))
+        return false;
+    answerOnSubmap(fromReading, prediction, RegistrationMethod::Icp, out);
+    out.catchUpReadingKept = true;
+    return true;
+}
+
 bool ScanRegistration::keepJumpedReading(const matching::PolarScan& scan,
                                          const CPose2D& sensorOnRobot, const Prediction& prediction,
                                          Registration& out) {
@@ -553,7 +568,7 @@ bool ScanRegistration::keepJumpedReading(const matching::PolarScan& scan,
         return false;
     const IcpAttempt& reading = *readingIcp_;
     const Submap& submap = *prediction.submap;
-    const CPose2D byReading = prediction.inSubmap + prediction.toJumpedReading();
+    const CPose2D byReading = prediction.inSubmap + prediction.toReading();
     if (!plausibleCorrection(reading.robot - byReading, /*boundSideways=*/false))
         return false;
     const IcpAttempt& fromMotion = icpFromLastMotion(scan, sensorOnRobot, prediction);
@@ -623,13 +638,21 @@ bool ScanRegistration::bornOutWithoutForeground(const matching::PolarScan& scan,
                     options_.alongHeadingMargin);
 }
 
+bool ScanRegistration::answerBeyondJump(const Prediction& prediction, const CPose2D& matched,
+                                        double scans) const {
+    if (!beyondOdometryJump(options_, matched - prediction.fromLastKeyframe, scans))
+        return false;
+    // A stalled odometry's step says nothing: the robot may have stood where it was or moved
+    // on by its last motion (or turned in place), and the answer is bounded from either.
+    return !prediction.odometryStalled ||
+           beyondOdometryJump(options_, matched - prediction.lastScanPose(), scans);
+}
+
 bool ScanRegistration::confirmOnSubmap(const matching::PolarScan& scan,
                                        const CPose2D& sensorOnRobot, const Prediction& prediction,
                                        const CPose2D& matched, const CPose2D& failedIcp,
                                        Registration& out) {
-    const CPose2D correction = matched - prediction.fromLastKeyframe;
-    if (correction.norm() > 2 * options_.odometryJumpDistance ||
-        std::abs(mrpt::math::wrapToPi(correction.phi())) > 2 * options_.odometryJumpAngle)
+    if (answerBeyondJump(prediction, matched, 2))
         return false;
     const Submap& submap = *prediction.submap;
     const CPose2D start = prediction.lastKeyframeInSubmap() + matched;

@@ -27,9 +27,9 @@ std::string formatSummary(const MappingResult& result);
 /// The summary as JSON: engine, scans, log_duration_s, wall_s, cpu_s, real_time_factor,
 /// wall_alignment_deg; graph engine also keyframes, submaps, registration {icp,
 /// icp_unsettled, icp_second_start, icp_unsettled_refused, icp_without_foreground, graph_matcher,
-/// failed, odometry_jumps, odometry_catch_ups, registered_share}, loops {candidates, accepted,
-/// guess_free_accepted, contested_accepted, unmatched, rejected, withdrawn}, cpu_by_stage_s
-/// {front_end, loop_search, loop_search_on_workers, optimization}, optimizations,
+/// failed, odometry_jumps, odometry_catch_ups, odometry_catch_ups_kept, registered_share}, loops
+/// {candidates, accepted, guess_free_accepted, contested_accepted, unmatched, rejected, withdrawn},
+/// cpu_by_stage_s {front_end, loop_search, loop_search_on_workers, optimization}, optimizations,
 /// mostly_unregistered, weak_front_end.
 nlohmann::json summaryJson(const MappingResult& result);
 

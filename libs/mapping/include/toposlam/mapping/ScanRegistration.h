@@ -32,7 +32,9 @@
 //     matcher against the last keyframe, from the prediction and, failing that, guess-free.
 //     Without a jump, an answer that corrects the prediction by more than a jump is a
 //     look-alike unless ICP on the submap, started there, confirms it (confirm_large_
-//     corrections: odometry that counts reversing as driving forward). After a jump, an
+//     corrections: odometry that counts reversing as driving forward); in an odometry
+//     stall, only when it also does so from where the odometry stalled (a turn on the
+//     spot). After a jump, an
 //     answer that is a jump away from both the odometry's step and the last motion must fit
 //     the submap better than ICP from the odometry's step (jumpMatchRefused);
 //  3. after an odometry jump that neither placed, ICP from starts between the last motion and
@@ -41,7 +43,9 @@
 //  4. after a jump, ICP from the odometry's step where it fits the submap clearly better than
 //     ICP from the last motion, though it failed step 1's tests (keepJumpedReading: a step
 //     into new ground, little of the scan on the submap), or fits as well and the log's
-//     earlier jumps were mostly the odometry's own steps;
+//     earlier jumps were mostly the odometry's own steps; in a catch-up after a stall (the
+//     last motion predicted), ICP from the odometry's step where it passes step 1's tests
+//     (keepCaughtUpReading: a turn on the spot soon after a stall, read right);
 //  5. if all fail, the odometry prediction, with the odometry model's covariance (after a
 //     jump, the last motion; where the last motion was preferred to the odometry's step
 //     without a jump, the odometry's step all the same: the scan bore out neither).
@@ -99,6 +103,9 @@ struct Registration {
     /// registered the scan, ICP from that step fitted clearly better than from the last
     /// motion (ScanRegistration::keepJumpedReading).
     bool jumpBorneOut = false;
+    /// In a catch-up after a stall that nothing registered from the last motion: ICP from the
+    /// odometry's step placed it (ScanRegistration::keepCaughtUpReading).
+    bool catchUpReadingKept = false;
     /// After a jump that neither ICP from the odometry's step nor the graph matcher placed: ICP
     /// from a start between the odometry's step and the last motion (the odometry caught up
     /// past the turn or short of it; jump_search_step).
@@ -130,8 +137,9 @@ struct Prediction {
     double distanceFromLastKeyframe = 0;    ///< m travelled by odometry since then
     double turnFromLastKeyframe = 0;        ///< rad turned by odometry since then
     bool odometryJumped = false;
-    /// After a jump, the odometry's own step that was judged one (robot frame, m, rad).
-    mrpt::poses::CPose2D jumpedStep;
+    /// After a jump or in a catch-up (odometryLagging), the odometry's own step, set aside
+    /// for the last motion (robot frame, m, rad).
+    mrpt::poses::CPose2D readingStep;
     /// The odometry is catching up after a stall (OdometryLag): the last motion was predicted.
     bool odometryLagging = false;
     /// The odometry's reading repeated exactly while the robot moved at the last scan, and
@@ -157,9 +165,12 @@ struct Prediction {
     /// predicted since that keyframe. A pose in that keyframe's frame (the graph matcher's
     /// answer) composed onto it is in the submap's frame.
     mrpt::poses::CPose2D lastKeyframeInSubmap() const { return inSubmap + (-fromLastKeyframe); }
-    /// After a jump: from the predicted pose (the last motion's) to the odometry's reading,
-    /// in the robot frame of the prediction (m, rad).
-    mrpt::poses::CPose2D toJumpedReading() const { return (-odometryStep) + jumpedStep; }
+    /// The last scan's robot pose in the last keyframe's frame: the prediction less the step
+    /// predicted since that scan.
+    mrpt::poses::CPose2D lastScanPose() const { return fromLastKeyframe + (-odometryStep); }
+    /// After a jump or in a catch-up: from the predicted pose (the last motion's) to the
+    /// odometry's reading, in the robot frame of the prediction (m, rad).
+    mrpt::poses::CPose2D toReading() const { return (-odometryStep) + readingStep; }
 };
 
 class ScanRegistration {
@@ -249,6 +260,12 @@ class ScanRegistration {
     bool jumpMatchRefused(const matching::PolarScan& scan,
                           const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
                           const mrpt::poses::CPose2D& matched);
+    /// In a catch-up after a stall (odometryLagging: the last motion predicted) that nothing
+    /// placed: ICP from the odometry's own step is the answer when it passes as a
+    /// registration (acceptable()).
+    bool keepCaughtUpReading(const matching::PolarScan& scan,
+                             const mrpt::poses::CPose2D& sensorOnRobot,
+                             const Prediction& prediction, Registration& out);
     /// After an odometry jump that nothing placed: ICP from the odometry's step (readingIcp_),
     /// when it corrected the step within max_correction_distance and _angle and puts
     /// jump_choice_margin more of the scan on the submap than ICP from the last motion, is
@@ -258,6 +275,11 @@ class ScanRegistration {
     bool keepJumpedReading(const matching::PolarScan& scan,
                            const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
                            Registration& out);
+    /// The graph matcher's robot pose `matched` (in the last keyframe's frame) is farther from
+    /// the prediction than a jump of `scans` scan intervals (beyondOdometryJump) and, in an
+    /// odometry stall, also from the last scan's pose.
+    bool answerBeyondJump(const Prediction& prediction, const mrpt::poses::CPose2D& matched,
+                          double scans) const;
     /// confirm_large_corrections: the graph matcher's robot pose `matched` (in the last
     /// keyframe's frame), at most twice the jump bounds from the prediction, confirmed by ICP
     /// on the submap started there: enough overlap, within the correction bounds of
@@ -445,6 +467,8 @@ Registration ScanRegistration::registerScan(const matching::PolarScan& scan,
     }
     // Or it did not jump at all, and the step went where the scan sees little of the submap.
     if (keepJumpedReading(scan, sensorOnRobot, prediction, out))
+        return out;
+    if (keepCaughtUpReading(scan, sensorOnRobot, prediction, out))
         return out;
     out.method = RegistrationMethod::Odometry;
     out.reference = prediction.lastKeyframe ? prediction.lastKeyframe->id : 0;

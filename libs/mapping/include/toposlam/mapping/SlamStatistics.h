@@ -63,6 +63,9 @@ struct SlamStatistics {
     std::size_t odometryJumpsBetween = 0;
     /// odometry increments taken for catching up after a stall (OdometryLag.h)
     std::size_t odometryCatchUps = 0;
+    /// Of those, placed by ICP from the odometry's step where nothing from the last motion
+    /// placed them (ScanRegistration::keepCaughtUpReading: a turn on the spot after a stall).
+    std::size_t odometryCatchUpsKept = 0;
     /// catch-ups after an odometry stall registration saw too little of (OdometryLag::bridges),
     /// predicted as the reading (the motion since the last reading that changed) less the
     /// motion registered meanwhile (bridge_odometry_stalls)

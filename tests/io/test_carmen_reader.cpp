@@ -188,6 +188,78 @@ TEST(CarmenReader, RobotLaserStatesItsGeometry) {
     EXPECT_EQ(records[0].fileStamp, 100.25);
 }
 
+// "RAWLASERk laser_type start fov resolution max accuracy remission_mode n r... 0 stamp host
+// logger_stamp": 5 readings from -60 deg in 30 deg steps, max 8 m, no remission values.
+std::string rawlaser(const std::string& stamp, const std::string& name = "RAWLASER1") {
+    return name +
+           " 0 -1.0471975511965976 2.0943951023931953 0.5235987755982988 8.0 0.01 0 "
+           "5 1.0 2.0 8.0 9.5 0.0 0 " +
+           stamp + " host " + stamp + "\n";
+}
+
+TEST(CarmenReader, RawLaserScansTakeTheOdometryOfTheOdomLinesAtTheirTime) {
+    toposlam::test::TempDir dir;
+    // A raw log (CARMEN's laser and base modules, no robot module): RAWLASER and ODOM lines.
+    // The ODOM line after a scan is needed to place it: the reader looks ahead.
+    const std::string log =
+        "PARAM robot_frontlaser_offset 0.1 nohost 0\n"
+        "PARAM robot_rearlaser_offset -0.2 nohost 0\n" +
+        rawlaser("0.500000") +  // before the first odometry: none
+        "ODOM 0 0 0 0 0 0 1.000000 nohost 1.000000\n" + rawlaser("1.500000") +
+        rawlaser("1.600000", "RAWLASER2") + "ODOM 1 0 0.2 0 0 0 2.000000 nohost 2.000000\n" +
+        "ODOM 1 1 0.2 0 0 0 3.000000 nohost 3.000000\n" +
+        rawlaser("3.500000");  // after the last: held
+    writeText(dir.file("raw.log"), log);
+    const auto records = LaserLogReader::readAll(dir.file("raw.log"));
+    ASSERT_EQ(records.size(), 4u);
+    EXPECT_FALSE(records[0].hasOdometry);
+    ASSERT_TRUE(records[1].hasOdometry);
+    // Half way from (0, 0, 0) to (1, 0, 0.2) in the first sample's frame.
+    EXPECT_NEAR(records[1].odometry.x(), 0.5, 1e-12);
+    EXPECT_NEAR(records[1].odometry.y(), 0.0, 1e-12);
+    EXPECT_NEAR(records[1].odometry.phi(), 0.1, 1e-12);
+    EXPECT_NEAR(records[2].odometry.x(), 0.6, 1e-12);
+    ASSERT_TRUE(records[3].hasOdometry);
+    EXPECT_NEAR(records[3].odometry.y(), 1.0, 1e-12);
+    EXPECT_NEAR(records[3].odometry.phi(), 0.2, 1e-12);
+    EXPECT_EQ(records[1].fileStamp, 1.5);
+
+    const auto& front = *records[1].scan;
+    EXPECT_EQ(front.sensorLabel, "RAWLASER1");
+    EXPECT_EQ(front.maxRange, 8.0f);
+    EXPECT_NEAR(front.sensorPose.x(), 0.1, 1e-12) << "PARAM offset: the line states no mount";
+    for (std::size_t i = 0; i < 5; ++i) {
+        EXPECT_NEAR(beamDirection(front, i), (-60.0 + 30.0 * i) * kDeg, 1e-6);
+    }
+    EXPECT_TRUE(front.getScanRangeValidity(1));
+    EXPECT_FALSE(front.getScanRangeValidity(2)) << "8.0 >= max range";
+    EXPECT_FALSE(front.getScanRangeValidity(4)) << "0 = no return";
+    // The second laser is the rear one: PARAM's rear offset, facing backwards.
+    const auto& rear = *records[2].scan;
+    EXPECT_EQ(rear.sensorLabel, "RAWLASER2");
+    EXPECT_NEAR(rear.sensorPose.x(), -0.2, 1e-12);
+    EXPECT_NEAR(std::remainder(beamDirection(rear, 2) - M_PI, 2 * M_PI), 0.0, 1e-6);
+
+    LaserLogOptions one;
+    one.oneLaser = true;
+    LaserLogReader reader(dir.file("raw.log"), one);
+    EXPECT_EQ(reader.laserLabel(), "RAWLASER1") << "the front laser";
+}
+
+TEST(CarmenReader, RawLaserLinesAreLeftOutWhereLaserLinesStateThePose) {
+    toposlam::test::TempDir dir;
+    // CARMEN logs of a robot module have both: the FLASER lines carry the synchronised
+    // odometry, the RAWLASER lines repeat the scans.
+    const std::string log = rawlaser("0.900000") + flaser(180, 2.0, "0 0 0", "0 0 0", "1.0") +
+                            rawlaser("1.100000") + "ODOM 0 0 0 0 0 0 1.2 nohost 1.2\n" +
+                            flaser(180, 2.0, "0 0 0", "1 0 0", "1.3");
+    writeText(dir.file("both.clf"), log);
+    const auto records = LaserLogReader::readAll(dir.file("both.clf"));
+    ASSERT_EQ(records.size(), 2u);
+    EXPECT_EQ(records[0].scan->sensorLabel, "FLASER");
+    EXPECT_EQ(records[1].odometry, mrpt::poses::CPose2D(1, 0, 0));
+}
+
 TEST(CarmenReader, BadLinesNameTheLine) {
     toposlam::test::TempDir dir;
     const std::string good = flaser(180, 2.0, "0 0 0", "0 0 0", "1.000000");
@@ -220,6 +292,14 @@ TEST(CarmenReader, BadLinesNameTheLine) {
     writeText(dir.file("odom.clf"), good + "ODOM 1 2 3 0 0 1.5 nohost 1.5\n");
     EXPECT_NE(logReadError(dir.file("odom.clf")).find("line 2: ODOM has 9 fields, expected 10"),
               std::string::npos);
+
+    std::string shortRaw = rawlaser("1.000000");
+    shortRaw.erase(shortRaw.find(" 9.5"), 4);  // one reading less
+    writeText(dir.file("raw.log"), "ODOM 0 0 0 0 0 0 0.5 nohost 0.5\n" + shortRaw);
+    EXPECT_NE(
+        logReadError(dir.file("raw.log")).find("line 2: number of remission values is not a count"),
+        std::string::npos)
+        << logReadError(dir.file("raw.log"));
 
     writeText(dir.file("text.txt"), "hello world\nthis is text\n");
     EXPECT_NE(logReadError(dir.file("text.txt")).find("not a CARMEN log"), std::string::npos);

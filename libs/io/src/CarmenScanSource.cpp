@@ -44,8 +44,20 @@ bool isOldLaser(std::string_view name) {
 bool isRobotLaser(std::string_view name) {
     return name == "ROBOTLASER1" || name == "ROBOTLASER2";
 }
+// Laser lines that state the robot's pose (and so its odometry).
 bool isLaser(std::string_view name) {
     return isOldLaser(name) || isRobotLaser(name);
+}
+// The laser module's own lines: the scan without a pose. A log is read from them only when
+// it has no laser line of the kinds above (CARMEN's raw logs: RAWLASER + ODOM).
+bool isRawLaser(std::string_view name) {
+    return name == "RAWLASER1" || name == "RAWLASER2";
+}
+
+// A field of pass 1, which only collects and leaves the errors to pass 2's line numbers.
+bool parsesAs(std::string_view t, double& v) {
+    const auto res = std::from_chars(t.data(), t.data() + t.size(), v);
+    return res.ec == std::errc() && res.ptr == t.data() + t.size() && std::isfinite(v);
 }
 
 bool isCarmenMessage(std::string_view name) {
@@ -143,11 +155,13 @@ mrpt::poses::CPose2D printedPose(double x, double y, double theta) {
 CarmenScanSource::CarmenScanSource(const std::string& path, const LaserLogOptions& options)
     : path_(path), options_(options), lines_(path) {
     // Pass 1: the printed stamps of all laser lines, to recover real acquisition times
-    // (CarmenTimestamps.h) before the scans are parsed one by one in pass 2.
+    // (CarmenTimestamps.h) before the scans are parsed one by one in pass 2; and, until a
+    // laser line that states the robot's pose shows up, the ODOM lines, which raw logs need.
     LineReader pass1(path);
-    std::vector<std::string> printed;
+    std::vector<std::string> printed, rawPrinted, odometryPrinted;
+    std::vector<mrpt::poses::CPose2D> odometryPoses;
     std::size_t messages = 0;
-    bool flaser = false, robotLaser1 = false;
+    bool flaser = false, robotLaser1 = false, rawLaser1 = false;
     std::string_view line;
     while (pass1.next(line)) {
         split(line, tokens_);
@@ -161,6 +175,15 @@ CarmenScanSource::CarmenScanSource(const std::string& path, const LaserLogOption
                 preferredLaser_ = std::string(tokens_[0]);
             flaser = flaser || tokens_[0] == "FLASER";
             robotLaser1 = robotLaser1 || tokens_[0] == "ROBOTLASER1";
+        } else if (printed.empty() && isRawLaser(tokens_[0])) {
+            rawPrinted.emplace_back(printedStamp(tokens_));
+            rawLaser1 = rawLaser1 || tokens_[0] == "RAWLASER1";
+        } else if (printed.empty() && tokens_[0] == "ODOM" && tokens_.size() == 10) {
+            double x = 0, y = 0, theta = 0;
+            if (parsesAs(tokens_[1], x) && parsesAs(tokens_[2], y) && parsesAs(tokens_[3], theta)) {
+                odometryPrinted.emplace_back(printedStamp(tokens_));
+                odometryPoses.push_back(printedPose(x, y, theta));
+            }
         }
     }
     // The front laser: the one the robot looks ahead with.
@@ -174,8 +197,19 @@ CarmenScanSource::CarmenScanSource(const std::string& path, const LaserLogOption
     lines_.setDecompressedSize(pass1.bytesParsed());  // exact, for a smooth progress fraction
     if (messages == 0) {
         throw InputError(path,
-                         "not a CARMEN log: no FLASER, RLASER, ROBOTLASER1, ODOM or "
+                         "not a CARMEN log: no FLASER, RLASER, ROBOTLASER1, RAWLASER1, ODOM or "
                          "PARAM line (and not an MRPT rawlog either)");
+    }
+    if (printed.empty() && !rawPrinted.empty()) {
+        // A raw log: the scans' odometry is read off the ODOM lines at the scans' times,
+        // both recovered the same way from their printed stamps.
+        rawLasers_ = true;
+        preferredLaser_ = rawLaser1 ? "RAWLASER1" : "RAWLASER2";
+        printed = std::move(rawPrinted);
+        const std::vector<std::string_view> stamps(odometryPrinted.begin(), odometryPrinted.end());
+        const std::vector<double> times = repairCarmenTimestamps(stamps).times;
+        for (std::size_t i = 0; i < times.size(); ++i)
+            odometry_.add(times[i], odometryPoses[i]);
     }
     const std::vector<std::string_view> views(printed.begin(), printed.end());
     times_ = repairCarmenTimestamps(views).times;
@@ -283,17 +317,21 @@ void CarmenScanSource::parseFlaser(LaserLogRecord& out, bool front) {
     out.scan = std::move(scan);
 }
 
-void CarmenScanSource::parseRobotLaser(LaserLogRecord& out) {
+std::size_t CarmenScanSource::statedLayoutEnd(std::size_t trailingFields,
+                                              const char* layout) const {
+    // "name laser_type start_angle fov angular_resolution maximum_range accuracy
+    // remission_mode n r1..rn m v1..vm": the same first fields in ROBOTLASER and RAWLASER.
     const std::size_t n = count(8, "number of readings");
     if (n < 2)
         fail("a scan needs at least 2 readings");
     const std::size_t m = count(9 + n, "number of remission values");
-    expectFields(n + m + 24,
-                 "ROBOTLASER1 laser_type start_angle fov angular_resolution "
-                 "maximum_range accuracy remission_mode n r1..rn m v1..vm laser_x "
-                 "laser_y laser_theta robot_x robot_y robot_theta tv rv "
-                 "forward_safety_dist side_safety_dist turn_axis ipc_timestamp "
-                 "ipc_hostname logger_timestamp");
+    expectFields(10 + n + m + trailingFields, layout);
+    return 10 + n + m;
+}
+
+void CarmenScanSource::parseStatedLayout(mrpt::obs::CObservation2DRangeScan& scan,
+                                         const mrpt::poses::CPose2D& mount) const {
+    const std::size_t n = count(8, "number of readings");
     const double start = number(2, "start_angle");
     const double step = number(4, "angular_resolution");
     const double maxRange = number(5, "maximum_range");
@@ -301,26 +339,50 @@ void CarmenScanSource::parseRobotLaser(LaserLogRecord& out) {
         fail("angular_resolution must be > 0");
     if (!(maxRange > 0))
         fail("maximum_range must be > 0");
+    scan.sensorLabel = std::string(tokens_[0]);
+    fillRanges(scan, 9, n, static_cast<float>(maxRange));
+    // Reading i points at start_angle + i * angular_resolution (CARMEN's definition).
+    const double span = step * static_cast<double>(n - 1);
+    scan.aperture = static_cast<float>(span);
+    scan.rightToLeft = true;
+    scan.maxRange = static_cast<float>(maxRange);
+    scan.sensorPose =
+        mrpt::poses::CPose3D(mount.x(), mount.y(), 0.0, mount.phi() + start + span / 2, 0.0, 0.0);
+}
 
-    const std::size_t p = 10 + n + m;
+void CarmenScanSource::parseRobotLaser(LaserLogRecord& out) {
+    const std::size_t p = statedLayoutEnd(14,
+                                          "ROBOTLASER1 laser_type start_angle fov "
+                                          "angular_resolution maximum_range accuracy "
+                                          "remission_mode n r1..rn m v1..vm laser_x laser_y "
+                                          "laser_theta robot_x robot_y robot_theta tv rv "
+                                          "forward_safety_dist side_safety_dist turn_axis "
+                                          "ipc_timestamp ipc_hostname logger_timestamp");
     const auto laser =
         printedPose(number(p, "laser_x"), number(p + 1, "laser_y"), number(p + 2, "laser_theta"));
     const auto robot = printedPose(number(p + 3, "robot_x"), number(p + 4, "robot_y"),
                                    number(p + 5, "robot_theta"));
     auto scan = std::make_shared<mrpt::obs::CObservation2DRangeScan>();
-    scan->sensorLabel = std::string(tokens_[0]);
-    fillRanges(*scan, 9, n, static_cast<float>(maxRange));
-    // Reading i points at start_angle + i * angular_resolution (CARMEN's definition).
-    const double span = step * static_cast<double>(n - 1);
-    const auto mount = laserMount(laser, robot, tokens_[0] == "ROBOTLASER1", params_, options_);
-    scan->aperture = static_cast<float>(span);
-    scan->rightToLeft = true;
-    scan->maxRange = static_cast<float>(maxRange);
-    scan->sensorPose =
-        mrpt::poses::CPose3D(mount.x(), mount.y(), 0.0, mount.phi() + start + span / 2, 0.0, 0.0);
+    parseStatedLayout(*scan,
+                      laserMount(laser, robot, tokens_[0] == "ROBOTLASER1", params_, options_));
     out.fileStamp = number(p + 11, "ipc_timestamp");
     out.odometry = robot;
     out.hasOdometry = true;
+    out.scan = std::move(scan);
+}
+
+void CarmenScanSource::parseRawLaser(LaserLogRecord& out) {
+    const std::size_t p = statedLayoutEnd(3,
+                                          "RAWLASER1 laser_type start_angle fov "
+                                          "angular_resolution maximum_range accuracy "
+                                          "remission_mode n r1..rn m v1..vm ipc_timestamp "
+                                          "ipc_hostname logger_timestamp");
+    // The line states no pose: the mount is PARAM's (or the user's), the odometry the ODOM
+    // lines' at the scan's time (next()).
+    const mrpt::poses::CPose2D none;
+    auto scan = std::make_shared<mrpt::obs::CObservation2DRangeScan>();
+    parseStatedLayout(*scan, laserMount(none, none, tokens_[0] == "RAWLASER1", params_, options_));
+    out.fileStamp = number(p, "ipc_timestamp");
     out.scan = std::move(scan);
 }
 
@@ -340,7 +402,8 @@ void CarmenScanSource::parseParam() {
 }
 
 void CarmenScanSource::checkOdom() {
-    // Odometry comes from the laser lines; ODOM lines are only checked for corruption.
+    // Odometry comes from the laser lines, or in a raw log from pass 1's copy of these lines;
+    // here they are checked for corruption.
     expectFields(10, "ODOM x y theta tv rv accel ipc_timestamp ipc_hostname logger_timestamp");
     number(1, "x");
     number(2, "y");
@@ -354,7 +417,7 @@ bool CarmenScanSource::next(LaserLogRecord& out) {
         if (tokens_.empty() || tokens_[0].front() == '#')
             continue;
         const std::string_view name = tokens_[0];
-        if (isLaser(name)) {
+        if (rawLasers_ ? isRawLaser(name) : isLaser(name)) {
             const std::size_t laserIndex = laserLine_++;
             if (!options_.scanLabel.empty() && name != options_.scanLabel) {
                 countOtherLabel(name);
@@ -362,11 +425,18 @@ bool CarmenScanSource::next(LaserLogRecord& out) {
             }
             if (isOldLaser(name)) {
                 parseFlaser(out, name == "FLASER");
-            } else {
+            } else if (isRobotLaser(name)) {
                 parseRobotLaser(out);
+            } else {
+                parseRawLaser(out);
             }
-            out.scan->timestamp = mrpt::Clock::fromDouble(
-                laserIndex < times_.size() ? times_[laserIndex] : out.fileStamp);
+            const double time = laserIndex < times_.size() ? times_[laserIndex] : out.fileStamp;
+            out.scan->timestamp = mrpt::Clock::fromDouble(time);
+            if (rawLasers_) {
+                const std::optional<mrpt::poses::CPose2D> odometry = odometry_.at(time);
+                out.hasOdometry = odometry.has_value();
+                out.odometry = odometry.value_or(mrpt::poses::CPose2D());
+            }
             return true;
         }
         if (name == "PARAM") {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "LineReader.h"
+#include "OdometryTrack.h"
 #include "ScanSource.h"
 
 namespace toposlam::io {
@@ -23,6 +24,15 @@ class CarmenScanSource : public ScanSource {
   private:
     void parseFlaser(LaserLogRecord& out, bool front);
     void parseRobotLaser(LaserLogRecord& out);
+    void parseRawLaser(LaserLogRecord& out);
+    /// Lines that state their beam layout (ROBOTLASER, RAWLASER): checks the field count,
+    /// `trailingFields` after the remission values, and returns the index of the first of
+    /// them.
+    std::size_t statedLayoutEnd(std::size_t trailingFields, const char* layout) const;
+    /// The range readings, beam layout and maximum range of such a line, with the laser's
+    /// pose on the robot `mount`.
+    void parseStatedLayout(mrpt::obs::CObservation2DRangeScan& scan,
+                           const mrpt::poses::CPose2D& mount) const;
     void parseParam();
     void checkOdom();
     [[noreturn]] void fail(const std::string& problem) const;
@@ -39,6 +49,8 @@ class CarmenScanSource : public ScanSource {
     std::vector<double> times_;   // repaired acquisition times of the laser lines, in order
     std::size_t laserLine_ = 0;   // laser lines parsed so far
     std::string preferredLaser_;  // the front laser, found in pass 1
+    bool rawLasers_ = false;      // scans from RAWLASER lines, odometry from ODOM lines
+    OdometryTrack odometry_;      // a raw log's ODOM lines, at recovered times
     std::map<std::string, double> params_;  // numeric PARAM values, lower-case keys
     std::vector<std::string_view> tokens_;  // fields of the current line (workspace)
 };

@@ -254,7 +254,7 @@ void RawlogScanSource::consumeObservation(const mrpt::obs::CObservation::Ptr& ob
     } else if (const auto odometry = std::dynamic_pointer_cast<CObservationOdometry>(observation)) {
         checkFinite(odometry->odometry, "CObservationOdometry");
         if (format_ == LaserLogFormat::RawlogObservations) {
-            odometry_.push_back({mrpt::Clock::toDouble(odometry->timestamp), odometry->odometry});
+            odometry_.add(mrpt::Clock::toDouble(odometry->timestamp), odometry->odometry);
         }
     } else if (std::string(observation->GetRuntimeClass()->className) == kLaserFeaturesClass) {
         attachFeatures(observation);
@@ -273,23 +273,7 @@ bool RawlogScanSource::readyToEmit() const {
     if (!pending_.front().followerRead)
         return false;
     const double t = mrpt::Clock::toDouble(pending_.front().scan->timestamp);
-    return !odometry_.empty() && odometry_.back().time >= t;
-}
-
-std::optional<mrpt::poses::CPose2D> RawlogScanSource::odometryAt(double time) {
-    // Keep only the last sample at or before `time` and everything after it.
-    while (odometry_.size() >= 2 && odometry_[1].time <= time)
-        odometry_.pop_front();
-    if (odometry_.empty() || odometry_.front().time > time)
-        return std::nullopt;
-    const OdometrySample& a = odometry_.front();
-    if (odometry_.size() == 1 || a.time == time)
-        return a.pose;
-    // Linear interpolation of the motion between the bracketing samples, in a's frame.
-    const OdometrySample& b = odometry_[1];
-    const double s = (time - a.time) / (b.time - a.time);
-    const mrpt::poses::CPose2D motion = b.pose - a.pose;
-    return a.pose + mrpt::poses::CPose2D(s * motion.x(), s * motion.y(), s * motion.phi());
+    return !odometry_.empty() && odometry_.lastTime() >= t;
 }
 
 void RawlogScanSource::emit(LaserLogRecord& out) {
@@ -297,7 +281,7 @@ void RawlogScanSource::emit(LaserLogRecord& out) {
     pending_.pop_front();
     out.fileStamp = mrpt::Clock::toDouble(p.scan->timestamp);
     std::optional<mrpt::poses::CPose2D> odometry =
-        format_ == LaserLogFormat::RawlogSensoryFrames ? p.odometry : odometryAt(out.fileStamp);
+        format_ == LaserLogFormat::RawlogSensoryFrames ? p.odometry : odometry_.at(out.fileStamp);
     out.hasOdometry = odometry.has_value();
     out.odometry = odometry.value_or(mrpt::poses::CPose2D());
     out.scan = std::move(p.scan);

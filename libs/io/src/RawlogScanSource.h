@@ -16,6 +16,7 @@
 #include "GzipInputStream.h"
 #include "LookaheadStream.h"
 #include "MrptObjectCheck.h"
+#include "OdometryTrack.h"
 #include "ScanSource.h"
 
 namespace toposlam::io {
@@ -30,10 +31,6 @@ class RawlogScanSource : public ScanSource {
     double fractionRead() const override { return lookahead_.fractionRead(); }
 
   private:
-    struct OdometrySample {
-        double time;  // s
-        mrpt::poses::CPose2D pose;
-    };
     struct PendingScan {
         mrpt::obs::CObservation2DRangeScan::Ptr scan;
         std::optional<mrpt::poses::CPose2D> odometry;  // SF format: accumulated actions
@@ -59,7 +56,6 @@ class RawlogScanSource : public ScanSource {
     void attachFeatures(const mrpt::obs::CObservation::Ptr& features);
     bool readyToEmit() const;
     void emit(LaserLogRecord& out);
-    std::optional<mrpt::poses::CPose2D> odometryAt(double time);
 
     std::string path_;
     LaserLogOptions options_;
@@ -73,7 +69,7 @@ class RawlogScanSource : public ScanSource {
     bool end_ = false;
     std::exception_ptr error_;  // why the stream ended, reported after the scans before it
     std::optional<mrpt::poses::CPose2D> accumulatedActions_;
-    std::deque<OdometrySample> odometry_;
+    OdometryTrack odometry_;  // observations format
     std::deque<PendingScan> pending_;
 };
 

@@ -4,7 +4,9 @@
 //  - MRPT rawlogs in both formats (actions/sensory frames, observations only), plain or gz;
 //  - CARMEN logs (plain or gz): FLASER/RLASER (old format, no FOV field), ROBOTLASER1/2,
 //    PARAM; ODOM lines are checked but odometry comes from the robot pose stored in each
-//    laser line, as MRPT's importer and CARMEN's own tools do.
+//    laser line, as MRPT's importer and CARMEN's own tools do. Raw logs, whose only laser
+//    lines are RAWLASER1/2 (CARMEN's laser module logged without its robot module), take
+//    the odometry of the ODOM lines at each scan's time instead (below).
 // The format is detected from the content: text is CARMEN, binary is a rawlog.
 //
 // CARMEN, what MRPT 2.5.8's importer (carmen2rawlog) gets wrong and this reader gets right:
@@ -32,6 +34,11 @@
 //    an implausible one (> 1 m: a corrected pose estimate, not a mounting offset), PARAM
 //    robot_frontlaser_offset / _side_offset / _angular_offset (m, m, rad; rear lasers:
 //    robot_rearlaser_*, facing backwards) apply; LaserLogOptions can override it.
+//  - RAWLASER1/2 lines (front / rear laser: mount from PARAM) are read only when the log has
+//    no FLASER, RLASER or ROBOTLASER line, which carry the odometry synchronised with the
+//    scan. Their odometry is the ODOM lines' at the scan's time, both times recovered from
+//    their printed stamps, interpolated as in rawlogs' observations format (below): none
+//    before the first ODOM line, the last one held after it.
 //  - Wrong field counts, non-numeric fields: InputError naming the line.
 //
 // Rawlogs:
@@ -84,11 +91,12 @@ const char* toString(LaserLogFormat f);
 struct LaserLogOptions {
     /// Keep only scans with this sensor label (empty: every CObservation2DRangeScan, or see
     /// oneLaser). CARMEN scans are labelled with their message name: FLASER, RLASER,
-    /// ROBOTLASER1, ROBOTLASER2.
+    /// ROBOTLASER1, ROBOTLASER2, RAWLASER1, RAWLASER2.
     std::string scanLabel;
     /// With scanLabel empty: when the log holds scans of several lasers, keep those of one
     /// (a SLAM front end registers one sensor's scans against each other): in a CARMEN log
-    /// the front laser (FLASER, else ROBOTLASER1, else the first laser line's), in a rawlog
+    /// the front laser (FLASER, else ROBOTLASER1, else the first laser line's; in a raw log
+    /// RAWLASER1, else RAWLASER2), in a rawlog
     /// the first scan's label. The reader counts the scans it leaves out
     /// (LaserLogReader::otherLaserScans).
     bool oneLaser = false;

@@ -17,6 +17,8 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -447,4 +449,76 @@ TEST(RawlogSamples, SimulatedLogStartsWithoutOdometry) {
     EXPECT_EQ(records.front().scan->sensorLabel, "LASER_SIM");
     // Its ground truth is a 'timestamp x y phi' file, which Trajectory.h reads.
     EXPECT_EQ(toposlam::io::loadTrajectory(gt).size(), 1734u);
+}
+
+namespace {
+
+// Robot-frame point of reading i, from the scan's full 3D sensor pose (as MRPT projects it).
+mrpt::math::TPoint3D pointIn3D(const mrpt::obs::CObservation2DRangeScan& scan, std::size_t i) {
+    const double a = scan.getScanAngle(i), r = scan.getScanRange(i);
+    return scan.sensorPose.composePoint(mrpt::math::TPoint3D(r * std::cos(a), r * std::sin(a), 0));
+}
+
+// The same point as 2D code reads it: the sensor pose as CPose2D(x, y, yaw).
+mrpt::math::TPoint2D pointIn2D(const mrpt::obs::CObservation2DRangeScan& scan, std::size_t i) {
+    const double a = scan.getScanAngle(i), r = scan.getScanRange(i);
+    const mrpt::poses::CPose2D sensor(scan.sensorPose);
+    const double c = std::cos(sensor.phi()), s = std::sin(sensor.phi());
+    return {sensor.x() + r * (c * std::cos(a) - s * std::sin(a)),
+            sensor.y() + r * (s * std::cos(a) + c * std::sin(a))};
+}
+
+}  // namespace
+
+TEST(RawlogUpsideDownLaser, IsReadAsAnUprightLaserWithEveryPointInPlace) {
+    toposlam::test::TempDir dir;
+    const std::string path = dir.file("mounts.rawlog");
+    const auto records = syntheticRecords(1);
+    // yaw, pitch, roll of the mount: rolled over, pitched over (facing backwards), both ways
+    // of a 3 deg tolerance, upright, and tilted (a 2D laser looking at the floor: left alone).
+    const double kDeg = M_PI / 180;
+    const std::vector<std::array<double, 3>> mounts = {{0.3, 0, M_PI},
+                                                       {0.3, M_PI, 0},
+                                                       {-2.0, 2 * kDeg, M_PI - 2 * kDeg},
+                                                       {0.3, 0, 0},
+                                                       {0.3, 0, 30 * kDeg}};
+    std::vector<mrpt::obs::CObservation2DRangeScan> written;
+    {
+        mrpt::io::CFileGZOutputStream out(path);
+        auto archive = mrpt::serialization::archiveFrom(out);
+        for (std::size_t k = 0; k < mounts.size(); ++k) {
+            auto scan = *records[0].scan;
+            scan.rightToLeft = k % 2 == 0;  // both sweep directions
+            scan.sensorPose =
+                mrpt::poses::CPose3D(0.2, -0.1, 0.4, mounts[k][0], mounts[k][1], mounts[k][2]);
+            scan.timestamp = mrpt::Clock::fromDouble(10.0 + k);
+            archive << scan;
+            written.push_back(scan);
+        }
+    }
+    LaserLogReader reader(path);
+    LaserLogRecord r;
+    for (std::size_t k = 0; k < mounts.size(); ++k) {
+        ASSERT_TRUE(reader.next(r));
+        const auto& original = written[k];
+        const bool upsideDown = k < 3;
+        EXPECT_EQ(r.scan->rightToLeft, upsideDown ? !original.rightToLeft : original.rightToLeft)
+            << "mount " << k;
+        if (k == 4) {
+            EXPECT_NEAR(r.scan->sensorPose.roll(), 30 * kDeg, 1e-12) << "a tilted laser stays";
+            continue;
+        }
+        EXPECT_NEAR(r.scan->sensorPose.pitch(), 0.0, 1e-12);
+        EXPECT_NEAR(r.scan->sensorPose.roll(), 0.0, 1e-12);
+        for (std::size_t i = 0; i < original.getScanSize(); ++i) {
+            // The 2.8 deg tilt of mount 2 shortens a reading's ground projection by up to
+            // r (1 - cos 2.8 deg) = 0.0012 r; the others are exact (float ranges).
+            const double tolerance = 1e-5 + (k == 2 ? 0.005 * original.getScanRange(i) : 0.0);
+            const auto expected = pointIn3D(original, i);
+            const auto got = pointIn2D(*r.scan, i);
+            ASSERT_NEAR(got.x, expected.x, tolerance) << "mount " << k << ", reading " << i;
+            ASSERT_NEAR(got.y, expected.y, tolerance) << "mount " << k << ", reading " << i;
+        }
+    }
+    EXPECT_EQ(reader.upsideDownScans(), 3u);
 }

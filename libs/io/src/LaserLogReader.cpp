@@ -10,6 +10,7 @@
 #include "CarmenScanSource.h"
 #include "GzipInputStream.h"
 #include "RawlogScanSource.h"
+#include "UprightScan.h"
 
 namespace toposlam::io {
 
@@ -50,6 +51,7 @@ struct LaserLogReader::Impl {
     std::unique_ptr<ScanSource> source;
     std::size_t count = 0;
     std::size_t adjusted = 0;
+    std::size_t upsideDown = 0;
     double lastTime = -INFINITY;
     bool oneLaser = false;
     bool labelChosen = false;  // oneLaser: label is the one to keep (it may be "")
@@ -91,6 +93,8 @@ bool LaserLogReader::next(LaserLogRecord& out) {
         ++impl_->others[out.scan->sensorLabel];
     }
     out.index = impl_->count++;
+    if (makeUpright(*out.scan))
+        ++impl_->upsideDown;
     // Strictly increasing acquisition times (CARMEN times are already repaired).
     double t = mrpt::Clock::toDouble(out.scan->timestamp);
     if (!(t > impl_->lastTime)) {
@@ -117,6 +121,10 @@ double LaserLogReader::fractionRead() const {
 
 std::size_t LaserLogReader::adjustedTimestamps() const {
     return impl_->adjusted;
+}
+
+std::size_t LaserLogReader::upsideDownScans() const {
+    return impl_->upsideDown;
 }
 
 const std::string& LaserLogReader::laserLabel() const {

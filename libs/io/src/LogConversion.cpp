@@ -92,6 +92,7 @@ LogConversionSummary convertLaserLog(const std::string& inputPath,
     if (summary.scans == 0)
         throw InputError(inputPath, reader.noScansProblem());
     summary.adjustedTimestamps = reader.adjustedTimestamps();
+    summary.upsideDownScans = reader.upsideDownScans();
     // The trajectory first: if it cannot be written, the rawlog is not committed either.
     if (!options.odometryTrajectoryPath.empty()) {
         saveTrajectory(odometry, options.odometryTrajectoryPath);
@@ -112,6 +113,8 @@ std::string describe(const LogConversionSummary& s, const std::string& inputPath
     std::string text = inputPath + buf;
     if (s.adjustedTimestamps > 0)
         text += ", " + std::to_string(s.adjustedTimestamps) + " timestamps repaired";
+    if (s.upsideDownScans > 0)
+        text += ", " + std::to_string(s.upsideDownScans) + " scans of an upside-down laser";
     if (options.alteration.dropOdometry)
         text += ", odometry left out";
     else if (s.scansWithoutOdometry > 0)

@@ -41,6 +41,12 @@
 //    before the first ODOM line, the last one held after it.
 //  - Wrong field counts, non-numeric fields: InputError naming the line.
 //
+// Upside-down lasers (any format): a scan whose sensorPose turns the laser's z axis to point
+// down (roll or pitch of 180 deg, within 5 deg) is returned as the same readings from an
+// upright laser, sweeping the other way (rightToLeft flipped, sensorPose level with the yaw
+// of the mirrored sweep), so 2D code may read its pose as CPose2D(x, y, yaw). Every reading
+// keeps its point in the robot frame.
+//
 // Rawlogs:
 //  - Read object by object: a clean end of file ends the stream; a truncated or corrupt
 //    object, damaged gzip data, or an object of a class not registered with MRPT (MRPT's
@@ -162,6 +168,9 @@ class LaserLogReader {
     /// Scans so far whose scan->timestamp differs from their fileStamp by more than 1 us
     /// (recovered CARMEN stamps, times made strictly increasing).
     std::size_t adjustedTimestamps() const;
+    /// Scans so far of a laser mounted upside down, read as an upright laser's (see
+    /// "Upside-down lasers" above).
+    std::size_t upsideDownScans() const;
     /// The label of the scans kept: scanLabel, or with oneLaser the chosen laser's (empty
     /// until the first scan is read, and when every scan is kept).
     const std::string& laserLabel() const;

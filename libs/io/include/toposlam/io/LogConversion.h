@@ -60,6 +60,7 @@ struct LogConversionSummary {
     std::size_t scansWithoutOdometry = 0;
     std::size_t beamsPerScan = 0;        ///< of the first scan written (after keepBeamEvery)
     std::size_t adjustedTimestamps = 0;  ///< see LaserLogReader::adjustedTimestamps()
+    std::size_t upsideDownScans = 0;     ///< see LaserLogReader::upsideDownScans()
     std::size_t rawlogObjects = 0;
     double firstStamp = 0, lastStamp = 0;  ///< fileStamps, s
 };

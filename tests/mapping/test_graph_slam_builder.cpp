@@ -96,6 +96,38 @@ TEST(CGraphSlamBuilder, DrivenByActionsAndSensoryFramesLikeMrptBuilders) {
     EXPECT_GT(grid->getSizeX() * grid->getSizeY(), 0u);
 }
 
+// MRPT's tools hand the builder scans as logged: an upside-down laser's (a roll of 180 deg,
+// readings sweeping the other way) is mapped as the upright laser it mirrors.
+TEST(CGraphSlamBuilder, AnUpsideDownLaserIsMappedAsTheUprightOne) {
+    const auto drive = roomTour();
+    const auto run = [&](bool upsideDown) {
+        mapping::CGraphSlamBuilder builder;
+        builder.loadFromConfigFile(mrpt::config::CConfigFile(test::configIni("toposlam-slam.ini")));
+        builder.initialize();
+        for (std::size_t i = 0; i < drive.scans.size(); ++i) {
+            auto odometry = mrpt::obs::CObservationOdometry::Create();
+            odometry->odometry = drive.odometry[i];
+            builder.processObservation(odometry);
+            auto scan = std::make_shared<mrpt::obs::CObservation2DRangeScan>(*drive.scans[i]);
+            if (upsideDown) {
+                scan->rightToLeft = !scan->rightToLeft;
+                scan->sensorPose = mrpt::poses::CPose3D(0, 0, 0.3, 0, 0, M_PI);
+            }
+            builder.processObservation(scan);
+        }
+        builder.finish();
+        mrpt::poses::CPose3D mean;
+        builder.getCurrentPoseEstimation()->getMean(mean);
+        return CPose2D(mean);
+    };
+    const CPose2D upright = run(false), upsideDown = run(true);
+    const CPose2D truthEnd = drive.truth.back() - drive.truth.front();
+    EXPECT_LT((upright - truthEnd).norm(), 0.1);
+    EXPECT_NEAR(upsideDown.x(), upright.x(), 1e-6);
+    EXPECT_NEAR(upsideDown.y(), upright.y(), 1e-6);
+    EXPECT_NEAR(upsideDown.phi(), upright.phi(), 1e-6);
+}
+
 TEST(CGraphSlamBuilder, MapsTheFirstLaserAndSkipsOthersKeepingTheirOdometry) {
     // Observations one at a time, as an observations-format rawlog gives them: odometry, then
     // (after the first step) a second laser's scan (all readings 1 m: nothing like the room),

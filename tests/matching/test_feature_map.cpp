@@ -342,6 +342,35 @@ TEST(CScanFeaturesMap, TheTruePoseIsTheMostLikely) {
     }
 }
 
+// A laser mounted upside down (MRPT: a roll of 180 deg; its readings sweep the other way)
+// builds the same map and gives the same likelihoods as the upright laser it mirrors.
+TEST(CScanFeaturesMap, AnUpsideDownLaserMapsAsTheUprightOne) {
+    const auto world = toposlam::test::asymmetricRoom();
+    const auto scans = roomScans(world, roomPoses());
+    CScanFeaturesMap upright("split-merge"), upsideDown("split-merge");
+    std::vector<mrpt::obs::CObservation2DRangeScan> flipped;
+    for (std::size_t i = 0; i < scans.size(); ++i) {
+        auto f = scans[i];
+        f.rightToLeft = !f.rightToLeft;
+        f.sensorPose = CPose3D(0, 0, 0.3, 0, 0, M_PI);
+        flipped.push_back(f);
+        upright.insertObservation(scans[i], CPose3D(roomPoses()[i]));
+        upsideDown.insertObservation(f, CPose3D(roomPoses()[i]));
+    }
+    const auto& a = upright.featureMap().segments();
+    const auto& b = upsideDown.featureMap().segments();
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_NEAR(a[i].start.x, b[i].start.x, 1e-6);
+        EXPECT_NEAR(a[i].start.y, b[i].start.y, 1e-6);
+        EXPECT_NEAR(a[i].end.x, b[i].end.x, 1e-6);
+        EXPECT_NEAR(a[i].end.y, b[i].end.y, 1e-6);
+    }
+    const CPose3D off(CPose2D(6.0, 2.5, 0.7));
+    EXPECT_NEAR(upright.computeObservationLikelihood(scans[2], off),
+                upright.computeObservationLikelihood(flipped[2], off), 1e-9);
+}
+
 TEST(CScanFeaturesMap, SerializesKeyframesOptionsAndTheLastScan) {
     CScanFeaturesMap m = roomMap(roomPoses());
     m.insertionOptions.merge.mergeGap = 0.3;  // a non-default option travels too

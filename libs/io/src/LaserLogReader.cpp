@@ -1,6 +1,7 @@
 #include <mrpt/core/Clock.h>
 #include <toposlam/io/InputError.h>
 #include <toposlam/io/LaserLogReader.h>
+#include <toposlam/io/UprightScan.h>
 
 #include <cmath>
 #include <cstdio>
@@ -10,7 +11,6 @@
 #include "CarmenScanSource.h"
 #include "GzipInputStream.h"
 #include "RawlogScanSource.h"
-#include "UprightScan.h"
 
 namespace toposlam::io {
 

@@ -1,4 +1,4 @@
-#include "UprightScan.h"
+#include <toposlam/io/UprightScan.h>
 
 #include <cmath>
 
@@ -9,10 +9,14 @@ namespace {
 constexpr double kUpsideDownCos = 0.9961946980917455;
 }  // namespace
 
+bool isUpsideDown(const mrpt::obs::CObservation2DRangeScan& scan) {
+    return scan.sensorPose.getRotationMatrix()(2, 2) <= -kUpsideDownCos;
+}
+
 bool makeUpright(mrpt::obs::CObservation2DRangeScan& scan) {
-    const auto R = scan.sensorPose.getRotationMatrix();
-    if (R(2, 2) > -kUpsideDownCos)
+    if (!isUpsideDown(scan))
         return false;
+    const auto R = scan.sensorPose.getRotationMatrix();
     // With the z axis pointing down, the rotation maps the scan plane's direction a to
     // yaw - a, where yaw is the direction of the laser's x axis: a mirror image of the
     // plane, i.e. the upright sweep in the other direction.
@@ -21,6 +25,15 @@ bool makeUpright(mrpt::obs::CObservation2DRangeScan& scan) {
     scan.sensorPose = mrpt::poses::CPose3D(p.x(), p.y(), p.z(), yaw, 0.0, 0.0);
     scan.rightToLeft = !scan.rightToLeft;
     return true;
+}
+
+mrpt::obs::CObservation2DRangeScan::Ptr uprightScan(
+    const mrpt::obs::CObservation2DRangeScan::Ptr& scan) {
+    if (!scan || !isUpsideDown(*scan))
+        return scan;
+    auto upright = std::make_shared<mrpt::obs::CObservation2DRangeScan>(*scan);
+    makeUpright(*upright);
+    return upright;
 }
 
 }  // namespace toposlam::io

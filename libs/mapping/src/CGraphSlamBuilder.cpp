@@ -5,6 +5,7 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose3DPDFGaussian.h>
 #include <mrpt/poses/CPosePDF.h>
+#include <toposlam/io/UprightScan.h>
 #include <toposlam/mapping/CGraphSlamBuilder.h>
 
 #include <algorithm>
@@ -116,7 +117,12 @@ void CGraphSlamBuilder::processObservation(const mrpt::obs::CObservation::Ptr& o
     }
 }
 
-void CGraphSlamBuilder::processScan(const mrpt::obs::CObservation2DRangeScan::Ptr& scan) {
+void CGraphSlamBuilder::processScan(const mrpt::obs::CObservation2DRangeScan::Ptr& observed) {
+    // Scans from MRPT's tools come as logged: an upside-down laser's turned upright (as
+    // LaserLogReader does); features stored for it were in the mirrored frame.
+    const mrpt::obs::CObservation2DRangeScan::Ptr scan = io::uprightScan(observed);
+    if (scan != observed)
+        pendingFeatures_.reset();
     if (!laserLabel_)
         laserLabel_ = scan->sensorLabel;
     if (scan->sensorLabel != *laserLabel_) {  // another laser: its odometry stays pending

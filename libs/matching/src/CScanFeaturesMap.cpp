@@ -8,6 +8,7 @@
 #include <toposlam/features/ScanFeaturesArchive.h>
 #include <toposlam/io/AtomicFile.h>
 #include <toposlam/io/ClassRegistration.h>
+#include <toposlam/io/UprightScan.h>
 #include <toposlam/matching/CScanFeaturesMap.h>
 #include <toposlam/matching/FeatureMapRendering.h>
 
@@ -158,8 +159,9 @@ void CScanFeaturesMap::keepScan(const mrpt::obs::CObservation2DRangeScan& scan,
                                 const CPose2D& robotPose) {
     if (&scan != &scan_)
         scan_ = scan;
+    io::makeUpright(scan_);  // an upside-down laser's, as LaserLogReader reads it
     scanRobotPose_ = robotPose;
-    sensorPose_ = robotPose + CPose2D(scan.sensorPose);
+    sensorPose_ = robotPose + CPose2D(scan_.sensorPose);
     polar_.assign(scan_);
     hasScan_ = true;
     // One extractor per map, made on first use (it keeps its workspaces between scans).
@@ -173,7 +175,7 @@ void CScanFeaturesMap::insertScan(const mrpt::obs::CObservation2DRangeScan& scan
     keepScan(scan, robotPose);
     FeatureKeyframe k;
     k.robotPose = robotPose;
-    k.sensorOnRobot = CPose2D(scan.sensorPose);
+    k.sensorOnRobot = CPose2D(scan_.sensorPose);
     k.features = scanFeatures_;
     insertKeyframe(k);
 }
@@ -273,7 +275,15 @@ double CScanFeaturesMap::internal_computeObservationLikelihood(
         ++n;
     };
     const CPose2D robot(takenFrom);
-    if (const auto* scan = dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs)) {
+    if (const auto* observed = dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs)) {
+        // An upside-down laser's scan, upright (a copy: rare).
+        mrpt::obs::CObservation2DRangeScan upright;
+        const mrpt::obs::CObservation2DRangeScan* scan = observed;
+        if (io::isUpsideDown(*observed)) {
+            upright = *observed;
+            io::makeUpright(upright);
+            scan = &upright;
+        }
         const CPose2D sensor = robot + CPose2D(scan->sensorPose);
         const std::size_t beams = scan->getScanSize();
         for (std::size_t i = 0; i < beams; i += likelihoodOptions.decimation) {

@@ -301,6 +301,40 @@ TEST(GraphSlam, MapsALaserOnlyLog) {
     EXPECT_LT(test::absoluteTrajectoryError(truth, run.poses), 0.05);
 }
 
+TEST(GraphSlam, AnOdometryThatNeverReadsMotionIsNone) {
+    // A log recorded without odometry often states zeros instead (CARMEN's FLASER lines,
+    // rawlog actions of zero). Taken at its word, the robot stood still while its scans
+    // moved: laser-only intel, fr079 and mit-csail written so broke (1.39 / 0.069 / 0.88 m).
+    // Read as none, such a log maps exactly as the laser-only log.
+    const auto truth = test::drivePath(
+        {{1.5, 1.5}, {18.5, 1.5}, {18.5, 10.5}, {1.5, 10.5}, {1.5, 1.5}, {10, 1.5}}, 0.3, 0.3);
+    auto laserOnly = test::simulateDrive(ringCorridor(), truth, {}, 3);
+    auto zeros = laserOnly;
+    laserOnly.odometry.clear();
+    for (CPose2D& o : zeros.odometry)
+        o = CPose2D(1.0, -2.0, 0.5);  // constant, not necessarily 0
+    const SlamRun a = runSlam(laserOnly), b = runSlam(zeros);
+    EXPECT_EQ(b.slam->statistics().scansOfUnmovedOdometry, zeros.scans.size() - 1);
+    EXPECT_EQ(b.slam->statistics().scansWithoutOdometry, zeros.scans.size() - 1);
+    ASSERT_EQ(a.poses.size(), b.poses.size());
+    for (std::size_t i = 0; i < a.poses.size(); ++i) {
+        ASSERT_EQ(a.poses[i].x(), b.poses[i].x()) << "scan " << i;
+        ASSERT_EQ(a.poses[i].y(), b.poses[i].y()) << "scan " << i;
+        ASSERT_EQ(a.poses[i].phi(), b.poses[i].phi()) << "scan " << i;
+    }
+    EXPECT_LT(test::absoluteTrajectoryError(truth, b.poses), 0.05);
+
+    // An odometry that reads motion from the tenth scan on: only the nine before are none.
+    auto lateStart = test::simulateDrive(ringCorridor(), truth, {}, 3);
+    for (std::size_t i = 0; i < 10; ++i)
+        lateStart.odometry[i] = lateStart.odometry[0];
+    ASSERT_NE(lateStart.odometry[10], lateStart.odometry[9]);
+    const SlamRun c = runSlam(lateStart);
+    EXPECT_EQ(c.slam->statistics().scansOfUnmovedOdometry, 9u);
+    EXPECT_EQ(c.slam->statistics().scansWithoutOdometry, 9u);
+    EXPECT_LT(test::absoluteTrajectoryError(truth, c.poses), 0.05);
+}
+
 TEST(GraphSlam, ClosesTheLoopOfABuildingSizedCorridorRing) {
     // 190 m round a 60 x 40 m corridor ring and on past the start, with odometry that reads 2 %
     // long and drifts 0.003 rad per metre: metres off by the time the robot is back (the

@@ -77,6 +77,21 @@ std::vector<CPose2D> GraphSlam::scanPoses() const {
     return smoothScanPositions(in);
 }
 
+bool GraphSlam::odometryNeverMoved(const CPose2D& increment) {
+    if (odometryMoved_)
+        return false;
+    if (increment.x() != 0 || increment.y() != 0 || increment.phi() != 0) {
+        odometryMoved_ = true;
+        return false;
+    }
+    // Exactly no motion since the log began: what a log recorded without odometry states
+    // (zeros in CARMEN's FLASER lines, rawlog actions of zero). Read as none, the scan is
+    // predicted to move as the robot last did, as in a laser-only log: a robot that stands
+    // still at the start registers no motion either way.
+    ++stats_.scansOfUnmovedOdometry;
+    return true;
+}
+
 Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
     Prediction p;
     // Without odometry (a laser-only log) the robot is predicted to move as it last did.
@@ -181,7 +196,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     }
     // The odometry as the graph uses it: its distance scale calibrated.
     std::optional<CPose2D> odometry;
-    if (odometryIncrement)
+    if (odometryIncrement && !odometryNeverMoved(*odometryIncrement))
         odometry = odometryCalibration_.corrected(*odometryIncrement);
     const Prediction prediction = predict(odometry);
     const CPose2D sensorOnRobot(scan->sensorPose);
@@ -220,7 +235,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     // among people close by: walking along with the robot, they make ICP take back some of
     // its step (ten people in the office: the scale 0.4 % short, 0.1 % without such scans).
     // Counted also with odometry_calibration off, for the summary to say what it would do.
-    if (odometryIncrement && !prediction.odometryJumped && !prediction.odometryLagging &&
+    if (odometry && !prediction.odometryJumped && !prediction.odometryLagging &&
         !prediction.odometryBridged && r.method == RegistrationMethod::Icp &&
         !r.heldAlongHeading() && !registration_.seesForegroundObjects(polar_)) {
         odometryCalibration_.observe(*odometryIncrement, step, r.rawCovariance);

@@ -148,9 +148,10 @@ std::string formatSummary(const MappingResult& r) {
             st->odometryCatchUpsKept, st->lastMotionPredictions);
         if (st->scansWithoutOdometry > 0)
             s += line(
-                "odometry: none for %zu of %zu scans, each of them predicted by the "
-                "robot's last registered motion",
-                st->scansWithoutOdometry, n);
+                "odometry: none for %zu of %zu scans (%zu of them before the odometry first "
+                "read any motion: a log that never does has none), each of them predicted by "
+                "the robot's last registered motion",
+                st->scansWithoutOdometry, n, st->scansOfUnmovedOdometry);
         if (st->scansWithoutOdometry < n)  // a laser-only log has nothing to calibrate
             s += odometryLine(r, *st);
         // A rule that is off says so, instead of a count that could not be anything but 0.
@@ -244,6 +245,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
         }
         j["registration"]["along_heading_checks"] = std::move(checks);
         j["odometry"] = {{"scans_without", st->scansWithoutOdometry},
+                         {"scans_unmoved_since_start", st->scansOfUnmovedOdometry},
                          {"calibration", r.odometryCalibration},
                          {"distance_scale", st->odometryScale},
                          {"estimated_scale", st->odometryScaleEstimate},

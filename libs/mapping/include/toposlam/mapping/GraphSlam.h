@@ -79,6 +79,9 @@ class GraphSlam {
                           const std::optional<mrpt::poses::CPose2D>& odometryIncrement,
                           const features::CObservationLaserFeatures::Ptr& storedFeatures);
     Prediction predict(const std::optional<mrpt::poses::CPose2D>& odometryIncrement);
+    /// Whether the odometry `increment` is one of exactly zero, none having moved since the
+    /// log began: then it is read as no odometry at all.
+    bool odometryNeverMoved(const mrpt::poses::CPose2D& increment);
     bool isKeyframe(const Registration& r, const mrpt::poses::CPose2D& pose) const;
     /// The last `stallScans` scans before this one, a bridged stall's that registration left
     /// behind (Prediction::stallScansBehind), placed at even steps between the scan before the
@@ -117,6 +120,7 @@ class GraphSlam {
     mrpt::poses::CPose2D current_;  ///< last scan's robot pose, world frame
     mrpt::math::CMatrixDouble33 currentCovariance_;
     mrpt::poses::CPose2D lastMotion_;         ///< the last scan's registered motion
+    bool odometryMoved_ = false;              ///< some odometry increment was not zero
     OdometryLag odometryLag_;                 ///< the odometry stalling and catching up
     double travelled_ = 0;                    ///< m along the estimated trajectory
     double turned_ = 0;                       ///< rad turned along it (absolute)

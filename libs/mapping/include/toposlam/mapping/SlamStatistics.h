@@ -76,6 +76,10 @@ struct SlamStatistics {
     /// Scans that came without an odometry increment (a laser-only log), each predicted by
     /// the robot's last registered motion instead.
     std::size_t scansWithoutOdometry = 0;
+    /// Of those, the scans whose odometry had read exactly the same since the log began (a
+    /// log recorded without odometry states zeros; a robot standing still at the start too):
+    /// read as none.
+    std::size_t scansOfUnmovedOdometry = 0;
     /// Distance scale applied to the odometry at the end (odometry_calibration; 1 = none),
     /// the scale the well-registered scans show, applied or not (1 until they cover
     /// odometry_calibration_min_distance), and the odometry distance of those scans (m).

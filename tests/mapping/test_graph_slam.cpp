@@ -1206,6 +1206,21 @@ TEST(MappingOutputs, AnOdometryScaleOfExactlyOneIsEvidenceNotItsAbsence) {
         << mapping::formatSummary(result);
 }
 
+TEST(MappingOutputs, ALogWhoseStampsWereLostHasNoRealTimeFactor) {
+    mapping::MappingResult result;
+    result.scans = 1001;
+    result.wallSeconds = 2.0;
+    result.logDuration = 100.0;  // 0.1 s a scan
+    EXPECT_DOUBLE_EQ(*mapping::realTimeFactor(result), 50.0);
+    EXPECT_NE(mapping::formatSummary(result).find("(50.0x real time)"), std::string::npos);
+    result.logDuration = 0.001;  // stamps all 0, spaced 1 us apart by the reader
+    EXPECT_FALSE(mapping::realTimeFactor(result));
+    EXPECT_NE(mapping::formatSummary(result).find("the log's stamps do not tell its time"),
+              std::string::npos)
+        << mapping::formatSummary(result);
+    EXPECT_TRUE(mapping::summaryJson(result).at("real_time_factor").is_null());
+}
+
 TEST(MappingOutputs, CountsAgreeInNumber) {
     mapping::MappingResult result;
     result.statistics.emplace();

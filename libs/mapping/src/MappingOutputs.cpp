@@ -88,14 +88,31 @@ bool weakFrontEnd(const MappingResult& result) {
            double(st->registeredByIcp) < kMinIcpShare * double(st->scans - 1);
 }
 
+std::optional<double> realTimeFactor(const MappingResult& r) {
+    // Stamps less than a millisecond apart on average are none: the fastest scanners take
+    // 20 ms a scan; a log whose stamps were lost states 0 for all (the reader then spaces
+    // them 1 us apart).
+    constexpr double kMinSecondsPerScan = 1e-3;
+    if (!(r.wallSeconds > 0) || r.scans < 2 ||
+        r.logDuration < kMinSecondsPerScan * double(r.scans - 1))
+        return std::nullopt;
+    return r.logDuration / r.wallSeconds;
+}
+
 std::string formatSummary(const MappingResult& r) {
     std::string s;
     s += line("engine: %s", r.engine.c_str());
-    s += line(
-        "scans: %zu, log duration %.1f s, mapped in %.2f s wall, %.2f s CPU (%.1fx real "
-        "time)",
-        r.scans, r.logDuration, r.wallSeconds, r.cpuSeconds,
-        r.wallSeconds > 0 ? r.logDuration / r.wallSeconds : 0.0);
+    if (const auto factor = realTimeFactor(r)) {
+        s += line(
+            "scans: %zu, log duration %.1f s, mapped in %.2f s wall, %.2f s CPU (%.1fx real "
+            "time)",
+            r.scans, r.logDuration, r.wallSeconds, r.cpuSeconds, *factor);
+    } else {
+        s += line(
+            "scans: %zu, log duration %.3f s (the log's stamps do not tell its time), mapped "
+            "in %.2f s wall, %.2f s CPU",
+            r.scans, r.logDuration, r.wallSeconds, r.cpuSeconds);
+    }
     if (!r.otherLaserScans.empty()) {
         const auto named = [](const std::string& label) {
             return label.empty() ? std::string("(no label)") : label;
@@ -203,7 +220,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
         {"log_duration_s", r.logDuration},
         {"wall_s", r.wallSeconds},
         {"cpu_s", r.cpuSeconds},
-        {"real_time_factor", r.wallSeconds > 0 ? r.logDuration / r.wallSeconds : 0.0},
+        {"real_time_factor", realTimeFactor(r) ? nlohmann::json(*realTimeFactor(r)) : nullptr},
         {"laser", {{"label", r.laserLabel}, {"other_lasers", r.otherLaserScans}}},
         {"wall_alignment_deg", r.wallAlignment * 180.0 / M_PI}};
     if (const auto& st = r.statistics) {

@@ -13,10 +13,15 @@
 #include <toposlam/mapping/LogMapper.h>
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace toposlam::mapping {
+
+/// Log duration / wall time, or none where the log's stamps do not tell its time (less than
+/// 1 ms a scan on average: a log whose stamps were lost).
+std::optional<double> realTimeFactor(const MappingResult& result);
 
 /// The run in a few lines: scans, keyframes, how scans were registered, loops, optimisation
 /// and wall time, real-time factor; a loud WARNING line when most scans could not be
@@ -24,8 +29,8 @@ namespace toposlam::mapping {
 /// one when ICP registered less than 90 % of them (weakFrontEnd).
 std::string formatSummary(const MappingResult& result);
 
-/// The summary as JSON: engine, scans, log_duration_s, wall_s, cpu_s, real_time_factor,
-/// wall_alignment_deg; graph engine also keyframes, submaps, registration {icp,
+/// The summary as JSON: engine, scans, log_duration_s, wall_s, cpu_s, real_time_factor (null
+/// without one), wall_alignment_deg; graph engine also keyframes, submaps, registration {icp,
 /// icp_unsettled, icp_second_start, icp_unsettled_refused, icp_without_foreground, graph_matcher,
 /// failed, odometry_jumps, odometry_catch_ups, odometry_catch_ups_kept, registered_share}, loops
 /// {candidates, accepted, guess_free_accepted, contested_accepted, unmatched, rejected, withdrawn},

@@ -128,3 +128,34 @@ TEST(AnnotatedLogs, SensoryFramesWithFeaturesAndForeignObjects) {
     }
     EXPECT_EQ(n, 5u);
 }
+
+TEST(AnnotatedLogs, FeaturesStoredWithAnUpsideDownScanAreLeftOut) {
+    // They were extracted in the mirrored frame the reader turns the scan out of.
+    toposlam::classes::registerTopoSlamClasses();
+    toposlam::test::TempDir dir;
+    const auto records = LaserLogReader::readAll(officeLog());
+    const std::string path = dir.file("upside-down.rawlog.gz");
+    {
+        mrpt::io::CFileGZOutputStream file(path);
+        auto out = mrpt::serialization::archiveFrom(file);
+        for (std::size_t i = 0; i < 2; ++i) {
+            auto scan = std::make_shared<mrpt::obs::CObservation2DRangeScan>(*records[i].scan);
+            if (i == 1) {
+                scan->rightToLeft = !scan->rightToLeft;
+                scan->sensorPose = mrpt::poses::CPose3D(0, 0, 0.3, 0, 0, M_PI);
+            }
+            CObservationLaserFeatures features;
+            features.timestamp = scan->timestamp;
+            features.sensorLabel = scan->sensorLabel + "_FEATURES";
+            features.scanLabel = scan->sensorLabel;
+            out << *scan << features;
+        }
+    }
+    LaserLogReader reader(path);
+    LaserLogRecord record;
+    ASSERT_TRUE(reader.next(record));
+    EXPECT_TRUE(record.laserFeatures()) << "an upright scan keeps its features";
+    ASSERT_TRUE(reader.next(record));
+    EXPECT_FALSE(record.laserFeatures());
+    EXPECT_EQ(reader.upsideDownScans(), 1u);
+}

@@ -93,8 +93,10 @@ bool LaserLogReader::next(LaserLogRecord& out) {
         ++impl_->others[out.scan->sensorLabel];
     }
     out.index = impl_->count++;
-    if (makeUpright(*out.scan))
+    if (makeUpright(*out.scan)) {
         ++impl_->upsideDown;
+        out.storedFeatures.reset();  // extracted in the mirrored frame: extract them again
+    }
     // Strictly increasing acquisition times (CARMEN times are already repaired).
     double t = mrpt::Clock::toDouble(out.scan->timestamp);
     if (!(t > impl_->lastTime)) {

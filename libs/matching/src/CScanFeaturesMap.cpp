@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -277,12 +278,12 @@ double CScanFeaturesMap::internal_computeObservationLikelihood(
     const CPose2D robot(takenFrom);
     if (const auto* observed = dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs)) {
         // An upside-down laser's scan, upright (a copy: rare).
-        mrpt::obs::CObservation2DRangeScan upright;
+        std::optional<mrpt::obs::CObservation2DRangeScan> upright;
         const mrpt::obs::CObservation2DRangeScan* scan = observed;
         if (io::isUpsideDown(*observed)) {
-            upright = *observed;
-            io::makeUpright(upright);
-            scan = &upright;
+            upright.emplace(*observed);
+            io::makeUpright(*upright);
+            scan = &*upright;
         }
         const CPose2D sensor = robot + CPose2D(scan->sensorPose);
         const std::size_t beams = scan->getScanSize();

@@ -45,7 +45,8 @@
 // down (roll or pitch of 180 deg, within 5 deg) is returned as the same readings from an
 // upright laser, sweeping the other way (rightToLeft flipped, sensorPose level with the yaw
 // of the mirrored sweep), so 2D code may read its pose as CPose2D(x, y, yaw). Every reading
-// keeps its point in the robot frame.
+// keeps its point in the robot frame. Features stored with such a scan are left out (they
+// are in the mirrored frame).
 //
 // Rawlogs:
 //  - Read object by object: a clean end of file ends the stream; a truncated or corrupt

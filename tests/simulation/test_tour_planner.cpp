@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 #include <mrpt/math/wrap2pi.h>
 #include <toposlam/simulation/OfficeFloorPlan.h>
+#include <toposlam/simulation/SimulatorConfig.h>
 #include <toposlam/simulation/TourOrder.h>
 #include <toposlam/simulation/TourPlanner.h>
 
@@ -87,6 +88,37 @@ TEST(TourPlanner, LookingIntoUnseenAreasLeavesLessUnseen) {
     }
     EXPECT_EQ(looking.visitOrder.size(), looking.areas.size()) << "every room is still visited";
     EXPECT_GT(looking.length, officeTour().length);
+}
+
+TEST(TourPlanner, AShortRangeLaserIsTakenWhereItSeesWhatTheTourCountsAsSeen) {
+    // A 2.5 m laser (a TurtleBot's reaches 3.5 m) sees nothing 5 m away: a tour that counted
+    // such cells as seen (view_range 5) leaves them unmapped; the planned tour stops nearer.
+    SimulatorConfig config;
+    config.tour.coverage.lookIntoUnseen = true;
+    EXPECT_EQ(plannedTour(config).coverage.viewRange, config.tour.coverage.viewRange)
+        << "a 20 m laser keeps the view range";
+    config.log.laser.maxRange = 2.5;
+    ASSERT_EQ(plannedTour(config).coverage.viewRange, 2.5);
+
+    const auto unseenWithinRange = [&](const Tour& tour) {
+        const ClearanceMap& map = officeMap();
+        const GridGeometry& g = map.geometry();
+        const auto seen = cellsInView(map, tour.poses, config.log.laser.maxRange);
+        double free = 0, unseen = 0;
+        for (int cy = 0; cy < g.sizeY; ++cy) {
+            for (int cx = 0; cx < g.sizeX; ++cx) {
+                if (map.isFree(cx, cy)) {
+                    ++free;
+                    unseen += seen[g.index(cx, cy)] ? 0 : 1;
+                }
+            }
+        }
+        return unseen / free;
+    };
+    const double asConfigured = unseenWithinRange(planTour(officeMap(), config.tour));
+    const double planned = unseenWithinRange(planTour(officeMap(), plannedTour(config)));
+    // Measured: 12.5 % of the free cells out of the laser's sight as configured, 4.6 % planned.
+    EXPECT_LT(planned, 0.5 * asConfigured) << planned << " against " << asConfigured;
 }
 
 TEST(TourPlanner, DrivesWithinTheMotionLimitsAndRecordsByDistanceAndAngle) {

@@ -191,7 +191,8 @@ rooms::RoomBenchmarkCase endToEndCase(const PlanToTour& plan, const EndToEndOpti
     io::Trajectory2D poses = options.poses;
     run.tourLength = 0;
     if (poses.empty()) {
-        const simulation::Tour tour = simulation::planTour(clearance, options.simulator.tour);
+        const simulation::Tour tour =
+            simulation::planTour(clearance, simulation::plannedTour(options.simulator));
         poses = tour.poses;
         run.tourLength = tour.length;
     } else {
@@ -230,8 +231,8 @@ rooms::RoomBenchmarkCase endToEndCase(const PlanToTour& plan, const EndToEndOpti
     c.truth = rooms::groundTruthFromLabels(plan.roomLabels);
     c.trueDoors = rooms::labelBoundaryDoors(c.truth.labels, plan.unfurnishedFree);
     c.openFloor = rooms::openFloorOfRooms(c.truth, plan.map == 255);
-    run.roomsOutOfView =
-        roomsOutOfView(c.truth, clearance, poses, options.simulator.tour.coverage.viewRange);
+    run.roomsOutOfView = roomsOutOfView(
+        c.truth, clearance, poses, simulation::plannedTour(options.simulator).coverage.viewRange);
     return c;
 }
 

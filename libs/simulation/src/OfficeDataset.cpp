@@ -50,7 +50,7 @@ OfficeDataset writeOfficeDataset(const std::string& dir, const SimulatorConfig& 
 
     // The tour and its log.
     const ClearanceMap clearance(grid, config.log.world.thresholds);
-    const Tour tour = planTour(clearance, config.tour);
+    const Tour tour = planTour(clearance, plannedTour(config));
     simulateLogToFiles(grid, tour.poses, config.log, file("office.rawlog"), config.format,
                        file("office_gt.txt"), progress);
     std::vector<mrpt::math::TPoint2D> centres;

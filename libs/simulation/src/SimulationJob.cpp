@@ -25,7 +25,7 @@ namespace {
 void planTourInto(SimulationPlan& plan, const ClearanceMap& clearance,
                   const SimulatorConfig& config, const std::string& mapPath) {
     try {
-        plan.tour = planTour(clearance, config.tour);
+        plan.tour = planTour(clearance, plannedTour(config));
     } catch (const std::invalid_argument& e) {
         throw io::InputError(mapPath, std::string("cannot plan a tour: ") + e.what());
     }

@@ -24,6 +24,12 @@ LogSimulationOptions SimulatorConfig::defaultLog() {
     return o;
 }
 
+TourOptions plannedTour(const SimulatorConfig& config) {
+    TourOptions tour = config.tour;
+    tour.coverage.viewRange = std::min(tour.coverage.viewRange, config.log.laser.maxRange);
+    return tour;
+}
+
 io::RawlogFormat parseRawlogFormat(const std::string& name) {
     std::string n = name;
     std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return std::tolower(c); });

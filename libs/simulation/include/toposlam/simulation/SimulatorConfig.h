@@ -42,6 +42,11 @@ void loadSimulatorConfig(const mrpt::config::CConfigFileBase& ini, SimulatorConf
 /// the section and key.
 void validate(const SimulatorConfig& config);
 
+/// The tour of `config` as it is planned: [Tour] with view_range cut to the laser's max_range
+/// (a 3.5 m laser does not see what lies 5 m away, and a tour that counted it seen would
+/// leave it unmapped).
+TourOptions plannedTour(const SimulatorConfig& config);
+
 /// "sf" / "obs" (also the enum names' spellings "sensoryframes" / "observations").
 io::RawlogFormat parseRawlogFormat(const std::string& name);
 

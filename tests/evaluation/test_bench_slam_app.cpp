@@ -60,14 +60,30 @@ void expectScored(const nlohmann::json& run, std::size_t relations, double maxAt
 TEST(BenchSlamApp, HelpExplainsEveryOption) {
     const auto r = runApp("toposlam-bench-slam", "--help");
     EXPECT_EQ(r.exitCode, 0) << r.output;
-    for (const char* option : {"--data",    "--logs",           "--engines",
-                               "--config",  "--icp-slam",       "--icp-slam-config",
-                               "--keep",    "--images",         "--json",
-                               "--timeout", "Kuemmerle",        "icp-slam",
-                               "office",    "--sim-plans",      "--sim-robots",
-                               "--sim-dir", "--sim-config",     "lms1xx",
-                               "lms200",    "urg-04lx",         "poor-odometry",
-                               "people",    "stalling-odometry"}) {
+    for (const char* option : {"--data",
+                               "--logs",
+                               "--engines",
+                               "--config",
+                               "--icp-slam",
+                               "--icp-slam-config",
+                               "--keep",
+                               "--images",
+                               "--json",
+                               "--timeout",
+                               "Kuemmerle",
+                               "icp-slam",
+                               "office",
+                               "--sim-plans",
+                               "--sim-robots",
+                               "--sim-dir",
+                               "--sim-config",
+                               "lms1xx",
+                               "lms200",
+                               "urg-04lx",
+                               "poor-odometry",
+                               "people",
+                               "stalling-odometry",
+                               "lds-01"}) {
         EXPECT_TRUE(contains(r.output, option)) << option;
     }
 }

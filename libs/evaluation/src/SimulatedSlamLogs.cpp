@@ -26,6 +26,11 @@ const std::vector<SimulatedRobot>& simulatedRobots() {
          "682 beams over 240 deg, 5.6 m, range noise 2 cm (a Hokuyo URG-04LX)",
          {"--beams", "682", "--fov-deg", "240", "--max-range", "5.6", "--range-noise", "0.02"},
          {}},
+        {"lds-01",
+         "360 beams all round, 3.5 m, range noise 3 cm (a TurtleBot3's LDS-01: short range, "
+         "much noise)",
+         {"--beams", "360", "--fov-deg", "359", "--max-range", "3.5", "--range-noise", "0.03"},
+         {{"Laser", "min_range", "0.12"}}},
         {"poor-odometry",
          "lms1xx laser; odometry 5 % long, turning 6 % too far, curving 1 deg per m, three "
          "times the random error",

@@ -28,7 +28,8 @@ struct SimulatedRobot {
     std::vector<IniSetting> settings;
 };
 
-/// Every robot, in report order: lms1xx, lms200, urg-04lx, poor-odometry, people.
+/// Every robot, in report order: lms1xx, lms200, urg-04lx, lds-01, poor-odometry, people,
+/// stalling-odometry.
 const std::vector<SimulatedRobot>& simulatedRobots();
 
 /// The robot of that name, or nullptr.

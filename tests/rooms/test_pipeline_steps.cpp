@@ -9,6 +9,7 @@
 #include <toposlam/rooms/ProbabilisticHough.h>
 #include <toposlam/rooms/RegionBoundary.h>
 #include <toposlam/rooms/RegionPartition.h>
+#include <toposlam/rooms/RoomSegmenter.h>
 #include <toposlam/rooms/VirtualDoorDetector.h>
 #include <toposlam/rooms/WallThickness.h>
 
@@ -871,6 +872,35 @@ TEST(FreeSpaceBinarizer, AnUnknownSpeckMadeFreeIsNoLongerUnknown) {
     EXPECT_EQ(space.unknown.at<std::uint8_t>(10, 15), 0);
     EXPECT_NE(space.unknown.at<std::uint8_t>(25, 35), 0);
     EXPECT_EQ(cv::countNonZero(space.unknown & space.free), 0);
+}
+
+TEST(FreeSpaceBinarizer, AnUnseenHoleInTheFloorIsFreeAShadowBehindATableIsNot) {
+    // A hall of a SLAM grid made with a short laser: free where the laser reached, unknown
+    // outside; in the middle an island of unknown cells no ray reached and nothing bounds, and
+    // a table (occupied) with the unknown shadow it casts.
+    cv::Mat img(40, 60, CV_8U, cv::Scalar(128));
+    img(cv::Rect(2, 2, 50, 30)) = 0;     // walls
+    img(cv::Rect(3, 3, 48, 28)) = 255;   // floor
+    img(cv::Rect(10, 10, 8, 10)) = 128;  // the unseen hole: 80 cells
+    img(cv::Rect(35, 10, 3, 3)) = 0;     // the table
+    img(cv::Rect(38, 10, 5, 3)) = 128;   // its shadow
+    const auto grid = toposlam::rooms::test::gridOf(img);
+
+    const FreeSpace space = FreeSpaceBinarizer().binarize(grid);
+    EXPECT_EQ(space.unseenHolesFreed, 1u);
+    EXPECT_EQ(space.unseenHoleCells, 80u);
+    EXPECT_EQ(cv::countNonZero(space.free(cv::Rect(10, 10, 8, 10))), 80) << "the hole is floor";
+    EXPECT_EQ(cv::countNonZero(space.unknown(cv::Rect(10, 10, 8, 10))), 0);
+    EXPECT_EQ(cv::countNonZero(space.free(cv::Rect(35, 10, 8, 3))), 0) << "table and shadow stay";
+    EXPECT_EQ(cv::countNonZero(space.unknown(cv::Rect(38, 10, 5, 3))), 15);
+    EXPECT_NE(space.unknown.at<std::uint8_t>(36, 55), 0) << "the unknown outside stays";
+
+    FreeSpaceBinarizer::Options paper;
+    paper.freeUnseenHoles = false;
+    const FreeSpace kept = FreeSpaceBinarizer(paper).binarize(grid);
+    EXPECT_EQ(kept.unseenHolesFreed, 0u);
+    EXPECT_EQ(cv::countNonZero(kept.free(cv::Rect(10, 10, 8, 10))), 0);
+    EXPECT_FALSE(RoomSegmenter::Options::paperExact().freeSpace.freeUnseenHoles);
 }
 
 TEST(FreeSpaceBinarizer, ObstaclesAreTheNonFreeComponentsOfTheWholeMap) {

@@ -70,6 +70,27 @@ void FreeSpaceBinarizer::removeSpecksAndLabelObstacles(cv::Mat& all, const cv::R
             ++out.specksRemoved;
         }
     }
+    out.unseenHolesFreed = out.unseenHoleCells = 0;
+    if (options_.freeUnseenHoles && !out.unknown.empty()) {
+        // An island is an unseen hole when every cell of it is unknown.
+        std::vector<std::uint8_t> allUnknown(static_cast<std::size_t>(n), 1);
+        for (const ConnectedRuns::Run& run : runs_.runs()) {
+            const auto label = static_cast<std::size_t>(run.label);
+            if (out.obstacleOnBorder[label] || speck[label] || !allUnknown[label])
+                continue;
+            const std::uint8_t* cells = out.unknown.ptr<std::uint8_t>(box.y + run.row) + box.x;
+            allUnknown[label] = std::all_of(cells + run.begin, cells + run.end,
+                                            [](std::uint8_t u) { return u != 0; });
+        }
+        for (int i = 1; i < n; ++i) {
+            const auto label = static_cast<std::size_t>(i);
+            if (!out.obstacleOnBorder[label] && !speck[label] && allUnknown[label]) {
+                speck[label] = 1;
+                ++out.unseenHolesFreed;
+                out.unseenHoleCells += static_cast<std::size_t>(area[label]);
+            }
+        }
+    }
     out.islandRuns.clear();
     for (const ConnectedRuns::Run& run : runs_.runs()) {
         const auto label = static_cast<std::size_t>(run.label);

@@ -43,6 +43,8 @@ FreeSpace cropToBounds(const FreeSpace& space, cv::Rect& roi) {
     clipRuns(space.islandRuns, roi, out.islandRuns);
     clipRuns(space.otherFreeRuns, roi, out.otherFreeRuns);
     out.specksRemoved = space.specksRemoved;
+    out.unseenHolesFreed = space.unseenHolesFreed;
+    out.unseenHoleCells = space.unseenHoleCells;
     out.bounds = space.bounds - roi.tl();
     out.freeCells = space.freeCells;
     out.frame = space.frame;

@@ -14,6 +14,7 @@ RoomSegmenter::Options RoomSegmenter::Options::paperExact() {
 
 void RoomSegmenter::Options::applyPaperPreset() {
     freeSpace.maxSpeckArea = 0;
+    freeSpace.freeUnseenHoles = false;
     freeSpace.occupiedThreshold = 1;  // every non-free cell is a wall
     door.localDirection = false;
     filters.keepNarrowestOfGroup = false;
@@ -68,6 +69,9 @@ void RoomSegmenter::Options::declare(config::OptionsSchema& s) {
     s.real("max_speck_area", freeSpace.maxSpeckArea, "m^2",
            "non-free specks up to this area inside free space count as free (0: paper)")
         .atLeast(0);
+    s.flag("free_unseen_holes", freeSpace.freeUnseenHoles,
+           "islands of unknown cells with no occupied cell inside free space are free: floor "
+           "the laser did not reach (deviation)");
     s.real("occupied_threshold", freeSpace.occupiedThreshold, "",
            "a non-free cell is occupied when p(free) < this, else unknown (deviation)")
         .atLeast(0)

@@ -17,6 +17,12 @@
 // unseen rays, looks like a wall. FreeSpace::noWall marks the unknown cells away from every
 // occupied one: the door tests find no wall there (holes where the laser grazed a wall, next
 // to its occupied cells, stay wall). Drawn maps without unknown cells are not affected.
+//
+// Deviation (Options::freeUnseenHoles, SLAM grids): an island of unknown cells with no
+// occupied cell, inside the free space, is floor the laser did not reach (the middle of a hall
+// wider than twice its range): free. Nothing the laser hit bounds it, so it cannot part rooms,
+// and left as background it narrows the floor around it into false constrictions. Shadows
+// behind furniture touch the furniture's occupied cells and stay.
 #include <toposlam/rooms/ConnectedRuns.h>
 #include <toposlam/rooms/GridImageFrame.h>
 
@@ -56,6 +62,8 @@ struct FreeSpace {
     std::vector<ConnectedRuns::Run> islandRuns;
     /// Specks made free (see maxSpeckArea).
     std::size_t specksRemoved = 0;
+    /// Islands of unknown cells made free (see freeUnseenHoles), and their cells.
+    std::size_t unseenHolesFreed = 0, unseenHoleCells = 0;
     /// CV_8U, 255 = where no wall can be: the cells of `free` and the unknown cells (p(free)
     /// from occupiedThreshold to freeThreshold) farther than wallHoleReach from every occupied
     /// cell (shadows behind furniture, unexplored space). Empty when the map has no such
@@ -82,6 +90,10 @@ class FreeSpaceBinarizer {
         /// Isolated non-free specks of at most this area (m^2) inside the free space count as
         /// free; 0 keeps every speck (the paper). 0.01 m^2 is four 5 cm cells.
         double maxSpeckArea = 0.01;
+        /// Islands of unknown cells (p(free) from occupiedThreshold to freeThreshold) with no
+        /// occupied cell, inside the free space, count as free: floor the laser did not reach.
+        /// Off: they are background (the paper).
+        bool freeUnseenHoles = true;
         /// A non-free cell is occupied (the laser hit something there) when its p(free) is
         /// below this, else unknown (never or hardly ever seen: MRPT's 0.5). At or above
         /// freeThreshold every non-free cell counts as occupied (the paper, FreeSpace::noWall

@@ -32,6 +32,14 @@ std::string officeLog() {
     return toposlam::test::shareDir() + "/office/office.rawlog";
 }
 
+// Labels and stamps `features` as toposlam-annotate-features does for `scan`'s features.
+void stampAsFeaturesOf(CObservationLaserFeatures& features,
+                       const mrpt::obs::CObservation2DRangeScan& scan) {
+    features.timestamp = scan.timestamp;
+    features.sensorLabel = scan.sensorLabel + "_FEATURES";
+    features.scanLabel = scan.sensorLabel;
+}
+
 // The first kScans scans of the simulated office log, annotated with corners and their
 // bearing-range observations.
 std::string annotate(const toposlam::test::TempDir& dir) {
@@ -107,9 +115,7 @@ TEST(AnnotatedLogs, SensoryFramesWithFeaturesAndForeignObjects) {
             mrpt::obs::CActionCollection actions;
             actions.insert(move);
             auto features = std::make_shared<CObservationLaserFeatures>();
-            features->timestamp = records[i].scan->timestamp;
-            features->sensorLabel = records[i].scan->sensorLabel + "_FEATURES";
-            features->scanLabel = records[i].scan->sensorLabel;
+            stampAsFeaturesOf(*features, *records[i].scan);
             mrpt::obs::CSensoryFrame frame;
             frame.insert(records[i].scan);
             frame.insert(features);
@@ -145,9 +151,7 @@ TEST(AnnotatedLogs, FeaturesStoredWithAnUpsideDownScanAreLeftOut) {
                 scan->sensorPose = mrpt::poses::CPose3D(0, 0, 0.3, 0, 0, M_PI);
             }
             CObservationLaserFeatures features;
-            features.timestamp = scan->timestamp;
-            features.sensorLabel = scan->sensorLabel + "_FEATURES";
-            features.scanLabel = scan->sensorLabel;
+            stampAsFeaturesOf(features, *scan);
             out << *scan << features;
         }
     }

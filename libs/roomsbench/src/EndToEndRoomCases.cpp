@@ -188,11 +188,11 @@ rooms::RoomBenchmarkCase endToEndCase(const PlanToTour& plan, const EndToEndOpti
     namespace fs = std::filesystem;
     const auto grid = gridOfMapImage(plan.map, plan.resolution);
     const simulation::ClearanceMap clearance(grid, options.simulator.log.world.thresholds);
+    const simulation::TourOptions tourOptions = simulation::plannedTour(options.simulator);
     io::Trajectory2D poses = options.poses;
     run.tourLength = 0;
     if (poses.empty()) {
-        const simulation::Tour tour =
-            simulation::planTour(clearance, simulation::plannedTour(options.simulator));
+        const simulation::Tour tour = simulation::planTour(clearance, tourOptions);
         poses = tour.poses;
         run.tourLength = tour.length;
     } else {
@@ -231,8 +231,7 @@ rooms::RoomBenchmarkCase endToEndCase(const PlanToTour& plan, const EndToEndOpti
     c.truth = rooms::groundTruthFromLabels(plan.roomLabels);
     c.trueDoors = rooms::labelBoundaryDoors(c.truth.labels, plan.unfurnishedFree);
     c.openFloor = rooms::openFloorOfRooms(c.truth, plan.map == 255);
-    run.roomsOutOfView = roomsOutOfView(
-        c.truth, clearance, poses, simulation::plannedTour(options.simulator).coverage.viewRange);
+    run.roomsOutOfView = roomsOutOfView(c.truth, clearance, poses, tourOptions.coverage.viewRange);
     return c;
 }
 

@@ -9,6 +9,7 @@
 #include <toposlam/rooms/ProbabilisticHough.h>
 #include <toposlam/rooms/RegionBoundary.h>
 #include <toposlam/rooms/RegionPartition.h>
+#include <toposlam/rooms/RoomSegmentationJob.h>
 #include <toposlam/rooms/RoomSegmenter.h>
 #include <toposlam/rooms/VirtualDoorDetector.h>
 #include <toposlam/rooms/WallThickness.h>
@@ -894,6 +895,14 @@ TEST(FreeSpaceBinarizer, AnUnseenHoleInTheFloorIsFreeAShadowBehindATableIsNot) {
     EXPECT_EQ(cv::countNonZero(space.free(cv::Rect(35, 10, 8, 3))), 0) << "table and shadow stay";
     EXPECT_EQ(cv::countNonZero(space.unknown(cv::Rect(38, 10, 5, 3))), 15);
     EXPECT_NE(space.unknown.at<std::uint8_t>(36, 55), 0) << "the unknown outside stays";
+    // The segmenter reports it, and toposlam-rooms' summary says so.
+    const RoomSegmenter::Result result = RoomSegmenter().segment(grid);
+    EXPECT_EQ(result.unseenHolesFreed, 1u);
+    const double cell = grid.getResolution();
+    EXPECT_NEAR(result.unseenHoleArea, 80 * cell * cell, 1e-9);
+    EXPECT_NE(toposlam::rooms::describeRoomSegmentation(result, "hall")
+                  .find("unseen holes in the floor counted as floor 1 ("),
+              std::string::npos);
 
     FreeSpaceBinarizer::Options paper;
     paper.freeUnseenHoles = false;

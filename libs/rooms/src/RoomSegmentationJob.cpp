@@ -81,6 +81,13 @@ std::string describeRoomSegmentation(const RoomSegmenter::Result& result,
                   result.fromTrajectory ? "trajectory" : "medial-axis", result.candidates.size(),
                   result.milliseconds);
     text += line;
+    if (result.specksRemoved > 0 || result.unseenHolesFreed > 0) {
+        std::snprintf(line, sizeof line,
+                      "  cleaned up: specks in the free space made free %zu, unseen holes in "
+                      "the floor counted as floor %zu (%.2f m^2)\n",
+                      result.specksRemoved, result.unseenHolesFreed, result.unseenHoleArea);
+        text += line;
+    }
     for (const Room& r : m.rooms) {
         std::snprintf(line, sizeof line,
                       "  room %3d  %8.2f m^2  centroid (%.2f, %.2f)  neighbours:", r.id, r.area,

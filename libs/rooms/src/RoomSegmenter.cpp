@@ -222,6 +222,9 @@ RoomSegmenter::Result RoomSegmenter::segment(
     };
     cv::Rect roi;
     const FreeSpace space = cropToBounds(fullSpace, roi);
+    result.specksRemoved = space.specksRemoved;
+    result.unseenHolesFreed = space.unseenHolesFreed;
+    result.unseenHoleArea = static_cast<double>(space.unseenHoleCells) * space.frame.cellArea();
     const DoorFilters::Rooms rooms = findRooms(space, trajectory, result, lap);
 
     // Step 6: the rooms. Region labels become room ids in place; cut cells join a neighbour.

@@ -119,7 +119,11 @@ class RoomSegmenter {
         std::vector<VirtualDoor> wideOpenings;   ///< WideOpeningDetector's (also in afterTests)
         std::vector<VirtualDoor> afterDistance;  ///< after the distance filter
         std::size_t afterAdjacency = 0;          ///< doors left by the adjacency filter
-        double milliseconds = 0;                 ///< wall time of segment()
+        /// What the binarisation cleaned up (FreeSpace): specks made free, and islands of
+        /// unknown cells made free with their area (m^2).
+        std::size_t specksRemoved = 0, unseenHolesFreed = 0;
+        double unseenHoleArea = 0;
+        double milliseconds = 0;  ///< wall time of segment()
         /// Wall time per pipeline stage, in order (ms).
         std::vector<std::pair<std::string, double>> stageMilliseconds;
     };

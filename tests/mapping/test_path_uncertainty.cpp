@@ -54,6 +54,7 @@ void expectSame(const PathVariance& lazy, const PathVariance& full, std::size_t 
     EXPECT_EQ(lazy.reached, full.reached) << "node " << node;
     EXPECT_EQ(lazy.position, full.position) << "node " << node;  // the same sums, bit for bit
     EXPECT_EQ(lazy.heading, full.heading) << "node " << node;
+    EXPECT_EQ(lazy.swung, full.swung) << "node " << node;
 }
 
 }  // namespace
@@ -117,4 +118,55 @@ TEST(PathUncertainty, EdgesWithTinyCovariancesAddTheDriftModelsVariances) {
         EXPECT_NEAR(u.to(10).heading, 10 * b * b * step * step, 1e-15);
         EXPECT_NEAR(u.to(4).position, 4 * a * a * step * step, 1e-15);
     }
+}
+
+// Back round a U, the current keyframe is close to the first one, but the chain between them
+// went 9 m away: a heading error out there swings the current keyframe, seen from the first,
+// by its lever arm. The swung variance is the largest eigenvalue of
+//   sum over edges of (a l)^2 I + (b l)^2 w w^T,  w = the lever from where the error enters
+// to the source, turned by 90 deg,
+// which the search builds edge by edge (first-order pose compounding), and which is far more
+// than the position + heading d^2 of the two keyframes' distance d.
+TEST(PathUncertainty, AHeadingErrorFarAlongTheChainSwingsTheSourceByItsLeverArm) {
+    const double a = 0.01, b = 0.01, step = 0.3;
+    const int n = 30;  // steps out and back
+    mrpt::math::CMatrixDouble33 tiny = mrpt::math::CMatrixDouble33::Zero();
+    tiny(0, 0) = tiny(1, 1) = tiny(2, 2) = 1e-12;
+    std::vector<CPose2D> poses;
+    for (int i = 0; i <= n; ++i)
+        poses.emplace_back(step * i, 0, 0);  // out along x
+    for (int i = 1; i <= 2; ++i)
+        poses.emplace_back(step * n, step * i, M_PI / 2);  // across
+    for (int i = 1; i <= n; ++i)
+        poses.emplace_back(step * (n - i), 0.6, M_PI);  // and back
+    PoseGraph g;
+    for (const CPose2D& p : poses)
+        g.addNode(p);
+    for (std::size_t i = 1; i < poses.size(); ++i)
+        g.addEdge(i - 1, i, poses[i] - poses[i - 1], tiny, EdgeKind::Registration);
+
+    const std::size_t source = poses.size() - 1;  // (0, 0.6): 0.6 m from node 0
+    PathUncertainty u(a, b);
+    u.start(g, source);
+    const PathVariance& v = u.to(0);
+    // Searched from the source, the error of the edge between nodes k and k + 1 enters at
+    // node k.
+    double sxx = 0, syy = 0, sxy = 0;
+    for (std::size_t k = 0; k < source; ++k) {
+        const double l = (poses[k + 1] - poses[k]).norm();
+        const double q = std::max(b * b * l * l, 1e-12), p = std::max(a * a * l * l, 1e-12);
+        const double wx = poses[k].y() - poses[source].y(), wy = poses[source].x() - poses[k].x();
+        sxx += p + q * wx * wx, syy += p + q * wy * wy, sxy += q * wx * wy;
+    }
+    const double largest =
+        0.5 * (sxx + syy) + std::sqrt(0.25 * (sxx - syy) * (sxx - syy) + sxy * sxy);
+    EXPECT_NEAR(v.swung, largest, 1e-9 * largest);
+    const double d = 0.6;
+    EXPECT_GT(v.swung, 10 * v.at(d));
+    // Straight out, the old bound (all heading error at the far end) is the larger one.
+    u.start(g, n);
+    const double sumOfSquares = n * (n + 1) * (2 * n + 1) / 6.0;  // levers of 1..n steps
+    EXPECT_LT(u.to(0).swung, u.to(0).at(step * n));
+    EXPECT_NEAR(u.to(0).swung, u.to(0).position + b * b * step * step * step * step * sumOfSquares,
+                1e-12);
 }

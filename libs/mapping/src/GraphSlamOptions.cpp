@@ -206,6 +206,8 @@ void GraphSlamOptions::declareLoopClosure(config::OptionsSchema& s) {
     s.real("loop_chi2", loopChi2, "",
            "chi-square bound (3 dof) on a new loop's disagreement with the graph (16.27 = 99.9 %)")
         .above(0);
+    s.flag("loop_gate_lever_arm", loopGateLeverArm,
+           "the gate's chi-square swings each edge's heading variance by its lever arm");
     s.real("loop_withdraw_chi2", loopWithdrawChi2, "",
            "after optimisation, the worst loop whose chi-square is still above this is withdrawn")
         .above(0);

@@ -158,7 +158,8 @@ std::vector<LoopCloser::Measurement> LoopCloser::consistentGated(
         const PathVariance& v = uncertainty_.to(m.older);
         CMatrixDouble33 combined = m.covariance;
         const double d = m.pose.norm();
-        combined(0, 0) += v.at(d), combined(1, 1) += v.at(d), combined(2, 2) += v.heading;
+        const double position = options_.loopGateLeverArm ? std::max(v.at(d), v.swung) : v.at(d);
+        combined(0, 0) += position, combined(1, 1) += position, combined(2, 2) += v.heading;
         if (graph.chi2(m.older, m.current, m.pose, combined) <= options_.loopChi2) {
             out.push_back(m);
         } else {

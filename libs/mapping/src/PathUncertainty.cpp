@@ -2,6 +2,7 @@
 #include <toposlam/mapping/PathUncertainty.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <limits>
 
@@ -39,12 +40,39 @@ void PathUncertainty::start(const PoseGraph& graph, std::size_t source) {
     graph_ = &graph;
     const std::size_t n = graph.nodeCount();
     variance_.assign(n, PathVariance());
+    covariance_.assign(n, PoseCovariance());
+    source_ = source;
     cost_.assign(n, std::numeric_limits<double>::infinity());
     settled_.assign(n, 0);
     heap_.clear();
     cost_[source] = 0;
     variance_[source].reached = true;
     heap_.push_back({0.0, source});
+}
+
+void PathUncertainty::compound(std::size_t node, std::size_t next, const Step& step) {
+    // next = node (+) step: a heading error at `node` moves `next` by it times the lever
+    // perpendicular to node -> next (u); the step adds its own variances.
+    const PoseCovariance& a = covariance_[node];
+    PoseCovariance& b = covariance_[next];
+    const mrpt::poses::CPose2D& pa = graph_->pose(node);
+    const mrpt::poses::CPose2D& pb = graph_->pose(next);
+    const double ux = pa.y() - pb.y(), uy = pb.x() - pa.x();
+    b.xx = a.xx + 2 * ux * a.xh + ux * ux * a.hh + step.position;
+    b.yy = a.yy + 2 * uy * a.yh + uy * uy * a.hh + step.position;
+    b.xy = a.xy + ux * a.yh + uy * a.xh + ux * uy * a.hh;
+    b.xh = a.xh + ux * a.hh;
+    b.yh = a.yh + uy * a.hh;
+    b.hh = a.hh + step.heading;
+    // The source seen from `next`: next's heading error swings it by the lever next -> source
+    // (v); the largest eigenvalue of that 2x2 covariance.
+    const mrpt::poses::CPose2D& ps = graph_->pose(source_);
+    const double vx = pb.y() - ps.y(), vy = ps.x() - pb.x();
+    const double sxx = b.xx + 2 * vx * b.xh + vx * vx * b.hh;
+    const double syy = b.yy + 2 * vy * b.yh + vy * vy * b.hh;
+    const double sxy = b.xy + vx * b.yh + vy * b.xh + vx * vy * b.hh;
+    variance_[next].swung =
+        0.5 * (sxx + syy) + std::sqrt(0.25 * (sxx - syy) * (sxx - syy) + sxy * sxy);
 }
 
 bool PathUncertainty::settleNext() {
@@ -65,7 +93,8 @@ bool PathUncertainty::settleNext() {
             const double c = position + heading * kLeverArm * kLeverArm;
             if (c < cost_[next]) {
                 cost_[next] = c;
-                variance_[next] = {position, heading, true};
+                variance_[next] = {position, heading, 0.0, true};
+                compound(node, next, step);
                 heap_.push_back({c, next});
                 std::push_heap(heap_.begin(), heap_.end(), later);
             }

@@ -205,6 +205,13 @@ struct GraphSlamOptions : public config::Options {
     /// Chi-square (3 degrees of freedom) bound on a new loop's disagreement with the graph (the
     /// gate). 16.27 = 99.9 %.
     double loopChi2 = 16.27;
+    /// The gate's position variance is at least what each edge's heading variance, swung about
+    /// its lever arm, does to the current keyframe seen from the older one
+    /// (PathVariance::swung): a loop round a building, whose keyframes are close but whose
+    /// chain went far away. The candidates and the chains are chosen as without it. Off by
+    /// default: it closes a short laser's loops round simulated ring buildings, but lets wrong
+    /// loops in on the public logs read to 3.5 m (benchmarks.md, B3 "The gate's lever arm").
+    bool loopGateLeverArm = false;
     /// After optimisation the worst loop still above this chi-square is withdrawn. Far above
     /// the gate: scan-registration edges are overconfident (their floor is 1 cm), so a right
     /// loop that corrects a front-end error strains against them with a chi-square of 20-90

@@ -9,6 +9,11 @@
 // walk makes the gate 1.8 times as wide, and it let loops into a look-alike office, ATE 1.0 m
 // instead of under 0.1 m in GraphSlam.NoLoopIntoTheOfficeNextToOneVisitedThreeTimes.)
 // After a loop closure the chain through the loop edge is short, so the gate shrinks there.
+// Along the same chain the search also carries the full covariance (first-order pose
+// compounding), in which each edge's heading variance swings the rest of the chain about it:
+// seen from an older keyframe, the source's position then varies by what heading errors far
+// out along the chain do to it. Back round a ring, where the two keyframes are close and the
+// chain went 20 m away, that is several times position + heading d^2 (PathVariance::swung).
 // Dijkstra with a scalar cost (position variance + heading variance times a lever arm of
 // kLeverArm), no allocation after the first query. It runs lazily: to(node) carries the
 // search on only until that node is settled, and keyframes are settled in order of cost, so a
@@ -27,6 +32,9 @@ namespace toposlam::mapping {
 struct PathVariance {
     double position = 0;  ///< m^2, isotropic
     double heading = 0;   ///< rad^2
+    /// m^2: the largest variance of the source's position as seen from the node (in its frame),
+    /// each edge's heading variance taken with its lever arm to the source.
+    double swung = 0;
     bool reached = false;
     /// Position variance (m^2) of a point at distance d (m) from the source.
     double at(double d) const { return position + heading * d * d; }
@@ -58,7 +66,16 @@ class PathUncertainty {
     double driftXY_, driftPhi_;
     std::vector<Step> steps_;           // by edge index
     const PoseGraph* graph_ = nullptr;  // of the current search
+    /// Covariance of a node's pose relative to the source, world axes (m^2, m rad, rad^2).
+    struct PoseCovariance {
+        double xx = 0, xy = 0, yy = 0, xh = 0, yh = 0, hh = 0;
+    };
+    /// `next`'s covariance and swung variance, reached from the settled `node` by `step`.
+    void compound(std::size_t node, std::size_t next, const Step& step);
+
     std::vector<PathVariance> variance_;
+    std::vector<PoseCovariance> covariance_;
+    std::size_t source_ = 0;
     std::vector<double> cost_;
     std::vector<std::uint8_t> settled_;
     std::vector<std::pair<double, std::size_t>> heap_;

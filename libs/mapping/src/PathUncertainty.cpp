@@ -93,8 +93,11 @@ bool PathUncertainty::settleNext() {
             const double c = position + heading * kLeverArm * kLeverArm;
             if (c < cost_[next]) {
                 cost_[next] = c;
-                variance_[next] = {position, heading, 0.0, true};
-                compound(node, next, step);
+                PathVariance& v = variance_[next];
+                v.position = position;
+                v.heading = heading;
+                v.reached = true;
+                compound(node, next, step);  // v.swung
                 heap_.push_back({c, next});
                 std::push_heap(heap_.begin(), heap_.end(), later);
             }

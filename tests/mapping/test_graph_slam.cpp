@@ -60,6 +60,27 @@ simulation::SimulationJob simulateOfficeTourWithPeople(const std::string& dir) {
     return simulateOfficeTour(config, dir);
 }
 
+/// Generated ring building `seed` (B4-rings' ring<seed>) drawn into `dir` as ring.png and
+/// its companions, and toured by toposlam-sim with `simIni` and `moreArgs` into ring.rawlog
+/// and ring_gt.txt (the paths returned).
+struct RingTour {
+    std::string log, groundTruth;
+    test::CommandResult sim;
+};
+RingTour tourRingBuilding(const test::TempDir& dir, unsigned seed, const std::string& simIni,
+                          const std::string& moreArgs = "") {
+    simulation::FloorPlanGeneratorOptions style;
+    style.style = simulation::BuildingStyle::Ring;
+    const auto images = simulation::drawFloorPlan(simulation::generateFloorPlan(seed, style));
+    simulation::saveFloorPlanImages(images, dir.path(), "ring");
+    RingTour tour{dir.file("ring.rawlog"), dir.file("ring_gt.txt"), {}};
+    tour.sim =
+        test::runApp("toposlam-sim", "'" + dir.file("ring_furnitures.png") +
+                                         "' --drawn --tour -q -c '" + simIni + "' -o '" + tour.log +
+                                         "' --gt '" + tour.groundTruth + "'" + moreArgs);
+    return tour;
+}
+
 /// The graph SLAM configured from config_ini/toposlam-slam.ini, run over a drive.
 struct SlamRun {
     std::unique_ptr<mapping::GraphSlam> slam;
@@ -1114,17 +1135,10 @@ TEST(GraphSlam, PeopleWalkingAlongDoNotTakeBackTheRobotsStep) {
     // objects) the rest of the scan fits no better there than where ICP ended, so the answer
     // is refused and the scan keeps the odometry (matcher_foreground_check).
     const test::TempDir dir;
-    simulation::FloorPlanGeneratorOptions style;
-    style.style = simulation::BuildingStyle::Ring;
-    const auto images = simulation::drawFloorPlan(simulation::generateFloorPlan(3, style));
-    simulation::saveFloorPlanImages(images, dir.path(), "ring03");
-    const std::string log = dir.file("ring03.rawlog"), gt = dir.file("ring03_gt.txt");
-    const auto sim = test::runApp(
-        "toposlam-sim", "'" + dir.file("ring03_furnitures.png") + "' --drawn --tour -q -c '" +
-                            test::configIni("sim-office.ini") + "' -o '" + log + "' --gt '" + gt +
-                            "' --people 15 --seed 2");
-    ASSERT_EQ(sim.exitCode, 0) << sim.output;
-    const io::Trajectory2D truth = io::loadTrajectory(gt);
+    const RingTour tour =
+        tourRingBuilding(dir, 3, test::configIni("sim-office.ini"), " --people 15 --seed 2");
+    ASSERT_EQ(tour.sim.exitCode, 0) << tour.sim.output;
+    const io::Trajectory2D truth = io::loadTrajectory(tour.groundTruth);
     // Every scan's step from the scan before it (consecutive relations only).
     evaluation::GroundTruthRelationOptions stepsOnly;
     stepsOnly.baseSeparation = 0;
@@ -1134,7 +1148,7 @@ TEST(GraphSlam, PeopleWalkingAlongDoNotTakeBackTheRobotsStep) {
                            : "matcher_foreground_check = false");
         mrpt::config::CConfigFileMemory ini(test::readFile(test::configIni("toposlam-slam.ini")));
         ini.write("GraphSlam", "matcher_foreground_check", check);
-        const mapping::MappingResult result = mapping::mapLog(log, ini);
+        const mapping::MappingResult result = mapping::mapLog(tour.log, ini);
         ASSERT_EQ(result.trajectory.size(), truth.size());
         ASSERT_TRUE(result.statistics);
         const auto stepErrors = evaluation::evaluateRelativePoseError(result.trajectory, steps);
@@ -1163,10 +1177,6 @@ TEST(GraphSlam, AShortLaserRoundARingBuildingClosesTheLoopBackToTheStart) {
     // with its lever arm along the chain (loop_gate_lever_arm, off by default) lets them in:
     // 0.14 m.
     const test::TempDir dir;
-    simulation::FloorPlanGeneratorOptions style;
-    style.style = simulation::BuildingStyle::Ring;
-    const auto images = simulation::drawFloorPlan(simulation::generateFloorPlan(6, style));
-    simulation::saveFloorPlanImages(images, dir.path(), "ring06");
     std::string ini = test::readFile(test::configIni("sim-office.ini"));
     for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
              {"beams = 361", "beams = 360"},
@@ -1180,18 +1190,15 @@ TEST(GraphSlam, AShortLaserRoundARingBuildingClosesTheLoopBackToTheStart) {
     }
     const std::string simIni = dir.file("lds01.ini");
     std::ofstream(simIni) << ini;
-    const std::string log = dir.file("ring06.rawlog"), gt = dir.file("ring06_gt.txt");
-    const auto sim = test::runApp("toposlam-sim", "'" + dir.file("ring06_furnitures.png") +
-                                                      "' --drawn --tour -q -c '" + simIni +
-                                                      "' -o '" + log + "' --gt '" + gt + "'");
-    ASSERT_EQ(sim.exitCode, 0) << sim.output;
-    const io::Trajectory2D truth = io::loadTrajectory(gt);
+    const RingTour tour = tourRingBuilding(dir, 6, simIni);
+    ASSERT_EQ(tour.sim.exitCode, 0) << tour.sim.output;
+    const io::Trajectory2D truth = io::loadTrajectory(tour.groundTruth);
     for (const bool lever : {true, false}) {
         SCOPED_TRACE(lever ? "loop_gate_lever_arm = true" : "loop_gate_lever_arm = false");
         mrpt::config::CConfigFileMemory slamIni(
             test::readFile(test::configIni("toposlam-slam.ini")));
         slamIni.write("GraphSlam", "loop_gate_lever_arm", lever);
-        const mapping::MappingResult result = mapping::mapLog(log, slamIni);
+        const mapping::MappingResult result = mapping::mapLog(tour.log, slamIni);
         ASSERT_EQ(result.trajectory.size(), truth.size());
         const double ate =
             evaluation::evaluateAbsoluteTrajectoryError(result.trajectory, truth).position.rms;

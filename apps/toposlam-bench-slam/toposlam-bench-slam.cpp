@@ -187,7 +187,9 @@ Arguments::Arguments()
           cmd, {"Every log runs so, named <log>-1inN and scored on the relations "
                 "between kept scans.",
                 "Every log runs so, named <log>-beams1inN.", "Every log runs so, named <log>-toRm.",
-                "Every log runs so, named <log>-laseronly."}) {}
+                "Every log runs so, named <log>-laseronly.",
+                "Every log runs so, named <log>-mirrored and scored on the mirror image of its "
+                "relations or ground truth."}) {}
 
 // "/work/wt/../shared/data" -> "/work/shared/data": shorter names in the table.
 std::string tidy(const std::string& path) {

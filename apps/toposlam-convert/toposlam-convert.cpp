@@ -111,7 +111,9 @@ Arguments::Arguments()
       alteration(cmd, {"A relation file still matches the kept scans' stamps.",
                        "Features stored with the scans are left out.", "",
                        "Observations format: no odometry observations; sensory frames: "
-                       "empty action collections."}),
+                       "empty action collections.",
+                       "Features stored with the scans are left out. Score a trajectory of it "
+                       "with toposlam-eval-slam --mirrored-reference."}),
       resolution(
           "", "resolution",
           "Maps: cell size in m for an input image (overrides its .yaml sidecar). "

@@ -135,6 +135,11 @@ int run(int argc, char** argv) {
         "negative: behind), for relations made in another frame on the robot than the "
         "trajectories give, e.g. a laser mounted ahead of the robot's centre. Default 0",
         0.0, cli::NumberRange<double>::closed(-10, 10), "metres", cmd);
+    TCLAP::SwitchArg mirroredReference(
+        "", "mirrored-reference",
+        "The trajectories are of a log's mirror image (toposlam-convert --mirror): score them "
+        "against the mirror image of the relations or ground truth given",
+        cmd);
     cli::NumberArg<int> worst(
         "", "worst",
         "After the tables, list each method's N relations with the largest translational error: "
@@ -179,6 +184,7 @@ int run(int argc, char** argv) {
     request.stampTolerance = tolerance.getValue();
     request.frameOffset = frameOffset.getValue();
     request.mountingLog = mountingFrom.getValue();
+    request.mirrorReference = mirroredReference.getValue();
     request.worstRelations = static_cast<std::size_t>(worst.getValue());
     request.rawlog = rawlog.getValue();
     request.scanStamps = scanStamps.getValue();

@@ -60,30 +60,12 @@ void expectScored(const nlohmann::json& run, std::size_t relations, double maxAt
 TEST(BenchSlamApp, HelpExplainsEveryOption) {
     const auto r = runApp("toposlam-bench-slam", "--help");
     EXPECT_EQ(r.exitCode, 0) << r.output;
-    for (const char* option : {"--data",
-                               "--logs",
-                               "--engines",
-                               "--config",
-                               "--icp-slam",
-                               "--icp-slam-config",
-                               "--keep",
-                               "--images",
-                               "--json",
-                               "--timeout",
-                               "Kuemmerle",
-                               "icp-slam",
-                               "office",
-                               "--sim-plans",
-                               "--sim-robots",
-                               "--sim-dir",
-                               "--sim-config",
-                               "lms1xx",
-                               "lms200",
-                               "urg-04lx",
-                               "poor-odometry",
-                               "people",
-                               "stalling-odometry",
-                               "lds-01"}) {
+    for (const char* option :
+         {"--data",   "--logs",   "--engines",   "--config",      "--icp-slam", "--icp-slam-config",
+          "--keep",   "--mirror", "--images",    "--json",        "--timeout",  "Kuemmerle",
+          "icp-slam", "office",   "--sim-plans", "--sim-robots",  "--sim-dir",  "--sim-config",
+          "lms1xx",   "lms200",   "urg-04lx",    "poor-odometry", "people",     "stalling-odometry",
+          "lds-01"}) {
         EXPECT_TRUE(contains(r.output, option)) << option;
     }
 }
@@ -156,6 +138,25 @@ TEST(BenchSlamApp, KeepEveryRunsTheLogsWithFewerScans) {
     EXPECT_LT(matched, graph["accuracy"]["relations_total"].get<std::size_t>());
     EXPECT_LT(graph["accuracy"]["translation_m"]["mean"].get<double>(), 0.05);
     EXPECT_LT(graph["accuracy"]["ate"]["position_m"]["rms"].get<double>(), 0.1);
+}
+
+TEST(BenchSlamApp, MirrorMapsTheMirrorImageScoredOnTheMirroredGroundTruth) {
+    // The office toured in its mirror image: mapped as well as the office itself (the same
+    // bound as above), which it could not be if the ground truth were not mirrored with it (no
+    // rigid motion turns a mirror image into the original: metres of ATE).
+    TempDir dir;
+    const std::string json = dir.file("b3.json");
+    const auto r =
+        runApp("toposlam-bench-slam", "--logs office --engines graph --mirror --json " + json);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(contains(r.output, "| office-mirrored | graph")) << r.output;
+    const nlohmann::json j = readJson(json);
+    ASSERT_EQ(j["logs"].size(), 1u);
+    const nlohmann::json& office = j["logs"][0];
+    EXPECT_EQ(office["name"], "office-mirrored");
+    EXPECT_EQ(office["scans"], 368);
+    EXPECT_EQ(office["reference"]["kind"], "ground_truth");
+    expectScored(office["runs"][0], office["reference"]["relations"], 0.1);
 }
 
 TEST(BenchSlamApp, KeepEveryOnABadLogFailsItsRowNamingTheProblem) {

@@ -1,5 +1,6 @@
 // End-to-end tests of the toposlam-eval-slam app on small files made here.
 #include <gtest/gtest.h>
+#include <mrpt/poses/CPose2D.h>
 
 #include <toposlam/io/JsonFile.h>
 #include <toposlam/io/LaserLogReader.h>
@@ -48,7 +49,7 @@ TEST(EvalSlamApp, HelpExplainsEveryOption) {
     for (const char* option : {"--relations", "--ground-truth", "--trajectory", "--icp-slam-path",
                                "--rawlog", "--scan-stamps", "--json", "--name", "--gt-separation",
                                "--stamp-tolerance", "--write-relations", "--plot", "--frame-offset",
-                               "--worst", "--mounting-from", "Kuemmerle"}) {
+                               "--worst", "--mounting-from", "--mirrored-reference", "Kuemmerle"}) {
         EXPECT_TRUE(contains(r.output, option)) << option;
     }
 }
@@ -189,6 +190,61 @@ TEST(EvalSlamApp, GroundTruthModeAddsAteAndWritesTheRelations) {
         ++lines;
     EXPECT_EQ(lines, 53u);
     EXPECT_EQ(readFile(png).substr(1, 3), "PNG") << "the plot is a PNG file";
+}
+
+TEST(EvalSlamApp, MirroredReferenceScoresATrajectoryOfTheLogsMirrorImage) {
+    Fixture f;
+    // The truth turns left along a circle of 5 m; the estimate is its mirror image, as SLAM on
+    // the log's mirror image (toposlam-convert --mirror) would give it if it were exact.
+    std::string truth, estimate, relations;
+    const auto pose = [](int i) {
+        const double a = 0.1 * i;
+        return mrpt::poses::CPose2D(5 * std::sin(a), 5 * (1 - std::cos(a)), a);
+    };
+    for (int i = 0; i <= 20; ++i) {
+        const auto p = pose(i);
+        const std::string stamp = std::to_string(100 + i);
+        truth += stamp + " " + std::to_string(p.x()) + " " + std::to_string(p.y()) + " " +
+                 std::to_string(p.phi()) + "\n";
+        estimate += stamp + " " + std::to_string(p.x()) + " " + std::to_string(-p.y()) + " " +
+                    std::to_string(-p.phi()) + "\n";
+        if (i > 0 && i % 5 == 0) {
+            const auto m = pose(i) - pose(i - 5);
+            relations += std::to_string(95 + i) + " " + stamp + " " + std::to_string(m.x()) + " " +
+                         std::to_string(m.y()) + " 0 0 0 " + std::to_string(m.phi()) + "\n";
+        }
+    }
+    const std::string gt = write(f.dir, "gt.txt", truth);
+    const std::string est = write(f.dir, "est.txt", estimate);
+    const std::string rel = write(f.dir, "arc.relations", relations);
+
+    const auto mirrored =
+        runApp("toposlam-eval-slam",
+               est + " --ground-truth " + gt + " --mirrored-reference --json " + f.json);
+    ASSERT_EQ(mirrored.exitCode, 0) << mirrored.output;
+    EXPECT_TRUE(contains(mirrored.output, "(mirrored, ground-truth trajectory, 21 poses"))
+        << mirrored.output;
+    const auto json = toposlam::io::loadJsonFile(f.json);
+    EXPECT_EQ(json.at("reference").at("mirrored"), true);
+    const auto& method = json.at("methods").at(0);
+    EXPECT_LT(method.at("translation_m").at("max").get<double>(), 1e-5);
+    EXPECT_LT(method.at("ate").at("position_m").at("rms").get<double>(), 1e-5);
+
+    // Against the reference as it is, the mirror image turns the wrong way.
+    const auto plain =
+        runApp("toposlam-eval-slam", est + " --ground-truth " + gt + " --json " + f.json);
+    ASSERT_EQ(plain.exitCode, 0) << plain.output;
+    const auto plainJson = toposlam::io::loadJsonFile(f.json);
+    EXPECT_EQ(plainJson.at("reference").at("mirrored"), false);
+    EXPECT_GT(plainJson.at("methods").at(0).at("ate").at("position_m").at("rms").get<double>(),
+              0.5);
+
+    // A relation file is mirrored alike: 4 relations of 0.5 rad turns, scored exactly.
+    const auto onRelations =
+        runApp("toposlam-eval-slam", est + " --relations " + rel + " --mirrored-reference");
+    ASSERT_EQ(onRelations.exitCode, 0) << onRelations.output;
+    EXPECT_TRUE(contains(onRelations.output, "| est | 4 / 4 | 0.0000 ± 0.0000 | 0.000 ± 0.000 |"))
+        << onRelations.output;
 }
 
 TEST(EvalSlamApp, BadInputExitsNonZeroAndWritesNoJson) {

@@ -193,6 +193,49 @@ TEST(ToposlamConvert, ClipRangeIsALaserThatSeesLessFar) {
     EXPECT_EQ(valid, 99u);  // 2.00 .. 2.99 m but the 35 m reading among them
 }
 
+TEST(ToposlamConvert, MirrorIsTheLogsMirrorImage) {
+    // A robot turning left along an arc: in the mirror image it turns right, every scan reversed.
+    std::ostringstream log;
+    log << "PARAM robot_front_laser_max 30.0 nohost 0\n";
+    for (int i = 0; i < 4; ++i) {
+        const double x = 0.1 * i, y = 0.02 * i * i, yaw = 0.1 * i, stamp = 5.0 + 0.1 * i;
+        log << "FLASER 181";
+        for (int b = 0; b < 181; ++b)
+            log << ' ' << 2.0 + 0.01 * b + 0.1 * i;
+        log << ' ' << x << ' ' << y << ' ' << yaw << ' ' << x << ' ' << y << ' ' << yaw << ' '
+            << stamp << " nohost " << stamp << "\n";
+    }
+    TempDir dir;
+    writeText(dir.file("log.clf"), log.str());
+    const std::string out = dir.file("mirrored.rawlog"), odometry = dir.file("odo.txt");
+    const auto r = runApp("toposlam-convert", dir.file("log.clf") + " -o " + out +
+                                                  " --mirror --odometry-trajectory " + odometry);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("mirrored (left and right swapped)"), std::string::npos) << r.output;
+    toposlam::io::LaserLogReader original(dir.file("log.clf")), mirrored(out);
+    toposlam::io::LaserLogRecord a, b;
+    std::size_t scans = 0;
+    while (original.next(a)) {
+        ASSERT_TRUE(mirrored.next(b));
+        ++scans;
+        EXPECT_EQ(b.fileStamp, a.fileStamp);
+        EXPECT_NEAR(b.odometry.x(), a.odometry.x(), 1e-9);
+        EXPECT_NEAR(b.odometry.y(), -a.odometry.y(), 1e-9);
+        EXPECT_NEAR(b.odometry.phi(), -a.odometry.phi(), 1e-9);
+        EXPECT_NEAR(b.scan->sensorPose.yaw(), -a.scan->sensorPose.yaw(), 1e-9);
+        const std::size_t n = a.scan->getScanSize();
+        ASSERT_EQ(b.scan->getScanSize(), n);
+        for (std::size_t i = 0; i < n; ++i)
+            EXPECT_EQ(b.scan->getScanRange(i), a.scan->getScanRange(n - 1 - i)) << i;
+    }
+    EXPECT_EQ(scans, 4u);
+    EXPECT_FALSE(mirrored.next(b));
+    const auto t = toposlam::io::loadTrajectory(odometry);
+    ASSERT_EQ(t.size(), 4u);
+    EXPECT_NEAR(t[3].pose.y, -0.18, 1e-9);
+    EXPECT_NEAR(t[3].pose.phi, -0.3, 1e-9);
+}
+
 TEST(ToposlamConvert, NoOdometryIsALaserOnlyLogInBothFormats) {
     TempDir dir;
     writeText(dir.file("log.clf"), carmenLog(4));

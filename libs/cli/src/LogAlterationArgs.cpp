@@ -34,7 +34,14 @@ LogAlterationArgs::LogAlterationArgs(TCLAP::CmdLine& cmd, const Notes& notes)
                   withNote("Leave the odometry out: the log as a robot without wheel odometry "
                            "would have recorded it (a laser-only log).",
                            notes.noOdometry, ""),
-                  cmd) {}
+                  cmd),
+      mirror_("", "mirror",
+              withNote("The log's mirror image: every scan and the odometry with left and right "
+                       "swapped, as the robot would have recorded them in the mirror image of its "
+                       "building. Equally hard to map; a method that scores differently on it "
+                       "depends on which way the robot turns.",
+                       notes.mirror, ""),
+              cmd) {}
 
 io::LogAlteration LogAlterationArgs::alteration() const {
     io::LogAlteration a;
@@ -42,6 +49,7 @@ io::LogAlteration LogAlterationArgs::alteration() const {
     a.keepBeamEvery = keepBeamEvery_.getValue();
     a.clipRange = clipRange_.getValue();
     a.dropOdometry = noOdometry_.getValue();
+    a.mirror = mirror_.getValue();
     return a;
 }
 
@@ -50,7 +58,8 @@ std::vector<std::string> LogAlterationArgs::given() const {
     const std::pair<bool, const char*> options[] = {{keepEvery_.isSet(), "--keep-every"},
                                                     {keepBeamEvery_.isSet(), "--keep-beam-every"},
                                                     {clipRange_.isSet(), "--clip-range"},
-                                                    {noOdometry_.isSet(), "--no-odometry"}};
+                                                    {noOdometry_.isSet(), "--no-odometry"},
+                                                    {mirror_.isSet(), "--mirror"}};
     for (const auto& [set, name] : options) {
         if (set)
             names.emplace_back(name);

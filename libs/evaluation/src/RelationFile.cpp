@@ -1,6 +1,7 @@
 #include <toposlam/evaluation/RelationFile.h>
 #include <toposlam/io/AtomicFile.h>
 #include <toposlam/io/InputError.h>
+#include <toposlam/io/MirrorImage.h>
 
 #include <algorithm>
 #include <array>
@@ -82,6 +83,13 @@ std::size_t countRepeatedRelations(const PoseRelations& relations) {
         keys.push_back({r.stamp1, r.stamp2, r.motion.x, r.motion.y, r.motion.phi});
     std::sort(keys.begin(), keys.end());
     return static_cast<std::size_t>(keys.end() - std::unique(keys.begin(), keys.end()));
+}
+
+PoseRelations mirroredRelations(const PoseRelations& relations) {
+    PoseRelations out = relations;
+    for (PoseRelation& r : out)
+        r.motion = io::mirroredPose(r.motion);
+    return out;
 }
 
 void saveRelations(const PoseRelations& relations, const std::string& path) {

@@ -1,10 +1,12 @@
 #include <toposlam/evaluation/GroundTruthRelations.h>
 #include <toposlam/evaluation/LogOdometry.h>
 #include <toposlam/evaluation/MapComparisonImage.h>
+#include <toposlam/evaluation/RelationFile.h>
 #include <toposlam/evaluation/SlamBenchmark.h>
 #include <toposlam/evaluation/TrajectoryPlot.h>
 #include <toposlam/io/InputError.h>
 #include <toposlam/io/LogConversion.h>
+#include <toposlam/io/MirrorImage.h>
 
 #include <stdlib.h>
 
@@ -216,12 +218,23 @@ SlamBenchmarkLog altered(const SlamBenchmarkLog& log, const io::LogAlteration& a
     }
     if (alteration.dropOdometry)
         out.name += "-laseronly";
+    if (alteration.mirror)
+        out.name += "-mirrored";
     fs::create_directories(directory);
     out.logFile = (directory / (out.name + ".rawlog")).string();
     io::LogConversionOptions conversion;
     conversion.rawlogPath = out.logFile;
     conversion.alteration = alteration;
     io::convertLaserLog(log.logFile, conversion);
+    // The mirror image's reference is the reference's mirror image, written beside the log.
+    if (alteration.mirror && !log.relationsFile.empty()) {
+        out.relationsFile = (directory / (out.name + ".relations")).string();
+        saveRelations(mirroredRelations(loadRelations(log.relationsFile)), out.relationsFile);
+    } else if (alteration.mirror) {
+        out.groundTruthFile = (directory / (out.name + "_gt.txt")).string();
+        io::saveTrajectory(io::mirroredTrajectory(io::loadTrajectory(log.groundTruthFile)),
+                           out.groundTruthFile);
+    }
     return out;
 }
 

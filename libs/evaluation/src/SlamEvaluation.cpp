@@ -182,7 +182,7 @@ void appendFrameOffsets(std::ostringstream& out, const std::vector<MethodEvaluat
 
 std::string formatEvaluationTable(const SlamEvaluation& ev) {
     std::ostringstream out;
-    out << "Reference: " << ev.referenceFile << " (";
+    out << "Reference: " << ev.referenceFile << " (" << (ev.referenceMirrored ? "mirrored, " : "");
     if (ev.referenceIsGroundTruth) {
         out << "ground-truth trajectory, " << ev.groundTruthPoses << " poses -> "
             << ev.relationCount << " relations: consecutive"
@@ -274,7 +274,8 @@ io::Json jsonStats(const ErrorStatistics& s) {
 io::Json referenceJson(const SlamEvaluation& ev) {
     io::Json reference = {{"file", ev.referenceFile},
                           {"kind", ev.referenceIsGroundTruth ? "ground_truth" : "relations"},
-                          {"relations", ev.relationCount}};
+                          {"relations", ev.relationCount},
+                          {"mirrored", ev.referenceMirrored}};
     if (ev.referenceIsGroundTruth) {
         reference["ground_truth_poses"] = ev.groundTruthPoses;
         reference["relation_scheme"] = {

@@ -5,6 +5,7 @@
 #include <toposlam/evaluation/SlamEvaluationRun.h>
 #include <toposlam/io/AtomicFile.h>
 #include <toposlam/io/InputError.h>
+#include <toposlam/io/MirrorImage.h>
 
 #include <algorithm>
 #include <cmath>
@@ -81,14 +82,19 @@ void readReference(const SlamEvaluationRequest& request, SlamEvaluationRun& run)
     SlamEvaluation& ev = run.evaluation;
     ev.stampTolerance = request.stampTolerance;
     ev.frameOffset = request.frameOffset;
+    ev.referenceMirrored = request.mirrorReference;
     if (!request.relationsFile.empty()) {
         ev.referenceFile = request.relationsFile;
         run.relations = loadRelations(ev.referenceFile);
         ev.repeatedRelations = countRepeatedRelations(run.relations);
+        if (request.mirrorReference)
+            run.relations = mirroredRelations(run.relations);
     } else {
         ev.referenceFile = request.groundTruthFile;
         ev.referenceIsGroundTruth = true;
         run.groundTruth = io::loadTrajectory(ev.referenceFile);
+        if (request.mirrorReference)
+            run.groundTruth = io::mirroredTrajectory(*run.groundTruth);
         ev.groundTruthPoses = run.groundTruth->size();
         ev.groundTruthRelations.baseSeparation = request.groundTruthSeparation;
         run.relations = relationsFromGroundTruth(*run.groundTruth, ev.groundTruthRelations,

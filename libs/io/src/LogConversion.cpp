@@ -1,5 +1,6 @@
 #include <toposlam/io/InputError.h>
 #include <toposlam/io/LogConversion.h>
+#include <toposlam/io/MirrorImage.h>
 #include <toposlam/io/Trajectory.h>
 
 #include <algorithm>
@@ -71,6 +72,11 @@ LogConversionSummary convertLaserLog(const std::string& inputPath,
             record.scan = clipRange(*record.scan, options.alteration.clipRange);
             record.storedFeatures.reset();
         }
+        if (options.alteration.mirror) {
+            record.scan = mirroredScan(*record.scan);
+            record.storedFeatures.reset();
+            record.odometry = mirroredPose(record.odometry);
+        }
         if (options.alteration.dropOdometry)
             record.hasOdometry = false;
         if (summary.scans == 0) {
@@ -130,6 +136,8 @@ std::string describe(const LogConversionSummary& s, const std::string& inputPath
                       options.alteration.clipRange);
         text += buf;
     }
+    if (options.alteration.mirror)
+        text += ", mirrored (left and right swapped)";
     text += "\n";
     if (!options.rawlogPath.empty()) {
         text += "wrote " + options.rawlogPath + " (" + toString(options.rawlogFormat) +

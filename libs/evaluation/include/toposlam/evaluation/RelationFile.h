@@ -33,6 +33,10 @@ PoseRelations loadRelations(const std::string& path);
 /// counts twice in a mean, for every method alike. The evaluators report the count.
 std::size_t countRepeatedRelations(const PoseRelations& relations);
 
+/// The relations of the log's mirror image (io::MirrorImage.h, toposlam-convert --mirror):
+/// each motion (x, y, yaw) becomes (x, -y, -yaw), the stamps stay.
+PoseRelations mirroredRelations(const PoseRelations& relations);
+
 /// Writes relations in the same format (stamps with microseconds, like the benchmark files,
 /// motion with 9 decimals). Atomic: no partial file is left on failure.
 void saveRelations(const PoseRelations& relations, const std::string& path);

@@ -75,6 +75,8 @@ struct SlamEvaluation {
     std::string referenceFile;
     /// Ground-truth trajectory: relations derived with `groundTruthRelations`.
     bool referenceIsGroundTruth = false;
+    /// The reference's mirror image was scored (SlamEvaluationRequest::mirrorReference).
+    bool referenceMirrored = false;
     std::size_t groundTruthPoses = 0;
     GroundTruthRelationOptions groundTruthRelations;
     std::size_t relationCount = 0;

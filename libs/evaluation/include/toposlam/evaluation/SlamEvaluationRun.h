@@ -52,6 +52,10 @@ struct SlamEvaluationRequest {
     std::string mountingLog;
     /// List this many relations with the largest translational error per method (0: none).
     std::size_t worstRelations = 0;
+    /// The trajectories are of the log's mirror image (toposlam-convert --mirror): they are
+    /// scored against the mirror image of the reference (mirroredRelations,
+    /// io::mirroredTrajectory).
+    bool mirrorReference = false;
 
     /// Throws std::invalid_argument naming the option (e.g. "--icp-slam-path needs --rawlog")
     /// when the request cannot be run as given.

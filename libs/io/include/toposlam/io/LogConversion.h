@@ -31,9 +31,15 @@ struct LogAlteration {
     /// would have recorded it. Observations format: no CObservationOdometry; sensory frames:
     /// empty action collections.
     bool dropOdometry = false;
+    /// The log's mirror image (MirrorImage.h): every scan and the odometry with left and right
+    /// swapped, as the robot would have recorded them in the mirror image of its building.
+    /// Features stored with the scans are left out.
+    bool mirror = false;
 
     /// Whether any of the above changes the log.
-    bool any() const { return keepEvery > 1 || keepBeamEvery > 1 || clipRange > 0 || dropOdometry; }
+    bool any() const {
+        return keepEvery > 1 || keepBeamEvery > 1 || clipRange > 0 || dropOdometry || mirror;
+    }
 };
 
 struct LogConversionOptions {

@@ -159,20 +159,19 @@ bool ScanRegistration::seesForegroundObjects(const matching::PolarScan& scan) co
 
 void ScanRegistration::checkAlongHeading(const matching::PolarScan& scan,
                                          const CPose2D& sensorOnRobot, const Prediction& prediction,
-                                         IcpAttempt& icp, Registration& out) {
-    const double along = std::abs((icp.robot - prediction.inSubmap).x());
+                                         const CPose2D& from, IcpAttempt& icp, Registration& out) {
+    const double along = std::abs((icp.robot - from).x());
     const bool foreground = options_.foregroundCheck > 0 && along > options_.foregroundCheck;
     const bool support = options_.alongHeadingCheck > 0 && along > options_.alongHeadingCheck;
     if (foreground && foreground_.remove(scan, foregroundOptions_, background_) > 0) {
-        IcpAttempt alt =
-            icpFrom(background_, sensorOnRobot, *prediction.submap, prediction.inSubmap);
-        const CPose2D altCorrection = alt.robot - prediction.inSubmap;
-        if (acceptable(alt, prediction.inSubmap)) {
+        IcpAttempt alt = icpFrom(background_, sensorOnRobot, *prediction.submap, from);
+        const CPose2D altCorrection = alt.robot - from;
+        if (acceptable(alt, from)) {
             // Without the objects ICP keeps most of the odometry's step: they took it back.
             // Or it slid along a corridor: the walls left fix nothing along it.
             const bool keptStep = std::abs(altCorrection.x()) < 0.5 * along;
             if (keptStep || (support && holdAlongHeading(background_, sensorOnRobot, prediction,
-                                                         alt, out.alongHeading.emplace()))) {
+                                                         from, alt, out.alongHeading.emplace()))) {
                 out.withoutForeground = true;
                 icp = alt;
             }
@@ -180,14 +179,15 @@ void ScanRegistration::checkAlongHeading(const matching::PolarScan& scan,
         }
     }
     if (support)
-        holdAlongHeading(scan, sensorOnRobot, prediction, icp, out.alongHeading.emplace());
+        holdAlongHeading(scan, sensorOnRobot, prediction, from, icp, out.alongHeading.emplace());
 }
 
 bool ScanRegistration::holdAlongHeading(const matching::PolarScan& scan,
                                         const CPose2D& sensorOnRobot, const Prediction& prediction,
-                                        IcpAttempt& attempt, AlongHeadingCheck& check) const {
-    const CPose2D correction = attempt.robot - prediction.inSubmap;
-    const CPose2D kept = prediction.inSubmap + CPose2D(0, correction.y(), correction.phi());
+                                        const CPose2D& from, IcpAttempt& attempt,
+                                        AlongHeadingCheck& check) const {
+    const CPose2D correction = attempt.robot - from;
+    const CPose2D kept = from + CPose2D(0, correction.y(), correction.phi());
     const matching::LineMap& map = prediction.submap->map();
     check.correction = correction.x();
     check.readings = scan.validCount();
@@ -212,7 +212,9 @@ bool ScanRegistration::tryIcp(const matching::PolarScan& scan, const CPose2D& se
     IcpAttempt best =
         started ? *started : icpFrom(scan, sensorOnRobot, *prediction.submap, prediction.inSubmap);
     // Before judging it: a person ahead can also push the answer beyond the plausible.
-    checkAlongHeading(scan, sensorOnRobot, prediction, best, out);
+    const CPose2D& from = stallStepBorneOut_ && !prediction.odometryJumped ? *stallStepBorneOut_
+                                                                           : prediction.inSubmap;
+    checkAlongHeading(scan, sensorOnRobot, prediction, from, best, out);
     out.overlap = best.overlap;
     if (!acceptable(best, prediction.inSubmap)) {
         failedIcp_ = best.robot;
@@ -296,6 +298,7 @@ const Prediction& ScanRegistration::preferredPrediction(const matching::PolarSca
     readingIcp_.reset();
     motionIcp_.reset();
     jumpChoiceRecorded_ = false;
+    stallStepBorneOut_.reset();
     if (!prediction.submap || prediction.submap->map().size() == 0 || scan.validCount() == 0)
         return prediction;
     if (prediction.odometryStalled)
@@ -341,7 +344,20 @@ const Prediction& ScanRegistration::standstillBorneOut(const matching::PolarScan
         return prediction;
     const Submap& submap = *prediction.submap;
     IcpAttempt fromStandstill = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap);
-    IcpAttempt fromMotion = icpFrom(scan, sensorOnRobot, submap, prediction.inSubmap + toMotion);
+    const CPose2D byMotion = prediction.inSubmap + toMotion;
+    IcpAttempt fromMotion = icpFrom(scan, sensorOnRobot, submap, byMotion);
+    // Both ended at the same pose, nearer the last motion's start, and the step went straight
+    // on: the scan bore it out from both starts, and the checks of ICP's correction along the
+    // heading measure it from the last motion (checkAlongHeading). From the standstill such a
+    // step looked like one that something in the foreground had pushed (furniture beside the
+    // robot), and was taken back. In a turn they still measure it from the standstill, whose
+    // scans the stall's bridging places afterwards (mit-csail with one beam in four: worst
+    // relation 0.29 m so, 0.55 m from the last motion). The prediction stays the standstill's.
+    const CPose2D step = fromStandstill.robot - prediction.inSubmap;
+    if (sameEnd(fromStandstill.robot, fromMotion.robot) &&
+        (fromMotion.robot - byMotion).norm() < step.norm() &&
+        std::abs(step.phi()) < kStraightStepTurn)
+        stallStepBorneOut_ = byMotion;
     // Kept where both ended at the same pose, or the standstill's fits clearly more.
     if (bearsOut(submap.map(), scan, sensorOnRobot, fromStandstill.robot, fromMotion.robot,
                  options_.secondOpinionMargin)) {

@@ -27,7 +27,10 @@
 //     same tests, it is the answer. And a correction of more than along_heading_check along
 //     the heading must be borne out by the scan (by its rest, without such objects): where
 //     the odometry's position along the heading fits it nearly as well, along a corridor whose
-//     walls do not fix that position, the pose is moved back there;
+//     walls do not fix that position, the pose is moved back there. Both corrections are
+//     measured from the prediction, except in an odometry stall where ICP from the standstill
+//     and from the last motion end at the same pose, nearer the last motion, on a step
+//     straight on: the scan bore that step out, and they are measured from the last motion;
 //  2. otherwise (poor overlap, a correction too large to trust, or an odometry jump) the graph
 //     matcher against the last keyframe, from the prediction and, failing that, guess-free.
 //     Without a jump, an answer that corrects the prediction by more than a jump is a
@@ -63,6 +66,7 @@
 #include <toposlam/matching/PointToLineIcp.h>
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 
@@ -226,17 +230,19 @@ class ScanRegistration {
     /// objects when that keeps less than half of the correction. Then the along-heading check
     /// (along_heading_check), on that ICP and the scan without the objects if there were any:
     /// held at the odometry's position along the heading when the readings do not fit better
-    /// at ICP's. Sets out.withoutForeground and out.alongHeading.
+    /// at ICP's. Sets out.withoutForeground and out.alongHeading. The correction is measured
+    /// from `from`: the prediction's pose, or the last motion's start where a stall's step was
+    /// borne out from it (stallStepBorneOut_).
     void checkAlongHeading(const matching::PolarScan& scan,
                            const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
-                           IcpAttempt& icp, Registration& out);
-    /// True, and `attempt` moved there, when `scan`'s readings lie on the submap at the
-    /// odometry's position along the heading (with the attempt's sideways and turn correction)
-    /// nearly as often as at the attempt's pose (along_heading_margin). `check` gets the
-    /// evidence.
+                           const mrpt::poses::CPose2D& from, IcpAttempt& icp, Registration& out);
+    /// True, and `attempt` moved there, when `scan`'s readings lie on the submap at `from`'s
+    /// position along the heading (with the attempt's sideways and turn correction) nearly as
+    /// often as at the attempt's pose (along_heading_margin). `check` gets the evidence.
     bool holdAlongHeading(const matching::PolarScan& scan,
                           const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
-                          IcpAttempt& attempt, AlongHeadingCheck& check) const;
+                          const mrpt::poses::CPose2D& from, IcpAttempt& attempt,
+                          AlongHeadingCheck& check) const;
     /// Step 1 at the top of this file: ICP from the prediction, judged (`started`: that ICP,
     /// already run; null: run it here).
     bool tryIcp(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
@@ -400,6 +406,12 @@ class ScanRegistration {
     /// This scan's jump went before the log's prior once (recordJumpChoice(); reset for every
     /// scan): a jump is one case, however many of the jump's steps ask.
     bool jumpChoiceRecorded_ = false;
+    /// In a stall, ICP from the standstill and from the last motion ended at the same pose,
+    /// nearer the last motion's start: that start, in the submap frame (standstillBorneOut();
+    /// reset for every scan). checkAlongHeading measures ICP's correction from it.
+    std::optional<mrpt::poses::CPose2D> stallStepBorneOut_;
+    /// ... where the step turned by less than this (rad, 5 deg): a step straight on.
+    static constexpr double kStraightStepTurn = 5 * M_PI / 180;
     /// This log's jumps the scan decided clearly (recordJumpChoice): ICP from the odometry's
     /// step fitted jump_choice_margin better than ICP from the last motion, or the reverse.
     /// Whether a log's odometry is right at its jumps (long steps at a low scan rate) or off

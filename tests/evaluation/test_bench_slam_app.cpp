@@ -55,6 +55,21 @@ void expectScored(const nlohmann::json& run, std::size_t relations, double maxAt
     EXPECT_LT(process["peak_rss_mib"].get<double>(), 2000.0);
 }
 
+// toposlam-bench-slam on the office alone, graph engine, with `options` (a log alteration):
+// its table row and JSON name the altered log `name`, whose JSON entry goes to `log`.
+void runOnAlteredOffice(const std::string& options, const std::string& name, nlohmann::json& log) {
+    TempDir dir;
+    const std::string json = dir.file("b3.json");
+    const auto r = runApp("toposlam-bench-slam",
+                          "--logs office --engines graph " + options + " --json " + json);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(contains(r.output, "| " + name + " | graph")) << r.output;
+    const nlohmann::json j = readJson(json);
+    ASSERT_EQ(j["logs"].size(), 1u);
+    log = j["logs"][0];
+    EXPECT_EQ(log["name"], name);
+}
+
 }  // namespace
 
 TEST(BenchSlamApp, HelpExplainsEveryOption) {
@@ -118,16 +133,8 @@ TEST(BenchSlamApp, OfficeEveryEngineScoredAgainstGroundTruth) {
 }
 
 TEST(BenchSlamApp, KeepEveryRunsTheLogsWithFewerScans) {
-    TempDir dir;
-    const std::string json = dir.file("b3.json");
-    const auto r = runApp("toposlam-bench-slam",
-                          "--logs office --engines graph --keep-every 2 --json " + json);
-    ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_TRUE(contains(r.output, "| office-1in2 | graph")) << r.output;
-    const nlohmann::json j = readJson(json);
-    ASSERT_EQ(j["logs"].size(), 1u);
-    const nlohmann::json& office = j["logs"][0];
-    EXPECT_EQ(office["name"], "office-1in2");
+    nlohmann::json office;
+    ASSERT_NO_FATAL_FAILURE(runOnAlteredOffice("--keep-every 2", "office-1in2", office));
     EXPECT_EQ(office["scans"], 184) << "every second of the office's 368 scans";
     // Scored on the relations between kept scans only (85 of the 638 derived from the
     // ground truth: their two stamps must both be kept), still to centimetres.
@@ -144,16 +151,8 @@ TEST(BenchSlamApp, MirrorMapsTheMirrorImageScoredOnTheMirroredGroundTruth) {
     // The office toured in its mirror image: mapped as well as the office itself (the same
     // bound as above), which it could not be if the ground truth were not mirrored with it (no
     // rigid motion turns a mirror image into the original: metres of ATE).
-    TempDir dir;
-    const std::string json = dir.file("b3.json");
-    const auto r =
-        runApp("toposlam-bench-slam", "--logs office --engines graph --mirror --json " + json);
-    ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_TRUE(contains(r.output, "| office-mirrored | graph")) << r.output;
-    const nlohmann::json j = readJson(json);
-    ASSERT_EQ(j["logs"].size(), 1u);
-    const nlohmann::json& office = j["logs"][0];
-    EXPECT_EQ(office["name"], "office-mirrored");
+    nlohmann::json office;
+    ASSERT_NO_FATAL_FAILURE(runOnAlteredOffice("--mirror", "office-mirrored", office));
     EXPECT_EQ(office["scans"], 368);
     EXPECT_EQ(office["reference"]["kind"], "ground_truth");
     expectScored(office["runs"][0], office["reference"]["relations"], 0.1);

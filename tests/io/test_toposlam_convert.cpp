@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -53,6 +54,26 @@ std::size_t lineCount(const std::string& path) {
     for (std::string line; std::getline(in, line);)
         ++n;
     return n;
+}
+
+// Reads the logs `original` and `converted` scan by scan and calls check(i, a, b) on each
+// pair; a failure when they do not hold the same number of scans. Returns the pairs read.
+std::size_t forEachScanPair(
+    const std::string& original, const std::string& converted,
+    const std::function<void(std::size_t, const toposlam::io::LaserLogRecord&,
+                             const toposlam::io::LaserLogRecord&)>& check) {
+    toposlam::io::LaserLogReader before(original), after(converted);
+    toposlam::io::LaserLogRecord a, b;
+    std::size_t pairs = 0;
+    while (before.next(a)) {
+        if (!after.next(b)) {
+            ADD_FAILURE() << converted << " ends after " << pairs << " scans";
+            return pairs;
+        }
+        check(pairs++, a, b);
+    }
+    EXPECT_FALSE(after.next(b)) << converted << " has more scans than " << original;
+    return pairs;
 }
 
 bool haveTool(const std::string& tool) {
@@ -212,24 +233,20 @@ TEST(ToposlamConvert, MirrorIsTheLogsMirrorImage) {
                                                   " --mirror --odometry-trajectory " + odometry);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("mirrored (left and right swapped)"), std::string::npos) << r.output;
-    toposlam::io::LaserLogReader original(dir.file("log.clf")), mirrored(out);
-    toposlam::io::LaserLogRecord a, b;
-    std::size_t scans = 0;
-    while (original.next(a)) {
-        ASSERT_TRUE(mirrored.next(b));
-        ++scans;
-        EXPECT_EQ(b.fileStamp, a.fileStamp);
-        EXPECT_NEAR(b.odometry.x(), a.odometry.x(), 1e-9);
-        EXPECT_NEAR(b.odometry.y(), -a.odometry.y(), 1e-9);
-        EXPECT_NEAR(b.odometry.phi(), -a.odometry.phi(), 1e-9);
-        EXPECT_NEAR(b.scan->sensorPose.yaw(), -a.scan->sensorPose.yaw(), 1e-9);
-        const std::size_t n = a.scan->getScanSize();
-        ASSERT_EQ(b.scan->getScanSize(), n);
-        for (std::size_t i = 0; i < n; ++i)
-            EXPECT_EQ(b.scan->getScanRange(i), a.scan->getScanRange(n - 1 - i)) << i;
-    }
+    using Record = toposlam::io::LaserLogRecord;
+    const std::size_t scans = forEachScanPair(
+        dir.file("log.clf"), out, [](std::size_t, const Record& a, const Record& b) {
+            EXPECT_EQ(b.fileStamp, a.fileStamp);
+            EXPECT_NEAR(b.odometry.x(), a.odometry.x(), 1e-9);
+            EXPECT_NEAR(b.odometry.y(), -a.odometry.y(), 1e-9);
+            EXPECT_NEAR(b.odometry.phi(), -a.odometry.phi(), 1e-9);
+            EXPECT_NEAR(b.scan->sensorPose.yaw(), -a.scan->sensorPose.yaw(), 1e-9);
+            const std::size_t n = a.scan->getScanSize();
+            ASSERT_EQ(b.scan->getScanSize(), n);
+            for (std::size_t i = 0; i < n; ++i)
+                EXPECT_EQ(b.scan->getScanRange(i), a.scan->getScanRange(n - 1 - i)) << i;
+        });
     EXPECT_EQ(scans, 4u);
-    EXPECT_FALSE(mirrored.next(b));
     const auto t = toposlam::io::loadTrajectory(odometry);
     ASSERT_EQ(t.size(), 4u);
     EXPECT_NEAR(t[3].pose.y, -0.18, 1e-9);
@@ -247,18 +264,14 @@ TEST(ToposlamConvert, NoOdometryIsALaserOnlyLogInBothFormats) {
         ASSERT_EQ(r.exitCode, 0) << r.output;
         EXPECT_NE(r.output.find("odometry left out"), std::string::npos) << r.output;
         // The same scans, none with odometry (sf: no action, not a zero increment).
-        toposlam::io::LaserLogReader original(dir.file("log.clf")), converted(out);
-        toposlam::io::LaserLogRecord a, b;
-        std::size_t scans = 0;
-        while (original.next(a)) {
-            ASSERT_TRUE(converted.next(b));
-            EXPECT_TRUE(a.hasOdometry);
-            EXPECT_FALSE(b.hasOdometry) << "scan " << scans;
-            EXPECT_EQ(b.scan->getScanSize(), a.scan->getScanSize());
-            EXPECT_EQ(b.scan->getScanRange(0), a.scan->getScanRange(0));
-            ++scans;
-        }
-        EXPECT_FALSE(converted.next(b));
+        using Record = toposlam::io::LaserLogRecord;
+        const std::size_t scans = forEachScanPair(
+            dir.file("log.clf"), out, [](std::size_t i, const Record& a, const Record& b) {
+                EXPECT_TRUE(a.hasOdometry);
+                EXPECT_FALSE(b.hasOdometry) << "scan " << i;
+                EXPECT_EQ(b.scan->getScanSize(), a.scan->getScanSize());
+                EXPECT_EQ(b.scan->getScanRange(0), a.scan->getScanRange(0));
+            });
         EXPECT_EQ(scans, 4u);
     }
     // Nothing would be left for an odometry trajectory.

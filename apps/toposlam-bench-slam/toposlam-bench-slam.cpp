@@ -191,15 +191,16 @@ Arguments::Arguments()
                 "Every log runs so, named <log>-mirrored and scored on the mirror image of its "
                 "relations or ground truth."}) {}
 
-// "/work/wt/../shared/data" -> "/work/shared/data": shorter names in the table.
+// "/work/wt/../shared/data" -> "/work/shared/data": shorter names in the table. Absolute, since
+// the runs' child processes work in folders of their own ("" stays "": not given).
 std::string tidy(const std::string& path) {
-    return fs::path(path).lexically_normal().string();
+    return path.empty() ? path : fs::absolute(path).lexically_normal().string();
 }
 
 // A --sim-plans item: a plan image, or the furnished plan of a Bormann map of that name.
 std::string planImage(const std::string& item) {
     if (item.find('/') != std::string::npos || fs::path(item).extension() == ".png")
-        return item;
+        return tidy(item);
     return tidy(TOPOSLAM_SHARED_DATA_DIR "/rooms/" + item + "_furnitures.png");
 }
 
@@ -216,7 +217,7 @@ void addSimulatedLogs(Arguments& a, evaluation::SlamBenchmarkOptions& options) {
         throw cli::UsageError("--sim-robots: no robot given");
     request.simulator = besideMe("toposlam-sim");
     request.simulatorConfig = tidy(a.simConfig.getValue());
-    request.directory = a.simDir.getValue();
+    request.directory = tidy(a.simDir.getValue());
     request.timeoutSeconds = a.timeout.getValue();
     const auto progress = [](std::size_t done, std::size_t total, const std::string& next) {
         std::cerr << "simulating " << done + 1 << "/" << total << ": " << next << " ..."

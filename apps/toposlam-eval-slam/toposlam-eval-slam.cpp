@@ -129,6 +129,14 @@ int run(int argc, char** argv) {
         "0, 0; a SLAM trajectory of laser poses gives the laser's mounting, e.g. to check "
         "--frame-offset or toposlam-convert --laser-offset",
         false, "", "log", cmd);
+    TCLAP::ValueArg<std::string> laserFrameOf(
+        "", "laser-frame-of",
+        "Score the laser's poses: move each pose to where this log's scan of the same stamp puts "
+        "the laser on the robot (a CARMEN ROBOTLASER line's laser pose, a rawlog scan's "
+        "sensorPose). Kuemmerle et al.'s relations are made in the laser's frame; trajectories "
+        "of toposlam-slam and icp-slam give the robot's. Changes nothing where the laser sits at "
+        "the robot's centre (FLASER logs)",
+        false, "", "log", cmd);
     cli::NumberArg<double> frameOffset(
         "", "frame-offset",
         "Score the frame this many metres ahead of each estimated pose (along its heading; "
@@ -184,6 +192,7 @@ int run(int argc, char** argv) {
     request.stampTolerance = tolerance.getValue();
     request.frameOffset = frameOffset.getValue();
     request.mountingLog = mountingFrom.getValue();
+    request.laserFrameLog = laserFrameOf.getValue();
     request.mirrorReference = mirroredReference.getValue();
     request.worstRelations = static_cast<std::size_t>(worst.getValue());
     request.rawlog = rawlog.getValue();
@@ -193,6 +202,7 @@ int run(int argc, char** argv) {
     std::vector<cli::FileArgument> inputs = {{"--relations", request.relationsFile},
                                              {"--ground-truth", request.groundTruthFile},
                                              {"--mounting-from", request.mountingLog},
+                                             {"--laser-frame-of", request.laserFrameLog},
                                              {"--rawlog", request.rawlog},
                                              {"--scan-stamps", request.scanStamps}};
     for (const auto& t : request.trajectories)

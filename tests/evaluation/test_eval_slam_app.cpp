@@ -1,4 +1,6 @@
 // End-to-end tests of the toposlam-eval-slam app on small files made here.
+#include "OfficeLaserRelations.h"
+
 #include <gtest/gtest.h>
 #include <mrpt/poses/CPose2D.h>
 
@@ -46,10 +48,11 @@ struct Fixture {
 TEST(EvalSlamApp, HelpExplainsEveryOption) {
     const auto r = runApp("toposlam-eval-slam", "--help");
     EXPECT_EQ(r.exitCode, 0) << r.output;
-    for (const char* option : {"--relations", "--ground-truth", "--trajectory", "--icp-slam-path",
-                               "--rawlog", "--scan-stamps", "--json", "--name", "--gt-separation",
-                               "--stamp-tolerance", "--write-relations", "--plot", "--frame-offset",
-                               "--worst", "--mounting-from", "--mirrored-reference", "Kuemmerle"}) {
+    for (const char* option :
+         {"--relations", "--ground-truth", "--trajectory", "--icp-slam-path", "--rawlog",
+          "--scan-stamps", "--json", "--name", "--gt-separation", "--stamp-tolerance",
+          "--write-relations", "--plot", "--frame-offset", "--worst", "--mounting-from",
+          "--laser-frame-of", "--mirrored-reference", "Kuemmerle"}) {
         EXPECT_TRUE(contains(r.output, option)) << option;
     }
 }
@@ -400,4 +403,33 @@ TEST(EvalSlamApp, MountingFromTheOdometryFindsWhereThePosesSitOnTheRobot) {
     EXPECT_NEAR(moved.at("x").get<double>(), 0.2, 0.01) << r.output;
     EXPECT_NEAR(moved.at("y").get<double>(), 0.0, 0.01) << r.output;
     EXPECT_GT(moved.at("pairs").get<int>(), 20) << r.output;
+}
+
+TEST(EvalSlamApp, LaserFrameOfScoresTheLasersPosesAgainstRelationsMadeThere) {
+    // The office's ground truth (the robot's poses) against relations made at its laser, 0.2 m
+    // ahead: exact at the laser each scan of the log states, off on every turn without it.
+    const std::string office = toposlam::test::shareDir() + "/office/";
+    TempDir dir;
+    const std::string relations = dir.file("laser.relations");
+    toposlam::evaluation::test_paths::writeOfficeLaserRelations(relations);
+    const std::string common =
+        "--relations " + relations + " --trajectory robot=" + office + "office_gt.txt";
+    const auto atLaser =
+        runApp("toposlam-eval-slam", common + " --laser-frame-of " + office +
+                                         "office.rawlog --json " + dir.file("l.json"));
+    ASSERT_EQ(atLaser.exitCode, 0) << atLaser.output;
+    EXPECT_TRUE(contains(atLaser.output, "Scored at the laser of each scan of " + office +
+                                             "office.rawlog (typically 0.200, 0.000 m"))
+        << atLaser.output;
+    const auto json = toposlam::io::loadJsonFile(dir.file("l.json"));
+    EXPECT_NEAR(json.at("laser_frame").at("position_m").at(0).get<double>(), 0.2, 1e-6);
+    const auto& robot = json.at("methods").at(0);
+    EXPECT_EQ(robot.at("relations_unmatched"), 0);
+    EXPECT_LT(robot.at("translation_m").at("max").get<double>(), 1e-5);  // printed to 1e-6 m
+
+    const auto asGiven = runApp("toposlam-eval-slam", common + " --json " + dir.file("r.json"));
+    ASSERT_EQ(asGiven.exitCode, 0) << asGiven.output;
+    const auto robotFrame = toposlam::io::loadJsonFile(dir.file("r.json")).at("methods").at(0);
+    EXPECT_GT(robotFrame.at("translation_m").at("mean").get<double>(), 0.01) << asGiven.output;
+    EXPECT_EQ(toposlam::io::loadJsonFile(dir.file("r.json")).at("laser_frame").at("log"), "");
 }

@@ -1,4 +1,5 @@
 #include <toposlam/evaluation/GroundTruthRelations.h>
+#include <toposlam/evaluation/LaserFrame.h>
 #include <toposlam/evaluation/LogOdometry.h>
 #include <toposlam/evaluation/MapComparisonImage.h>
 #include <toposlam/evaluation/RelationFile.h>
@@ -251,19 +252,25 @@ SlamBenchmarkLogResult SlamBenchmark::runLog(const SlamBenchmarkLog& recorded,
         options_.engines.begin(), options_.engines.end(),
         [&](SlamEngine e) { return e != SlamEngine::IcpSlam || !options_.setup.icpSlam.empty(); }));
     Reference reference;
-    std::vector<double> stamps;
+    io::Trajectory2D laserPositions;  // and the scans' stamps
     try {
         if (options_.alteration.any()) {
             log = altered(recorded, options_.alteration, workDirectory);
             result.log = log;
         }
         reference = loadReference(log);
-        stamps = scanFileStamps(log.logFile);
+        laserPositions = laserPositionsAtScans(log.logFile);
     } catch (const std::exception& e) {
         result.error = e.what();
         done += runsOfLog;
         return result;
     }
+    std::vector<double> stamps;
+    stamps.reserve(laserPositions.size());
+    for (const io::TimedPose2D& scan : laserPositions)
+        stamps.push_back(scan.stamp);
+    if (!reference.groundTruth && laserOffCentre(laserPositions))  // a ground truth: the robot's
+        result.laserPosition = typicalLaserPosition(laserPositions);
     result.scans = stamps.size();
     const auto [first, last] = std::minmax_element(stamps.begin(), stamps.end());
     result.durationSeconds = stamps.empty() ? 0.0 : *last - *first;
@@ -281,10 +288,13 @@ SlamBenchmarkLogResult SlamBenchmark::runLog(const SlamBenchmarkLog& recorded,
         done += startsProcess ? 1 : 0;
         if (row.run.status == SlamEngineRun::Status::Ok) {
             try {
-                row.evaluation =
-                    evaluateMethod(engineName(engine), log.logFile, row.run.trajectory,
-                                   reference.relations, groundTruth, options_.stampTolerance,
-                                   groundTruth ? &reference.separations : nullptr);
+                row.evaluation = evaluateMethod(
+                    engineName(engine), log.logFile,
+                    result.laserPosition
+                        ? inLaserFrame(row.run.trajectory, laserPositions, options_.stampTolerance)
+                        : row.run.trajectory,
+                    reference.relations, groundTruth, options_.stampTolerance,
+                    groundTruth ? &reference.separations : nullptr);
             } catch (const std::exception& e) {
                 row.run.status = SlamEngineRun::Status::Failed;
                 row.run.note = std::string("trajectory not scored: ") + e.what();

@@ -31,13 +31,23 @@ std::string repeatedNote(const SlamBenchmarkLogResult& log) {
     return ", " + std::to_string(log.repeatedRelations) + " repeating an earlier line";
 }
 
+// ", scored at the laser, 0.220 m ahead and 0.000 m left of the robot's centre" when the log's
+// laser is off centre (relation files are made in the laser's frame: LaserFrame.h).
+std::string laserNote(const SlamBenchmarkLogResult& log) {
+    if (!log.laserPosition)
+        return "";
+    return ", scored at the laser, " + formatFixed(log.laserPosition->x, 3) + " m ahead and " +
+           formatFixed(log.laserPosition->y, 3) + " m left of the robot's centre";
+}
+
 std::string logLine(const SlamBenchmarkLogResult& log) {
     std::string line = log.log.name + " (" + log.log.logFile + ": ";
     if (!log.error.empty() && log.scans == 0)
         return line + "not read)";
     line += std::to_string(log.scans) + " scans, " + formatFixed(log.durationSeconds, 0) + " s; ";
     if (log.log.groundTruthFile.empty())
-        return line + std::to_string(log.relations) + " relations" + repeatedNote(log) + ")";
+        return line + std::to_string(log.relations) + " relations" + repeatedNote(log) +
+               laserNote(log) + ")";
     return line + "ground truth " + log.log.groundTruthFile + ": " + std::to_string(log.relations) +
            " derived relations + ATE)";
 }
@@ -318,7 +328,11 @@ nlohmann::json slamBenchmarkJson(const SlamBenchmarkResult& result) {
                          {{"kind", truth ? "ground_truth" : "relations"},
                           {"file", truth ? log.log.groundTruthFile : log.log.relationsFile},
                           {"relations", log.relations},
-                          {"repeated_relations", log.repeatedRelations}}},
+                          {"repeated_relations", log.repeatedRelations},
+                          {"laser_position_m",
+                           log.laserPosition
+                               ? nlohmann::json::array({log.laserPosition->x, log.laserPosition->y})
+                               : nlohmann::json()}}},
                         {"scans", log.scans},
                         {"duration_s", log.durationSeconds},
                         {"error", log.error},

@@ -201,7 +201,13 @@ std::string formatEvaluationTable(const SlamEvaluation& ev) {
     }
     out << "Metric: Kümmerle et al. 2009, e = δ_gt⁻¹ ⊕ δ_est, δ_est = x_t1⁻¹ ⊕ x_t2; mean ± "
            "std; stamps matched within "
-        << ev.stampTolerance << " s\n\n";
+        << ev.stampTolerance << " s\n";
+    if (!ev.laserFrameLog.empty()) {
+        out << "Scored at the laser of each scan of " << ev.laserFrameLog << " (typically "
+            << formatFixed(ev.laserPosition.x, 3) << ", " << formatFixed(ev.laserPosition.y, 3)
+            << " m on the robot)\n";
+    }
+    out << "\n";
 
     const bool withAte = std::any_of(ev.methods.begin(), ev.methods.end(),
                                      [](const MethodEvaluation& m) { return m.absolute; });
@@ -383,6 +389,9 @@ std::string formatEvaluationJson(const SlamEvaluation& ev) {
          {"stamp_tolerance_s", jsonNumber(ev.stampTolerance)},
          {"frame_offset_m", jsonNumber(ev.frameOffset)},
          {"mounting_log", ev.mountingLog},
+         {"laser_frame",
+          {{"log", ev.laserFrameLog},
+           {"position_m", {jsonNumber(ev.laserPosition.x), jsonNumber(ev.laserPosition.y)}}}},
          {"methods", methods}});
 }
 

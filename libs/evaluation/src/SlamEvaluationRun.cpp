@@ -1,5 +1,6 @@
 #include <toposlam/evaluation/GroundTruthRelations.h>
 #include <toposlam/evaluation/IcpSlamPath.h>
+#include <toposlam/evaluation/LaserFrame.h>
 #include <toposlam/evaluation/LogOdometry.h>
 #include <toposlam/evaluation/RelationFile.h>
 #include <toposlam/evaluation/SlamEvaluationRun.h>
@@ -157,12 +158,20 @@ SlamEvaluationRun runSlamEvaluation(const SlamEvaluationRequest& request,
     }
     if (!request.mountingLog.empty())
         odometryLogs.insert(request.mountingLog);
-    LogsProgress logsProgress(progress, odometryLogs.size() + (request.scanStamps.empty() ? 0 : 1));
+    LogsProgress logsProgress(progress, odometryLogs.size() + (request.scanStamps.empty() ? 0 : 1) +
+                                            (request.laserFrameLog.empty() ? 0 : 1));
     LogOdometryCache odometry(logsProgress);
     std::optional<std::vector<double>> stamps;
     if (!request.scanStamps.empty()) {
         stamps = scanFileStamps(request.scanStamps, logsProgress.nextLog());
         logsProgress.logDone();
+    }
+    std::optional<io::Trajectory2D> laserPositions;
+    if (!request.laserFrameLog.empty()) {
+        laserPositions = laserPositionsAtScans(request.laserFrameLog, logsProgress.nextLog());
+        logsProgress.logDone();
+        ev.laserFrameLog = request.laserFrameLog;
+        ev.laserPosition = typicalLaserPosition(*laserPositions);
     }
     const io::Trajectory2D* mountingOdometry = nullptr;  // in the cache, which outlives it
     if (!request.mountingLog.empty()) {
@@ -179,6 +188,8 @@ SlamEvaluationRun runSlamEvaluation(const SlamEvaluationRequest& request,
         std::optional<SensorMounting> mounting;
         if (mountingOdometry)
             mounting = estimateSensorMounting(*mountingOdometry, estimate, ev.stampTolerance);
+        if (laserPositions)
+            estimate = inLaserFrame(estimate, *laserPositions, ev.stampTolerance);
         for (io::TimedPose2D& p : estimate)  // the frame the relations were made in
             p.pose = poseAhead(p.pose, request.frameOffset);
         try {

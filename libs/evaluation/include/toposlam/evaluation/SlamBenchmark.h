@@ -55,6 +55,10 @@ struct SlamBenchmarkLogResult {
     double durationSeconds = 0;         ///< last minus first scan stamp
     std::size_t relations = 0;          ///< relations scored (derived ones for a ground truth)
     std::size_t repeatedRelations = 0;  ///< of those, repeats of an earlier line of the file
+    /// Relation files are made in the laser's frame (LaserFrame.h): where the log puts its
+    /// laser off the robot's centre, every engine's poses were moved to it before scoring,
+    /// and this is the laser's typical position on the robot (m, x forward, y left).
+    std::optional<mrpt::math::TPoint2D> laserPosition;
     /// Set when the log or its reference could not be read (then no engine ran on it), or
     /// when its pictures could not be written.
     std::string error;

@@ -13,6 +13,8 @@
 #include <toposlam/io/JsonFile.h>
 #include <toposlam/io/Trajectory.h>
 
+#include <mrpt/math/TPoint2D.h>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -87,6 +89,11 @@ struct SlamEvaluation {
     std::vector<double> relationSeparations;
     double stampTolerance = StampedPoseLookup::kDefaultTolerance;
     double frameOffset = 0;  ///< m ahead of each estimated pose: the frame scored
+    /// The log whose scans placed each pose at its laser before scoring ("": the poses as
+    /// given; SlamEvaluationRequest::laserFrameLog), and that laser's typical position on the
+    /// robot (m, x forward, y left; typicalLaserPosition).
+    std::string laserFrameLog;
+    mrpt::math::TPoint2D laserPosition{0, 0};
     /// The log whose odometry each method's mounting was estimated against ("": not asked).
     std::string mountingLog;
     std::vector<MethodEvaluation> methods;

@@ -46,6 +46,11 @@ struct SlamEvaluationRequest {
     /// poses as they are): for relations made in another frame on the robot than the one the
     /// trajectories give (a laser mounted off the robot's centre).
     double frameOffset = 0;
+    /// A log (CARMEN, rawlog) whose scans say where the laser sits on the robot: each pose is
+    /// moved there before it is scored (LaserFrame.h; the frame of Kümmerle et al.'s
+    /// relations; a no-op where every scan's laser is at the robot's centre). "": the poses as
+    /// given. Applied before frameOffset, after the mounting estimate.
+    std::string laserFrameLog;
     /// A log (CARMEN, rawlog) whose odometry each trajectory is
     /// checked against: where on the robot its poses sit (SensorMounting.h; "": not asked).
     /// Estimated on the poses as given, before frameOffset.

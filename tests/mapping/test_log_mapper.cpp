@@ -188,6 +188,13 @@ TEST(LogMapper, MapsWithOneLaserOfSeveral) {
     ASSERT_EQ(front.trajectory.size(), log.truth.size());
     EXPECT_NE(mapping::formatSummary(front).find("left out: 121 of REAR"), std::string::npos)
         << mapping::formatSummary(front);
+    // Each laser 0.2 m off the centre: the summary says the trajectory is the robot's poses.
+    EXPECT_NE(mapping::formatSummary(front).find(
+                  "laser: 0.200 m ahead and 0.000 m left of the robot's centre; trajectory.txt "
+                  "gives the robot's poses"),
+              std::string::npos)
+        << mapping::formatSummary(front);
+    EXPECT_EQ(mapping::summaryJson(front)["laser"]["position_m"][0], 0.2);
     const double odoError = finalPositionError(log.truth.front(), log.truth.back(),
                                                log.odometry.front(), log.odometry.back());
     EXPECT_LT(finalPositionError(log.truth.front(), log.truth.back(),
@@ -202,6 +209,9 @@ TEST(LogMapper, MapsWithOneLaserOfSeveral) {
         mapping::mapLog(dir.file("two.rawlog"), mrpt::config::CConfigFileMemory(text));
     EXPECT_EQ(rear.laserLabel, "REAR");
     EXPECT_TRUE(rear.otherLaserScans.empty()) << "a label given keeps that laser only, silently";
+    EXPECT_NE(mapping::formatSummary(rear).find("laser: 0.200 m behind and 0.000 m left"),
+              std::string::npos)
+        << mapping::formatSummary(rear);
     EXPECT_EQ(rear.trajectory.size(), log.truth.size());
 
     text.replace(text.find("\nscan_label = REAR"), 19, "\nscan_label = SIDE");

@@ -179,6 +179,9 @@ MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFile
 
     alignWithWalls(gridOptions, scans, result);
     result.scans = scans.size();
+    if (!scans.empty())
+        result.laserPosition = {scans.front().scan->sensorPose.x(),
+                                scans.front().scan->sensorPose.y()};
     result.logDuration =
         mrpt::system::timeDifference(scans.front().scan->timestamp, scans.back().scan->timestamp);
     result.grid = buildOccupancyGrid(scans, gridOptions);

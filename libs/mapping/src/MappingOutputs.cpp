@@ -45,6 +45,8 @@ double percent(std::size_t part, std::size_t whole) {
 /// An odometry whose distances are off by this much (percent) stretches or shrinks a long
 /// corridor visibly (a 50 m corridor by a metre): the summary suggests odometry_calibration.
 constexpr double kSuggestCalibrationPercent = 2.0;
+/// A laser farther than this (m) from the robot's centre is named in the summary.
+constexpr double kLaserOffCentre = 1e-4;
 
 // How the odometry's distances were taken (odometry_calibration).
 std::string odometryLine(const MappingResult& r, const SlamStatistics& st) {
@@ -112,6 +114,14 @@ std::string formatSummary(const MappingResult& r) {
             "scans: %zu, log duration %.3f s (the log's stamps do not tell its time), mapped "
             "in %.2f s wall, %.2f s CPU",
             r.scans, r.logDuration, r.wallSeconds, r.cpuSeconds);
+    }
+    // Kuemmerle et al.'s relations are the laser's: say which poses trajectory.txt gives.
+    if (std::hypot(r.laserPosition.x, r.laserPosition.y) > kLaserOffCentre) {
+        s += line(
+            "laser: %.3f m %s and %.3f m %s of the robot's centre; trajectory.txt gives the "
+            "robot's poses (toposlam-eval-slam --laser-frame-of <log> scores the laser's)",
+            std::abs(r.laserPosition.x), r.laserPosition.x < 0 ? "behind" : "ahead",
+            std::abs(r.laserPosition.y), r.laserPosition.y < 0 ? "right" : "left");
     }
     if (!r.otherLaserScans.empty()) {
         const auto named = [](const std::string& label) {
@@ -221,7 +231,10 @@ nlohmann::json summaryJson(const MappingResult& r) {
         {"wall_s", r.wallSeconds},
         {"cpu_s", r.cpuSeconds},
         {"real_time_factor", realTimeFactor(r) ? nlohmann::json(*realTimeFactor(r)) : nullptr},
-        {"laser", {{"label", r.laserLabel}, {"other_lasers", r.otherLaserScans}}},
+        {"laser",
+         {{"label", r.laserLabel},
+          {"other_lasers", r.otherLaserScans},
+          {"position_m", {r.laserPosition.x, r.laserPosition.y}}}},
         {"wall_alignment_deg", r.wallAlignment * 180.0 / M_PI}};
     if (const auto& st = r.statistics) {
         j["keyframes"] = st->keyframes;

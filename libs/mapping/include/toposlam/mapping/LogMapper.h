@@ -9,6 +9,7 @@
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/maps/CSimpleMap.h>
+#include <mrpt/math/TPoint2D.h>
 #include <toposlam/config/Options.h>
 #include <toposlam/io/ProgressCallback.h>
 #include <toposlam/io/Trajectory.h>
@@ -47,6 +48,9 @@ struct MappingResult {
     double wallDirectionStrength = 0;  ///< see WallDirection::strength
     std::size_t scans = 0;
     std::string laserLabel;  ///< the sensor label of the scans mapped
+    /// Where the first scan puts the laser on the robot (m, x forward, y left): the trajectory
+    /// gives the robot's poses, which are this far from the laser's.
+    mrpt::math::TPoint2D laserPosition{0, 0};
     /// Scans of other lasers in the log, left out (by sensor label); empty for a one-laser log.
     std::map<std::string, std::size_t> otherLaserScans;
     double logDuration = 0;  ///< s, last minus first scan time

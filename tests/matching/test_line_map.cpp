@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <mrpt/poses/CPose2D.h>
 #include <toposlam/matching/LineMap.h>
+#include <toposlam/matching/PolarScan.h>
 
 #include <cmath>
 #include <random>
@@ -220,6 +221,42 @@ TEST(LineMap, AnswersAfterResetExactlyAsANewMapDoes) {
         }
     }
     EXPECT_GT(answered, 10000);
+}
+
+// carve: a map point a scan's beams passed through by the margin or more counts a view
+// through; a surface the beams end on does not, nor the corner of an object whose edge the
+// beams graze (a neighbouring beam ends on it), nor a point nearer the scan's surface than the
+// margin.
+TEST(LineMap, CarveCountsTheScansThatSawThroughAPoint) {
+    LineMap map;
+    for (float x = -1.5f; x <= 1.5f; x += 0.05f)  // a wall y = 2, the scan sees it
+        map.insert(pointAt(x, 2, 0, -1));
+    map.insert(pointAt(0.5f, 1.0f, 0, -1));   // where a person stood: now free
+    map.insert(pointAt(0.0f, 1.9f, 0, -1));   // 0.1 m in front of the wall: within the margin
+    map.insert(pointAt(-0.4f, 1.0f, 0, -1));  // the corner of a box the scan sees
+    map.insert(pointAt(-0.6f, 1.0f, 0, -1));  // its face
+    // The scan from the origin, facing +y: the box's front face x in [-0.8, -0.4] at y = 1,
+    // and the wall y = 2 behind it; a beam every 0.5 deg.
+    const double step = M_PI / 360;
+    std::vector<float> ranges;
+    for (double a = M_PI / 4; a <= 3 * M_PI / 4 + 1e-9; a += step) {
+        const double toWall = 2 / std::sin(a), x = std::cos(a) / std::sin(a);  // x at y = 1
+        ranges.push_back(float(x >= -0.8 && x <= -0.4 ? 1 / std::sin(a) : toWall));
+    }
+    matching::PolarScan scan;
+    scan.assign(M_PI / 4, step, ranges, std::vector<char>(ranges.size(), 1), 20.0);
+    map.carve(scan, mrpt::poses::CPose2D(0, 0, 0), 0, 0.2);
+    for (const LineMapPoint& p : map.points()) {
+        const bool person = p.x == 0.5f && p.y == 1.0f;
+        EXPECT_EQ(p.seenThrough, person ? 1u : 0u) << p.x << ", " << p.y;
+        EXPECT_EQ(p.moved(), person) << p.x << ", " << p.y;
+    }
+    // Only the points from index `first` on are carved: the person's point again, once more.
+    const std::size_t person = map.size() - 4;
+    map.carve(scan, mrpt::poses::CPose2D(0, 0, 0), person + 1, 0.2);
+    EXPECT_EQ(map.points()[person].seenThrough, 1u);
+    map.carve(scan, mrpt::poses::CPose2D(0, 0, 0), person, 0.2);
+    EXPECT_EQ(map.points()[person].seenThrough, 2u);
 }
 
 }  // namespace

@@ -52,6 +52,8 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
     s.integer("icp_min_views", icpMinViews, "keyframes",
               "ICP's first stage matches only submap points seen from this many keyframes")
         .within(1, 100);
+    s.flag("free_space_carving", freeSpaceCarving,
+           "ICP's first stage leaves out submap points that later keyframes saw through");
     s.angle("icp_max_incidence", icpMaxIncidence,
             "submap points whose surface faces the sensor at a larger incidence are not matched")
         .above(0)

@@ -87,6 +87,7 @@ ScanRegistration::ScanRegistration(const GraphSlamOptions& options,
     icpOptions_.robustScale = options.icpRobustScale;
     icpOptions_.stride = options.icpStride;
     icpOptions_.minMapViews = static_cast<std::uint32_t>(options.icpMinViews);
+    icpOptions_.skipMovedMapPoints = options.freeSpaceCarving;
     icpOptions_.maxIncidence = options.icpMaxIncidence;
     icpOptions_.translationTolerance = 1e-4;
     icpOptions_.rotationTolerance = 1e-5;

@@ -16,7 +16,19 @@ Submap::Submap(std::size_t anchor, matching::LineMap&& reused)
 void Submap::insert(const Keyframe& kf, const mrpt::poses::CPose2D& robotInSubmap) {
     const bool newPart = kf.placedByOdometry && !keyframes_.empty();
     keyframes_.push_back(kf.id);
-    map_.insertSurface(kf.surface, robotInSubmap + kf.sensorOnRobot);
+    const std::size_t before = map_.size();
+    const mrpt::poses::CPose2D sensor = robotInSubmap + kf.sensorOnRobot;
+    map_.insertSurface(kf.surface, sensor);
+    const double margin = map_.options().carveMargin;
+    if (margin > 0 && kf.scan) {
+        // Its new points that the keyframes before it saw through, then what it sees through.
+        for (const auto& [scan, pose] : views_)
+            map_.carve(scan, pose, before, margin);
+        matching::PolarScan& scan = views_.emplace_back().first;
+        scan.assign(*kf.scan);
+        views_.back().second = sensor;
+        map_.carve(scan, sensor, 0, margin);
+    }
     if (newPart)
         parts_.push_back({kf.id, map_.scans()});
 }
@@ -49,6 +61,7 @@ std::size_t Submap::partHolding(const matching::PolarScan& scan, const mrpt::pos
 
 void Submap::clear() {
     keyframes_.clear();
+    views_.clear();
     parts_.clear();
     map_.clear();
 }
@@ -56,6 +69,7 @@ void Submap::clear() {
 matching::LineMap Submap::finish() {
     matching::LineMap map = std::move(map_);
     map_ = matching::LineMap(map.options());
+    views_ = {};  // nothing is inserted any more
     finished_ = true;
     return map;
 }

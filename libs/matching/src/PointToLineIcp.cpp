@@ -241,7 +241,8 @@ IcpResult PointToLineIcp::refineOnMap(const LineMap& map, const PolarScan& curre
     const auto correspond = [&](double qx, double qy, double sensorX, double sensorY, double gate2,
                                 bool tight, double& nx, double& ny, double& r) {
         const LineMapPoint* m = map.nearest(qx, qy);
-        if (!m || (!tight && m->views < minViews))
+        if (!m || (!tight && m->views < minViews) ||
+            (!tight && options.skipMovedMapPoints && m->moved()))
             return false;
         // cos(incidence) = n . v / |v| with v towards the sensor, compared without a root.
         const double vx = sensorX - m->x, vy = sensorY - m->y;

@@ -45,6 +45,10 @@ struct GraphSlamOptions : public config::Options {
     /// Opt-in: walls new to the last keyframe drop out of that stage too. This and the next
     /// rule are the "crowded places" settings of config_ini/toposlam-slam.ini.
     std::size_t icpMinViews = 1;
+    /// Submap points that later keyframes saw through (Submap.h: a person who walked on) are
+    /// left out of ICP's first stage, as icpMinViews leaves out points seen once. Opt-in: it
+    /// helps people walking about, and costs a short, noisy laser (benchmarks.md, B3).
+    bool freeSpaceCarving = false;
     /// rad: submap points whose surface faces the scan's sensor at a larger incidence are not
     /// matched (the faces of a rough wall that looked back along a corridor; 90 deg and more:
     /// surfaces seen from behind).

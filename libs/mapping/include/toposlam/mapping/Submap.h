@@ -15,6 +15,10 @@
 // of its readings lie on (partHolding), and a scan that fits the part before it is tied to the
 // anchor and exposes its error. (The graph matcher's placements start none: its covariance is a
 // measurement's. Counting them too cost the real logs and people tours, benchmarks.md B3.)
+// Free space (free_space_carving): where the beams of one keyframe passed through a place
+// another keyframe saw a surface at, by 0.2 m or more, that surface has moved (a person who
+// walked on). Each point counts the keyframes that saw through it, and ICP's first stage
+// leaves out points seen through as often as seen (LineMapPoint::moved).
 #include <mrpt/poses/CPose2D.h>
 #include <toposlam/mapping/Keyframe.h>
 #include <toposlam/matching/LineMap.h>
@@ -67,6 +71,9 @@ class Submap {
     };
     std::vector<Part> parts_;
     mutable std::vector<std::size_t> readingsPerPart_;  // partHolding's scratch
+    /// Each keyframe's readings and sensor pose (submap frame), to carve the map with
+    /// (LineMapOptions::carveMargin > 0).
+    std::vector<std::pair<matching::PolarScan, mrpt::poses::CPose2D>> views_;
     bool finished_ = false;
 };
 

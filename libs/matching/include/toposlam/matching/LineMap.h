@@ -32,6 +32,11 @@ struct LineMapPoint {
     /// The insertScan / insertSurface call that made it (observations fused into it later do
     /// not change it): which scan first showed the map this surface.
     std::uint32_t firstScan = 0;
+    /// Scans whose beams passed through this place (LineMap::carve): free when they looked.
+    std::uint32_t seenThrough = 0;
+    /// Seen through as often as seen: something that moved away (a person), not a wall, which
+    /// every scan that looks its way sees, and none sees through.
+    bool moved() const { return seenThrough >= views; }
 };
 
 /// A reading with the normal of its local line, in the sensor frame of its scan (m): what a
@@ -52,6 +57,10 @@ struct LineMapOptions {
     double confirmDistance = 0.1;
     double maxRange = 20.0;        ///< m, farther readings are not inserted
     double maxJoinDistance = 0.3;  ///< m, fitLocalLine's jump distance
+    /// m: a keyframe's beam that reaches this much beyond a map point (with both neighbouring
+    /// beams) saw through it (carve; mapping::Submap carves its map with every keyframe's
+    /// scan). 0 = no carving.
+    double carveMargin = 0;
 };
 
 class LineMap {
@@ -71,6 +80,12 @@ class LineMap {
     /// that goes into several maps.
     void insertSurface(const std::vector<SurfacePoint>& points,
                        const mrpt::poses::CPose2D& sensorPose);
+    /// Counts a view through (LineMapPoint::seenThrough) every map point from index `first` on
+    /// that `scan`, seen from `sensorPose` (map frame), saw through: its beam towards the point
+    /// and both neighbours are valid and reach `margin` (m) or more beyond it. Two neighbours,
+    /// so that a beam grazing the edge of an object does not clear its corner.
+    void carve(const PolarScan& scan, const mrpt::poses::CPose2D& sensorPose, std::size_t first,
+               double margin);
     /// Adds one point (fused into a close one with a similar normal).
     void insert(const LineMapPoint& p);
 

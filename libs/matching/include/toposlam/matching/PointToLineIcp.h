@@ -67,6 +67,10 @@ struct IcpOptions {
     /// takes them all. A person walking along with the robot stays a step ahead of it, and
     /// the places it stood in earlier scans pull a registration back by that step. 1 = all.
     std::uint32_t minMapViews = 1;
+    /// Map mode, wide-gate stage: map points that later scans saw through
+    /// (LineMapPoint::moved: a person who walked on) are not associated; the tight stage takes
+    /// them all, so the share of readings that fit (the overlap) counts them as before.
+    bool skipMovedMapPoints = false;
     /// Map mode: a map point is associated only when its surface faces the sensor at an
     /// incidence below this (rad; angle between its normal and the direction to the sensor;
     /// a surface facing away, beyond pi / 2, is never associated).

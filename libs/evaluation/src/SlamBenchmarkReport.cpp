@@ -36,8 +36,10 @@ std::string repeatedNote(const SlamBenchmarkLogResult& log) {
 std::string laserNote(const SlamBenchmarkLogResult& log) {
     if (!log.laserPosition)
         return "";
-    return ", scored at the laser, " + formatFixed(log.laserPosition->x, 3) + " m ahead and " +
-           formatFixed(log.laserPosition->y, 3) + " m left of the robot's centre";
+    const double x = log.laserPosition->x, y = log.laserPosition->y;
+    return ", scored at the laser, " + formatFixed(std::abs(x), 3) + " m " +
+           (x < 0 ? "behind" : "ahead") + " and " + formatFixed(std::abs(y), 3) + " m " +
+           (y < 0 ? "right" : "left") + " of the robot's centre";
 }
 
 std::string logLine(const SlamBenchmarkLogResult& log) {

@@ -111,6 +111,7 @@ struct Arguments {
     TCLAP::ValueArg<std::string> data, logs, engines, config, icpSlam, icpSlamConfig, keep, images,
         json, simPlans, simRobots, simSeeds, simDir, simConfig;
     cli::NumberArg<double> timeout;
+    TCLAP::SwitchArg robotFrame;
     cli::LogAlterationArgs alteration;
 };
 
@@ -183,6 +184,12 @@ Arguments::Arguments()
       timeout("", "timeout",
               "Kill a run after this many seconds of wall time (0: no limit, the default).", 0.0,
               cli::NumberRange<double>::nonNegative(1e6), "seconds", cmd),
+      robotFrame("", "robot-frame",
+                 "Score relation logs as the robot's poses the engines give, also where a log "
+                 "puts its laser off the robot's centre (ROBOTLASER lines): for relations made "
+                 "in the robot's frame. Default: at the laser each scan states, the frame of "
+                 "Kuemmerle et al.'s relations (the same where the laser is at the centre)",
+                 cmd),
       alteration(
           cmd, {"Every log runs so, named <log>-1inN and scored on the relations "
                 "between kept scans.",
@@ -256,6 +263,7 @@ evaluation::SlamBenchmarkOptions benchmarkOptions(Arguments& a) {
     options.keepDir = a.keep.getValue();
     options.imageDir = a.images.getValue();
     options.alteration = a.alteration.alteration();
+    options.robotFrame = a.robotFrame.getValue();
     evaluation::SlamEngineSetup& setup = options.setup;
     setup.timeoutSeconds = a.timeout.getValue();
     setup.slamConfig = tidy(a.config.getValue());

@@ -77,12 +77,15 @@ void runOnAlteredOffice(const std::string& options, const std::string& name, nlo
 TEST(BenchSlamApp, HelpExplainsEveryOption) {
     const auto r = runApp("toposlam-bench-slam", "--help");
     EXPECT_EQ(r.exitCode, 0) << r.output;
-    for (const char* option :
-         {"--data",   "--logs",   "--engines",   "--config",      "--icp-slam", "--icp-slam-config",
-          "--keep",   "--mirror", "--images",    "--json",        "--timeout",  "Kuemmerle",
-          "icp-slam", "office",   "--sim-plans", "--sim-robots",  "--sim-dir",  "--sim-config",
-          "lms1xx",   "lms200",   "urg-04lx",    "poor-odometry", "people",     "stalling-odometry",
-          "lds-01"}) {
+    for (const char* option : {"--data",        "--logs",       "--engines",
+                               "--config",      "--icp-slam",   "--icp-slam-config",
+                               "--keep",        "--mirror",     "--images",
+                               "--json",        "--timeout",    "Kuemmerle",
+                               "icp-slam",      "office",       "--sim-plans",
+                               "--sim-robots",  "--sim-dir",    "--sim-config",
+                               "lms1xx",        "lms200",       "urg-04lx",
+                               "poor-odometry", "people",       "stalling-odometry",
+                               "lds-01",        "--robot-frame"}) {
         EXPECT_TRUE(contains(r.output, option)) << option;
     }
 }
@@ -186,6 +189,16 @@ TEST(BenchSlamApp, RelationsAreScoredAtTheLaserTheLogStates) {
     EXPECT_EQ(graph["accuracy"]["relations_unmatched"], 0);
     // As on the office scored against its ground truth (expectScored's bound is 0.05 m).
     EXPECT_LT(graph["accuracy"]["translation_m"]["mean"].get<double>(), 0.02);
+
+    // --robot-frame scores the poses as given, for relations made in the robot's frame.
+    const auto robot = runCommand("cd '" + dir.file("") + "' && " + bench() +
+                                  "-d data --logs officelaser --engines graph --robot-frame "
+                                  "--json robot.json");
+    ASSERT_EQ(robot.exitCode, 0) << robot.output;
+    EXPECT_FALSE(contains(robot.output, "scored at the laser")) << robot.output;
+    const nlohmann::json asGiven = readJson(dir.file("robot.json"))["logs"][0];
+    EXPECT_TRUE(asGiven["reference"]["laser_position_m"].is_null());
+    EXPECT_GT(asGiven["runs"][0]["accuracy"]["translation_m"]["mean"].get<double>(), 0.05);
 }
 
 TEST(BenchSlamApp, KeepEveryOnABadLogFailsItsRowNamingTheProblem) {

@@ -269,7 +269,8 @@ SlamBenchmarkLogResult SlamBenchmark::runLog(const SlamBenchmarkLog& recorded,
     stamps.reserve(laserPositions.size());
     for (const io::TimedPose2D& scan : laserPositions)
         stamps.push_back(scan.stamp);
-    if (!reference.groundTruth && laserOffCentre(laserPositions))  // a ground truth: the robot's
+    // A ground truth gives the robot's poses; relation files are the laser's, unless told.
+    if (!reference.groundTruth && !options_.robotFrame && laserOffCentre(laserPositions))
         result.laserPosition = typicalLaserPosition(laserPositions);
     result.scans = stamps.size();
     const auto [first, last] = std::minmax_element(stamps.begin(), stamps.end());

@@ -41,6 +41,10 @@ struct SlamBenchmarkOptions {
     /// `<log>-beams1in<N>`, `<log>-to<R>m`, `<log>-laseronly`; scored on the reference's
     /// relations between kept scans. The default: the logs as recorded.
     io::LogAlteration alteration;
+    /// Score relation logs as the robot's poses even where the log puts its laser off the
+    /// robot's centre (relations made in the robot's frame); the default scores them at the
+    /// laser (LaserFrame.h).
+    bool robotFrame = false;
 };
 
 /// One table row: an engine on a log, and its score when it ran.

@@ -84,6 +84,27 @@ GeneratedTour tourGeneratedBuilding(const test::TempDir& dir, unsigned seed,
     return tour;
 }
 
+/// Maps `tour` with the shipped configuration and [GraphSlam] `key` on, then off: on, its ATE
+/// stays below `onBelow` (m); off, it exceeds `offAbove` (m), or the scenario no longer shows
+/// what the setting mends (`offMessage`).
+void expectSettingMends(const GeneratedTour& tour, const std::string& key, double onBelow,
+                        double offAbove, const char* offMessage) {
+    const io::Trajectory2D truth = io::loadTrajectory(tour.groundTruth);
+    for (const bool on : {true, false}) {
+        SCOPED_TRACE(key + (on ? " = true" : " = false"));
+        mrpt::config::CConfigFileMemory ini(test::readFile(test::configIni("toposlam-slam.ini")));
+        ini.write("GraphSlam", key, on);
+        const mapping::MappingResult result = mapping::mapLog(tour.log, ini);
+        ASSERT_EQ(result.trajectory.size(), truth.size());
+        const double ate =
+            evaluation::evaluateAbsoluteTrajectoryError(result.trajectory, truth).position.rms;
+        if (on)
+            EXPECT_LT(ate, onBelow);
+        else
+            EXPECT_GT(ate, offAbove) << offMessage;
+    }
+}
+
 /// The graph SLAM configured from config_ini/toposlam-slam.ini, run over a drive.
 struct SlamRun {
     std::unique_ptr<mapping::GraphSlam> slam;
@@ -1182,20 +1203,8 @@ TEST(GraphSlam, PlacesLaterKeyframesSawThroughDoNotHoldTheScan) {
         tourGeneratedBuilding(dir, 51, simulation::BuildingStyle::Office,
                               test::configIni("sim-office.ini"), " --people 15 --seed 2");
     ASSERT_EQ(tour.sim.exitCode, 0) << tour.sim.output;
-    const io::Trajectory2D truth = io::loadTrajectory(tour.groundTruth);
-    for (const bool carve : {true, false}) {
-        SCOPED_TRACE(carve ? "free_space_carving = true" : "free_space_carving = false");
-        mrpt::config::CConfigFileMemory ini(test::readFile(test::configIni("toposlam-slam.ini")));
-        ini.write("GraphSlam", "free_space_carving", carve);
-        const mapping::MappingResult result = mapping::mapLog(tour.log, ini);
-        ASSERT_EQ(result.trajectory.size(), truth.size());
-        const double ate =
-            evaluation::evaluateAbsoluteTrajectoryError(result.trajectory, truth).position.rms;
-        if (carve)
-            EXPECT_LT(ate, 0.04);
-        else
-            EXPECT_GT(ate, 0.06) << "the scenario no longer has ICP held by where people stood";
-    }
+    expectSettingMends(tour, "free_space_carving", 0.04, 0.06,
+                       "the scenario no longer has ICP held by where people stood");
 }
 
 TEST(GraphSlam, AStallsStepTheScanBoreOutFromBothStartsIsNotTakenBack) {
@@ -1262,21 +1271,8 @@ TEST(GraphSlam, AShortLaserRoundARingBuildingClosesTheLoopBackToTheStart) {
     const GeneratedTour tour =
         tourGeneratedBuilding(dir, 6, simulation::BuildingStyle::Ring, simIni);
     ASSERT_EQ(tour.sim.exitCode, 0) << tour.sim.output;
-    const io::Trajectory2D truth = io::loadTrajectory(tour.groundTruth);
-    for (const bool lever : {true, false}) {
-        SCOPED_TRACE(lever ? "loop_gate_lever_arm = true" : "loop_gate_lever_arm = false");
-        mrpt::config::CConfigFileMemory slamIni(
-            test::readFile(test::configIni("toposlam-slam.ini")));
-        slamIni.write("GraphSlam", "loop_gate_lever_arm", lever);
-        const mapping::MappingResult result = mapping::mapLog(tour.log, slamIni);
-        ASSERT_EQ(result.trajectory.size(), truth.size());
-        const double ate =
-            evaluation::evaluateAbsoluteTrajectoryError(result.trajectory, truth).position.rms;
-        if (lever)
-            EXPECT_LT(ate, 0.25);
-        else
-            EXPECT_GT(ate, 0.4) << "the scenario no longer needs the lever arm";
-    }
+    expectSettingMends(tour, "loop_gate_lever_arm", 0.25, 0.4,
+                       "the scenario no longer needs the lever arm");
 }
 
 TEST(GraphSlam, ANarrowLaserIsReportedAsAWeakFrontEnd) {

@@ -1,6 +1,7 @@
 #include <toposlam/evaluation/SlamBenchmarkReport.h>
 #include <toposlam/evaluation/SlamEvaluation.h>
 #include <toposlam/io/AtomicFile.h>
+#include <toposlam/io/LaserPosition.h>
 
 #include <algorithm>
 #include <cmath>
@@ -36,10 +37,7 @@ std::string repeatedNote(const SlamBenchmarkLogResult& log) {
 std::string laserNote(const SlamBenchmarkLogResult& log) {
     if (!log.laserPosition)
         return "";
-    const double x = log.laserPosition->x, y = log.laserPosition->y;
-    return ", scored at the laser, " + formatFixed(std::abs(x), 3) + " m " +
-           (x < 0 ? "behind" : "ahead") + " and " + formatFixed(std::abs(y), 3) + " m " +
-           (y < 0 ? "right" : "left") + " of the robot's centre";
+    return ", scored at the laser, " + io::describeLaserPosition(*log.laserPosition);
 }
 
 std::string logLine(const SlamBenchmarkLogResult& log) {

@@ -3,6 +3,7 @@
 #include <toposlam/io/AtomicFile.h>
 #include <toposlam/io/GridMapIO.h>
 #include <toposlam/io/JsonFile.h>
+#include <toposlam/io/LaserPosition.h>
 #include <toposlam/io/TextFile.h>
 #include <toposlam/mapping/MappingOutputs.h>
 
@@ -45,8 +46,6 @@ double percent(std::size_t part, std::size_t whole) {
 /// An odometry whose distances are off by this much (percent) stretches or shrinks a long
 /// corridor visibly (a 50 m corridor by a metre): the summary suggests odometry_calibration.
 constexpr double kSuggestCalibrationPercent = 2.0;
-/// A laser farther than this (m) from the robot's centre is named in the summary.
-constexpr double kLaserOffCentre = 1e-4;
 
 // How the odometry's distances were taken (odometry_calibration).
 std::string odometryLine(const MappingResult& r, const SlamStatistics& st) {
@@ -116,12 +115,11 @@ std::string formatSummary(const MappingResult& r) {
             r.scans, r.logDuration, r.wallSeconds, r.cpuSeconds);
     }
     // Kuemmerle et al.'s relations are the laser's: say which poses trajectory.txt gives.
-    if (std::hypot(r.laserPosition.x, r.laserPosition.y) > kLaserOffCentre) {
+    if (io::laserOffCentre(r.laserPosition)) {
         s += line(
-            "laser: %.3f m %s and %.3f m %s of the robot's centre; trajectory.txt gives the "
-            "robot's poses (toposlam-eval-slam --laser-frame-of <log> scores the laser's)",
-            std::abs(r.laserPosition.x), r.laserPosition.x < 0 ? "behind" : "ahead",
-            std::abs(r.laserPosition.y), r.laserPosition.y < 0 ? "right" : "left");
+            "laser: %s; trajectory.txt gives the robot's poses (toposlam-eval-slam "
+            "--laser-frame-of <log> scores the laser's)",
+            io::describeLaserPosition(r.laserPosition).c_str());
     }
     if (!r.otherLaserScans.empty()) {
         const auto named = [](const std::string& label) {

@@ -256,6 +256,8 @@ TEST(EvalSlamApp, BadInputExitsNonZeroAndWritesNoJson) {
         write(f.dir, "bad.relations", "10 11 0 0 0 0 0 0\n10 11 0 0 0 0\n");
     const std::string nanTrajectory = write(f.dir, "nan.txt", "10 0 0 0\n11 nan 0 0\n");
     const std::string otherLog = write(f.dir, "other.txt", "50 0 0 0\n51 1 0 0\n");
+    const std::string nanLog =
+        write(f.dir, "nan.clf", "FLASER 3 1.0 nan 1.0 0 0 0 0 0 0 10 host 10\n");
     const struct {
         std::string args, expected;
         int exitCode;  // 1 bad input, 2 bad usage
@@ -270,6 +272,14 @@ TEST(EvalSlamApp, BadInputExitsNonZeroAndWritesNoJson) {
          "missing.clf", 1},
         {f.trajectory + " --relations " + f.relations + " --mounting-from " + badRelations,
          "not a CARMEN log", 1},
+        // The log whose laser the poses are moved to: missing, not a laser log, or unreadable.
+        {f.trajectory + " --relations " + f.relations + " --laser-frame-of " +
+             f.dir.file("missing.clf"),
+         "missing.clf", 1},
+        {f.trajectory + " --relations " + f.relations + " --laser-frame-of " + badRelations,
+         "not a CARMEN log", 1},
+        {f.trajectory + " --relations " + f.relations + " --laser-frame-of " + nanLog,
+         "nan.clf: line 1: reading 1 is nan", 1},
         // Nothing measured is not a result: stamps of another log match no relation.
         {otherLog + " --relations " + f.relations, "other.txt: matches none of the 4 relations", 1},
         {"--icp-slam-path " + f.trajectory + " --relations " + f.relations, "--rawlog", 2},

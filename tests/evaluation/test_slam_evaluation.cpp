@@ -108,14 +108,15 @@ TEST(SlamEvaluation, WorstRelationsComeFirstWithEachMethodsMotion) {
 }
 
 TEST(SlamEvaluationRun, ALogNamedTwiceIsReadOnce) {
-    // The bundled office log as both --odometry-of and --mounting-from: the progress counts
-    // its scans once, and both uses get its odometry.
+    // The bundled office log as --odometry-of, --mounting-from and --laser-frame-of: the
+    // progress counts its scans once, and every use gets what it needs from it.
     const std::string office = test::shareDir() + "/office/";
     SlamEvaluationRequest request;
     request.groundTruthFile = office + "office_gt.txt";
     request.trajectories.push_back(
         {TrajectorySource::LogOdometry, "odometry", office + "office.rawlog"});
     request.mountingLog = office + "office.rawlog";
+    request.laserFrameLog = office + "office.rawlog";
     std::size_t scansRead = 0;
     double fraction = 0;
     const SlamEvaluationRun run = runSlamEvaluation(request, [&](double f, std::size_t scans) {
@@ -131,6 +132,9 @@ TEST(SlamEvaluationRun, ALogNamedTwiceIsReadOnce) {
     // The odometry against itself sits at the origin.
     ASSERT_TRUE(run.evaluation.methods[0].mounting.has_value());
     EXPECT_NEAR(run.evaluation.methods[0].mounting->mounting.x, 0.0, 1e-6);
+    // The office's laser sits 0.2 m ahead of the robot's centre.
+    EXPECT_EQ(run.evaluation.laserFrameLog, office + "office.rawlog");
+    EXPECT_NEAR(run.evaluation.laserPosition.x, 0.2, 1e-9);
 }
 
 }  // namespace

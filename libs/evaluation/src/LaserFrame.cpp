@@ -1,6 +1,7 @@
 #include <toposlam/evaluation/LaserFrame.h>
+#include <toposlam/evaluation/LogOdometry.h>
 #include <toposlam/evaluation/StampedPoseLookup.h>
-#include <toposlam/io/LaserLogReader.h>
+#include <toposlam/io/LaserPosition.h>
 
 #include <algorithm>
 #include <cmath>
@@ -10,16 +11,7 @@ namespace toposlam::evaluation {
 
 io::Trajectory2D laserPositionsAtScans(const std::string& logPath,
                                        const io::ProgressCallback& progress) {
-    io::LaserLogReader reader(logPath);
-    io::LaserLogRecord record;
-    io::Trajectory2D positions;
-    while (reader.next(record)) {
-        positions.push_back(
-            {record.fileStamp, {record.scan->sensorPose.x(), record.scan->sensorPose.y(), 0.0}});
-        if (progress)
-            progress(reader.fractionRead(), positions.size());
-    }
-    return positions;
+    return readLogScans(logPath, progress).laserPositions;
 }
 
 namespace {
@@ -46,9 +38,8 @@ mrpt::math::TPoint2D typicalLaserPosition(const io::Trajectory2D& laserPositions
 }
 
 bool laserOffCentre(const io::Trajectory2D& laserPositions) {
-    constexpr double kCentre = 1e-4;  // m
     return std::any_of(laserPositions.begin(), laserPositions.end(), [](const io::TimedPose2D& p) {
-        return std::hypot(p.pose.x, p.pose.y) > kCentre;
+        return io::laserOffCentre({p.pose.x, p.pose.y});
     });
 }
 

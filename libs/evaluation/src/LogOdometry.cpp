@@ -2,43 +2,30 @@
 #include <toposlam/io/InputError.h>
 #include <toposlam/io/LaserLogReader.h>
 
+#include <utility>
+
 namespace toposlam::evaluation {
 
-namespace {
-
-// Streams the log once, calling visit(record) per scan.
-template <typename Visit>
-void forEachScan(const std::string& logPath, const io::ProgressCallback& progress, Visit visit) {
+LogScans readLogScans(const std::string& logPath, const io::ProgressCallback& progress) {
     io::LaserLogReader reader(logPath);
     io::LaserLogRecord record;
-    std::size_t scans = 0;
+    LogScans scans;
     while (reader.next(record)) {
-        visit(record);
-        ++scans;
+        if (record.hasOdometry)
+            scans.odometry.push_back({record.fileStamp, record.odometry.asTPose()});
+        scans.laserPositions.push_back(
+            {record.fileStamp, {record.scan->sensorPose.x(), record.scan->sensorPose.y(), 0.0}});
         if (progress)
-            progress(reader.fractionRead(), scans);
+            progress(reader.fractionRead(), scans.laserPositions.size());
     }
+    return scans;
 }
-
-}  // namespace
 
 io::Trajectory2D odometryAtScans(const std::string& logPath, const io::ProgressCallback& progress) {
-    io::Trajectory2D trajectory;
-    forEachScan(logPath, progress, [&](const io::LaserLogRecord& r) {
-        if (r.hasOdometry)
-            trajectory.push_back({r.fileStamp, r.odometry.asTPose()});
-    });
-    if (trajectory.empty())
+    LogScans scans = readLogScans(logPath, progress);
+    if (scans.odometry.empty())
         throw io::InputError(logPath, "no odometry in the log");
-    return trajectory;
-}
-
-std::vector<double> scanFileStamps(const std::string& logPath,
-                                   const io::ProgressCallback& progress) {
-    std::vector<double> stamps;
-    forEachScan(logPath, progress,
-                [&](const io::LaserLogRecord& r) { stamps.push_back(r.fileStamp); });
-    return stamps;
+    return std::move(scans.odometry);
 }
 
 }  // namespace toposlam::evaluation

@@ -106,33 +106,40 @@ void readReference(const SlamEvaluationRequest& request, SlamEvaluationRun& run)
     ev.relationCount = run.relations.size();
 }
 
-/// A laser log's odometry at its scans, read once however many options name the log
-/// (--odometry-of X --mounting-from X).
-class LogOdometryCache {
+/// What each laser log says at its scans, read once however many options name the log
+/// (--odometry-of X --mounting-from X --laser-frame-of X).
+class LogScansCache {
   public:
-    explicit LogOdometryCache(LogsProgress& progress) : progress_(progress) {}
-    const io::Trajectory2D& of(const std::string& log) {
+    explicit LogScansCache(LogsProgress& progress) : progress_(progress) {}
+    const LogScans& of(const std::string& log) {
         auto it = read_.find(log);
         if (it == read_.end()) {
-            it = read_.emplace(log, odometryAtScans(log, progress_.nextLog())).first;
+            it = read_.emplace(log, readLogScans(log, progress_.nextLog())).first;
             progress_.logDone();
         }
         return it->second;
     }
+    /// As odometryAtScans().
+    const io::Trajectory2D& odometryOf(const std::string& log) {
+        const io::Trajectory2D& odometry = of(log).odometry;
+        if (odometry.empty())
+            throw io::InputError(log, "no odometry in the log");
+        return odometry;
+    }
 
   private:
     LogsProgress& progress_;
-    std::map<std::string, io::Trajectory2D> read_;
+    std::map<std::string, LogScans> read_;
 };
 
 io::Trajectory2D readTrajectory(const TrajectoryToScore& t, const SlamEvaluationRequest& request,
-                                const std::vector<double>* stamps, LogOdometryCache& odometry,
+                                const std::vector<double>* stamps, LogScansCache& logs,
                                 std::string& source) {
     source = t.file;
     switch (t.source) {
         case TrajectorySource::LogOdometry:
             source = "odometry of " + t.file;
-            return odometry.of(t.file);
+            return logs.odometryOf(t.file);
         case TrajectorySource::IcpSlamPath:
             source = t.file + " + " + request.rawlog;
             return loadIcpSlamPath(t.file, request.rawlog, stamps);
@@ -151,38 +158,40 @@ SlamEvaluationRun runSlamEvaluation(const SlamEvaluationRequest& request,
     readReference(request, run);
     SlamEvaluation& ev = run.evaluation;
 
-    std::set<std::string> odometryLogs;  // each read once
+    std::set<std::string> logsToRead;  // each read once
     for (const TrajectoryToScore& t : request.trajectories) {
         if (t.source == TrajectorySource::LogOdometry)
-            odometryLogs.insert(t.file);
+            logsToRead.insert(t.file);
     }
-    if (!request.mountingLog.empty())
-        odometryLogs.insert(request.mountingLog);
-    LogsProgress logsProgress(progress, odometryLogs.size() + (request.scanStamps.empty() ? 0 : 1) +
-                                            (request.laserFrameLog.empty() ? 0 : 1));
-    LogOdometryCache odometry(logsProgress);
+    for (const std::string* log :
+         {&request.mountingLog, &request.scanStamps, &request.laserFrameLog}) {
+        if (!log->empty())
+            logsToRead.insert(*log);
+    }
+    LogsProgress logsProgress(progress, logsToRead.size());
+    LogScansCache logs(logsProgress);
     std::optional<std::vector<double>> stamps;
     if (!request.scanStamps.empty()) {
-        stamps = scanFileStamps(request.scanStamps, logsProgress.nextLog());
-        logsProgress.logDone();
+        stamps.emplace();
+        for (const io::TimedPose2D& scan : logs.of(request.scanStamps).laserPositions)
+            stamps->push_back(scan.stamp);
     }
-    std::optional<io::Trajectory2D> laserPositions;
+    const io::Trajectory2D* laserPositions = nullptr;  // in the cache, which outlives them
     if (!request.laserFrameLog.empty()) {
-        laserPositions = laserPositionsAtScans(request.laserFrameLog, logsProgress.nextLog());
-        logsProgress.logDone();
+        laserPositions = &logs.of(request.laserFrameLog).laserPositions;
         ev.laserFrameLog = request.laserFrameLog;
         ev.laserPosition = typicalLaserPosition(*laserPositions);
     }
-    const io::Trajectory2D* mountingOdometry = nullptr;  // in the cache, which outlives it
+    const io::Trajectory2D* mountingOdometry = nullptr;
     if (!request.mountingLog.empty()) {
         ev.mountingLog = request.mountingLog;
-        mountingOdometry = &odometry.of(request.mountingLog);
+        mountingOdometry = &logs.odometryOf(request.mountingLog);
     }
     const io::Trajectory2D* groundTruth = run.groundTruth ? &*run.groundTruth : nullptr;
     for (const TrajectoryToScore& t : request.trajectories) {
         std::string source;
         io::Trajectory2D estimate =
-            readTrajectory(t, request, stamps ? &*stamps : nullptr, odometry, source);
+            readTrajectory(t, request, stamps ? &*stamps : nullptr, logs, source);
         if (estimate.empty())
             throw io::InputError(t.file, "no pose in the trajectory");
         std::optional<SensorMounting> mounting;

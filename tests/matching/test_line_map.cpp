@@ -259,5 +259,30 @@ TEST(LineMap, CarveCountsTheScansThatSawThroughAPoint) {
     EXPECT_EQ(map.points()[person].seenThrough, 2u);
 }
 
+TEST(LineMap, CountSeenThroughJudgesAsCarveAndRecordsNothing) {
+    LineMap map;
+    for (float x = -1.5f; x <= 1.5f; x += 0.05f)  // a wall y = 2
+        map.insert(pointAt(x, 2, 0, -1));
+    map.insert(pointAt(0.5f, 1.0f, 0, -1));  // where a person stood: now free
+    // The scan from the origin, facing +y, sees the wall; a beam every 0.5 deg.
+    const double step = M_PI / 360;
+    std::vector<float> ranges;
+    for (double a = M_PI / 4; a <= 3 * M_PI / 4 + 1e-9; a += step)
+        ranges.push_back(float(2 / std::sin(a)));
+    matching::PolarScan scan;
+    scan.assign(M_PI / 4, step, ranges, std::vector<char>(ranges.size(), 1), 20.0);
+    EXPECT_EQ(map.countSeenThrough(scan, mrpt::poses::CPose2D(0, 0, 0), 0.2), 1u);
+    // The same readings placed 0.1 m nearer the wall: within the margin, as seen.
+    EXPECT_EQ(map.countSeenThrough(scan, mrpt::poses::CPose2D(0, 0.1, 0), 0.2), 1u);
+    // 0.5 m nearer (a registration that slid along the heading): every beam reaches 0.5 m or
+    // more beyond the wall, which the map's scans saw. From there the wall's ends lie at the
+    // edges of the scan's 90 deg, where a beam lacks a neighbour: most of it, not all.
+    const std::size_t slid = map.countSeenThrough(scan, mrpt::poses::CPose2D(0, 0.5, 0), 0.2);
+    EXPECT_GE(slid, 2 * map.size() / 3);
+    EXPECT_LE(slid, map.size());
+    for (const LineMapPoint& p : map.points())
+        EXPECT_EQ(p.seenThrough, 0u) << "counted, not recorded";
+}
+
 }  // namespace
 }  // namespace toposlam

@@ -26,11 +26,6 @@ EdgeKind edgeKind(RegistrationMethod m) {
     return EdgeKind::Odometry;
 }
 
-/// m: a keyframe's beams must reach this far beyond a submap point to have seen through it
-/// (free_space_carving): a person is 0.3-0.5 m across, and a wall's point seen again lies
-/// within the laser's noise and the keyframes' few centimetres of error of where it was.
-constexpr double kCarveMargin = 0.2;
-
 matching::LineMapOptions lineMapOptions(const GraphSlamOptions& o) {
     matching::LineMapOptions m;
     m.resolution = o.mapResolution;
@@ -38,7 +33,7 @@ matching::LineMapOptions lineMapOptions(const GraphSlamOptions& o) {
     m.fuseDistance = o.mapFuseDistance;
     m.confirmDistance = o.mapConfirmDistance;
     m.maxRange = o.mapMaxRange;
-    m.carveMargin = o.freeSpaceCarving ? kCarveMargin : 0.0;
+    m.carveMargin = o.freeSpaceCarving ? kSeenThroughMargin : 0.0;
     return m;
 }
 }  // namespace
@@ -224,6 +219,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
             stats_.icpSecondStarts += r.secondStart;
             stats_.icpWithoutForeground += r.withoutForeground;
             stats_.icpHeldAlongHeading += r.heldAlongHeading();
+            stats_.icpHeldForFreeSpace += r.heldAlongHeading() && r.alongHeading->heldForFreeSpace;
             break;
         case RegistrationMethod::GraphMatcher:
             ++stats_.registeredByGraphMatcher;

@@ -86,6 +86,10 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
     s.real("along_heading_margin", alongHeadingMargin, "",
            "... better: by more than this share of the readings")
         .within(0, 1);
+    s.real("along_heading_free_space", alongHeadingFreeSpace, "",
+           "... and keeps it where the scan at ICP's pose sees through this share of its "
+           "readings more submap points than at the odometry's; 0 = off")
+        .within(0, 1);
     s.real("min_inlier_ratio", minInlierRatio, "",
            "a registration is good when this share of the scan's points lies on the map ...")
         .within(0, 1);

@@ -155,7 +155,7 @@ std::string formatSummary(const MappingResult& r) {
             "registration: %zu by ICP (%.1f %%; %zu unsettled, %zu of them from a second start, "
             "%zu more refused beyond the odometry's noise; "
             "%zu without foreground objects; %zu held at the odometry's position along the "
-            "heading), %zu by the graph "
+            "heading, %zu of them where ICP's pose saw through the submap), %zu by the graph "
             "matcher (%.1f %%; %zu of them beyond a jump, confirmed on the submap), %zu failed "
             "(%.1f %%, odometry kept; %zu of them with a graph-matcher answer only foreground "
             "objects bore out); %s; %zu odometry stalls bridged (%zu of their scans placed "
@@ -164,7 +164,7 @@ std::string formatSummary(const MappingResult& r) {
             "last motion instead of the odometry",
             st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
             st->icpSecondStarts, st->icpUnsettledRefused, st->icpWithoutForeground,
-            st->icpHeldAlongHeading, st->registeredByGraphMatcher,
+            st->icpHeldAlongHeading, st->icpHeldForFreeSpace, st->registeredByGraphMatcher,
             percent(st->registeredByGraphMatcher, n), st->graphMatcherConfirmed,
             st->registrationFailed, percent(st->registrationFailed, n),
             st->matcherRefusedForeground, jumps.c_str(), st->odometryStallsBridged,
@@ -245,6 +245,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
                              {"icp_unsettled_refused", st->icpUnsettledRefused},
                              {"icp_without_foreground", st->icpWithoutForeground},
                              {"icp_held_along_heading", st->icpHeldAlongHeading},
+                             {"icp_held_for_free_space", st->icpHeldForFreeSpace},
                              {"graph_matcher", st->registeredByGraphMatcher},
                              {"graph_matcher_confirmed", st->graphMatcherConfirmed},
                              {"last_motion_predictions", st->lastMotionPredictions},
@@ -269,7 +270,10 @@ nlohmann::json summaryJson(const MappingResult& r) {
                  {"readings", c.readings},
                  {"on_map_at_icp", c.onMapAtIcp},
                  {"on_map_at_odometry", c.onMapAtOdometry},
-                 {"held", c.held}});
+                 {"seen_through_at_icp", c.seenThroughAtIcp},
+                 {"seen_through_at_odometry", c.seenThroughAtOdometry},
+                 {"held", c.held},
+                 {"held_for_free_space", c.heldForFreeSpace}});
         }
         j["registration"]["along_heading_checks"] = std::move(checks);
         j["odometry"] = {{"scans_without", st->scansWithoutOdometry},

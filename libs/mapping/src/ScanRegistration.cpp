@@ -196,9 +196,22 @@ bool ScanRegistration::holdAlongHeading(const matching::PolarScan& scan,
     check.onMapAtOdometry = readingsOnMap(map, scan, kept + sensorOnRobot);
     const double readings = double(check.readings), atAttempt = double(check.onMapAtIcp);
     // A corridor, not a place where nothing fits: most readings lie on the submap.
-    check.held =
-        atAttempt >= kSlideMinFit * readings &&
+    const bool fits = atAttempt >= kSlideMinFit * readings;
+    const bool fitsNoBetter =
         double(check.onMapAtOdometry) + options_.alongHeadingMargin * readings >= atAttempt;
+    // Or ICP's pose makes the scan see through surfaces the submap's keyframes saw.
+    bool seesThrough = false;
+    if (options_.alongHeadingFreeSpace > 0) {
+        check.seenThroughAtIcp =
+            map.countSeenThrough(scan, attempt.robot + sensorOnRobot, kSeenThroughMargin);
+        check.seenThroughAtOdometry =
+            map.countSeenThrough(scan, kept + sensorOnRobot, kSeenThroughMargin);
+        seesThrough =
+            double(check.seenThroughAtIcp) >=
+            double(check.seenThroughAtOdometry) + options_.alongHeadingFreeSpace * readings;
+    }
+    check.held = fits && (fitsNoBetter || seesThrough);
+    check.heldForFreeSpace = check.held && !fitsNoBetter;
     if (check.held)
         attempt.robot = kept;
     return check.held;

@@ -214,15 +214,16 @@ void LineMap::stamp(std::uint32_t i) {
     }
 }
 
-void LineMap::carve(const PolarScan& scan, const mrpt::poses::CPose2D& sensorPose,
-                    std::size_t first, double margin) {
+template <typename Seen>
+void LineMap::forEachSeenThrough(const PolarScan& scan, const mrpt::poses::CPose2D& sensorPose,
+                                 std::size_t first, double margin, Seen&& seen) const {
     const double c = std::cos(sensorPose.phi()), s = std::sin(sensorPose.phi());
     const auto beyond = [&](long beam, double range) {
         return beam >= 0 && scan.valid(std::size_t(beam)) &&
                scan.range(std::size_t(beam)) >= range + margin;
     };
     for (std::size_t i = first; i < points_.size(); ++i) {
-        LineMapPoint& p = points_[i];
+        const LineMapPoint& p = points_[i];
         const double dx = p.x - sensorPose.x(), dy = p.y - sensorPose.y();
         const double lx = c * dx + s * dy, ly = -s * dx + c * dy;
         const double range = std::hypot(lx, ly);
@@ -231,8 +232,21 @@ void LineMap::carve(const PolarScan& scan, const mrpt::poses::CPose2D& sensorPos
         const long beam = scan.beamAtPoint(lx, ly);
         if (beyond(beam, range) && beyond(scan.neighbour(beam, -1), range) &&
             beyond(scan.neighbour(beam, 1), range))
-            ++p.seenThrough;
+            seen(i);
     }
+}
+
+void LineMap::carve(const PolarScan& scan, const mrpt::poses::CPose2D& sensorPose,
+                    std::size_t first, double margin) {
+    forEachSeenThrough(scan, sensorPose, first, margin,
+                       [this](std::size_t i) { ++points_[i].seenThrough; });
+}
+
+std::size_t LineMap::countSeenThrough(const PolarScan& scan, const mrpt::poses::CPose2D& sensorPose,
+                                      double margin) const {
+    std::size_t count = 0;
+    forEachSeenThrough(scan, sensorPose, 0, margin, [&count](std::size_t) { ++count; });
+    return count;
 }
 
 }  // namespace toposlam::matching

@@ -11,6 +11,12 @@
 
 namespace toposlam::mapping {
 
+/// m: a beam must reach this far beyond a submap point to have seen through it
+/// (free_space_carving, along_heading_free_space): a person is 0.3-0.5 m across, and a wall's
+/// point seen again lies within the laser's noise and the keyframes' few centimetres of error of
+/// where it was.
+inline constexpr double kSeenThroughMargin = 0.2;
+
 struct GraphSlamOptions : public config::Options {
     // --- Front end: keyframes and local submaps ---
     double keyframeDistance = 0.3;  ///< m travelled since the last keyframe
@@ -87,6 +93,13 @@ struct GraphSlamOptions : public config::Options {
     /// such slides often fit a few percent more readings than the truth.
     double alongHeadingCheck = 0.1;
     double alongHeadingMargin = 0.1;  ///< share of the scan's readings
+    /// ... or when, at ICP's pose, the scan sees through at least this share of its readings
+    /// more submap points than at the odometry's position (LineMap::countSeenThrough, beams
+    /// reaching kSeenThroughMargin beyond them): the slide puts free space where the submap
+    /// holds surfaces that the scans before it saw. 0 = off. A slide often fits more readings
+    /// because the place it slid to has more surfaces near them, true or not; free space seen
+    /// through a wall is evidence that no fit outweighs.
+    double alongHeadingFreeSpace = 0.05;
     /// A registration is good when at least this share of the scan's valid points ends on
     /// the local map...
     double minInlierRatio = 0.35;

@@ -27,7 +27,8 @@
 //     same tests, it is the answer. And a correction of more than along_heading_check along
 //     the heading must be borne out by the scan (by its rest, without such objects): where
 //     the odometry's position along the heading fits it nearly as well, along a corridor whose
-//     walls do not fix that position, the pose is moved back there. Both corrections are
+//     walls do not fix that position, or where ICP's pose has the scan see through walls the
+//     submap holds (along_heading_free_space), the pose is moved back there. Both corrections are
 //     measured from the prediction, except in an odometry stall where ICP from the standstill
 //     and from the last motion end at the same pose, nearer the last motion, on a step
 //     straight on: the scan bore that step out, and they are measured from the last motion;
@@ -238,7 +239,9 @@ class ScanRegistration {
                            const mrpt::poses::CPose2D& from, IcpAttempt& icp, Registration& out);
     /// True, and `attempt` moved there, when `scan`'s readings lie on the submap at `from`'s
     /// position along the heading (with the attempt's sideways and turn correction) nearly as
-    /// often as at the attempt's pose (along_heading_margin). `check` gets the evidence.
+    /// often as at the attempt's pose (along_heading_margin), or the scan sees through clearly
+    /// more submap points at the attempt's pose than there (along_heading_free_space); at the
+    /// attempt's pose at least half of them must lie on the submap. `check` gets the evidence.
     bool holdAlongHeading(const matching::PolarScan& scan,
                           const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
                           const mrpt::poses::CPose2D& from, IcpAttempt& attempt,

@@ -17,7 +17,12 @@ struct AlongHeadingCheck {
     /// Readings within 5 cm of the submap at ICP's pose and at the odometry's position along
     /// the heading (with ICP's sideways and turn correction).
     std::size_t onMapAtIcp = 0, onMapAtOdometry = 0;
+    /// Submap points the scan sees through at those two poses (along_heading_free_space;
+    /// LineMap::countSeenThrough): 0 when that test is off.
+    std::size_t seenThroughAtIcp = 0, seenThroughAtOdometry = 0;
     bool held = false;  ///< the odometry's position along the heading was kept
+    /// ... because ICP's pose sees through the submap, where the fit alone did not hold it.
+    bool heldForFreeSpace = false;
 };
 
 struct SlamStatistics {
@@ -39,6 +44,8 @@ struct SlamStatistics {
     std::size_t icpWithoutForeground = 0;
     /// Of those, kept at the odometry's position along the heading (along_heading_check).
     std::size_t icpHeldAlongHeading = 0;
+    /// Of those, held because ICP's pose saw through the submap (along_heading_free_space).
+    std::size_t icpHeldForFreeSpace = 0;
     /// Every along-heading check, in scan order (for the summary: where ICP and the odometry
     /// disagreed along the way, and what the scan said).
     std::vector<AlongHeadingCheck> alongHeadingChecks;

@@ -86,6 +86,11 @@ class LineMap {
     /// so that a beam grazing the edge of an object does not clear its corner.
     void carve(const PolarScan& scan, const mrpt::poses::CPose2D& sensorPose, std::size_t first,
                double margin);
+    /// The map points `scan`, seen from `sensorPose` (map frame), would see through, as carve()
+    /// judges them, counted and not recorded: free space that a registration at that pose
+    /// claims where the map has a surface.
+    std::size_t countSeenThrough(const PolarScan& scan, const mrpt::poses::CPose2D& sensorPose,
+                                 double margin) const;
     /// Adds one point (fused into a close one with a similar normal).
     void insert(const LineMapPoint& p);
 
@@ -114,6 +119,11 @@ class LineMap {
 
   private:
     static constexpr std::uint32_t kNone = 0xffffffffu;
+    /// Calls seen(i) for every point i from `first` on that `scan` at `sensorPose` sees
+    /// through (carve, countSeenThrough).
+    template <typename Seen>
+    void forEachSeenThrough(const PolarScan& scan, const mrpt::poses::CPose2D& sensorPose,
+                            std::size_t first, double margin, Seen&& seen) const;
     static constexpr long kTile = 32;  ///< cells along a tile's side (1.6 m at 5 cm)
     static constexpr std::size_t kTileCells = std::size_t(kTile * kTile);
     struct Cell {

@@ -1231,7 +1231,7 @@ TEST(GraphSlam, ASlideThatSeesThroughTheSubmapIsHeldAtTheOdometry) {
     const GeneratedTour tour =
         tourGeneratedBuilding(dir, 51, simulation::BuildingStyle::Ring, simIni, " --seed 4");
     ASSERT_EQ(tour.sim.exitCode, 0) << tour.sim.output;
-    expectSettingMends(tour, "along_heading_free_space", "0.05", "0", 0.04, 0.08,
+    expectSettingMends(tour, "along_heading_free_space", "0.1", "0", 0.04, 0.08,
                        "the scenario no longer has ICP slide where the fit holds it");
 }
 

@@ -99,7 +99,7 @@ struct GraphSlamOptions : public config::Options {
     /// holds surfaces that the scans before it saw. 0 = off. A slide often fits more readings
     /// because the place it slid to has more surfaces near them, true or not; free space seen
     /// through a wall is evidence that no fit outweighs.
-    double alongHeadingFreeSpace = 0.05;
+    double alongHeadingFreeSpace = 0.1;
     /// A registration is good when at least this share of the scan's valid points ends on
     /// the local map...
     double minInlierRatio = 0.35;

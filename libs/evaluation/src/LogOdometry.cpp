@@ -21,10 +21,15 @@ LogScans readLogScans(const std::string& logPath, const io::ProgressCallback& pr
     return scans;
 }
 
-io::Trajectory2D odometryAtScans(const std::string& logPath, const io::ProgressCallback& progress) {
-    LogScans scans = readLogScans(logPath, progress);
+const io::Trajectory2D& odometryOf(const LogScans& scans, const std::string& logPath) {
     if (scans.odometry.empty())
         throw io::InputError(logPath, "no odometry in the log");
+    return scans.odometry;
+}
+
+io::Trajectory2D odometryAtScans(const std::string& logPath, const io::ProgressCallback& progress) {
+    LogScans scans = readLogScans(logPath, progress);
+    odometryOf(scans, logPath);
     return std::move(scans.odometry);
 }
 

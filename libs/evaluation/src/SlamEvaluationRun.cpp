@@ -121,10 +121,7 @@ class LogScansCache {
     }
     /// As odometryAtScans().
     const io::Trajectory2D& odometryOf(const std::string& log) {
-        const io::Trajectory2D& odometry = of(log).odometry;
-        if (odometry.empty())
-            throw io::InputError(log, "no odometry in the log");
-        return odometry;
+        return evaluation::odometryOf(of(log), log);
     }
 
   private:

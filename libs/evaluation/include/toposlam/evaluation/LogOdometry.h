@@ -32,4 +32,8 @@ struct LogScans {
 /// Throws io::InputError like the reader.
 LogScans readLogScans(const std::string& logPath, const io::ProgressCallback& progress = {});
 
+/// `scans.odometry` (read from `logPath`); throws io::InputError naming `logPath` when the log
+/// has no odometry at all.
+const io::Trajectory2D& odometryOf(const LogScans& scans, const std::string& logPath);
+
 }  // namespace toposlam::evaluation

@@ -154,9 +154,47 @@ TEST(OdometryLag, ARobotThatStopsIsNoStallOnceItHasStopped) {
     EXPECT_FALSE(lag.catchingUp(CPose2D(0, 0, mrpt::DEG2RAD(20.0)), kStill));
 }
 
+TEST(OdometryLag, CatchingUpEndsOnceTheStallsMotionIsDelivered) {
+    // Along a corridor: two scans stalled while registration saw the robot go 0.35 m each, and
+    // the reading after holds them on top of its own step. ICP started from the last motion
+    // falls short where nothing along the corridor fixes the motion; were the next reading, in
+    // step again, compared with that short motion, it would look like more catching up, and
+    // each scan would be predicted shorter still (ring51, stalling robot, seed 2: five scans,
+    // 1.2 m lost). The stall's 0.7 m delivered, the odometry is in step.
+    const CPose2D ahead(0.35, 0.0, 0.0);
+    const auto stallTwoScans = [&](OdometryLag& lag) {
+        lag.catchingUp(ahead, ahead);
+        lag.registered(ahead, ahead);
+        for (int k = 0; k < 2; ++k) {
+            lag.catchingUp(kStill, ahead);
+            lag.registered(kStill, ahead);
+        }
+    };
+    OdometryLag atOnce;
+    stallTwoScans(atOnce);
+    const CPose2D reading(1.05, 0.0, 0.0);  // 0.7 m beyond the 0.35 predicted
+    EXPECT_TRUE(atOnce.catchingUp(reading, ahead));
+    const CPose2D fellShort(0.06, 0.0, 0.0);
+    atOnce.registered(reading, fellShort);
+    EXPECT_FALSE(atOnce.catchingUp(ahead, fellShort));  // 0.29 m beyond it, but its own step
+
+    OdometryLag inTwo;  // the backlog comes back over two readings
+    stallTwoScans(inTwo);
+    const CPose2D half(0.7, 0.0, 0.0);
+    EXPECT_TRUE(inTwo.catchingUp(half, ahead));  // 0.35 m of the 0.7 still owed
+    inTwo.registered(half, ahead);
+    EXPECT_TRUE(inTwo.catchingUp(half, ahead));
+    inTwo.registered(half, ahead);
+    EXPECT_FALSE(inTwo.catchingUp(CPose2D(0.6, 0.0, 0.0), ahead));  // a faster robot now
+}
+
 TEST(OdometryLag, CatchingUpEndsAfterAFewScans) {
     OdometryLag lag;
-    lag.catchingUp(kStill, kTurning);
+    // A long stall in a turn: far more backlog than the catch-up scans deliver.
+    for (int k = 0; k < 20; ++k) {
+        lag.catchingUp(kStill, kTurning);
+        lag.registered(kStill, kTurning);
+    }
     const CPose2D fast(0, 0, mrpt::DEG2RAD(25.0));
     int catchUps = 0;
     for (int k = 0; k < 10; ++k)

@@ -2,6 +2,7 @@
 
 #include <mrpt/math/wrap2pi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -23,16 +24,28 @@ bool OdometryLag::catchingUp(const mrpt::poses::CPose2D& increment,
         stalled_ = false;
         catchUpLeft_ = kMaxCatchUpScans;
     }
-    if (catchUpLeft_ == 0)
+    if (catchUpLeft_ == 0) {
+        backlogDistance_ = backlogTurn_ = 0;
         return false;
+    }
     --catchUpLeft_;
     // A backlog adds to the motion: a step that is not longer, nor turns farther, than the last
     // registered one by the margins is the odometry in step with the robot again (one that
     // reads less is the robot slowing down, which at a low scan rate is a large change too).
     if (!exceeds(increment, lastMotion)) {
         catchUpLeft_ = 0;
+        backlogDistance_ = backlogTurn_ = 0;
         return false;
     }
+    // What this increment holds beyond the motion predicted for it is backlog delivered. Once
+    // no more than the margins is left the odometry is in step again, however short the
+    // registered motion has become meanwhile (along a corridor ICP started from a short
+    // prediction stays short, and the next catch-up would predict shorter still).
+    backlogDistance_ -= std::max(0.0, increment.norm() - lastMotion.norm());
+    backlogTurn_ -= std::max(0.0, std::abs(mrpt::math::wrapToPi(increment.phi())) -
+                                      std::abs(mrpt::math::wrapToPi(lastMotion.phi())));
+    if (backlogDistance_ <= kAgreeDistance && backlogTurn_ <= kAgreeAngle)
+        catchUpLeft_ = 0;
     return true;
 }
 
@@ -99,6 +112,9 @@ mrpt::poses::CPose2D OdometryLag::stepSinceStall(const mrpt::poses::CPose2D& inc
 void OdometryLag::registered(const mrpt::poses::CPose2D& increment,
                              const mrpt::poses::CPose2D& step) {
     if (zero(increment)) {
+        // The motion the odometry missed, for catchingUp() to expect in the increments after.
+        backlogDistance_ += step.norm();
+        backlogTurn_ += std::abs(mrpt::math::wrapToPi(step.phi()));
         if (repeatedScans_++ == 0) {
             movedBeforeStall_ = moved(lastStep_);
             sinceReading_ = step;

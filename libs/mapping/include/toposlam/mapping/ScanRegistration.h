@@ -162,6 +162,10 @@ struct Prediction {
     /// The prediction is the odometry's own step (not the last motion: no jump, no stall, a log
     /// with odometry), so the odometry model bounds its error.
     bool odometryPredicted = false;
+    /// max_lateral_correction is for steps up to odometry_jump_distance; a jumped reading the
+    /// scan bore out (ScanRegistration::jumpBorneOut) is longer, and its sideways error grows
+    /// with it: the bound is this many times larger.
+    double sidewaysScale = 1;
     /// The odometry's step since the last scan as predicted (the last motion after a jump),
     /// and the robot's motion registered at the last scan (robot frame, m, rad).
     mrpt::poses::CPose2D odometryStep, lastMotion;
@@ -364,7 +368,9 @@ class ScanRegistration {
     /// motion (kept in motionPrediction_) unless that motion translated at most
     /// OdometryLag::kMovedDistance (a turn the laser fixes anywhere), or ICP from both ends
     /// at the same pose, or ICP from the standstill puts second_opinion_margin more of `scan`
-    /// on the submap. `started` gets the ICP run from the prediction returned.
+    /// on the submap, or only ICP from the standstill passes tryIcp()'s tests and it puts more
+    /// of `scan` on the submap (the robot stopped turning during the stall).
+    /// `started` gets the ICP run from the prediction returned.
     const Prediction& standstillBorneOut(const matching::PolarScan& scan,
                                          const mrpt::poses::CPose2D& sensorOnRobot,
                                          const Prediction& prediction,

@@ -847,11 +847,12 @@ TEST(GraphSlam, ATurnOnTheSpotSoonAfterAStallIsTheOdometrysNotACatchUp) {
     // 1.05 m between scans; the odometry stalls for a scan on the way to the first corner,
     // and two scans after it the robot turns on the spot by 40 deg, twice. The odometry reads
     // those turns right, but so soon after a stall a step that turns 40 deg more than the
-    // last motion is taken for catching up (OdometryLag), and the last motion, 1.05 m on, is
+    // last motion was taken for catching up (OdometryLag), and the last motion, 1.05 m on,
     // predicted: ICP from there fails, and the graph matcher's answer is beyond twice the jump
-    // bounds from it. ICP from the odometry's step places the scan (keepCaughtUpReading);
-    // without it the scan kept the last motion, 1.05 m and 40 deg off (Bormann's lab_b at a
-    // third of its scans, 8.5 m ATE).
+    // bounds from it. Without a rule the scan kept the last motion, 1.05 m and 40 deg off
+    // (Bormann's lab_b at a third of its scans, 8.5 m ATE). First ICP from the odometry's
+    // step placed it (keepCaughtUpReading); now the reading after the stall (2.1 m, a jump)
+    // has delivered the stall's 1.05 m, the catch-up is over, and the turn is the odometry's.
     std::vector<CPose2D> truth = test::drivePath({{1.5, 1.5}, {18.5, 1.5}}, 1.05);
     const std::size_t stall = truth.size() - 2, turned = truth.size();
     for (const double deg : {40.0, 80.0})
@@ -864,8 +865,7 @@ TEST(GraphSlam, ATurnOnTheSpotSoonAfterAStallIsTheOdometrysNotACatchUp) {
         drive.odometry[stall] = drive.odometry[stall - 1];
         const SlamRun run = runSlam(drive);
         const auto& stats = run.slam->statistics();
-        ASSERT_GE(stats.odometryCatchUps, 1u) << "the turn must look like a catch-up";
-        EXPECT_GE(stats.odometryCatchUpsKept, 1u) << "seed " << seed;
+        EXPECT_EQ(stats.odometryCatchUps, 0u) << "the stall's motion was delivered: seed " << seed;
         const double headingError = std::abs((run.poses[turned] - truth[turned]).phi());
         EXPECT_LT(headingError, mrpt::DEG2RAD(2.0)) << "seed " << seed;
         // 1 cm range noise: registration to a few mm per scan, 0.05 m as in the loop test.
@@ -1233,6 +1233,42 @@ TEST(GraphSlam, ASlideThatSeesThroughTheSubmapIsHeldAtTheOdometry) {
     ASSERT_EQ(tour.sim.exitCode, 0) << tour.sim.output;
     expectSettingMends(tour, "along_heading_free_space", "0.1", "0", 0.04, 0.08,
                        "the scenario no longer has a slide the fit lets pass");
+}
+
+TEST(GraphSlam, StallsInTheBendsOfARingBuildingLoseNoCorridor) {
+    // Generated ring building 51 (B4-rings' ring51) toured by B3-sim's stalling robot.
+    // - Seed 2: in a bend the odometry stalls twice; each catch-up is predicted by the last
+    //   registered motion, which ICP, entering a corridor, left short. The readings after, in
+    //   step again (0.35 m a scan), looked far longer than that short motion and were taken for
+    //   more catching up, each predicted shorter still: five scans, 1.2 m of corridor lost, ATE
+    //   0.38 m. A catch-up now ends once it has delivered the stall's motion: 0.048 m.
+    // - Seed 3: the robot stops turning during a stall. ICP from the last motion (14 deg where
+    //   the robot turned 2) ends 12 deg off on a third of the scan and fails, and the scan kept
+    //   the last motion's turn: ATE 0.38 m (0.014 m before the catch-up rule, by chance: the
+    //   scans before it a millimetre elsewhere). ICP from the standstill, which passes and fits
+    //   more of the scan, is now taken: 0.014 m.
+    const evaluation::SimulatedRobot* robot = evaluation::findSimulatedRobot("stalling-odometry");
+    ASSERT_NE(robot, nullptr);
+    for (const int seed : {2, 3}) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        const test::TempDir dir;
+        const std::string simIni = dir.file("stalling-odometry.ini");
+        evaluation::writeIniWithSettings(test::configIni("sim-office.ini"), simIni,
+                                         robot->settings);
+        const GeneratedTour tour = tourGeneratedBuilding(dir, 51, simulation::BuildingStyle::Ring,
+                                                         simIni, " --seed " + std::to_string(seed));
+        ASSERT_EQ(tour.sim.exitCode, 0) << tour.sim.output;
+        const io::Trajectory2D truth = io::loadTrajectory(tour.groundTruth);
+        const mapping::MappingResult result = mapping::mapLog(
+            tour.log, mrpt::config::CConfigFile(test::configIni("toposlam-slam.ini")));
+        ASSERT_EQ(result.trajectory.size(), truth.size());
+        ASSERT_TRUE(result.statistics);
+        EXPECT_GT(result.statistics->odometryCatchUps, 0u) << "the odometry must catch up";
+        // A tenth of the 1.2 m lost before, and far under the 0.38 m either failure gave.
+        EXPECT_LT(
+            evaluation::evaluateAbsoluteTrajectoryError(result.trajectory, truth).position.rms,
+            0.1);
+    }
 }
 
 TEST(GraphSlam, AStallsStepTheScanBoreOutFromBothStartsIsNotTakenBack) {

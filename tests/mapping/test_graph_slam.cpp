@@ -32,6 +32,7 @@
 #include <iterator>
 #include <random>
 #include <regex>
+#include <stdexcept>
 #include <utility>
 
 #include "SimulatedDrive.h"
@@ -83,6 +84,19 @@ GeneratedTour tourGeneratedBuilding(const test::TempDir& dir, unsigned seed,
                                          "' --drawn --tour -q -c '" + simIni + "' -o '" + tour.log +
                                          "' --gt '" + tour.groundTruth + "'" + moreArgs);
     return tour;
+}
+
+/// Generated building `building` of `style` toured, as above, by B3-sim's robot `robot`
+/// (evaluation::simulatedRobots(): its settings over config_ini/sim-office.ini) with `seed`.
+GeneratedTour tourByBenchRobot(const test::TempDir& dir, unsigned building,
+                               simulation::BuildingStyle style, const std::string& robot,
+                               int seed) {
+    const evaluation::SimulatedRobot* settings = evaluation::findSimulatedRobot(robot);
+    if (!settings)
+        throw std::runtime_error("no simulated robot named " + robot);
+    const std::string simIni = dir.file(robot + ".ini");
+    evaluation::writeIniWithSettings(test::configIni("sim-office.ini"), simIni, settings->settings);
+    return tourGeneratedBuilding(dir, building, style, simIni, " --seed " + std::to_string(seed));
 }
 
 /// Maps `tour` with the shipped configuration and [GraphSlam] `key` on (`onValue`), then off: on,
@@ -1224,12 +1238,8 @@ TEST(GraphSlam, ASlideThatSeesThroughTheSubmapIsHeldAtTheOdometry) {
     // through 53 submap points, at the odometry's 4: held there (along_heading_free_space),
     // the step is within 4 cm of the truth and the ATE 0.017 m.
     const test::TempDir dir;
-    const evaluation::SimulatedRobot* robot = evaluation::findSimulatedRobot("poor-odometry");
-    ASSERT_NE(robot, nullptr);
-    const std::string simIni = dir.file("poor-odometry.ini");
-    evaluation::writeIniWithSettings(test::configIni("sim-office.ini"), simIni, robot->settings);
     const GeneratedTour tour =
-        tourGeneratedBuilding(dir, 51, simulation::BuildingStyle::Ring, simIni, " --seed 4");
+        tourByBenchRobot(dir, 51, simulation::BuildingStyle::Ring, "poor-odometry", 4);
     ASSERT_EQ(tour.sim.exitCode, 0) << tour.sim.output;
     expectSettingMends(tour, "along_heading_free_space", "0.1", "0", 0.04, 0.08,
                        "the scenario no longer has a slide the fit lets pass");
@@ -1247,16 +1257,11 @@ TEST(GraphSlam, StallsInTheBendsOfARingBuildingLoseNoCorridor) {
     //   the last motion's turn: ATE 0.38 m (0.014 m before the catch-up rule, by chance: the
     //   scans before it a millimetre elsewhere). ICP from the standstill, which passes and fits
     //   more of the scan, is now taken: 0.014 m.
-    const evaluation::SimulatedRobot* robot = evaluation::findSimulatedRobot("stalling-odometry");
-    ASSERT_NE(robot, nullptr);
     for (const int seed : {2, 3}) {
         SCOPED_TRACE("seed " + std::to_string(seed));
         const test::TempDir dir;
-        const std::string simIni = dir.file("stalling-odometry.ini");
-        evaluation::writeIniWithSettings(test::configIni("sim-office.ini"), simIni,
-                                         robot->settings);
-        const GeneratedTour tour = tourGeneratedBuilding(dir, 51, simulation::BuildingStyle::Ring,
-                                                         simIni, " --seed " + std::to_string(seed));
+        const GeneratedTour tour =
+            tourByBenchRobot(dir, 51, simulation::BuildingStyle::Ring, "stalling-odometry", seed);
         ASSERT_EQ(tour.sim.exitCode, 0) << tour.sim.output;
         const io::Trajectory2D truth = io::loadTrajectory(tour.groundTruth);
         const mapping::MappingResult result = mapping::mapLog(

@@ -154,6 +154,15 @@ bool ScanRegistration::acceptable(const IcpAttempt& attempt, const CPose2D& star
            plausibleCorrection(attempt.robot - start, boundSideways, sidewaysScale);
 }
 
+bool ScanRegistration::passesAlone(const matching::LineMap& map, const matching::PolarScan& scan,
+                                   const CPose2D& sensorOnRobot, const IcpAttempt& attempt,
+                                   const CPose2D& start, const IcpAttempt& other,
+                                   const CPose2D& otherStart) const {
+    return acceptable(attempt, start) && !acceptable(other, otherStart) &&
+           readingsOnMap(map, scan, attempt.robot + sensorOnRobot) >
+               readingsOnMap(map, scan, other.robot + sensorOnRobot);
+}
+
 bool ScanRegistration::seesForegroundObjects(const matching::PolarScan& scan) const {
     return ForegroundObjects::any(scan, foregroundOptions_);
 }
@@ -332,10 +341,8 @@ const Prediction& ScanRegistration::preferredPrediction(const matching::PolarSca
     // Both found the same pose (then only the size of the odometry's correction is in doubt),
     // or the last motion's fits clearly better, or ICP from the odometry ends where tryIcp()
     // would reject it while from the last motion it passes and fits more of the scan.
-    const bool onlyMotionPasses =
-        !acceptable(fromOdometry, prediction.inSubmap) && acceptable(fromMotion, byMotion) &&
-        readingsOnMap(submap.map(), scan, fromMotion.robot + sensorOnRobot) >
-            readingsOnMap(submap.map(), scan, fromOdometry.robot + sensorOnRobot);
+    const bool onlyMotionPasses = passesAlone(submap.map(), scan, sensorOnRobot, fromMotion,
+                                              byMotion, fromOdometry, prediction.inSubmap);
     if (!onlyMotionPasses && !bearsOut(submap.map(), scan, sensorOnRobot, fromMotion.robot,
                                        fromOdometry.robot, options_.secondOpinionMargin)) {
         started = std::move(fromOdometry);
@@ -377,10 +384,8 @@ const Prediction& ScanRegistration::standstillBorneOut(const matching::PolarScan
     // robot stops turning in a stall, the last motion's turn is a start farther off than
     // ICP's basin (ring51, stalling robot: 14 deg where the robot turned 2; ICP from there
     // ended at -12 deg on a third of the scan, and the failed scan kept the last motion).
-    const bool onlyStandstillPasses =
-        acceptable(fromStandstill, prediction.inSubmap) && !acceptable(fromMotion, byMotion) &&
-        readingsOnMap(submap.map(), scan, fromStandstill.robot + sensorOnRobot) >
-            readingsOnMap(submap.map(), scan, fromMotion.robot + sensorOnRobot);
+    const bool onlyStandstillPasses = passesAlone(submap.map(), scan, sensorOnRobot, fromStandstill,
+                                                  prediction.inSubmap, fromMotion, byMotion);
     if (onlyStandstillPasses || bearsOut(submap.map(), scan, sensorOnRobot, fromStandstill.robot,
                                          fromMotion.robot, options_.secondOpinionMargin)) {
         started = std::move(fromStandstill);

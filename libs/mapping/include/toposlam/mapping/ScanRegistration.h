@@ -230,6 +230,13 @@ class ScanRegistration {
     /// correction is expected.
     bool acceptable(const IcpAttempt& attempt, const mrpt::poses::CPose2D& start,
                     bool boundSideways = true, double sidewaysScale = 1) const;
+    /// Of two ICP runs on `map` (from `start` and `otherStart`), only `attempt` passes
+    /// acceptable() and it puts more of `scan` on the map: where the other start lies beyond
+    /// ICP's basin, its failure says nothing against the start that passed.
+    bool passesAlone(const matching::LineMap& map, const matching::PolarScan& scan,
+                     const mrpt::poses::CPose2D& sensorOnRobot, const IcpAttempt& attempt,
+                     const mrpt::poses::CPose2D& start, const IcpAttempt& other,
+                     const mrpt::poses::CPose2D& otherStart) const;
     /// The checks of a large correction along the heading, on `icp`, ICP from the prediction.
     /// The foreground check (foreground_check): replaced by ICP without the scan's foreground
     /// objects when that keeps less than half of the correction. Then the along-heading check

@@ -98,12 +98,16 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
     // Without odometry (a laser-only log) the robot is predicted to move as it last did.
     CPose2D increment = odometryIncrement.value_or(lastMotion_);
     stats_.scansWithoutOdometry += !odometryIncrement;
-    const bool bridged = odometryIncrement && options_.bridgeOdometryStalls &&
-                         odometryLag_.bridges(*odometryIncrement, lastMotion_);
-    bool catchingUp = odometryIncrement && odometryLag_.catchingUp(*odometryIncrement, lastMotion_);
     // A catch-up after a stall registration saw too little of: not the last motion, but the
     // reading less what was registered, over that many scan intervals (a jump only beyond the
     // bounds for all of them).
+    const bool bridged = odometryIncrement && options_.bridgeOdometryStalls &&
+                         odometryLag_.bridges(*odometryIncrement, lastMotion_);
+    // Or one after readings that fell short of the registered motion (a stall within a scan
+    // interval, as at a low scan rate): the reading less what they missed.
+    const bool shortfallBridged = !bridged && odometryIncrement && options_.bridgeOdometryStalls &&
+                                  odometryLag_.catchesUpShortfall(*odometryIncrement, lastMotion_);
+    bool catchingUp = odometryIncrement && odometryLag_.catchingUp(*odometryIncrement, lastMotion_);
     double intervals = 1;
     if (bridged) {
         increment = odometryLag_.stepSinceStall(*odometryIncrement);
@@ -112,6 +116,10 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
         p.stallScansBehind = odometryLag_.stallScansBehind(*odometryIncrement);
         catchingUp = false;
         ++stats_.odometryStallsBridged;
+    } else if (shortfallBridged) {
+        increment = odometryLag_.stepPastShortfall(*odometryIncrement);
+        catchingUp = false;
+        ++stats_.odometryShortfallsBridged;
     }
     odometrySinceKeyframe_ += increment.norm();
     turnSinceKeyframe_ += std::abs(mrpt::math::wrapToPi(increment.phi()));
@@ -133,7 +141,7 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
         ++stats_.odometryCatchUps;
         increment = lastMotion_;
     }
-    p.odometryBridged = bridged;
+    p.odometryBridged = bridged || shortfallBridged;
     // A stall, not a stop: the scan changed.
     p.odometryStalled = options_.predictStallsByLastMotion && odometryIncrement &&
                         odometryLag_.stalled() && OdometryLag::scanChanged(previousPolar_, polar_);

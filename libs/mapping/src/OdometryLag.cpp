@@ -105,6 +105,22 @@ bool OdometryLag::scanChanged(const matching::PolarScan& before, const matching:
     return double(changed) >= kChangedShare * double(both) && changed > 0;
 }
 
+bool OdometryLag::catchesUpShortfall(const mrpt::poses::CPose2D& increment,
+                                     const mrpt::poses::CPose2D& lastMotion) const {
+    const double longer = increment.norm() - lastMotion.norm();
+    if (repeatedScans_ > 0 || shortfall_ <= kAgreeDistance || longer <= kAgreeDistance)
+        return false;
+    // A catch-up holds the shortfall on top of a step like the last one; a robot that sped up
+    // (or an odometry whose short readings were registration's error) does not.
+    return std::abs(stepPastShortfall(increment).norm() - lastMotion.norm()) < longer;
+}
+
+mrpt::poses::CPose2D OdometryLag::stepPastShortfall(const mrpt::poses::CPose2D& increment) const {
+    const double distance = increment.norm();
+    const double kept = distance > 0 ? std::max(0.0, distance - shortfall_) / distance : 0.0;
+    return {increment.x() * kept, increment.y() * kept, increment.phi()};
+}
+
 mrpt::poses::CPose2D OdometryLag::stepSinceStall(const mrpt::poses::CPose2D& increment) const {
     return (-sinceReading_) + increment;
 }
@@ -112,6 +128,7 @@ mrpt::poses::CPose2D OdometryLag::stepSinceStall(const mrpt::poses::CPose2D& inc
 void OdometryLag::registered(const mrpt::poses::CPose2D& increment,
                              const mrpt::poses::CPose2D& step) {
     if (zero(increment)) {
+        shortfall_ = 0;  // a stall of whole scans: bridges() and catchingUp() see to it
         // The motion the odometry missed, for catchingUp() to expect in the increments after.
         backlogDistance_ += step.norm();
         backlogTurn_ += std::abs(mrpt::math::wrapToPi(step.phi()));
@@ -124,6 +141,10 @@ void OdometryLag::registered(const mrpt::poses::CPose2D& increment,
     } else {
         repeatedScans_ = 0;
         sinceReading_ = mrpt::poses::CPose2D();
+        // A reading short of the registered step by more than noise adds to the shortfall;
+        // one that is not short is in step (or catching up), and ends it.
+        const double missed = step.norm() - increment.norm();
+        shortfall_ = missed > kMovedDistance ? shortfall_ + missed : 0.0;
     }
     lastStep_ = step;
 }

@@ -39,6 +39,18 @@
 // turned 68.8: bridged during every turn, mit-csail read by a 5.6 m laser went from 0.032 to
 // 0.046 m), and a robot that stopped and set off again reads no catch-up (bridged wherever
 // registration saw no translation, intel with every other beam went from 0.017 to 0.044 m).
+//
+// At a low scan rate a stall seldom spans a whole scan interval: the readings are short, not
+// zero (Bormann's lab_c toured by the stalling robot at a third of its scan rate: 0.68 m read
+// twice where registration saw the robot go 1.02 m), and the next reading holds what they
+// missed (1.48 m where the robot went 0.79 m and turned 43 deg; ICP from the last motion,
+// 33 deg off, settled 0.36 m off, ATE 0.47 m). Readings short of the registered step by more
+// than kMovedDistance add up to a shortfall (one that is not short ends it); a reading longer
+// than the last motion by more than kAgreeDistance after a shortfall of more than that is
+// predicted as the reading with its translation shortened by the shortfall, where that brings
+// it nearer the last motion's length (catchesUpShortfall(), stepPastShortfall()). Its heading
+// stays as read: mit-csail's odometry reads no translation for two scans while it reads the
+// turn.
 #include <mrpt/poses/CPose2D.h>
 #include <toposlam/matching/PolarScan.h>
 
@@ -84,6 +96,20 @@ class OdometryLag {
     /// the last reading that changed, less the motion registered since (robot frame of the last
     /// scan, m, rad).
     mrpt::poses::CPose2D stepSinceStall(const mrpt::poses::CPose2D& increment) const;
+    /// True when `increment` catches up with readings that fell short (a stall within a scan
+    /// interval, see above): they fell short of the registered motion by more than
+    /// kAgreeDistance in all, and `increment` is longer than `lastMotion` by more than
+    /// kAgreeDistance and, less the shortfall, nearer its length. (A stall of whole scans is
+    /// bridges()'s.)
+    bool catchesUpShortfall(const mrpt::poses::CPose2D& increment,
+                            const mrpt::poses::CPose2D& lastMotion) const;
+    /// The step that `increment` (which catchesUpShortfall()) reads less the shortfall: its
+    /// translation shortened by the distance the readings fell short, its heading as read
+    /// (robot frame of the last scan, m, rad).
+    mrpt::poses::CPose2D stepPastShortfall(const mrpt::poses::CPose2D& increment) const;
+    /// m by which the readings since the odometry was last in step fell short of the motion
+    /// registered for them.
+    double shortfall() const { return shortfall_; }
     /// After each scan with odometry: its `increment`, and the `step` registered for it (robot
     /// frame of the last scan). A stalled scan's step adds to the backlog.
     void registered(const mrpt::poses::CPose2D& increment, const mrpt::poses::CPose2D& step);
@@ -120,6 +146,7 @@ class OdometryLag {
     mrpt::poses::CPose2D sinceReading_;
     bool movedBeforeStall_ = false;  ///< the scan before the repeated increments moved
     mrpt::poses::CPose2D lastStep_;  ///< the last scan's registered step
+    double shortfall_ = 0;           ///< shortfall()
 };
 
 }  // namespace toposlam::mapping

@@ -77,6 +77,10 @@ struct SlamStatistics {
     /// predicted as the reading (the motion since the last reading that changed) less the
     /// motion registered meanwhile (bridge_odometry_stalls)
     std::size_t odometryStallsBridged = 0;
+    /// catch-ups after readings that fell short of the registered motion (a stall within a
+    /// scan interval: OdometryLag::catchesUpShortfall), predicted as the reading less the
+    /// shortfall (bridge_odometry_stalls)
+    std::size_t odometryShortfallsBridged = 0;
     /// the scans of those stalls registration had left behind, placed between the scan before
     /// the stall and the catch-up (GraphSlam::placeStalledScans)
     std::size_t stalledScansPlaced = 0;

@@ -107,8 +107,9 @@ bool OdometryLag::scanChanged(const matching::PolarScan& before, const matching:
 
 bool OdometryLag::catchesUpShortfall(const mrpt::poses::CPose2D& increment,
                                      const mrpt::poses::CPose2D& lastMotion) const {
+    // (A stall of whole scans resets the shortfall: registered() leaves it to bridges().)
     const double longer = increment.norm() - lastMotion.norm();
-    if (repeatedScans_ > 0 || shortfall_ <= kAgreeDistance || longer <= kAgreeDistance)
+    if (shortfall_ <= kAgreeDistance || longer <= kAgreeDistance)
         return false;
     // A catch-up holds the shortfall on top of a step like the last one; a robot that sped up
     // (or an odometry whose short readings were registration's error) does not.

@@ -134,6 +134,34 @@ TEST(LogSimulator, AStalledOdometryRepeatsItsReadingThenCatchesUp) {
     EXPECT_LE(longest, 2u);
 }
 
+TEST(LogSimulator, AStallOfTheDistanceAloneFreezesThePositionNotTheHeading) {
+    // stall_heading_reads: the wheels' count stops while the heading still reads (mit-csail).
+    // Every reading's heading is the stall-free log's; its position is that log's or, frozen,
+    // the one before.
+    const io::Trajectory2D gt = corridorWalk();
+    LogSimulationOptions steady = SimulatorConfig::defaultLog(), stalling = steady;
+    stalling.odometry.stallProbability = 0.3;
+    stalling.odometry.stallMaxScans = 2;
+    stalling.odometry.stallHeadingReads = true;
+    LogSimulator a(officeGrid(), gt, steady), b(officeGrid(), gt, stalling);
+    io::LaserLogRecord ra, rb;
+    CPose2D previous;
+    std::size_t frozen = 0;
+    while (a.next(ra) && b.next(rb)) {
+        ASSERT_EQ(rb.odometry.phi(), ra.odometry.phi()) << "scan " << ra.index;
+        const bool samePosition =
+            rb.odometry.x() == ra.odometry.x() && rb.odometry.y() == ra.odometry.y();
+        if (!samePosition) {
+            ASSERT_GT(ra.index, 0u);
+            ASSERT_EQ(rb.odometry.x(), previous.x()) << "scan " << ra.index;
+            ASSERT_EQ(rb.odometry.y(), previous.y()) << "scan " << ra.index;
+            ++frozen;
+        }
+        previous = rb.odometry;
+    }
+    EXPECT_GE(frozen, 3u) << "40 scans at 30 %: stalls must have happened";
+}
+
 TEST(LogSimulator, RawlogRoundTripsThroughTheLogReaderInBothFormats) {
     const io::Trajectory2D gt = corridorWalk();
     const LogSimulationOptions options = SimulatorConfig::defaultLog();  // with noise

@@ -98,6 +98,8 @@ bool LogSimulator::next(io::LaserLogRecord& record) {
 CPose2D LogSimulator::odometryReading() {
     if (stalledScans_ > 0) {
         --stalledScans_;
+        if (options_.odometry.stallHeadingReads)
+            return {stalledReading_.x(), stalledReading_.y(), odometry_.pose().phi()};
         return stalledReading_;
     }
     // A fresh reading, which the next 1 to stallMaxScans scans may repeat: the reading after

@@ -48,6 +48,8 @@ void OdometryErrorModel::declare(config::OptionsSchema& s) {
     s.integer("stall_max_scans", stallMaxScans, "scans",
               "a stall repeats that reading for the next 1 to this many scans, then catches up")
         .within(1, 1000);
+    s.flag("stall_heading_reads", stallHeadingReads,
+           "during a stall only the position freezes, the heading still reads");
 }
 
 OdometryModel::OdometryModel(const OdometryErrorModel& model, const mrpt::poses::CPose2D& start)

@@ -52,6 +52,10 @@ struct OdometryErrorModel : public config::Options {
     /// messages stop for a moment do (MIT CSAIL's). 0 = never.
     double stallProbability = 0;
     int stallMaxScans = 3;
+    /// During a stall the heading still reads and only the distance freezes (the wheels'
+    /// count stops while the gyro goes on, as in mit-csail's log: 0.004, 0 and 0 m read where
+    /// the robot went 0.21 m each, the turn read all along).
+    bool stallHeadingReads = false;
 
     /// Perfect odometry: readings equal the true motion.
     static OdometryErrorModel exact();

@@ -1355,6 +1355,29 @@ TEST(GraphSlam, AStallsStepTheScanBoreOutFromBothStartsIsNotTakenBack) {
               0.03);
 }
 
+TEST(GraphSlam, AStallOfTheWheelsWhileTheHeadingReadsIsPredictedByTheLastMotion) {
+    // mit-csail's odometry reads 0.004, 0 and 0 m at three scans where the robot went 0.21 m
+    // in each 0.21 s, its turn read all along, then 0.834 m. Along a corridor ICP keeps the
+    // standstill it is started from: the three scans stayed 0.3 m behind, and the catch-up
+    // read like a jump. The simulator's stalls with the heading still reading, at mit-csail's
+    // speed and scan spacing (1 m/s, a scan every 0.2 m): a robot cannot slow from 1 m/s to
+    // nothing within 0.2 s, so such a reading is a stall (OdometryLag::translationStalled)
+    // and is predicted by the last motion, as a reading of exactly zero is.
+    const test::TempDir dir;
+    const std::string simIni = dir.file("stalling.ini");
+    evaluation::writeIniWithSettings(test::configIni("sim-office.ini"), simIni,
+                                     {{"Odometry", "stall_probability", "0.05"},
+                                      {"Odometry", "stall_max_scans", "3"},
+                                      {"Odometry", "stall_heading_reads", "true"},
+                                      {"Tour", "max_speed", "1.0"},
+                                      {"Tour", "scan_distance", "0.2"}});
+    const GeneratedTour tour =
+        tourGeneratedBuilding(dir, 51, simulation::BuildingStyle::Office, simIni, " --seed 1");
+    ASSERT_EQ(tour.sim.exitCode, 0) << tour.sim.output;
+    expectSettingMends(tour, "predict_stalls_by_last_motion", 0.04, 0.1,
+                       "the scenario no longer needs the stalls predicted");
+}
+
 TEST(GraphSlam, AShortLaserRoundARingBuildingClosesTheLoopBackToTheStart) {
     // A generated ring building (B4-rings' ring06, a 590 m tour) toured with a TurtleBot3's
     // LDS-01 (360 readings all round, 3.5 m, 3 cm noise), as end to end in B4 ("Rooms on a
@@ -1460,13 +1483,14 @@ TEST(MappingOutputs, CountsAgreeInNumber) {
     st.scans = st.registeredByIcp = 100;
     st.submaps = st.optimizations = st.odometryJumps = st.loopCandidates = 1;
     st.odometryCatchUps = 2;
-    st.odometryShortfallsBridged = 1;
+    st.odometryShortfallsBridged = st.odometryTranslationStalls = 1;
     const std::string summary = mapping::formatSummary(result);
     for (const char* phrase :
          {" in 1 submap;",
           "; 1 odometry jump (0 of them borne out by the scan: a fast turn; 0 placed by ICP "
           "between the odometry's step and the last motion); 0 odometry stalls bridged (0 of "
-          "their scans placed between), 1 catch-up after short readings bridged, 2 odometry "
+          "their scans placed between; 1 stall of the distance alone), 1 catch-up after short "
+          "readings bridged, 2 odometry "
           "steps catching up after a stall (0 of "
           "them placed by ICP from the reading where nothing from the last motion placed "
           "them);",
@@ -1474,10 +1498,11 @@ TEST(MappingOutputs, CountsAgreeInNumber) {
         EXPECT_NE(summary.find(phrase), std::string::npos) << phrase << "\n" << summary;
     }
     st.odometryJumps = 0;  // no jumps: nothing said of those borne out
+    st.odometryTranslationStalls = 0;
     const std::string noJumps = mapping::formatSummary(result);
     EXPECT_NE(noJumps.find("; 0 odometry jumps; 0 odometry stalls bridged (0 of their scans "
-                           "placed between), 1 catch-up after short readings bridged, 2 "
-                           "odometry steps"),
+                           "placed between; 0 stalls of the distance alone), 1 catch-up after "
+                           "short readings bridged, 2 odometry steps"),
               std::string::npos)
         << noJumps;
 }

@@ -259,5 +259,50 @@ TEST(OdometryLag, ReadingsInStepOrAStepThatDoesNotHoldTheShortfallAreNoCatchUp) 
     EXPECT_DOUBLE_EQ(behind.shortfall(), 0.0);
 }
 
+TEST(OdometryLag, MillimetresReadAfterAFullSpeedReadingAreAStallOfTheDistance) {
+    // mit-csail, scans 554-557: 0.211 m in 0.210 s, then 0.004, 0 and 0 m (the turn still
+    // reads) while the robot went on at 1 m/s, then 0.834 m.
+    const CPose2D driving(0.21, 0, 0);
+    OdometryLag lag;
+    EXPECT_FALSE(lag.translationStalled(CPose2D(0.211, 0, -0.006), 0.21, driving));
+    EXPECT_TRUE(lag.translationStalled(CPose2D(0.004, 0, -0.002), 0.21, driving));
+    // The stall goes on while the robot still registers its motion ...
+    EXPECT_TRUE(lag.translationStalled(CPose2D(0, 0, -0.012), 0.22, driving));
+    EXPECT_TRUE(lag.translationStalled(CPose2D(0, 0, -0.036), 0.21, driving));
+    // ... and the catch-up ends it.
+    EXPECT_FALSE(lag.translationStalled(CPose2D(0.834, 0, -0.021), 0.21, driving));
+    // A stall continued only while registration still saw the robot move: a robot that
+    // stopped registers no motion.
+    OdometryLag stopped;
+    EXPECT_FALSE(stopped.translationStalled(CPose2D(0.211, 0, 0), 0.21, driving));
+    EXPECT_TRUE(stopped.translationStalled(CPose2D(0.004, 0, 0.01), 0.21, driving));
+    EXPECT_FALSE(stopped.translationStalled(CPose2D(0.001, 0, 0.01), 0.21, CPose2D(0.01, 0, 0)));
+}
+
+TEST(OdometryLag, ARobotSlowingAsRobotsDoOrIrregularStampsAreNoStallOfTheDistance) {
+    const CPose2D driving(0.21, 0, 0);
+    // Whether `now`, read over `seconds` after `before` over `secondsBefore`, is a stall.
+    const auto stallsAfter = [&](const CPose2D& before, double secondsBefore, const CPose2D& now,
+                                 double seconds) {
+        OdometryLag lag;
+        lag.translationStalled(before, secondsBefore, driving);
+        return lag.translationStalled(now, seconds, driving);
+    };
+    const CPose2D millimetres(0.004, 0, 0.01);
+    EXPECT_TRUE(stallsAfter(driving, 0.21, millimetres, 0.21));
+    // Exactly zero is stalled()'s, not this.
+    EXPECT_FALSE(stallsAfter(driving, 0.21, kStill, 0.21));
+    // From 0.5 m/s to nothing within 0.6 s (a third of the scan rate): 0.8 m/s^2, a stop.
+    EXPECT_FALSE(stallsAfter(CPose2D(0.3, 0, 0), 0.6, millimetres, 0.6));
+    // A slow robot (below 0.1 m per scan) is not judged.
+    EXPECT_FALSE(stallsAfter(CPose2D(0.05, 0, 0), 0.05, millimetres, 0.05));
+    // A scan stamped 2 ms after the last reads millimetres at full speed (intel's bursts).
+    EXPECT_FALSE(stallsAfter(CPose2D(0.2, 0, 0), 0.2, CPose2D(0.002, 0, 0), 0.002));
+    // 0.11 m read in 2 ms: the stamps are wrong, not the wheels.
+    EXPECT_FALSE(stallsAfter(CPose2D(0.11, 0, 0), 0.002, millimetres, 0.002));
+    // Without stamps nothing is judged.
+    EXPECT_FALSE(stallsAfter(CPose2D(0.2, 0, 0), 0, millimetres, 0));
+}
+
 }  // namespace
 }  // namespace toposlam::mapping

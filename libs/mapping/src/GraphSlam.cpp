@@ -1,4 +1,5 @@
 #include <mrpt/math/wrap2pi.h>
+#include <mrpt/system/datetime.h>
 #include <toposlam/io/CpuTime.h>
 #include <toposlam/mapping/GraphSlam.h>
 #include <toposlam/mapping/MapRange.h>
@@ -142,9 +143,15 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
         increment = lastMotion_;
     }
     p.odometryBridged = bridged || shortfallBridged;
-    // A stall, not a stop: the scan changed.
+    // A stall, not a stop: the scan changed. Also where only the wheels' count stalled and
+    // the heading still reads (OdometryLag::translationStalled).
+    const bool translationStalled =
+        odometryIncrement &&
+        odometryLag_.translationStalled(*odometryIncrement, scanInterval_, lastMotion_);
     p.odometryStalled = options_.predictStallsByLastMotion && odometryIncrement &&
-                        odometryLag_.stalled() && OdometryLag::scanChanged(previousPolar_, polar_);
+                        (odometryLag_.stalled() || translationStalled) &&
+                        OdometryLag::scanChanged(previousPolar_, polar_);
+    stats_.odometryTranslationStalls += p.odometryStalled && translationStalled;
     p.odometryPredicted = odometryIncrement && !p.odometryJumped && !p.odometryLagging;
     p.odometryStep = increment;
     p.lastMotion = lastMotion_;
@@ -188,6 +195,11 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
                                  const features::CObservationLaserFeatures::Ptr& storedFeatures) {
     std::swap(previousPolar_, polar_);  // both keep their storage
     polar_.assign(*scan);
+    scanInterval_ = keyframes_.empty() || previousStamp_ == INVALID_TIMESTAMP ||
+                            scan->timestamp == INVALID_TIMESTAMP
+                        ? 0.0
+                        : mrpt::system::timeDifference(previousStamp_, scan->timestamp);
+    previousStamp_ = scan->timestamp;
     bool haveFeatures = false;
     const auto extract = [&](features::ScanFeatures& f) {
         if (haveFeatures)

@@ -159,7 +159,7 @@ std::string formatSummary(const MappingResult& r) {
             "matcher (%.1f %%; %zu of them beyond a jump, confirmed on the submap), %zu failed "
             "(%.1f %%, odometry kept; %zu of them with a graph-matcher answer only foreground "
             "objects bore out); %s; %zu odometry stalls bridged (%zu of their scans placed "
-            "between), %s, %s catching up after a stall (%zu of them placed by ICP from the "
+            "between; %s), %s, %s catching up after a stall (%zu of them placed by ICP from the "
             "reading where nothing from the last motion placed them); %zu predicted by the "
             "last motion instead of the odometry",
             st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
@@ -169,6 +169,9 @@ std::string formatSummary(const MappingResult& r) {
             st->registrationFailed, percent(st->registrationFailed, n),
             st->matcherRefusedForeground, jumps.c_str(), st->odometryStallsBridged,
             st->stalledScansPlaced,
+            counted(st->odometryTranslationStalls, "stall of the distance alone",
+                    "stalls of the distance alone")
+                .c_str(),
             counted(st->odometryShortfallsBridged, "catch-up after short readings bridged",
                     "catch-ups after short readings bridged")
                 .c_str(),
@@ -261,6 +264,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
                              {"odometry_catch_ups_kept", st->odometryCatchUpsKept},
                              {"odometry_stalls_bridged", st->odometryStallsBridged},
                              {"odometry_shortfalls_bridged", st->odometryShortfallsBridged},
+                             {"odometry_translation_stalls", st->odometryTranslationStalls},
                              {"stalled_scans_placed", st->stalledScansPlaced},
                              {"registered_share", st->registeredShare()}};
         // Where ICP and the odometry disagreed along the heading, and what the scan said

@@ -57,6 +57,29 @@ bool OdometryLag::exceeds(const mrpt::poses::CPose2D& increment,
     return longer > kAgreeDistance || farther > kAgreeAngle;
 }
 
+bool OdometryLag::translationStalled(const mrpt::poses::CPose2D& increment, double seconds,
+                                     const mrpt::poses::CPose2D& lastMotion) {
+    bool stalled = false;
+    if (!zero(increment) && increment.norm() <= kStalledDistance && seconds > 0) {
+        if (translationStalled_) {
+            stalled = lastMotion.norm() >= kStalledAfter;
+        } else if (lastReading_.norm() >= kStalledAfter && lastReadingSeconds_ > 0.5 * seconds &&
+                   lastReadingSeconds_ < 2 * seconds) {
+            // Speeds, over intervals alike: a scan stamped a few milliseconds after the last
+            // reads millimetres at full speed (intel's bursts of scans).
+            const double before = lastReading_.norm() / lastReadingSeconds_;
+            const double now = increment.norm() / seconds;
+            // (Beyond kMaxSpeed the stamps are wrong, not the odometry: intel's run at
+            // 0.002 s for 0.11 m readings.)
+            stalled = before <= kMaxSpeed && (before - now) / seconds > kMaxDeceleration;
+        }
+    }
+    translationStalled_ = stalled;
+    lastReading_ = increment;
+    lastReadingSeconds_ = seconds;
+    return stalled;
+}
+
 bool OdometryLag::moved(const mrpt::poses::CPose2D& motion) {
     return motion.norm() > kMovedDistance ||
            std::abs(mrpt::math::wrapToPi(motion.phi())) > kMovedAngle;
@@ -108,8 +131,12 @@ bool OdometryLag::scanChanged(const matching::PolarScan& before, const matching:
 bool OdometryLag::catchesUpShortfall(const mrpt::poses::CPose2D& increment,
                                      const mrpt::poses::CPose2D& lastMotion) const {
     // (A stall of whole scans resets the shortfall: registered() leaves it to bridges().)
+    // After a stall of the distance alone the shortfall is no reading's noise: a stall of one
+    // scan falls a step short, and its catch-up reads a step more (a robot at 1 m/s scanned
+    // every 0.2 m: 0.2 m, the margin itself).
+    const double margin = shortfallAfterStall_ ? kMovedDistance : kAgreeDistance;
     const double longer = increment.norm() - lastMotion.norm();
-    if (shortfall_ <= kAgreeDistance || longer <= kAgreeDistance)
+    if (shortfall_ <= margin || longer <= margin)
         return false;
     // A catch-up holds the shortfall on top of a step like the last one; a robot that sped up
     // (or an odometry whose short readings were registration's error) does not.
@@ -130,6 +157,7 @@ void OdometryLag::registered(const mrpt::poses::CPose2D& increment,
                              const mrpt::poses::CPose2D& step) {
     if (zero(increment)) {
         shortfall_ = 0;  // a stall of whole scans: bridges() and catchingUp() see to it
+        shortfallAfterStall_ = false;
         // The motion the odometry missed, for catchingUp() to expect in the increments after.
         backlogDistance_ += step.norm();
         backlogTurn_ += std::abs(mrpt::math::wrapToPi(step.phi()));
@@ -146,6 +174,7 @@ void OdometryLag::registered(const mrpt::poses::CPose2D& increment,
         // one that is not short is in step (or catching up), and ends it.
         const double missed = step.norm() - increment.norm();
         shortfall_ = missed > kMovedDistance ? shortfall_ + missed : 0.0;
+        shortfallAfterStall_ = shortfall_ > 0 && (shortfallAfterStall_ || translationStalled_);
     }
     lastStep_ = step;
 }

@@ -131,6 +131,8 @@ class GraphSlam {
     std::size_t lastGlobalOptimization_ = 0;  ///< newest keyframe at the last global one
     matching::PolarScan polar_;               ///< the current scan (workspace)
     matching::PolarScan previousPolar_;       ///< the scan before it
+    mrpt::Clock::time_point previousStamp_;   ///< the stamp of the scan before it
+    double scanInterval_ = 0;                 ///< s between the two (0: not known)
     features::ScanFeatures features_;         ///< the current scan's features (workspace)
     /// The last keyframe's readings, for the graph matcher (Prediction::lastKeyframeReadings;
     /// keyframes do not keep theirs).

@@ -51,6 +51,15 @@
 // it nearer the last motion's length (catchesUpShortfall(), stepPastShortfall()). Its heading
 // stays as read: mit-csail's odometry reads no translation for two scans while it reads the
 // turn.
+//
+// That odometry also stalls in distance alone: 0.004, 0 and 0 m read at three scans where the
+// robot went 0.21 m in each 0.21 s, the turn read all along, then 0.834 m. Not zero, so no
+// stall above; and along a corridor registration, started from the reading, saw no motion
+// either, so no shortfall: with its laser read to 5.6 m the three scans stayed 0.3 m behind.
+// A robot cannot slow from 1 m/s to nothing within 0.21 s, so such a reading is a stall of the
+// translation (translationStalled(): speeds over intervals alike, beyond kMaxDeceleration) and
+// is predicted as a stall is; the scans then register on, fall short of what was registered,
+// and the catch-up after them is the shortfall's.
 #include <mrpt/poses/CPose2D.h>
 #include <toposlam/matching/PolarScan.h>
 
@@ -67,6 +76,15 @@ class OdometryLag {
     static constexpr double kAgreeAngle = 0.1745;  // 10 deg
     /// Scans after a stall at most taken for catching up.
     static constexpr int kMaxCatchUpScans = 5;
+    /// A reading of at most this translation (m) ...
+    static constexpr double kStalledDistance = 0.005;
+    /// ... after one of at least this (m) ...
+    static constexpr double kStalledAfter = 0.1;
+    /// ... that the robot could not have slowed from at this deceleration (m/s^2) within the
+    /// scan interval is a stall of the translation.
+    static constexpr double kMaxDeceleration = 3.0;
+    /// m/s: no robot mapped indoors reads faster; such a speed says the stamps are wrong.
+    static constexpr double kMaxSpeed = 5.0;
     /// A reading that changed by more than this (m) between two scans ...
     static constexpr double kChangedRange = 0.1;
     /// ... in at least this share of the beams valid in both: the robot moved between them.
@@ -99,8 +117,9 @@ class OdometryLag {
     /// True when `increment` catches up with readings that fell short (a stall within a scan
     /// interval, see above): they fell short of the registered motion by more than
     /// kAgreeDistance in all, and `increment` is longer than `lastMotion` by more than
-    /// kAgreeDistance and, less the shortfall, nearer its length. (A stall of whole scans is
-    /// bridges()'s.)
+    /// kAgreeDistance and, less the shortfall, nearer its length; by more than kMovedDistance
+    /// where a stall of the distance alone (translationStalled()) fell short. (A stall of whole
+    /// scans is bridges()'s.)
     bool catchesUpShortfall(const mrpt::poses::CPose2D& increment,
                             const mrpt::poses::CPose2D& lastMotion) const;
     /// The step that `increment` (which catchesUpShortfall()) reads less the shortfall: its
@@ -115,6 +134,16 @@ class OdometryLag {
     void registered(const mrpt::poses::CPose2D& increment, const mrpt::poses::CPose2D& step);
     /// Scans since the last increment that moved (0 when the last one did).
     int repeatedScans() const { return repeatedScans_; }
+    /// For each scan with odometry, before registration: its `increment` over the scan
+    /// interval of `seconds` (0: not known), and `lastMotion` (see catchingUp()). True when
+    /// it is a stall of the translation: not zero, at most kStalledDistance, where the reading
+    /// before went kStalledAfter or more, at a speed the robot could not have come down from
+    /// within this interval at kMaxDeceleration (the wheels' count stopped while the heading
+    /// still reads: mit-csail 0.004, 0 and 0 m where the robot went 0.21 m in each 0.21 s);
+    /// the readings of at most kStalledDistance after it continue the stall while the robot
+    /// still registers kStalledAfter or more. (A reading of exactly zero is stalled().)
+    bool translationStalled(const mrpt::poses::CPose2D& increment, double seconds,
+                            const mrpt::poses::CPose2D& lastMotion);
     /// The increment last given to catchingUp() was a stall: exactly zero while the robot
     /// moved at the scan before (more than kMovedDistance or kMovedAngle).
     bool stalled() const { return stalled_; }
@@ -146,7 +175,12 @@ class OdometryLag {
     mrpt::poses::CPose2D sinceReading_;
     bool movedBeforeStall_ = false;  ///< the scan before the repeated increments moved
     mrpt::poses::CPose2D lastStep_;  ///< the last scan's registered step
-    double shortfall_ = 0;           ///< shortfall()
+    /// translationStalled(): the last increment and its interval (s), and whether it stalled.
+    mrpt::poses::CPose2D lastReading_;
+    double lastReadingSeconds_ = 0;
+    bool translationStalled_ = false;
+    double shortfall_ = 0;              ///< shortfall()
+    bool shortfallAfterStall_ = false;  ///< a stall of the distance alone added to it
 };
 
 }  // namespace toposlam::mapping

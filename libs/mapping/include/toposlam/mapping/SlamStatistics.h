@@ -81,6 +81,10 @@ struct SlamStatistics {
     /// scan interval: OdometryLag::catchesUpShortfall), predicted as the reading less the
     /// shortfall (bridge_odometry_stalls)
     std::size_t odometryShortfallsBridged = 0;
+    /// readings of millimetres after one the robot could not have slowed from within the scan
+    /// interval (the wheels' count stalled while the heading still read:
+    /// OdometryLag::translationStalled), predicted as stalls (predict_stalls_by_last_motion)
+    std::size_t odometryTranslationStalls = 0;
     /// the scans of those stalls registration had left behind, placed between the scan before
     /// the stall and the catch-up (GraphSlam::placeStalledScans)
     std::size_t stalledScansPlaced = 0;

@@ -94,7 +94,8 @@ bool GraphSlam::odometryNeverMoved(const CPose2D& increment) {
     return true;
 }
 
-Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
+Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement,
+                              double scanInterval) {
     Prediction p;
     // Without odometry (a laser-only log) the robot is predicted to move as it last did.
     CPose2D increment = odometryIncrement.value_or(lastMotion_);
@@ -147,7 +148,7 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement) {
     // the heading still reads (OdometryLag::translationStalled).
     const bool translationStalled =
         odometryIncrement &&
-        odometryLag_.translationStalled(*odometryIncrement, scanInterval_, lastMotion_);
+        odometryLag_.translationStalled(*odometryIncrement, scanInterval, lastMotion_);
     p.odometryStalled = options_.predictStallsByLastMotion && odometryIncrement &&
                         (odometryLag_.stalled() || translationStalled) &&
                         OdometryLag::scanChanged(previousPolar_, polar_);
@@ -195,10 +196,11 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
                                  const features::CObservationLaserFeatures::Ptr& storedFeatures) {
     std::swap(previousPolar_, polar_);  // both keep their storage
     polar_.assign(*scan);
-    scanInterval_ = keyframes_.empty() || previousStamp_ == INVALID_TIMESTAMP ||
-                            scan->timestamp == INVALID_TIMESTAMP
-                        ? 0.0
-                        : mrpt::system::timeDifference(previousStamp_, scan->timestamp);
+    // Not known for the first scan (previousStamp_ is still invalid) or an unstamped one.
+    const double scanInterval =
+        previousStamp_ == INVALID_TIMESTAMP || scan->timestamp == INVALID_TIMESTAMP
+            ? 0.0
+            : mrpt::system::timeDifference(previousStamp_, scan->timestamp);
     previousStamp_ = scan->timestamp;
     bool haveFeatures = false;
     const auto extract = [&](features::ScanFeatures& f) {
@@ -219,7 +221,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     std::optional<CPose2D> odometry;
     if (odometryIncrement && !odometryNeverMoved(*odometryIncrement))
         odometry = odometryCalibration_.corrected(*odometryIncrement);
-    const Prediction prediction = predict(odometry);
+    const Prediction prediction = predict(odometry, scanInterval);
     const CPose2D sensorOnRobot(scan->sensorPose);
     const Registration r =
         registration_.registerScan(polar_, sensorOnRobot, prediction, extract, features_);

@@ -78,7 +78,9 @@ class GraphSlam {
     void processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
                           const std::optional<mrpt::poses::CPose2D>& odometryIncrement,
                           const features::CObservationLaserFeatures::Ptr& storedFeatures);
-    Prediction predict(const std::optional<mrpt::poses::CPose2D>& odometryIncrement);
+    /// `scanInterval`: s since the scan before (0: not known).
+    Prediction predict(const std::optional<mrpt::poses::CPose2D>& odometryIncrement,
+                       double scanInterval);
     /// Whether the odometry `increment` is one of exactly zero, none having moved since the
     /// log began: then it is read as no odometry at all.
     bool odometryNeverMoved(const mrpt::poses::CPose2D& increment);
@@ -132,7 +134,6 @@ class GraphSlam {
     matching::PolarScan polar_;               ///< the current scan (workspace)
     matching::PolarScan previousPolar_;       ///< the scan before it
     mrpt::Clock::time_point previousStamp_;   ///< the stamp of the scan before it
-    double scanInterval_ = 0;                 ///< s between the two (0: not known)
     features::ScanFeatures features_;         ///< the current scan's features (workspace)
     /// The last keyframe's readings, for the graph matcher (Prediction::lastKeyframeReadings;
     /// keyframes do not keep theirs).

@@ -39,7 +39,8 @@ std::size_t readingsOnMap(const matching::LineMap& map, const matching::PolarSca
 }
 /// ICP that ended at robot pose `candidate` bears out its answer against ICP that ended at
 /// `other` (both on `map`): they found the same pose, or the scan fits clearly better at
-/// `candidate` (`margin` more of its valid readings on the map).
+/// `candidate` (`margin` more of its valid readings on the map, and at least one more: a scan
+/// with (almost) no readings bears out nothing).
 bool bearsOut(const matching::LineMap& map, const matching::PolarScan& scan,
               const CPose2D& sensorOnRobot, const CPose2D& candidate, const CPose2D& other,
               double margin) {

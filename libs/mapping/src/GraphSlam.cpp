@@ -5,6 +5,7 @@
 #include <toposlam/mapping/MapRange.h>
 #include <toposlam/mapping/TrajectorySmoother.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -156,6 +157,7 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement,
     p.odometryPredicted = odometryIncrement && !p.odometryJumped && !p.odometryLagging;
     p.odometryStep = increment;
     p.lastMotion = lastMotion_;
+    p.longestRecentStep = *std::max_element(recentSteps_.begin(), recentSteps_.end());
     const CPose2D predicted = current_ + increment;
     const Keyframe& last = keyframes_.back();
     p.lastKeyframe = &last;
@@ -229,6 +231,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     stats_.odometryJumpsBorneOut += r.jumpBorneOut;
     stats_.odometryJumpsBetween += r.jumpBetween;
     stats_.odometryCatchUpsKept += r.catchUpReadingKept;
+    stats_.odometryJumpReadingsKept += r.jumpReadingKept;
     stats_.icpUnsettledRefused += r.unsettledRefused;
     if (r.alongHeading) {
         stats_.alongHeadingChecks.push_back(*r.alongHeading);
@@ -275,6 +278,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     if (odometry)
         odometryLag_.registered(*odometry, step);
     lastMotion_ = step;
+    recentSteps_[stats_.scans % recentSteps_.size()] = step.norm();
     travelled_ += step.norm();
     turned_ += std::abs(mrpt::math::wrapToPi(step.phi()));
     current_ = pose;

@@ -150,7 +150,10 @@ std::string formatSummary(const MappingResult& r) {
             jumps += " (" + std::to_string(st->odometryJumpsBorneOut) +
                      " of them borne out by the scan: a fast turn; " +
                      std::to_string(st->odometryJumpsBetween) +
-                     " placed by ICP between the odometry's step and the last motion)";
+                     " placed by ICP between the odometry's step and the last motion; " +
+                     std::to_string(st->odometryJumpReadingsKept) +
+                     " placed by nothing and kept as read: this log's jumps were mostly the "
+                     "odometry's own steps)";
         s += line(
             "registration: %zu by ICP (%.1f %%; %zu unsettled, %zu of them from a second start, "
             "%zu more refused beyond the odometry's noise; "
@@ -260,6 +263,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
                              {"odometry_jumps", st->odometryJumps},
                              {"odometry_jumps_borne_out", st->odometryJumpsBorneOut},
                              {"odometry_jumps_between", st->odometryJumpsBetween},
+                             {"odometry_jump_readings_kept", st->odometryJumpReadingsKept},
                              {"odometry_catch_ups", st->odometryCatchUps},
                              {"odometry_catch_ups_kept", st->odometryCatchUpsKept},
                              {"odometry_stalls_bridged", st->odometryStallsBridged},

@@ -48,7 +48,7 @@ bool bearsOut(const matching::LineMap& map, const matching::PolarScan& scan,
         return true;
     return double(readingsOnMap(map, scan, candidate + sensorOnRobot)) >=
            double(readingsOnMap(map, scan, other + sensorOnRobot)) +
-               margin * double(scan.validCount());
+               std::max(1.0, margin * double(scan.validCount()));
 }
 /// The covariance with every eigenvalue clamped to [lo, hi] (per eigen-direction of position
 /// and heading together; position and heading are in different units, but ICP's covariance is
@@ -626,10 +626,8 @@ bool ScanRegistration::keepJumpedReading(const matching::PolarScan& scan,
     const matching::LineMap& map = submap.map();
     const double margin = options_.jumpChoiceMargin;
     // Undecided by the scan (both fit alike: new ground), this log's earlier jumps decide.
-    const bool odometryUsuallyRight =
-        jumpsForOdometry_ >= kJumpPriorCases && jumpsForOdometry_ > 2 * jumpsForLastMotion_;
     if (!bearsOut(map, scan, sensorOnRobot, reading.robot, fromMotion.robot, margin) &&
-        (!odometryUsuallyRight ||
+        (!odometryUsuallyRight() ||
          bearsOut(map, scan, sensorOnRobot, fromMotion.robot, reading.robot, margin)))
         return false;
     answerOnSubmap(reading, prediction, RegistrationMethod::Icp, out);

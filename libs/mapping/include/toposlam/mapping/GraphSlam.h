@@ -25,6 +25,7 @@
 #include <toposlam/mapping/SlamStatistics.h>
 #include <toposlam/mapping/Submap.h>
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -121,7 +122,9 @@ class GraphSlam {
     mrpt::poses::CPose2D initialPose_;
     mrpt::poses::CPose2D current_;  ///< last scan's robot pose, world frame
     mrpt::math::CMatrixDouble33 currentCovariance_;
-    mrpt::poses::CPose2D lastMotion_;         ///< the last scan's registered motion
+    mrpt::poses::CPose2D lastMotion_;  ///< the last scan's registered motion
+    /// The distances of the last ten scans' registered motions (m), oldest overwritten.
+    std::array<double, 10> recentSteps_{};
     bool odometryMoved_ = false;              ///< some odometry increment was not zero
     OdometryLag odometryLag_;                 ///< the odometry stalling and catching up
     double travelled_ = 0;                    ///< m along the estimated trajectory

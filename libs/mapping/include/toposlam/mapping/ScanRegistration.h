@@ -111,6 +111,9 @@ struct Registration {
     /// In a catch-up after a stall that nothing registered from the last motion: ICP from the
     /// odometry's step placed it (ScanRegistration::keepCaughtUpReading).
     bool catchUpReadingKept = false;
+    /// After a jump that nothing registered: the scan kept the odometry's reading, not the last
+    /// motion, because this log's earlier jumps were mostly the odometry's own steps.
+    bool jumpReadingKept = false;
     /// After a jump that neither ICP from the odometry's step nor the graph matcher placed: ICP
     /// from a start between the odometry's step and the last motion (the odometry caught up
     /// past the turn or short of it; jump_search_step).
@@ -169,6 +172,8 @@ struct Prediction {
     /// The odometry's step since the last scan as predicted (the last motion after a jump),
     /// and the robot's motion registered at the last scan (robot frame, m, rad).
     mrpt::poses::CPose2D odometryStep, lastMotion;
+    /// The longest of the robot's motions registered at the last ten scans (m).
+    double longestRecentStep = 0;
 
     /// The last keyframe's robot pose in the submap's frame: the prediction less the motion
     /// predicted since that keyframe. A pose in that keyframe's frame (the graph matcher's
@@ -432,10 +437,18 @@ class ScanRegistration {
     /// step fitted jump_choice_margin better than ICP from the last motion, or the reverse.
     /// Whether a log's odometry is right at its jumps (long steps at a low scan rate) or off
     /// (a stall caught up) is a property of the log; keepJumpedReading asks it where the scan
-    /// cannot tell.
+    /// cannot tell, and registerScan where nothing registered the scan at all.
     int jumpsForOdometry_ = 0, jumpsForLastMotion_ = 0;
     /// ... once the odometry's step has won this many times, and more than twice as often.
     static constexpr int kJumpPriorCases = 3;
+    /// A jumped reading nothing registered is kept by that prior only when no longer than this
+    /// times the longest motion registered at the last ten scans: a catch-up after a stall
+    /// adds the stalled motion and reads longer than the robot ever steps.
+    static constexpr double kReadingWithinRecentSteps = 1.2;
+    /// This log's jumps have mostly been the odometry's own steps (see above).
+    bool odometryUsuallyRight() const {
+        return jumpsForOdometry_ >= kJumpPriorCases && jumpsForOdometry_ > 2 * jumpsForLastMotion_;
+    }
     Prediction motionPrediction_;  ///< shifted()'s prediction
     /// jumpBetween()'s starts: at most this many intervals (a 120 deg catch-up at 15 deg).
     static constexpr int kMaxJumpIntervals = 8;
@@ -506,6 +519,15 @@ Registration ScanRegistration::registerScan(const matching::PolarScan& scan,
     const bool odometryRather = out.byLastMotion && odometryPrediction.odometryPredicted &&
                                 !odometryPrediction.odometryStalled;
     out.pose = (odometryRather ? odometryPrediction : prediction).fromLastKeyframe;
+    // After a jump nothing placed, the log's earlier jumps decide between the last motion and
+    // the odometry's reading, as where ICP could not (keepJumpedReading): a robot whose long,
+    // sharp steps the scans have borne out again and again made this one too, unless the
+    // reading is longer than the robot has stepped lately (a stall caught up, a glitch).
+    if (prediction.odometryJumped && odometryUsuallyRight() &&
+        prediction.readingStep.norm() <= kReadingWithinRecentSteps * prediction.longestRecentStep) {
+        out.pose = prediction.fromLastKeyframe + prediction.toReading();
+        out.jumpReadingKept = true;
+    }
     out.covariance =
         odometryCovariance(prediction.distanceFromLastKeyframe, prediction.turnFromLastKeyframe);
     out.rawCovariance = out.covariance;

@@ -68,6 +68,9 @@ struct SlamStatistics {
     /// ICP placed from a start between the odometry's step and the last motion
     /// (jump_search_step): the odometry caught up past the turn or short of it.
     std::size_t odometryJumpsBetween = 0;
+    /// Of the jumps nothing registered, those kept as the odometry read them, not as the last
+    /// motion: the log's earlier jumps were mostly the odometry's own steps.
+    std::size_t odometryJumpReadingsKept = 0;
     /// odometry increments taken for catching up after a stall (OdometryLag.h)
     std::size_t odometryCatchUps = 0;
     /// Of those, placed by ICP from the odometry's step where nothing from the last motion

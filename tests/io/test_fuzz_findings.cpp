@@ -81,6 +81,7 @@ const Finding kFindings[] = {
     {"rawlog_crash.rawlog", "toposlam-convert", "-o OUT", "out.rawlog"},
     {"oom-4b998fc9.rawlog", "toposlam-convert", "-o OUT", "out.rawlog"},
     {"oom-00091269.rawlog", "toposlam-convert", "-o OUT", "out.rawlog"},
+    {"null-observation.rawlog", "toposlam-convert", "-o OUT", "out.rawlog"},
     {"oom-8df72e38.gridmap", "toposlam-convert", "-o OUT", "out.yaml"},
     {"hang-pct86.yaml", "toposlam-convert", "-o OUT", "out.gridmap.gz"},
     {"deep_nesting_32k.json", "toposlam-plan", "--from 1 --to 2 -o OUT", "plan"},

@@ -239,8 +239,13 @@ void RawlogScanSource::consume(const mrpt::serialization::CSerializable::Ptr& ob
         checkFinite(increment, "CActionCollection");
         accumulatedActions_ = accumulatedActions_ ? *accumulatedActions_ + increment : increment;
     } else if (const auto frame = std::dynamic_pointer_cast<CSensoryFrame>(object)) {
-        for (const auto& observation : *frame)
+        for (const auto& observation : *frame) {
+            // MRPT leaves an entry it could not make (an abstract or unknown class) empty.
+            if (!observation)
+                throw invalidContentError("CSensoryFrame",
+                                          "holds an observation MRPT could not read");
             consumeObservation(observation);
+        }
     } else if (const auto observation = std::dynamic_pointer_cast<CObservation>(object)) {
         consumeObservation(observation);
     }

@@ -196,6 +196,30 @@ simulation::PolygonWorld ringCorridor() {
     return w;
 }
 
+/// A lap of ringCorridor() at 0.75 m between scans, each corner turned within one step (as
+/// at a third of the scan rate): every corner departs from the last motion by 90 deg.
+std::vector<CPose2D> lapWithCornersInOneStep() {
+    return test::drivePath({{1.5, 1.5}, {18.5, 1.5}, {18.5, 10.5}, {1.5, 10.5}, {1.5, 2.5}}, 0.75,
+                           1.6);
+}
+
+/// The index of the pose of `truth` that turns its n-th corner (n from 1; more than 1 rad in one
+/// step), or 0 when there are fewer.
+std::size_t cornerScan(const std::vector<CPose2D>& truth, std::size_t n) {
+    std::size_t corners = 0;
+    for (std::size_t i = 1; i < truth.size(); ++i)
+        if (std::abs(mrpt::math::wrapToPi(truth[i].phi() - truth[i - 1].phi())) > 1.0 &&
+            ++corners == n)
+            return i;
+    return 0;
+}
+
+/// Marks every reading of `scan` invalid: the laser returned nothing.
+void blindScan(mrpt::obs::CObservation2DRangeScan& scan) {
+    for (std::size_t b = 0; b < scan.getScanSize(); ++b)
+        scan.setScanRangeValidity(b, false);
+}
+
 /// Identical offices along a corridor (same size, door, desk), what fools place recognition.
 simulation::PolygonWorld identicalRooms(int rooms) {
     simulation::PolygonWorld w;
@@ -472,8 +496,7 @@ TEST(GraphSlam, AcceptsAgreeingLoopsBeyondTheGate) {
     ASSERT_NEAR(truth[to].y(), 10.5, 1e-9);
     for (std::size_t i = from; i < to; ++i) {
         auto blind = mrpt::obs::CObservation2DRangeScan::Create(*drive.scans[i]);
-        for (std::size_t b = 0; b < blind->getScanSize(); ++b)
-            blind->setScanRangeValidity(b, false);
+        blindScan(*blind);
         drive.scans[i] = blind;
     }
     const double slip = 2.5;
@@ -776,8 +799,7 @@ TEST(GraphSlam, AFastTurnAtALowScanRateIsBorneOutNotAJump) {
     // the last motion (straight on) by 90 deg and the step after it by as much again, beyond
     // the jump bounds, yet the odometry is right. ICP from it fits the scan where ICP from the
     // last motion does not, so each such step is predicted by the odometry and registered.
-    const auto truth = test::drivePath(
-        {{1.5, 1.5}, {18.5, 1.5}, {18.5, 10.5}, {1.5, 10.5}, {1.5, 2.5}}, 0.75, 1.6);
+    const auto truth = lapWithCornersInOneStep();
     const auto drive = test::simulateDrive(ringCorridor(), truth, {}, 23);
     const SlamRun run = runSlam(drive);
     const auto& stats = run.slam->statistics();
@@ -795,18 +817,11 @@ TEST(GraphSlam, AJumpNothingRegistersKeepsTheReadingWhereTheLogsJumpsWereTheOdom
     // odometry's own steps: the scan keeps the reading, not the last motion (straight on, 90 deg
     // off), as a tour logged at a third of its scan rate needs (gen61, URG-04LX, B3-sim: a corner
     // kept at the last motion left the rest of the tour 0.96 m off).
-    const auto truth = test::drivePath(
-        {{1.5, 1.5}, {18.5, 1.5}, {18.5, 10.5}, {1.5, 10.5}, {1.5, 2.5}}, 0.75, 1.6);
+    const auto truth = lapWithCornersInOneStep();
     auto drive = test::simulateDrive(ringCorridor(), truth, {}, 23);
-    std::size_t corners = 0, blind = 0;
-    for (std::size_t i = 1; i < truth.size() && blind == 0; ++i)
-        if (std::abs(mrpt::math::wrapToPi(truth[i].phi() - truth[i - 1].phi())) > 1.0 &&
-            ++corners == 3)
-            blind = i;
+    const std::size_t blind = cornerScan(truth, 3);
     ASSERT_GT(blind, 0u);
-    auto& scan = *drive.scans[blind];
-    for (std::size_t b = 0; b < scan.getScanSize(); ++b)
-        scan.setScanRangeValidity(b, false);
+    blindScan(*drive.scans[blind]);
     const SlamRun run = runSlam(drive);
     const auto& stats = run.slam->statistics();
     ASSERT_GE(stats.registrationFailed, 1u) << "the blinded scan must not register";
@@ -825,23 +840,16 @@ TEST(GraphSlam, AJumpedReadingLongerThanTheRobotStepsIsNotKeptWhereNothingRegist
     // its odometry jumps 0.8 m ahead (a glitch, or a stall caught up in one step): 1.55 m where
     // the robot never stepped more than 0.75 m. That is no step of this robot: the scan keeps
     // the last motion, which is the robot's.
-    const auto truth = test::drivePath(
-        {{1.5, 1.5}, {18.5, 1.5}, {18.5, 10.5}, {1.5, 10.5}, {1.5, 2.5}}, 0.75, 1.6);
-    std::size_t corners = 0, blind = 0;
-    for (std::size_t i = 1; i < truth.size() && blind == 0; ++i)
-        if (std::abs(mrpt::math::wrapToPi(truth[i].phi() - truth[i - 1].phi())) > 1.0 &&
-            ++corners == 2)
-            blind = i + 4;
-    ASSERT_GT(blind, 0u);
+    const auto truth = lapWithCornersInOneStep();
+    ASSERT_GT(cornerScan(truth, 2), 0u);
+    const std::size_t blind = cornerScan(truth, 2) + 4;
     // The odometry frame jumps 0.8 m along the robot's heading there.
     const double heading = truth[blind].phi();
     test::OdometryErrors errors;
     errors.jumpAt = blind;
     errors.jump = CPose2D(0.8 * std::cos(heading), 0.8 * std::sin(heading), 0);
     auto drive = test::simulateDrive(ringCorridor(), truth, errors, 23);
-    auto& scan = *drive.scans[blind];
-    for (std::size_t b = 0; b < scan.getScanSize(); ++b)
-        scan.setScanRangeValidity(b, false);
+    blindScan(*drive.scans[blind]);
     const SlamRun run = runSlam(drive);
     const auto& stats = run.slam->statistics();
     ASSERT_GE(stats.registrationFailed, 1u) << "the blinded scan must not register";
@@ -1760,8 +1768,7 @@ TEST(GraphSlam, BadLogsGiveClearErrors) {
     // Scans without a single valid reading (laser blind).
     auto blind = test::simulateDrive(ringCorridor(), test::drivePath({{1.5, 1.5}, {3, 1.5}}), {});
     for (auto& s : blind.scans)
-        for (std::size_t b = 0; b < s->getScanSize(); ++b)
-            s->setScanRangeValidity(b, false);
+        blindScan(*s);
     test::writeRawlog(blind, dir.file("blind.rawlog"));
     try {
         mapping::mapLog(dir.file("blind.rawlog"), ini);

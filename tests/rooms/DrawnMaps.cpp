@@ -387,13 +387,24 @@ DrawnMap raggedCubicles() {
     });
 }
 
-DrawnMap doubleDoors() {
+namespace {
+
+// A 14 x 6 m building: a 2 m corridor along the bottom (y in [1.2, 3.2]) below the rooms, its
+// upper wall 0.1 m; no room, door or partition drawn yet.
+DrawnMap corridorBelowRooms() {
     DrawnMap m;
     m.image = cv::Mat(170, 330, CV_8U, cv::Scalar(128));
+    fill(m.image, 1, 1, 15.4, 7.4, 0);
+    fill(m.image, 1.2, 1.2, 15.2, 7.2, 255);
+    fill(m.image, 1.2, 3.2, 15.2, 3.3, 0);  // the corridor's upper wall, 0.1 m
+    return m;
+}
+
+}  // namespace
+
+DrawnMap doubleDoors() {
+    DrawnMap m = corridorBelowRooms();
     cv::Mat& img = m.image;
-    fill(img, 1, 1, 15.4, 7.4, 0);
-    fill(img, 1.2, 1.2, 15.2, 7.2, 255);
-    fill(img, 1.2, 3.2, 15.2, 3.3, 0);  // the corridor's upper wall, 0.1 m
     const double roomX0[] = {1.2, 4.8, 8.3, 11.8}, clear[] = {1.45, 1.5, 1.55, 1.6};
     for (int i = 0; i < 4; ++i) {
         if (i > 0)
@@ -406,6 +417,23 @@ DrawnMap doubleDoors() {
         m.tour.insert(m.tour.end(), {{middle, 2.2}, {middle, 5.2}, {middle, 2.2}});
     }
     m.rooms.push_back({8.2, 2.2});
+    return m;
+}
+
+DrawnMap pierBetweenDoorways() {
+    DrawnMap m = corridorBelowRooms();
+    cv::Mat& img = m.image;
+    fill(img, 8.2, 3.3, 8.3, 7.2, 0);  // the partition between the two rooms
+    // The left room: a 1.8 m opening and a 1.1 m door, the 0.45 m pier between them.
+    auto opening = [&](double x0, double x1) {
+        fill(img, x0, 3.2, x1, 3.3, 255);
+        m.doors.push_back({{0.5 * (x0 + x1), 3.25}, x1 - x0});
+        m.tour.insert(m.tour.end(), {{0.5 * (x0 + x1), 2.2}, {0.5 * (x0 + x1), 5.2}});
+    };
+    opening(2.5, 4.3);
+    opening(4.75, 5.85);
+    opening(10.0, 11.0);  // the right room's door
+    m.rooms = {{4.5, 5.2}, {11.7, 5.2}, {8.2, 2.2}};
     return m;
 }
 

@@ -66,6 +66,10 @@ DrawnMap raggedCubicles();
 /// corridor's 0.1 m wall: clear openings 1.45, 1.5, 1.55 and 1.6 m, around the widest door
 /// (1.6 m between the jamb cells' centres is the 1.55 m one). 5 rooms, 4 doors.
 DrawnMap doubleDoors();
+/// A 2 m corridor below two rooms, in its 0.1 m upper wall: into the left room a 1.8 m opening
+/// and a 1.1 m door with a 0.45 m pier between them (too short to carry a wall segment), into
+/// the right room a 1 m door. 3 rooms, 3 doors.
+DrawnMap pierBetweenDoorways();
 /// A 2.2 m corridor between three rooms above and three below, each entered through a 1 m door
 /// beside a partition, the doors above and below opposite each other: the corridor's
 /// cross-section there is 2.2 m, framed by wall corners, and no room border. 7 rooms, 6 doors.

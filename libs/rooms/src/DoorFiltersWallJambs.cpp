@@ -16,6 +16,10 @@ namespace {
 // m across a wall within which a jamb still counts as on it (onWall in DoorFilters::wallJambs).
 constexpr double kOnWallSlack = 0.1;
 
+// m: the shortest wall segment from which piers are searched (markPiers): longer than
+// furniture (RoomSegmenter's maxFurnitureSize), whose edges carry segments too.
+constexpr double kPierWallLength = 2.0;
+
 // m between the probes along a hollow wall (DoorFilters::Options::hollowWallLength).
 constexpr double kHollowProbeStep = 0.25;
 
@@ -105,10 +109,16 @@ class SegmentsNear {
     std::vector<std::vector<std::size_t>> buckets_;
 };
 
-/// Per obstacle label (FreeSpace::obstacles): whether it belongs to the building. Those that
-/// reach the border of the map (the outer walls and everything joined to them) and those that
-/// carry a wall segment do; the others are free-standing things: furniture, bins, plants.
-std::vector<bool> buildingStructure(const FreeSpace& space, const std::vector<LineSegment>& walls) {
+/// Per obstacle label (FreeSpace::obstacles): whether it belongs to the building, and whether
+/// it does as a pier (see markPiers).
+struct BuildingStructure {
+    std::vector<bool> structure, pier;
+};
+
+/// Those obstacles that reach the border of the map (the outer walls and everything joined to
+/// them) and those that carry a wall segment belong to the building; the others are
+/// free-standing things: furniture, bins, plants.
+std::vector<bool> structureOf(const FreeSpace& space, const std::vector<LineSegment>& walls) {
     std::vector<bool> structure(space.obstacleOnBorder.begin(), space.obstacleOnBorder.end());
     for (const LineSegment& w : walls) {
         cv::LineIterator it(space.obstacles, cv::Point(cvRound(w.start.x), cvRound(w.start.y)),
@@ -118,6 +128,127 @@ std::vector<bool> buildingStructure(const FreeSpace& space, const std::vector<Li
     }
     structure[0] = false;  // label 0: free cells
     return structure;
+}
+
+/// Marks the piers: a piece of wall between two openings, too short to carry a wall segment
+/// of its own (0.45 m between a 1.8 m and a 1.1 m doorway). Walking on from the end of a wall
+/// segment (kPierWallLength or longer) along its line, across the openings (at most `maxGap` cells
+/// each), the first obstacle met lies within the wall's band (the cells across the wall where the
+/// segment ends, a cell and a half of slack) and the next one beyond it belongs to the building:
+/// wall, gap, piece, gap, wall, all on one line, the piece no thicker than the wall and longer than
+/// thick. The wall is an inner one (free on both sides) as thick as the building's walls
+/// (`measured`, if given). Furniture stands against walls (then it joins them) or in the rooms,
+/// seldom exactly in a wall's line with the wall's thickness.
+void markPiers(const FreeSpace& space, const cv::Mat& open, const std::vector<LineSegment>& walls,
+               double maxGap, double maxThickness, const WallThickness* measured,
+               BuildingStructure& building) {
+    if (maxGap <= 0 || space.islandRuns.empty())
+        return;
+    auto labelAt = [&](const cv::Point2d& p) {
+        const int x = cvRound(p.x), y = cvRound(p.y);
+        if (x < 0 || y < 0 || x >= open.cols || y >= open.rows || detail::isSet(open, x, y))
+            return 0;
+        return space.obstacles.at<int>(y, x);
+    };
+    auto freeAt = [&](const cv::Point2d& p) {
+        const int x = cvRound(p.x), y = cvRound(p.y);
+        return detail::isSet(space.free, x, y) ||
+               (!space.otherFree.empty() && detail::isSet(space.otherFree, x, y));
+    };
+    // Cells of slack across the band (a wall at an angle to the grid is a staircase), and per
+    // cell along the line (a Hough segment's direction may be a degree or two off its wall's).
+    constexpr double kSlack = 1.5;
+    // Cells a wall may go on past the end of its segment.
+    constexpr double kPastSegmentEnd = 6;
+    const double driftPerCell = std::tan(2.5 * M_PI / 180);
+    const double minSpan = detail::toCells(kPierWallLength, space.frame.resolution);
+    for (const LineSegment& w : walls) {
+        const double span = w.length();
+        if (span < minSpan)
+            continue;
+        const cv::Point2d d((w.end.x - w.start.x) / span, (w.end.y - w.start.y) / span);
+        const cv::Point2d n(-d.y, d.x);
+        for (const bool atEnd : {false, true}) {
+            const cv::Point2d e = atEnd ? cv::Point2d(w.end) : cv::Point2d(w.start);
+            const cv::Point2d out = atEnd ? d : -d;
+            // The wall's band across its line, two cells or more in from the segment's end (a
+            // segment may reach a few cells past its wall's end at an angle to the grid).
+            cv::Point2d q = e;
+            int wall = 0;
+            for (double in = 2; in <= 6 && wall == 0; ++in) {
+                q = e - in * out;
+                wall = labelAt(q);
+            }
+            if (wall == 0 || !building.structure[static_cast<std::size_t>(wall)])
+                continue;
+            double lo = 0, hi = 0;
+            while (lo > -maxThickness && labelAt(q + (lo - 1) * n) != 0)
+                --lo;
+            while (hi < maxThickness && labelAt(q + (hi + 1) * n) != 0)
+                ++hi;
+            // An inner wall: free space on both sides (an outer wall has the unknown outside
+            // beyond it, furniture against it makes it thicker than any wall).
+            if (!freeAt(q + (lo - 1) * n) || !freeAt(q + (hi + 1) * n) ||
+                (measured != nullptr && !measured->isWallThickness(hi - lo + 1)))
+                continue;
+            // The first obstacle across the band `at` cells out from the segment's end (0: none).
+            auto acrossBand = [&](double at, int skip) {
+                const double drift = std::floor(at * driftPerCell);
+                for (double o = lo - drift; o <= hi + drift; o += 1) {
+                    const int label = labelAt(e + at * out + o * n);
+                    if (label != 0 && label != skip)
+                        return label;
+                }
+                return 0;
+            };
+            // The first obstacle other than `skip` from `from` on, within `reach`; `at` where.
+            auto firstInBand = [&](double from, double reach, int skip, double& at) {
+                for (at = from; at <= from + reach; at += 0.5) {
+                    if (const int label = acrossBand(at, skip))
+                        return label;
+                }
+                return 0;
+            };
+            // Past the wall's end (the segment may stop a few cells short of it; where the wall
+            // goes on farther, another segment carries it), the first obstacle across the
+            // opening.
+            double at = 0.5;
+            while (at <= kPastSegmentEnd && acrossBand(at, 0) != 0)
+                at += 0.5;
+            if (at > kPastSegmentEnd)
+                continue;
+            const int piece = firstInBand(at, maxGap, 0, at);
+            if (piece == 0 || building.structure[static_cast<std::size_t>(piece)])
+                continue;  // the wall goes on, or the opening is wider than maxGap
+            // The piece within the band, no thicker than the wall, and how far along the line
+            // it reaches.
+            double farthest = at, nearSide = hi, farSide = lo;
+            bool inBand = true;
+            for (const ConnectedRuns::Run& run : space.islandRuns) {
+                if (run.label != piece)
+                    continue;  // a few pieces per map: a scan, not an index
+                for (int x = run.begin; x < run.end && inBand; ++x) {
+                    const cv::Point2d c(x - e.x, run.row - e.y);
+                    const double across = c.dot(n), slack = kSlack + c.dot(out) * driftPerCell;
+                    inBand = across >= lo - slack && across <= hi + slack;
+                    nearSide = std::min(nearSide, across);
+                    farSide = std::max(farSide, across);
+                    farthest = std::max(farthest, c.dot(out));
+                }
+            }
+            // No thicker than the wall, and longer along its line than thick: a piece of wall,
+            // not a post, a chair or a bin that happens to stand in the wall's line.
+            const double thick = farSide - nearSide;
+            if (!inBand || thick > hi - lo + 2 * kSlack || farthest - at <= thick)
+                continue;
+            double beyond = 0;
+            const int next = firstInBand(farthest + 1, maxGap, piece, beyond);
+            if (next != 0 && building.structure[static_cast<std::size_t>(next)]) {
+                building.structure[static_cast<std::size_t>(piece)] = true;
+                building.pier[static_cast<std::size_t>(piece)] = true;
+            }
+        }
+    }
 }
 
 }  // namespace
@@ -130,15 +261,25 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
         return doors;
     const double extent = detail::toCells(options_.minWallExtent, space.frame.resolution);
     const cv::Mat& obstacleLabels = space.obstacles;
-    const std::vector<bool> structure = buildingStructure(space, walls);
     // Where no wall can be: free cells, and on SLAM grids also the unknown cells away from
     // every occupied cell (FreeSpace::noWall): a shadow behind a table is no jamb and no wall.
     const cv::Mat& open = space.noWall.empty() ? space.free : space.noWall;
+    const double thickness = detail::toCells(options_.maxWallThickness, space.frame.resolution);
+    BuildingStructure building{structureOf(space, walls), {}};
+    building.pier.assign(building.structure.size(), false);
+    const WallThickness* measured = options_.wallThicknessFromMap ? wallThickness : nullptr;
+    markPiers(space, open, walls, detail::toCells(options_.maxPierGap, space.frame.resolution),
+              thickness, measured, building);
+    const std::vector<bool>& structure = building.structure;
+    auto inside = [&](const cv::Point& jamb) {
+        return jamb.x >= 0 && jamb.y >= 0 && jamb.x < obstacleLabels.cols &&
+               jamb.y < obstacleLabels.rows;
+    };
+    auto labelOf = [&](const cv::Point& jamb) {
+        return inside(jamb) ? static_cast<std::size_t>(obstacleLabels.at<int>(jamb)) : 0;
+    };
     auto onStructure = [&](const cv::Point& jamb) {
-        const bool inside = jamb.x >= 0 && jamb.y >= 0 && jamb.x < obstacleLabels.cols &&
-                            jamb.y < obstacleLabels.rows;
-        return !inside || (structure[static_cast<std::size_t>(obstacleLabels.at<int>(jamb))] &&
-                           !detail::isSet(open, jamb.x, jamb.y));
+        return !inside(jamb) || (structure[labelOf(jamb)] && !detail::isSet(open, jamb.x, jamb.y));
     };
     // Along the door line (both ways: one leads back into the opening and stops at once) and
     // across it, with kOnWallSlack of slack (two cells of 5 cm; as many cells as make 0.1 m on
@@ -162,7 +303,6 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
     // only with nothing free within edgeDepth on the other (the edge of the mapped space, not a
     // bed or a sofa against an inner wall, with the next room behind it). A wall across the door
     // line walked through instead runs on to both sides there: no wall end.
-    const double thickness = detail::toCells(options_.maxWallThickness, space.frame.resolution);
     const double edgeDepth =
         std::max(2 * thickness, detail::toCells(options_.edgeDepth, space.frame.resolution));
     const double length =
@@ -174,7 +314,6 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
             [&](const auto& isFree) { return detail::walkRay(from, ux, uy, reach, isFree, hit); });
         return found ? detail::cellDistance(hit.x - from.x, hit.y - from.y) : 1e9;
     };
-    const WallThickness* measured = options_.wallThicknessFromMap ? wallThickness : nullptr;
     // SLAM grids: a wall the laser saw from both sides but not inside. Its faces are occupied
     // cells with unknown runs of at most 2 x wallHoleReach between them (holes where the laser
     // grazed a face); a longer unknown run between two faces is its unseen inside.
@@ -272,8 +411,11 @@ std::vector<VirtualDoor> DoorFilters::wallJambs(const FreeSpace& space,
     const double stepCells =
         std::max(1.0, detail::toCells(WallThickness::kThicknessStep, space.frame.resolution));
     const double probeDepth = std::round(std::round(length / 3 / stepCells) * stepCells);
+    // A pier (markPiers) ends its wall at both of its ends, however short: at least
+    // minWallExtent, as every jamb's wall.
     auto wallEnd = [&](const cv::Point& jamb, double ux, double uy) {
-        return wallRun(open, jamb, ux, uy, length) >= length &&
+        const double run = wallRun(open, jamb, ux, uy, length);
+        return (run >= length || (building.pier[labelOf(jamb)] && run >= extent)) &&
                wallAcross(jamb, ux, uy, probeDepth);
     };
     // The sides of the door line (bit 0: (-uy, ux), bit 1: the other) to which a wall goes on

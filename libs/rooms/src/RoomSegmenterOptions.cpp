@@ -126,6 +126,10 @@ void RoomSegmenter::Options::declare(config::OptionsSchema& s) {
            "a wall end free on one side only is the map's edge when nothing is free this deep "
            "behind it")
         .atLeast(0);
+    s.real("max_pier_gap", filters.maxPierGap, "m",
+           "a short piece of wall in a wall's line, with openings of at most this much to walls "
+           "on both sides, is a pier of the building (0 = off)")
+        .atLeast(0);
     s.real("hollow_wall_length", filters.hollowWallLength, "m",
            "a wall seen from both sides but not inside is as thick as its faces where it goes "
            "on so this long (0 = off)")

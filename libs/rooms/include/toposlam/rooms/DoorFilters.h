@@ -105,6 +105,13 @@ class DoorFilters {
         /// (RoomSegmenter's maxFurnitureSize). 0 = off: its unseen inside counts, and such a
         /// wall is thicker than maxWallThickness.
         double hollowWallLength = 2.5;
+        /// m, part of the wall-jamb test: a piece of wall between two openings, too short to
+        /// carry a wall segment (a pier between two doorways), belongs to the building when it
+        /// lies in the line of an inner wall (a segment of at least 2 m), no thicker than that
+        /// wall and longer than thick, with openings of at most this width to the wall on
+        /// either side; and it ends its wall at both ends, however short (down to
+        /// minWallExtent). 0 = off: such a piece is free-standing furniture.
+        double maxPierGap = 3.0;
         /// m: how far from a wall-end jamb, along the door line, the wall must go on and is
         /// measured for its thickness (and the reach of the wide openings' framing test).
         double wallEndProbe = 0.55;

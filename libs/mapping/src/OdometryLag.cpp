@@ -146,7 +146,12 @@ bool OdometryLag::catchesUpShortfall(const mrpt::poses::CPose2D& increment,
 mrpt::poses::CPose2D OdometryLag::stepPastShortfall(const mrpt::poses::CPose2D& increment) const {
     const double distance = increment.norm();
     const double kept = distance > 0 ? std::max(0.0, distance - shortfall_) / distance : 0.0;
-    return {increment.x() * kept, increment.y() * kept, increment.phi()};
+    // The turn the short readings missed, where this one turned farther the same way.
+    const double turn = mrpt::math::wrapToPi(increment.phi());
+    const bool holdsMissedTurn =
+        turn * shortfallTurn_ > 0 && std::abs(turn) > std::abs(shortfallTurn_);
+    return {increment.x() * kept, increment.y() * kept,
+            holdsMissedTurn ? turn - shortfallTurn_ : increment.phi()};
 }
 
 mrpt::poses::CPose2D OdometryLag::stepSinceStall(const mrpt::poses::CPose2D& increment) const {
@@ -156,7 +161,7 @@ mrpt::poses::CPose2D OdometryLag::stepSinceStall(const mrpt::poses::CPose2D& inc
 void OdometryLag::registered(const mrpt::poses::CPose2D& increment,
                              const mrpt::poses::CPose2D& step) {
     if (zero(increment)) {
-        shortfall_ = 0;  // a stall of whole scans: bridges() and catchingUp() see to it
+        shortfall_ = shortfallTurn_ = 0;  // a stall of whole scans: bridges(), catchingUp()
         shortfallAfterStall_ = false;
         // The motion the odometry missed, for catchingUp() to expect in the increments after.
         backlogDistance_ += step.norm();
@@ -174,6 +179,12 @@ void OdometryLag::registered(const mrpt::poses::CPose2D& increment,
         // one that is not short is in step (or catching up), and ends it.
         const double missed = step.norm() - increment.norm();
         shortfall_ = missed > kMovedDistance ? shortfall_ + missed : 0.0;
+        // Such a reading may miss some of the turn too (it read less of it than registered).
+        const double turnMissed = mrpt::math::wrapToPi(step.phi() - increment.phi());
+        const bool turnedLess = std::abs(turnMissed) > kMovedAngle &&
+                                std::abs(mrpt::math::wrapToPi(step.phi())) >
+                                    std::abs(mrpt::math::wrapToPi(increment.phi()));
+        shortfallTurn_ = shortfall_ > 0 ? shortfallTurn_ + (turnedLess ? turnMissed : 0.0) : 0.0;
         shortfallAfterStall_ = shortfall_ > 0 && (shortfallAfterStall_ || translationStalled_);
     }
     lastStep_ = step;

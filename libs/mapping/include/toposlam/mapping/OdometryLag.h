@@ -49,8 +49,11 @@
 // than the last motion by more than kAgreeDistance after a shortfall of more than that is
 // predicted as the reading with its translation shortened by the shortfall, where that brings
 // it nearer the last motion's length (catchesUpShortfall(), stepPastShortfall()). Its heading
-// stays as read: mit-csail's odometry reads no translation for two scans while it reads the
-// turn.
+// stays as read (mit-csail's odometry reads no translation for two scans while it reads the
+// turn), less the turn the short readings missed where they read less of the registered turn
+// and the reading turned farther, the same way (generated plan 61, stalling robot, a third of
+// the scans: 0.17 m and 18 deg read where the robot went 0.48 m and turned 54, then 1.30 m and
+// 54 deg where it went 1.0 m and turned 13; from the heading as read ICP settled 44 deg off).
 //
 // That odometry also stalls in distance alone: 0.004, 0 and 0 m read at three scans where the
 // robot went 0.21 m in each 0.21 s, the turn read all along, then 0.834 m. Not zero, so no
@@ -123,8 +126,9 @@ class OdometryLag {
     bool catchesUpShortfall(const mrpt::poses::CPose2D& increment,
                             const mrpt::poses::CPose2D& lastMotion) const;
     /// The step that `increment` (which catchesUpShortfall()) reads less the shortfall: its
-    /// translation shortened by the distance the readings fell short, its heading as read
-    /// (robot frame of the last scan, m, rad).
+    /// translation shortened by the distance the readings fell short, its heading as read less
+    /// the turn they missed where it turned farther the same way (robot frame of the last
+    /// scan, m, rad).
     mrpt::poses::CPose2D stepPastShortfall(const mrpt::poses::CPose2D& increment) const;
     /// m by which the readings since the odometry was last in step fell short of the motion
     /// registered for them.
@@ -179,7 +183,8 @@ class OdometryLag {
     mrpt::poses::CPose2D lastReading_;
     double lastReadingSeconds_ = 0;
     bool translationStalled_ = false;
-    double shortfall_ = 0;              ///< shortfall()
+    double shortfall_ = 0;      ///< shortfall()
+    double shortfallTurn_ = 0;  ///< rad the readings of the shortfall turned less than registered
     bool shortfallAfterStall_ = false;  ///< a stall of the distance alone added to it
 };
 

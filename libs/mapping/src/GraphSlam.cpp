@@ -158,6 +158,7 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement,
     p.odometryStep = increment;
     p.lastMotion = lastMotion_;
     p.longestRecentStep = *std::max_element(recentSteps_.begin(), recentSteps_.end());
+    p.lastReading = lastReading_;
     const CPose2D predicted = current_ + increment;
     const Keyframe& last = keyframes_.back();
     p.lastKeyframe = &last;
@@ -230,6 +231,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     stats_.lastMotionPredictions += r.byLastMotion;
     stats_.odometryJumpsBorneOut += r.jumpBorneOut;
     stats_.odometryJumpsBetween += r.jumpBetween;
+    stats_.odometryJumpsOverTwoReadings += r.jumpOverTwoReadings;
     stats_.odometryCatchUpsKept += r.catchUpReadingKept;
     stats_.odometryJumpReadingsKept += r.jumpReadingKept;
     stats_.icpUnsettledRefused += r.unsettledRefused;
@@ -277,6 +279,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     doubtSinceKeyframe_ = doubtSinceKeyframe_ || r.method != RegistrationMethod::Icp;
     if (odometry)
         odometryLag_.registered(*odometry, step);
+    lastReading_ = odometry;
     lastMotion_ = step;
     recentSteps_[stats_.scans % recentSteps_.size()] = step.norm();
     travelled_ += step.norm();

@@ -126,6 +126,10 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
             "(0 = off)")
         .atLeast(0)
         .atMost(90);
+    s.flag("jump_over_two_readings", jumpOverTwoReadings,
+           "after an odometry jump nothing else places, where the last scan's registration "
+           "departed from its reading, ICP also starts from the scan before the last followed "
+           "by both readings (a stall within a scan interval)");
     s.flag("bridge_odometry_stalls", bridgeOdometryStalls,
            "where registration saw less of an odometry stall than the reading after it holds "
            "(no translation, or 0.2 m less where the reading turned as far as registration saw, "

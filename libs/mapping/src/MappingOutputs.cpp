@@ -151,6 +151,8 @@ std::string formatSummary(const MappingResult& r) {
                      " of them borne out by the scan: a fast turn; " +
                      std::to_string(st->odometryJumpsBetween) +
                      " placed by ICP between the odometry's step and the last motion; " +
+                     std::to_string(st->odometryJumpsOverTwoReadings) +
+                     " placed by ICP over the last two readings together (the first fell short); " +
                      std::to_string(st->odometryJumpReadingsKept) +
                      " placed by nothing and kept as read: this log's jumps were mostly the "
                      "odometry's own steps)";
@@ -263,6 +265,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
                              {"odometry_jumps", st->odometryJumps},
                              {"odometry_jumps_borne_out", st->odometryJumpsBorneOut},
                              {"odometry_jumps_between", st->odometryJumpsBetween},
+                             {"odometry_jumps_over_two_readings", st->odometryJumpsOverTwoReadings},
                              {"odometry_jump_readings_kept", st->odometryJumpReadingsKept},
                              {"odometry_catch_ups", st->odometryCatchUps},
                              {"odometry_catch_ups_kept", st->odometryCatchUpsKept},

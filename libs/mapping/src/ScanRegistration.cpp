@@ -419,7 +419,7 @@ const Prediction& ScanRegistration::jumpBorneOut(const matching::PolarScan& scan
     const double sidewaysScale =
         std::max(1.0, prediction.readingStep.norm() / options_.odometryJumpDistance);
     if (!acceptable(fromOdometry, byOdometry, true, sidewaysScale)) {
-        jumpedIcpEnd_ = fromOdometry.robot;  // for jumpBetween(), should the matcher fail too
+        jumpedIcpEnd_ = fromOdometry.robot;  // for jumpBetween() and jumpOverTwoReadings()
         readingIcp_ = fromOdometry;
         return prediction;
     }
@@ -507,6 +507,45 @@ const Prediction& ScanRegistration::jumpBetween(const matching::PolarScan& scan,
     shifted(prediction, best->robot - prediction.inSubmap);
     started = *best;
     motionPrediction_.odometryJumped = false;
+    return motionPrediction_;
+}
+
+const Prediction& ScanRegistration::jumpOverTwoReadings(const matching::PolarScan& scan,
+                                                        const CPose2D& sensorOnRobot,
+                                                        const Prediction& prediction,
+                                                        std::optional<IcpAttempt>& started) {
+    if (!options_.jumpOverTwoReadings || !jumpedIcpEnd_ || !prediction.odometryJumped ||
+        !prediction.lastReading)
+        return prediction;
+    // Only where registration departed from the last reading: otherwise the two readings
+    // start where this one alone did.
+    const CPose2D& lastReading = *prediction.lastReading;
+    const CPose2D departure = (-prediction.lastMotion) + lastReading;
+    if (departure.norm() <= OdometryLag::kAgreeDistance &&
+        std::abs(mrpt::math::wrapToPi(departure.phi())) <= OdometryLag::kAgreeAngle)
+        return prediction;
+    // From the pose of the scan before the last (the prediction less the predicted step and
+    // the last motion), both readings as the odometry read them.
+    const CPose2D toBoth = (-prediction.odometryStep) + (-prediction.lastMotion) + lastReading +
+                           prediction.readingStep;
+    const CPose2D byBoth = prediction.inSubmap + toBoth;
+    const Submap& submap = *prediction.submap;
+    IcpAttempt fromBoth = icpFrom(scan, sensorOnRobot, submap, byBoth);
+    // As for a jumped reading (jumpBorneOut): the sideways bound grows with the steps' length.
+    const double sidewaysScale = std::max(
+        1.0, (lastReading + prediction.readingStep).norm() / options_.odometryJumpDistance);
+    if (!acceptable(fromBoth, byBoth, true, sidewaysScale))
+        return prediction;
+    const IcpAttempt& fromMotion = icpFromLastMotion(scan, sensorOnRobot, prediction);
+    if (acceptable(fromMotion, prediction.inSubmap, /*boundSideways=*/false) &&
+        !bearsOut(submap.map(), scan, sensorOnRobot, fromBoth.robot, fromMotion.robot,
+                  options_.jumpChoiceMargin))
+        return prediction;
+    started = std::move(fromBoth);
+    shifted(prediction, toBoth);
+    motionPrediction_.odometryJumped = false;
+    motionPrediction_.odometryPredicted = true;  // the odometry's own steps
+    motionPrediction_.sidewaysScale = sidewaysScale;
     return motionPrediction_;
 }
 

@@ -123,6 +123,8 @@ class GraphSlam {
     mrpt::poses::CPose2D current_;  ///< last scan's robot pose, world frame
     mrpt::math::CMatrixDouble33 currentCovariance_;
     mrpt::poses::CPose2D lastMotion_;  ///< the last scan's registered motion
+    /// The odometry's reading at the last scan (calibrated), when it had one.
+    std::optional<mrpt::poses::CPose2D> lastReading_;
     /// The distances of the last ten scans' registered motions (m), oldest overwritten.
     std::array<double, 10> recentSteps_{};
     bool odometryMoved_ = false;              ///< some odometry increment was not zero

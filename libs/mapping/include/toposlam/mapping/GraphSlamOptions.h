@@ -152,6 +152,11 @@ struct GraphSlamOptions : public config::Options {
     /// if it puts secondOpinionMargin more of the scan on the submap than ICP from the last
     /// motion (ScanRegistration::jumpBetween).
     double jumpSearchStep = 15 * M_PI / 180;
+    /// After an odometry jump that nothing above places, where the last scan's registered
+    /// motion departed from its reading: ICP also starts from the scan before the last
+    /// followed by both readings, an odometry that stalled within a scan interval having read
+    /// too little of a step and the rest with the next (ScanRegistration::jumpOverTwoReadings).
+    bool jumpOverTwoReadings = true;
     /// The first odometry reading after readings that repeated exactly (a stall) is the motion
     /// since the last reading that changed. Where registration saw less of the stall than that
     /// (along a corridor its scans keep the stall's standstill or go part of the way; where it

@@ -43,7 +43,11 @@
 //     the submap better than ICP from the odometry's step (jumpMatchRefused);
 //  3. after an odometry jump that neither placed, ICP from starts between the last motion and
 //     the odometry's step (jump_search_step): a stalled odometry that caught up past the turn
-//     or short of it (mit-csail at a quarter of its rate);
+//     or short of it (mit-csail at a quarter of its rate); then ICP from the scan before the
+//     last followed by both readings, where the last scan's registered motion departed from
+//     its reading (jump_over_two_readings): an odometry that stalled within a scan interval
+//     read too little of a step and the rest with the next (generated plan 60, stalling
+//     robot, a third of the scans);
 //  4. after a jump, ICP from the odometry's step where it fits the submap clearly better than
 //     ICP from the last motion, though it failed step 1's tests (keepJumpedReading: a step
 //     into new ground, little of the scan on the submap), or fits as well and the log's
@@ -118,6 +122,10 @@ struct Registration {
     /// from a start between the odometry's step and the last motion (the odometry caught up
     /// past the turn or short of it; jump_search_step).
     bool jumpBetween = false;
+    /// After a jump that neither those nor ICP between placed: ICP from the scan before the
+    /// last followed by the last reading and this one (the last reading fell short of the
+    /// step and this one holds the rest; jump_over_two_readings).
+    bool jumpOverTwoReadings = false;
     /// The along-heading check's evidence when it ran (its `scan` is left 0: the caller knows
     /// which scan this is).
     std::optional<AlongHeadingCheck> alongHeading;
@@ -174,6 +182,9 @@ struct Prediction {
     mrpt::poses::CPose2D odometryStep, lastMotion;
     /// The longest of the robot's motions registered at the last ten scans (m).
     double longestRecentStep = 0;
+    /// The odometry's reading at the last scan, when it had one (robot frame of the scan
+    /// before it, m, rad; ScanRegistration::jumpOverTwoReadings).
+    std::optional<mrpt::poses::CPose2D> lastReading;
 
     /// The last keyframe's robot pose in the submap's frame: the prediction less the motion
     /// predicted since that keyframe. A pose in that keyframe's frame (the graph matcher's
@@ -399,6 +410,22 @@ class ScanRegistration {
     const Prediction& jumpBetween(const matching::PolarScan& scan,
                                   const mrpt::poses::CPose2D& sensorOnRobot,
                                   const Prediction& prediction, std::optional<IcpAttempt>& started);
+    /// After an odometry jump that neither ICP from the odometry's step, the graph matcher nor
+    /// jumpBetween() placed, where the last scan's registered motion departed from its reading
+    /// by more than OdometryLag::kAgreeDistance or kAgreeAngle: ICP from the pose of the scan
+    /// before the last followed by both readings (jump_over_two_readings). An odometry that
+    /// stalls within a scan interval reads too little of a step and the rest with the next;
+    /// applied where registration placed the scan in between (turned as the robot did, not as
+    /// the odometry read), the second reading alone is off by the first one's error, while
+    /// the two together are the robot's motion over both intervals. The end is the prediction
+    /// (`started` gets its ICP run) when it passes tryIcp()'s overlap and correction tests,
+    /// the sideways bound grown with the two steps' length, and ends where ICP from the last
+    /// motion does, or puts jump_choice_margin more of `scan` on the submap, or ICP from the
+    /// last motion fails those tests (but the sideways bound). Otherwise `prediction`.
+    const Prediction& jumpOverTwoReadings(const matching::PolarScan& scan,
+                                          const mrpt::poses::CPose2D& sensorOnRobot,
+                                          const Prediction& prediction,
+                                          std::optional<IcpAttempt>& started);
     /// `prediction` with the predicted step since the last scan followed by `shift` (robot
     /// frame), kept in motionPrediction_: the alternatives preferredPrediction() and
     /// jumpBorneOut() choose.
@@ -504,6 +531,14 @@ Registration ScanRegistration::registerScan(const matching::PolarScan& scan,
     const Prediction& searched = jumpBetween(scan, sensorOnRobot, prediction, between);
     if (between && tryIcp(scan, sensorOnRobot, searched, out, &*between)) {
         out.jumpBetween = true;
+        return out;
+    }
+    // Or the reading before it fell short of the step, and this one holds the rest (a stall
+    // within a scan interval): both readings together are the robot's motion.
+    std::optional<IcpAttempt> both;
+    const Prediction& overBoth = jumpOverTwoReadings(scan, sensorOnRobot, prediction, both);
+    if (both && tryIcp(scan, sensorOnRobot, overBoth, out, &*both)) {
+        out.jumpOverTwoReadings = true;
         return out;
     }
     // Or it did not jump at all, and the step went where the scan sees little of the submap.

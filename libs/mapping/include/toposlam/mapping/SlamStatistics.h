@@ -68,6 +68,10 @@ struct SlamStatistics {
     /// ICP placed from a start between the odometry's step and the last motion
     /// (jump_search_step): the odometry caught up past the turn or short of it.
     std::size_t odometryJumpsBetween = 0;
+    /// Of the others, those ICP placed from the scan before the last followed by both readings
+    /// (jump_over_two_readings): the last reading fell short of the step, this one holds the
+    /// rest.
+    std::size_t odometryJumpsOverTwoReadings = 0;
     /// Of the jumps nothing registered, those kept as the odometry read them, not as the last
     /// motion: the log's earlier jumps were mostly the odometry's own steps.
     std::size_t odometryJumpReadingsKept = 0;

@@ -128,7 +128,12 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement,
     turnSinceKeyframe_ += std::abs(mrpt::math::wrapToPi(increment.phi()));
     // A jump is a step beyond the bounds that also departs from the last registered motion by
     // more than them: at a low scan rate, or on a fast robot, every step is long.
-    if (beyondOdometryJump(options_, increment, intervals) &&
+    // Not where the reading is in step with the one before it: the odometry did not jump, the
+    // registered motion departed from it (registration that lost the robot along a corridor).
+    const bool inStep = options_.jumpOnlyOutOfStep && odometryIncrement && lastReading_ &&
+                        !bridged && !shortfallBridged &&
+                        OdometryLag::inStep(*lastReading_, *odometryIncrement);
+    if (!inStep && beyondOdometryJump(options_, increment, intervals) &&
         beyondOdometryJump(options_, (-lastMotion_) + increment, intervals)) {
         // Wheels do not teleport: predict the motion of the last scan instead (a stalled
         // odometry that catches up in one step jumps; the robot kept moving meanwhile).

@@ -130,6 +130,9 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "after an odometry jump nothing else places, where the last scan's registration "
            "departed from its reading, ICP also starts from the scan before the last followed "
            "by both readings (a stall within a scan interval)");
+    s.flag("jump_only_out_of_step", jumpOnlyOutOfStep,
+           "an odometry reading in step with the one before it (within 0.2 m and 10 deg) is "
+           "never a jump, however far the registered motion departed from it");
     s.flag("bridge_odometry_stalls", bridgeOdometryStalls,
            "where registration saw less of an odometry stall than the reading after it holds "
            "(no translation, or 0.2 m less where the reading turned as far as registration saw, "

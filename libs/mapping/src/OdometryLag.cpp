@@ -115,6 +115,12 @@ bool OdometryLag::turnedAsRegistered(const mrpt::poses::CPose2D& increment) cons
            std::abs(mrpt::math::wrapToPi(increment.phi() - sinceReading_.phi())) <= kAgreeAngle;
 }
 
+bool OdometryLag::inStep(const mrpt::poses::CPose2D& before, const mrpt::poses::CPose2D& now) {
+    const mrpt::poses::CPose2D change = (-before) + now;
+    return change.norm() <= kAgreeDistance &&
+           std::abs(mrpt::math::wrapToPi(change.phi())) <= kAgreeAngle;
+}
+
 bool OdometryLag::scanChanged(const matching::PolarScan& before, const matching::PolarScan& now) {
     if (before.size() != now.size())
         return true;  // another laser or setting: nothing says the robot stood

@@ -157,6 +157,12 @@ struct GraphSlamOptions : public config::Options {
     /// followed by both readings, an odometry that stalled within a scan interval having read
     /// too little of a step and the rest with the next (ScanRegistration::jumpOverTwoReadings).
     bool jumpOverTwoReadings = true;
+    /// An odometry reading is a jump only where it is out of step with the reading before it
+    /// (OdometryLag::inStep): at a low scan rate every step is beyond the jump bounds, and
+    /// after one scan registration placed short along a corridor, each step in step with the
+    /// one before departed from the (short) registered motion, was taken for a jump, and the
+    /// robot stayed where it was for scan after scan.
+    bool jumpOnlyOutOfStep = true;
     /// The first odometry reading after readings that repeated exactly (a stall) is the motion
     /// since the last reading that changed. Where registration saw less of the stall than that
     /// (along a corridor its scans keep the stall's standstill or go part of the way; where it

@@ -93,6 +93,12 @@ class OdometryLag {
     /// ... in at least this share of the beams valid in both: the robot moved between them.
     static constexpr double kChangedShare = 0.02;
 
+    /// True when the odometry's reading `now` is in step with `before`, the reading at the
+    /// scan before (both in the robot frame of their last scan): they differ by at most
+    /// kAgreeDistance and kAgreeAngle. A jump is a change of the reading, not a departure
+    /// from the registered motion alone (GraphSlamOptions::jumpOnlyOutOfStep).
+    static bool inStep(const mrpt::poses::CPose2D& before, const mrpt::poses::CPose2D& now);
+
     /// True when `now` differs from `before` (the scan before it, same laser) by more than
     /// kChangedRange in at least kChangedShare of the beams valid in both: the robot moved.
     /// A robot that stopped reads the same zero as an odometry that stalled, but sees the

@@ -112,6 +112,12 @@ GeneratedTour tourByBenchRobot(const test::TempDir& dir, unsigned building,
                                  " --seed " + std::to_string(seed));
 }
 
+/// Drawn floor plan `plan` toured, as above, by B3-sim's robot `robot` with `seed`.
+GeneratedTour tourPlanByBenchRobot(const test::TempDir& dir, const std::string& plan,
+                                   const std::string& robot, int seed) {
+    return tourPlan(dir, plan, benchRobotIni(dir, robot), " --seed " + std::to_string(seed));
+}
+
 /// `tour`'s log with one scan in three kept (a third of its scan rate), written into `dir`.
 std::string thirdOfTheScans(const test::TempDir& dir, const GeneratedTour& tour) {
     io::LogConversionOptions third;
@@ -1401,8 +1407,7 @@ TEST(GraphSlam, ACatchUpAfterShortReadingsAtAThirdOfTheScanRateIsBridged) {
     // the step: 0.009 m.
     TOPOSLAM_SHARED_DATA_OR_SKIP(plan, "rooms/lab_c_scan_furnitures.png");
     const test::TempDir dir;
-    const GeneratedTour tour =
-        tourPlan(dir, plan, benchRobotIni(dir, "stalling-odometry"), " --seed 3");
+    const GeneratedTour tour = tourPlanByBenchRobot(dir, plan, "stalling-odometry", 3);
     ASSERT_EQ(tour.sim.exitCode, 0) << tour.sim.output;
     const mapping::MappingResult result =
         mapping::mapLog(thirdOfTheScans(dir, tour),
@@ -1426,8 +1431,7 @@ TEST(GraphSlam, AReadingInStepWithTheOneBeforeIsNoJump) {
     // corridor lost (ATE 8.9 m). A reading in step with the one before is no jump.
     TOPOSLAM_SHARED_DATA_OR_SKIP(plan, "rooms/office_i_furnitures.png");
     const test::TempDir dir;
-    const GeneratedTour tour =
-        tourPlan(dir, plan, benchRobotIni(dir, "stalling-odometry"), " --seed 8");
+    const GeneratedTour tour = tourPlanByBenchRobot(dir, plan, "stalling-odometry", 8);
     ASSERT_EQ(tour.sim.exitCode, 0) << tour.sim.output;
     const std::string third = thirdOfTheScans(dir, tour);
     const io::Trajectory2D truth = io::loadTrajectory(tour.groundTruth);

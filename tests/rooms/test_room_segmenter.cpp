@@ -90,18 +90,27 @@ static std::vector<double> everyFiveDegrees() {
     return angles;
 }
 
+/// `grid` segmented with the default options from the medial axis, then along the drawing's
+/// tour; `check` is called with each result (traced with which it is).
+template <typename Check>
+static void segmentBothWays(const mrpt::maps::COccupancyGridMap2D& grid, const DrawnMap& drawn,
+                            Check&& check) {
+    for (const bool withTour : {false, true}) {
+        SCOPED_TRACE(withTour ? "with trajectory" : "medial axis");
+        check(RoomSegmenter().segment(
+            grid, withTour ? posesOf(drawn.tour) : std::vector<mrpt::math::TPose2D>{}));
+    }
+}
+
 /// With the default options, along the drawing's tour and from the medial axis: the rooms and
 /// doors of the drawing, and the pocket at `pocket` in the same room as `room`.
 static void expectPocketInItsRoom(const mrpt::maps::COccupancyGridMap2D& grid,
                                   const DrawnMap& drawn, mrpt::math::TPoint2D pocket,
                                   mrpt::math::TPoint2D room) {
-    for (const bool withTour : {false, true}) {
-        SCOPED_TRACE(withTour ? "with trajectory" : "medial axis");
-        const auto result = RoomSegmenter().segment(
-            grid, withTour ? posesOf(drawn.tour) : std::vector<mrpt::math::TPose2D>{});
+    segmentBothWays(grid, drawn, [&](const RoomSegmenter::Result& result) {
         expectMatchesDrawing(result.map, drawn, kDoorTolerance);
         EXPECT_EQ(result.map.roomAt(pocket.x, pocket.y), result.map.roomAt(room.x, room.y));
-    }
+    });
 }
 
 TEST(RoomSegmenter, OfficeWithoutTrajectoryHasExactRoomsAndDoors) {
@@ -413,12 +422,9 @@ TEST(RoomSegmenter, DoubleDoorsAroundTheWidestDoorWidthAreAllCut) {
     // fell between the two (generated plans 23, 34, 54 and 56 lost a door each so).
     const DrawnMap drawn = toposlam::rooms::test::doubleDoors();
     const auto grid = toposlam::rooms::test::gridOf(drawn.image);
-    for (const bool withTour : {false, true}) {
-        SCOPED_TRACE(withTour ? "with trajectory" : "medial axis");
-        const auto result = RoomSegmenter().segment(
-            grid, withTour ? posesOf(drawn.tour) : std::vector<mrpt::math::TPose2D>{});
+    segmentBothWays(grid, drawn, [&](const RoomSegmenter::Result& result) {
         expectMatchesDrawing(result.map, drawn, kDoorTolerance);
-    }
+    });
     // Axis-aligned both ways: widths between jamb cells are whole cells there. (At 40 degrees
     // the 1.55 m door is still missed, at 5 the 1.6 m one cut on a slant: not checked here.)
     expectMatchesDrawingAtAngles(drawn, {90});
@@ -430,13 +436,10 @@ TEST(RoomSegmenter, APierBetweenTwoDoorwaysFramesBoth) {
     // (generated plan 61, 1.79 and 1.14 m doorways 0.45 m apart).
     const DrawnMap drawn = toposlam::rooms::test::pierBetweenDoorways();
     const auto grid = toposlam::rooms::test::gridOf(drawn.image);
-    for (const bool withTour : {false, true}) {
-        SCOPED_TRACE(withTour ? "with trajectory" : "medial axis");
-        const auto result = RoomSegmenter().segment(
-            grid, withTour ? posesOf(drawn.tour) : std::vector<mrpt::math::TPose2D>{});
+    segmentBothWays(grid, drawn, [&](const RoomSegmenter::Result& result) {
         EXPECT_EQ(result.wideOpenings.empty(), false);
         expectMatchesDrawing(result.map, drawn, kDoorTolerance);
-    }
+    });
     std::vector<double> angles = everyFiveDegrees();
     angles.erase(std::find(angles.begin(), angles.end(), 85.0));
     expectMatchesDrawingAtAngles(drawn, angles);
@@ -510,12 +513,9 @@ TEST(RoomSegmenter, DoorThroughAHollowWallIsCut) {
     const auto grid = toposlam::rooms::test::gridOf(drawn.image);
     // The cut lies on one of the wall's faces: within half the wall and a cell of its middle.
     constexpr double kAcrossTheWall = 0.5 + 0.05;
-    for (const bool withTour : {false, true}) {
-        SCOPED_TRACE(withTour ? "with trajectory" : "medial axis");
-        const auto result = RoomSegmenter().segment(
-            grid, withTour ? posesOf(drawn.tour) : std::vector<mrpt::math::TPose2D>{});
+    segmentBothWays(grid, drawn, [&](const RoomSegmenter::Result& result) {
         expectMatchesDrawing(result.map, drawn, kAcrossTheWall);
-    }
+    });
     // At any angle to the grid (its faces are staircases, the probes along it land on them).
     for (const double degrees : everyFiveDegrees()) {
         SCOPED_TRACE(degrees);

@@ -29,6 +29,7 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <initializer_list>
 #include <iterator>
 #include <random>
 #include <regex>
@@ -133,10 +134,15 @@ struct FlaggedRun {
     double ate = 0;
     mapping::SlamStatistics statistics;
 };
+/// Maps `log` with the shipped configuration and [GraphSlam] `key` set to `on`, and each of
+/// `alsoOff` set to false (another rule that mends the same tour, left out to test this one).
 FlaggedRun mapWithFlag(const std::string& log, const io::Trajectory2D& truth,
-                       const std::string& key, bool on) {
+                       const std::string& key, bool on,
+                       std::initializer_list<const char*> alsoOff = {}) {
     mrpt::config::CConfigFileMemory ini(test::readFile(test::configIni("toposlam-slam.ini")));
     ini.write("GraphSlam", key, on ? "true" : "false");
+    for (const char* other : alsoOff)
+        ini.write("GraphSlam", other, "false");
     const mapping::MappingResult result = mapping::mapLog(log, ini);
     FlaggedRun run;
     EXPECT_TRUE(result.statistics);
@@ -146,6 +152,27 @@ FlaggedRun mapWithFlag(const std::string& log, const io::Trajectory2D& truth,
     EXPECT_EQ(ate.matchedPoses, result.trajectory.size());
     run.ate = ate.position.rms;
     return run;
+}
+
+/// Generated building 60 toured by B3-sim's stalling robot, seed 1, one scan in three kept (the
+/// tour two of the stall rules were traced on), mapped with [GraphSlam] `key` on and off. On,
+/// the rule acts (its `count` in the statistics) and the ATE stays below `onBelow` (m); off,
+/// it does not, and the ATE exceeds `offAbove` (m), or the tour no longer shows the failure.
+void expectRuleMendsGen60AtAThird(const std::string& key,
+                                  std::size_t mapping::SlamStatistics::*count, double onBelow,
+                                  double offAbove) {
+    const test::TempDir dir;
+    const GeneratedTour tour =
+        tourByBenchRobot(dir, 60, simulation::BuildingStyle::Office, "stalling-odometry", 1);
+    ASSERT_EQ(tour.sim.exitCode, 0) << tour.sim.output;
+    const std::string third = thirdOfTheScans(dir, tour);
+    const io::Trajectory2D truth = io::loadTrajectory(tour.groundTruth);
+    const FlaggedRun on = mapWithFlag(third, truth, key, true);
+    EXPECT_GT(on.statistics.*count, 0u);
+    EXPECT_LT(on.ate, onBelow);
+    const FlaggedRun off = mapWithFlag(third, truth, key, false);
+    EXPECT_EQ(off.statistics.*count, 0u);
+    EXPECT_GT(off.ate, offAbove) << "the tour no longer shows the failure";
 }
 
 /// Maps `tour` with the shipped configuration and [GraphSlam] `key` on (`onValue`), then off: on,
@@ -1435,11 +1462,18 @@ TEST(GraphSlam, AReadingInStepWithTheOneBeforeIsNoJump) {
     ASSERT_EQ(tour.sim.exitCode, 0) << tour.sim.output;
     const std::string third = thirdOfTheScans(dir, tour);
     const io::Trajectory2D truth = io::loadTrajectory(tour.groundTruth);
-    const double ateOff = mapWithFlag(third, truth, "jump_only_out_of_step", false).ate;
+    // Taking the catch-up as read where the scan cannot tell it from the last motion
+    // (undecided_jump_by_prior) mends the tour on its own (0.33 m with both rules): it is left
+    // out to test this one.
+    const auto ate = [&](bool on) {
+        return mapWithFlag(third, truth, "jump_only_out_of_step", on, {"undecided_jump_by_prior"})
+            .ate;
+    };
+    const double ateOff = ate(false);
     EXPECT_GT(ateOff, 5.0) << "the scenario no longer shows the corridor lost";
     // Under a third of it (2.0 m). What is left: three short readings along corridors whose
     // scans registration places 0.6 m short, and the catch-up after each, 0.7 m short.
-    EXPECT_LT(mapWithFlag(third, truth, "jump_only_out_of_step", true).ate, ateOff / 3);
+    EXPECT_LT(ate(true), ateOff / 3);
 }
 
 TEST(GraphSlam, AJumpAfterAReadingThatMissedTheStepIsReadWithIt) {
@@ -1452,20 +1486,24 @@ TEST(GraphSlam, AJumpAfterAReadingThatMissedTheStepIsReadWithIt) {
     // is 14 deg off; the last motion, a turn of 33 deg, is farther off still. Both failed, the
     // scan kept the last motion, and the rest of the tour followed it 35 deg off (ATE 3.9 m).
     // The two readings together are the robot's motion over both scans: ICP from there.
-    const test::TempDir dir;
-    const GeneratedTour tour =
-        tourByBenchRobot(dir, 60, simulation::BuildingStyle::Office, "stalling-odometry", 1);
-    ASSERT_EQ(tour.sim.exitCode, 0) << tour.sim.output;
-    const std::string third = thirdOfTheScans(dir, tour);
-    const io::Trajectory2D truth = io::loadTrajectory(tour.groundTruth);
-    const FlaggedRun on = mapWithFlag(third, truth, "jump_over_two_readings", true);
-    EXPECT_GT(on.statistics.odometryJumpsOverTwoReadings, 0u);
-    // A tenth of the failure's error. (What is left, 0.23 m, is stalls along corridors whose
-    // scans registration places short: loops into them do not fit the graph.)
-    EXPECT_LT(on.ate, 0.4);
-    const FlaggedRun off = mapWithFlag(third, truth, "jump_over_two_readings", false);
-    EXPECT_EQ(off.statistics.odometryJumpsOverTwoReadings, 0u);
-    EXPECT_GT(off.ate, 1.0) << "the scenario no longer shows the failure";
+    // On, a tenth of the failure's error. (What is left, 0.09 m, is stalls along corridors
+    // whose scans registration places short: loops into them do not fit the graph.)
+    expectRuleMendsGen60AtAThird("jump_over_two_readings",
+                                 &mapping::SlamStatistics::odometryJumpsOverTwoReadings, 0.4, 1.0);
+}
+
+TEST(GraphSlam, ACatchUpTheScanCannotTellFromTheLastMotionIsTakenAsRead) {
+    // Generated building 60 toured by B3-sim's stalling robot, seed 1, one scan in three kept.
+    // Along a corridor the odometry reads 0.3 m of a 0.95 m step, and registration, which
+    // nothing along the corridor corrects, follows it; the next reading catches up and is a
+    // jump. ICP from that reading and ICP from the last motion both pass and both hold where
+    // they start: the scan cannot tell them apart. The graph matcher was asked next, and its
+    // answer, confirmed on the same submap, put the robot near where the short reading had
+    // left it: the catch-up was lost (ATE 0.23 m). Most of this log's clear jumps were the
+    // odometry's own steps (fast turns), so the catch-up is taken as read.
+    // Measured 0.094 m on, 0.228 m off.
+    expectRuleMendsGen60AtAThird("undecided_jump_by_prior",
+                                 &mapping::SlamStatistics::odometryJumpsByPrior, 0.15, 0.18);
 }
 
 TEST(GraphSlam, AStallsStepTheScanBoreOutFromBothStartsIsNotTakenBack) {
@@ -1638,7 +1676,8 @@ TEST(MappingOutputs, CountsAgreeInNumber) {
     const std::string summary = mapping::formatSummary(result);
     for (const char* phrase :
          {" in 1 submap;",
-          "; 1 odometry jump (0 of them borne out by the scan: a fast turn; 0 placed by ICP "
+          "; 1 odometry jump (0 of them borne out by the scan: a fast turn; 0 taken as read "
+          "where the scan fitted them and the last motion alike; 0 placed by ICP "
           "between the odometry's step and the last motion; 0 placed by ICP over the last two "
           "readings together (the first fell short); 0 placed by nothing and kept as "
           "read: this log's jumps were mostly the odometry's own steps); 0 odometry stalls "

@@ -234,7 +234,8 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     const Registration r =
         registration_.registerScan(polar_, sensorOnRobot, prediction, extract, features_);
     stats_.lastMotionPredictions += r.byLastMotion;
-    stats_.odometryJumpsBorneOut += r.jumpBorneOut;
+    stats_.odometryJumpsBorneOut += r.jumpBorneOut && !r.jumpByPrior;
+    stats_.odometryJumpsByPrior += r.jumpByPrior;
     stats_.odometryJumpsBetween += r.jumpBetween;
     stats_.odometryJumpsOverTwoReadings += r.jumpOverTwoReadings;
     stats_.odometryCatchUpsKept += r.catchUpReadingKept;

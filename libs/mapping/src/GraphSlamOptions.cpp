@@ -130,6 +130,10 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "after an odometry jump nothing else places, where the last scan's registration "
            "departed from its reading, ICP also starts from the scan before the last followed "
            "by both readings (a stall within a scan interval)");
+    s.flag("undecided_jump_by_prior", undecidedJumpByPrior,
+           "after an odometry jump the scan fits as well from the odometry's step as from the "
+           "last motion (a corridor), the log's earlier clear jumps choose between them before "
+           "the graph matcher is asked");
     s.flag("jump_only_out_of_step", jumpOnlyOutOfStep,
            "an odometry reading in step with the one before it (within 0.2 m and 10 deg) is "
            "never a jump, however far the registered motion departed from it");

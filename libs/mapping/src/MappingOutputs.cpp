@@ -149,6 +149,8 @@ std::string formatSummary(const MappingResult& r) {
         if (st->odometryJumps > 0)
             jumps += " (" + std::to_string(st->odometryJumpsBorneOut) +
                      " of them borne out by the scan: a fast turn; " +
+                     std::to_string(st->odometryJumpsByPrior) +
+                     " taken as read where the scan fitted them and the last motion alike; " +
                      std::to_string(st->odometryJumpsBetween) +
                      " placed by ICP between the odometry's step and the last motion; " +
                      std::to_string(st->odometryJumpsOverTwoReadings) +
@@ -264,6 +266,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
                              {"failed_matcher_refused_foreground", st->matcherRefusedForeground},
                              {"odometry_jumps", st->odometryJumps},
                              {"odometry_jumps_borne_out", st->odometryJumpsBorneOut},
+                             {"odometry_jumps_by_prior", st->odometryJumpsByPrior},
                              {"odometry_jumps_between", st->odometryJumpsBetween},
                              {"odometry_jumps_over_two_readings", st->odometryJumpsOverTwoReadings},
                              {"odometry_jump_readings_kept", st->odometryJumpReadingsKept},

@@ -322,6 +322,7 @@ const Prediction& ScanRegistration::preferredPrediction(const matching::PolarSca
     readingIcp_.reset();
     motionIcp_.reset();
     jumpChoiceRecorded_ = false;
+    jumpByPrior_ = false;
     stallStepBorneOut_.reset();
     if (!prediction.submap || prediction.submap->map().size() == 0 || scan.validCount() == 0)
         return prediction;
@@ -428,9 +429,17 @@ const Prediction& ScanRegistration::jumpBorneOut(const matching::PolarScan& scan
     // from the last motion fails the tests, that motion is off the robot instead.
     const IcpAttempt& fromMotion = icpFromLastMotion(scan, sensorOnRobot, prediction);
     recordJumpChoice(submap, scan, sensorOnRobot, fromOdometry, fromMotion);
-    if (acceptable(fromMotion, prediction.inSubmap, /*boundSideways=*/false) &&
-        !bearsOut(submap.map(), scan, sensorOnRobot, fromOdometry.robot, fromMotion.robot,
-                  options_.jumpChoiceMargin)) {
+    const matching::LineMap& map = submap.map();
+    const bool motionPasses = acceptable(fromMotion, prediction.inSubmap, /*boundSideways=*/false);
+    const bool readingFitsBetter = bearsOut(map, scan, sensorOnRobot, fromOdometry.robot,
+                                            fromMotion.robot, options_.jumpChoiceMargin);
+    // Undecided by the scan, the log's earlier jumps decide here, before the graph matcher:
+    // along a corridor ICP holds wherever it starts, and the matcher's answer, confirmed on the
+    // same submap, would be no better a guess (a stalled odometry's catch-up, taken for the
+    // last motion, lost the distance it caught up).
+    jumpByPrior_ = motionPasses && !readingFitsBetter && options_.undecidedJumpByPrior &&
+                   priorFavoursReading(map, scan, sensorOnRobot, fromOdometry, fromMotion);
+    if (motionPasses && !readingFitsBetter && !jumpByPrior_) {
         readingIcp_ = std::move(fromOdometry);
         return prediction;
     }
@@ -666,8 +675,7 @@ bool ScanRegistration::keepJumpedReading(const matching::PolarScan& scan,
     const double margin = options_.jumpChoiceMargin;
     // Undecided by the scan (both fit alike: new ground), this log's earlier jumps decide.
     if (!bearsOut(map, scan, sensorOnRobot, reading.robot, fromMotion.robot, margin) &&
-        (!odometryUsuallyRight() ||
-         bearsOut(map, scan, sensorOnRobot, fromMotion.robot, reading.robot, margin)))
+        !priorFavoursReading(map, scan, sensorOnRobot, reading, fromMotion))
         return false;
     answerOnSubmap(reading, prediction, RegistrationMethod::Icp, out);
     out.jumpBorneOut = true;
@@ -690,6 +698,14 @@ const ScanRegistration::IcpAttempt& ScanRegistration::icpFromLastMotion(
     if (!motionIcp_)
         motionIcp_ = icpFrom(scan, sensorOnRobot, *prediction.submap, prediction.inSubmap);
     return *motionIcp_;
+}
+
+bool ScanRegistration::priorFavoursReading(const matching::LineMap& map,
+                                           const matching::PolarScan& scan,
+                                           const CPose2D& sensorOnRobot, const IcpAttempt& reading,
+                                           const IcpAttempt& motion) const {
+    return odometryUsuallyRight() && !bearsOut(map, scan, sensorOnRobot, motion.robot,
+                                               reading.robot, options_.jumpChoiceMargin);
 }
 
 void ScanRegistration::recordJumpChoice(const Submap& submap, const matching::PolarScan& scan,

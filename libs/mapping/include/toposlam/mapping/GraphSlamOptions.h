@@ -157,6 +157,13 @@ struct GraphSlamOptions : public config::Options {
     /// followed by both readings, an odometry that stalled within a scan interval having read
     /// too little of a step and the rest with the next (ScanRegistration::jumpOverTwoReadings).
     bool jumpOverTwoReadings = true;
+    /// After an odometry jump where ICP from the odometry's step and from the last motion both
+    /// pass and neither fits jumpChoiceMargin better, the odometry's step is the prediction when
+    /// this log's earlier clear jumps were mostly the odometry's own steps, before the graph
+    /// matcher is asked (ScanRegistration::priorFavoursReading). Along a corridor ICP holds
+    /// wherever it starts, and so does the matcher's answer confirmed on the submap: a stalled
+    /// odometry's catch-up, taken for the last motion, lost the distance it caught up.
+    bool undecidedJumpByPrior = true;
     /// An odometry reading is a jump only where it is out of step with the reading before it
     /// (OdometryLag::inStep): at a low scan rate every step is beyond the jump bounds, and
     /// after one scan registration placed short along a corridor, each step in step with the

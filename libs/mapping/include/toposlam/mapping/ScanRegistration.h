@@ -34,6 +34,11 @@
 //     straight on: the scan bore that step out, and they are measured from the last motion;
 //  2. otherwise (poor overlap, a correction too large to trust, or an odometry jump) the graph
 //     matcher against the last keyframe, from the prediction and, failing that, guess-free.
+//     (A jump whose reading ICP passes from, where ICP from the last motion passes as well and
+//     fits no better, is taken as read before the matcher is asked when this log's earlier
+//     jumps were mostly the odometry's own steps (undecided_jump_by_prior): along a corridor
+//     ICP holds wherever it starts, and the matcher's answer, confirmed on the same submap,
+//     is no better a guess.)
 //     Without a jump, an answer that corrects the prediction by more than a jump is a
 //     look-alike unless ICP on the submap, started there, confirms it (confirm_large_
 //     corrections: odometry that counts reversing as driving forward); in an odometry
@@ -126,6 +131,9 @@ struct Registration {
     /// last followed by the last reading and this one (the last reading fell short of the
     /// step and this one holds the rest; jump_over_two_readings).
     bool jumpOverTwoReadings = false;
+    /// Of the jumps borne out (jumpBorneOut), those the scan fitted as well from the last
+    /// motion: this log's earlier jumps chose the reading (undecided_jump_by_prior).
+    bool jumpByPrior = false;
     /// The along-heading check's evidence when it ran (its `scan` is left 0: the caller knows
     /// which scan this is).
     std::optional<AlongHeadingCheck> alongHeading;
@@ -311,6 +319,13 @@ class ScanRegistration {
     bool keepJumpedReading(const matching::PolarScan& scan,
                            const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
                            Registration& out);
+    /// Where ICP from a jumped odometry's step (`reading`) does not fit jump_choice_margin
+    /// better than ICP from the last motion (`motion`): whether this log's earlier jumps
+    /// decide for the reading (odometryUsuallyRight()), the last motion's end fitting no better
+    /// either. The scan cannot tell the two apart; the log's history can.
+    bool priorFavoursReading(const matching::LineMap& map, const matching::PolarScan& scan,
+                             const mrpt::poses::CPose2D& sensorOnRobot, const IcpAttempt& reading,
+                             const IcpAttempt& motion) const;
     /// The graph matcher's robot pose `matched` (in the last keyframe's frame) is farther from
     /// the prediction than a jump of `scans` scan intervals (beyondOdometryJump) and, in an
     /// odometry stall, also from the last scan's pose.
@@ -454,6 +469,9 @@ class ScanRegistration {
     /// This scan's jump went before the log's prior once (recordJumpChoice(); reset for every
     /// scan): a jump is one case, however many of the jump's steps ask.
     bool jumpChoiceRecorded_ = false;
+    /// This scan's jump was taken as read by the log's prior (jumpBorneOut(); reset for every
+    /// scan).
+    bool jumpByPrior_ = false;
     /// In a stall, ICP from the standstill and from the last motion ended at the same pose,
     /// nearer the last motion's start: that start, in the submap frame (standstillBorneOut();
     /// reset for every scan). checkAlongHeading measures ICP's correction from it.
@@ -499,6 +517,7 @@ Registration ScanRegistration::registerScan(const matching::PolarScan& scan,
     const Prediction& prediction =
         preferredPrediction(scan, sensorOnRobot, odometryPrediction, started);
     out.jumpBorneOut = odometryPrediction.odometryJumped && !prediction.odometryJumped;
+    out.jumpByPrior = out.jumpBorneOut && jumpByPrior_;
     out.byLastMotion = !out.jumpBorneOut && &prediction != &odometryPrediction;
     if (!prediction.odometryJumped &&
         tryIcp(scan, sensorOnRobot, prediction, out, started ? &*started : nullptr)) {

@@ -64,6 +64,10 @@ struct SlamStatistics {
     /// Of those, steps the scan bore out all the same, which predicted it (a fast turn at a low
     /// scan rate; confirm_large_corrections).
     std::size_t odometryJumpsBorneOut = 0;
+    /// Of the jumps, steps the scan fitted as well as the last motion, taken as read because
+    /// this log's earlier jumps were mostly the odometry's own steps (undecided_jump_by_prior;
+    /// not counted in odometryJumpsBorneOut).
+    std::size_t odometryJumpsByPrior = 0;
     /// Of the others, placed by neither ICP from the odometry's step nor the graph matcher, those
     /// ICP placed from a start between the odometry's step and the last motion
     /// (jump_search_step): the odometry caught up past the turn or short of it.

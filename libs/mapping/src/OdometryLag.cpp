@@ -185,12 +185,23 @@ void OdometryLag::registered(const mrpt::poses::CPose2D& increment,
         // one that is not short is in step (or catching up), and ends it.
         const double missed = step.norm() - increment.norm();
         shortfall_ = missed > kMovedDistance ? shortfall_ + missed : 0.0;
-        // Such a reading may miss some of the turn too (it read less of it than registered).
-        const double turnMissed = mrpt::math::wrapToPi(step.phi() - increment.phi());
-        const bool turnedLess = std::abs(turnMissed) > kMovedAngle &&
-                                std::abs(mrpt::math::wrapToPi(step.phi())) >
-                                    std::abs(mrpt::math::wrapToPi(increment.phi()));
-        shortfallTurn_ = shortfall_ > 0 ? shortfallTurn_ + (turnedLess ? turnMissed : 0.0) : 0.0;
+        // Such a reading may miss some of the turn too: it read less of the registered turn, or
+        // turned the other way (a lagging odometry still reads the turn before). One that read
+        // more of the turn than registered, the other way from what is missed, delivers some
+        // of it: that much is no longer missed (never more than was).
+        const double registeredTurn = mrpt::math::wrapToPi(step.phi());
+        const double readTurn = mrpt::math::wrapToPi(increment.phi());
+        const double turnMissed = mrpt::math::wrapToPi(registeredTurn - readTurn);
+        const bool turnsApart = std::abs(turnMissed) > kMovedAngle;
+        double missedTurn = shortfallTurn_;
+        if (turnsApart && turnMissed * shortfallTurn_ < 0) {
+            missedTurn = shortfallTurn_ > 0 ? std::max(0.0, shortfallTurn_ + turnMissed)
+                                            : std::min(0.0, shortfallTurn_ + turnMissed);
+        } else if (turnsApart && (std::abs(registeredTurn) > std::abs(readTurn) ||
+                                  registeredTurn * readTurn < 0)) {
+            missedTurn += turnMissed;
+        }
+        shortfallTurn_ = shortfall_ > 0 ? missedTurn : 0.0;
         shortfallAfterStall_ = shortfall_ > 0 && (shortfallAfterStall_ || translationStalled_);
     }
     lastStep_ = step;

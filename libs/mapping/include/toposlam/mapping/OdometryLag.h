@@ -54,6 +54,11 @@
 // and the reading turned farther, the same way (generated plan 61, stalling robot, a third of
 // the scans: 0.17 m and 18 deg read where the robot went 0.48 m and turned 54, then 1.30 m and
 // 54 deg where it went 1.0 m and turned 13; from the heading as read ICP settled 44 deg off).
+// The odometry lags in heading as it does in distance: a short reading that still turned the
+// way the robot had turned before missed all of the registered turn and its own (office_d,
+// seed 1: 15 deg read where the robot turned 8 deg back), and a short reading that read more
+// of the turn than registered delivered part of what an earlier one missed (office_b, seed 7:
+// 32 deg missed, then 21 deg read beyond the turn, and the catch-up read 13 deg straight on).
 //
 // That odometry also stalls in distance alone: 0.004, 0 and 0 m read at three scans where the
 // robot went 0.21 m in each 0.21 s, the turn read all along, then 0.834 m. Not zero, so no
@@ -189,8 +194,10 @@ class OdometryLag {
     mrpt::poses::CPose2D lastReading_;
     double lastReadingSeconds_ = 0;
     bool translationStalled_ = false;
-    double shortfall_ = 0;      ///< shortfall()
-    double shortfallTurn_ = 0;  ///< rad the readings of the shortfall turned less than registered
+    double shortfall_ = 0;  ///< shortfall()
+    /// rad of the registered turn the readings of the shortfall missed, less what later ones
+    /// delivered (signed)
+    double shortfallTurn_ = 0;
     bool shortfallAfterStall_ = false;  ///< a stall of the distance alone added to it
 };
 

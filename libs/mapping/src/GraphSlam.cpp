@@ -171,6 +171,16 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement,
     p.fromLastKeyframe = predicted - graph_.pose(last.id);
     p.distanceFromLastKeyframe = odometrySinceKeyframe_;
     p.turnFromLastKeyframe = turnSinceKeyframe_;
+    if (options_.matcherFromRegisteredKeyframe && last.placedByOdometry) {
+        const Keyframe& registered = keyframes_[registeredKeyframe_];
+        p.registeredKeyframe = &registered;
+        p.registeredKeyframeReadings = &registeredKeyframeReadings_;
+        p.fromRegisteredKeyframe = predicted - graph_.pose(registered.id);
+        // Along the estimated trajectory to the last keyframe, then by odometry.
+        p.distanceFromRegisteredKeyframe =
+            last.travelled - registered.travelled + odometrySinceKeyframe_;
+        p.turnFromRegisteredKeyframe = last.turned - registered.turned + turnSinceKeyframe_;
+    }
     if (firstActiveSubmap_ < submaps_.size()) {
         p.submap = &submaps_[firstActiveSubmap_];
         p.inSubmap = predicted - graph_.pose(p.submap->anchor());
@@ -257,6 +267,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
         case RegistrationMethod::GraphMatcher:
             ++stats_.registeredByGraphMatcher;
             stats_.graphMatcherConfirmed += r.confirmedOnSubmap;
+            stats_.graphMatcherFromRegisteredKeyframe += r.fromRegisteredKeyframe;
             break;
         case RegistrationMethod::Odometry:
             ++stats_.registrationFailed;
@@ -346,7 +357,6 @@ void GraphSlam::addKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
     kf.scanIndex = scans_.size();
     kf.scan = scan;
     kf.fieldOfView = std::abs(polar_.bearingStep()) * double(polar_.size());
-    lastKeyframeReadings_ = polar_;
     matching::LineMapOptions surface = lineMapOptions(options_);
     surface.maxRange = mapRange(polar_, options_);
     matching::surfacePoints(polar_, surface, kf.surface);
@@ -359,6 +369,12 @@ void GraphSlam::addKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
         if (options_.submapParts)
             kf.part = kf.id;
     }
+    // The last keyframe a registration placed keeps its readings while odometry places more.
+    if (kf.placedByOdometry && !keyframes_.back().placedByOdometry) {
+        std::swap(registeredKeyframeReadings_, lastKeyframeReadings_);
+        registeredKeyframe_ = keyframes_.back().id;
+    }
+    lastKeyframeReadings_ = polar_;
     kf.signature = scanSignature(polar_);
     kf.features = stored;
     if (!kf.features) {

@@ -134,6 +134,10 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "after an odometry jump the scan fits as well from the odometry's step as from the "
            "last motion (a corridor), the log's earlier clear jumps choose between them before "
            "the graph matcher is asked");
+    s.flag("matcher_from_registered_keyframe", matcherFromRegisteredKeyframe,
+           "where the last keyframe was placed by odometry alone, the graph matcher matches the "
+           "scan against the newest keyframe a registration placed (the last one only when that "
+           "finds nothing)");
     s.flag("jump_only_out_of_step", jumpOnlyOutOfStep,
            "an odometry reading in step with the one before it (within 0.2 m and 10 deg) is "
            "never a jump, however far the registered motion departed from it");

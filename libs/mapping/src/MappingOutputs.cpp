@@ -163,7 +163,9 @@ std::string formatSummary(const MappingResult& r) {
             "%zu more refused beyond the odometry's noise; "
             "%zu without foreground objects; %zu held at the odometry's position along the "
             "heading, %zu of them where ICP's pose saw through the submap), %zu by the graph "
-            "matcher (%.1f %%; %zu of them beyond a jump, confirmed on the submap), %zu failed "
+            "matcher (%.1f %%; %zu of them beyond a jump, confirmed on the submap; %zu against "
+            "the last keyframe a registration placed, where odometry alone placed the last), "
+            "%zu failed "
             "(%.1f %%, odometry kept; %zu of them with a graph-matcher answer only foreground "
             "objects bore out); %s; %zu odometry stalls bridged (%zu of their scans placed "
             "between; %s), %s, %s catching up after a stall (%zu of them placed by ICP from the "
@@ -173,9 +175,9 @@ std::string formatSummary(const MappingResult& r) {
             st->icpSecondStarts, st->icpUnsettledRefused, st->icpWithoutForeground,
             st->icpHeldAlongHeading, st->icpHeldForFreeSpace, st->registeredByGraphMatcher,
             percent(st->registeredByGraphMatcher, n), st->graphMatcherConfirmed,
-            st->registrationFailed, percent(st->registrationFailed, n),
-            st->matcherRefusedForeground, jumps.c_str(), st->odometryStallsBridged,
-            st->stalledScansPlaced,
+            st->graphMatcherFromRegisteredKeyframe, st->registrationFailed,
+            percent(st->registrationFailed, n), st->matcherRefusedForeground, jumps.c_str(),
+            st->odometryStallsBridged, st->stalledScansPlaced,
             counted(st->odometryTranslationStalls, "stall of the distance alone",
                     "stalls of the distance alone")
                 .c_str(),
@@ -252,31 +254,33 @@ nlohmann::json summaryJson(const MappingResult& r) {
         j["submaps"] = st->submaps;
         j["keyframes_tied_to_later_part"] = st->tiedToLaterPart;
         j["smoothed_scans"] = r.smoothedScans;
-        j["registration"] = {{"icp", st->registeredByIcp},
-                             {"icp_unsettled", st->icpUnsettled},
-                             {"icp_second_start", st->icpSecondStarts},
-                             {"icp_unsettled_refused", st->icpUnsettledRefused},
-                             {"icp_without_foreground", st->icpWithoutForeground},
-                             {"icp_held_along_heading", st->icpHeldAlongHeading},
-                             {"icp_held_for_free_space", st->icpHeldForFreeSpace},
-                             {"graph_matcher", st->registeredByGraphMatcher},
-                             {"graph_matcher_confirmed", st->graphMatcherConfirmed},
-                             {"last_motion_predictions", st->lastMotionPredictions},
-                             {"failed", st->registrationFailed},
-                             {"failed_matcher_refused_foreground", st->matcherRefusedForeground},
-                             {"odometry_jumps", st->odometryJumps},
-                             {"odometry_jumps_borne_out", st->odometryJumpsBorneOut},
-                             {"odometry_jumps_by_prior", st->odometryJumpsByPrior},
-                             {"odometry_jumps_between", st->odometryJumpsBetween},
-                             {"odometry_jumps_over_two_readings", st->odometryJumpsOverTwoReadings},
-                             {"odometry_jump_readings_kept", st->odometryJumpReadingsKept},
-                             {"odometry_catch_ups", st->odometryCatchUps},
-                             {"odometry_catch_ups_kept", st->odometryCatchUpsKept},
-                             {"odometry_stalls_bridged", st->odometryStallsBridged},
-                             {"odometry_shortfalls_bridged", st->odometryShortfallsBridged},
-                             {"odometry_translation_stalls", st->odometryTranslationStalls},
-                             {"stalled_scans_placed", st->stalledScansPlaced},
-                             {"registered_share", st->registeredShare()}};
+        j["registration"] = {
+            {"icp", st->registeredByIcp},
+            {"icp_unsettled", st->icpUnsettled},
+            {"icp_second_start", st->icpSecondStarts},
+            {"icp_unsettled_refused", st->icpUnsettledRefused},
+            {"icp_without_foreground", st->icpWithoutForeground},
+            {"icp_held_along_heading", st->icpHeldAlongHeading},
+            {"icp_held_for_free_space", st->icpHeldForFreeSpace},
+            {"graph_matcher", st->registeredByGraphMatcher},
+            {"graph_matcher_confirmed", st->graphMatcherConfirmed},
+            {"graph_matcher_from_registered_keyframe", st->graphMatcherFromRegisteredKeyframe},
+            {"last_motion_predictions", st->lastMotionPredictions},
+            {"failed", st->registrationFailed},
+            {"failed_matcher_refused_foreground", st->matcherRefusedForeground},
+            {"odometry_jumps", st->odometryJumps},
+            {"odometry_jumps_borne_out", st->odometryJumpsBorneOut},
+            {"odometry_jumps_by_prior", st->odometryJumpsByPrior},
+            {"odometry_jumps_between", st->odometryJumpsBetween},
+            {"odometry_jumps_over_two_readings", st->odometryJumpsOverTwoReadings},
+            {"odometry_jump_readings_kept", st->odometryJumpReadingsKept},
+            {"odometry_catch_ups", st->odometryCatchUps},
+            {"odometry_catch_ups_kept", st->odometryCatchUpsKept},
+            {"odometry_stalls_bridged", st->odometryStallsBridged},
+            {"odometry_shortfalls_bridged", st->odometryShortfallsBridged},
+            {"odometry_translation_stalls", st->odometryTranslationStalls},
+            {"stalled_scans_placed", st->stalledScansPlaced},
+            {"registered_share", st->registeredShare()}};
         // Where ICP and the odometry disagreed along the heading, and what the scan said
         // (along_heading_check): the stamp is the scan's, as in trajectory.txt.
         nlohmann::json checks = nlohmann::json::array();

@@ -78,6 +78,16 @@ bool beyondOdometryJump(const GraphSlamOptions& options, const CPose2D& motion, 
            std::abs(mrpt::math::wrapToPi(motion.phi())) > scans * options.odometryJumpAngle;
 }
 
+Prediction Prediction::fromRegistered() const {
+    Prediction p = *this;
+    p.lastKeyframe = registeredKeyframe;
+    p.lastKeyframeReadings = registeredKeyframeReadings;
+    p.fromLastKeyframe = fromRegisteredKeyframe;
+    p.distanceFromLastKeyframe = distanceFromRegisteredKeyframe;
+    p.turnFromLastKeyframe = turnFromRegisteredKeyframe;
+    return p;
+}
+
 ScanRegistration::ScanRegistration(const GraphSlamOptions& options,
                                    const matching::GraphMatcherOptions& matcherOptions)
     : options_(options), matcher_(matcherOptions) {
@@ -572,6 +582,20 @@ bool ScanRegistration::tryGraphMatcher(const matching::PolarScan& scan,
                                        const CPose2D& sensorOnRobot, const Prediction& prediction,
                                        const features::ScanFeatures& features,
                                        const CPose2D* failedIcp, Registration& out) {
+    // A keyframe placed by odometry alone may be tens of degrees off (a stall during a turn):
+    // an answer relative to it would keep the error.
+    if (prediction.registeredKeyframe &&
+        matchKeyframe(scan, sensorOnRobot, prediction.fromRegistered(), features, failedIcp, out)) {
+        out.fromRegisteredKeyframe = true;
+        return true;
+    }
+    return matchKeyframe(scan, sensorOnRobot, prediction, features, failedIcp, out);
+}
+
+bool ScanRegistration::matchKeyframe(const matching::PolarScan& scan, const CPose2D& sensorOnRobot,
+                                     const Prediction& prediction,
+                                     const features::ScanFeatures& features,
+                                     const CPose2D* failedIcp, Registration& out) {
     const Keyframe& kf = *prediction.lastKeyframe;
     // The prediction as a guess (the matcher retries guess-free when it leads nowhere).
     const CPose2D guess =

@@ -143,6 +143,10 @@ class GraphSlam {
     /// The last keyframe's readings, for the graph matcher (Prediction::lastKeyframeReadings;
     /// keyframes do not keep theirs).
     matching::PolarScan lastKeyframeReadings_;
+    /// Once a keyframe was placed by odometry alone: the newest keyframe a registration placed
+    /// before it, and its readings (Prediction::registeredKeyframe).
+    std::size_t registeredKeyframe_ = 0;
+    matching::PolarScan registeredKeyframeReadings_;
 };
 
 }  // namespace toposlam::mapping

@@ -164,6 +164,11 @@ struct GraphSlamOptions : public config::Options {
     /// wherever it starts, and so does the matcher's answer confirmed on the submap: a stalled
     /// odometry's catch-up, taken for the last motion, lost the distance it caught up.
     bool undecidedJumpByPrior = true;
+    /// Where the last keyframe was placed by odometry alone (Keyframe::placedByOdometry), the
+    /// graph matcher matches the scan against the newest keyframe a registration placed first,
+    /// and against the last one only when that finds nothing. A stall during a turn leaves
+    /// such a keyframe tens of degrees off; an answer relative to it keeps the error.
+    bool matcherFromRegisteredKeyframe = true;
     /// An odometry reading is a jump only where it is out of step with the reading before it
     /// (OdometryLag::inStep): at a low scan rate every step is beyond the jump bounds, and
     /// after one scan registration placed short along a corridor, each step in step with the

@@ -34,6 +34,9 @@
 //     straight on: the scan bore that step out, and they are measured from the last motion;
 //  2. otherwise (poor overlap, a correction too large to trust, or an odometry jump) the graph
 //     matcher against the last keyframe, from the prediction and, failing that, guess-free.
+//     (Where the last keyframe was placed by odometry alone, first against the newest keyframe
+//     a registration placed (matcher_from_registered_keyframe): a stall during a turn leaves
+//     that keyframe tens of degrees off, and an answer relative to it keeps the error.)
 //     (A jump whose reading ICP passes from, where ICP from the last motion passes as well and
 //     fits no better, is taken as read before the matcher is asked when this log's earlier
 //     jumps were mostly the odometry's own steps (undecided_jump_by_prior): along a corridor
@@ -106,6 +109,9 @@ struct Registration {
     /// The graph matcher's answer beyond the jump bounds, confirmed by ICP on the submap
     /// (confirm_large_corrections).
     bool confirmedOnSubmap = false;
+    /// The graph matcher's answer against the newest keyframe a registration placed, not the
+    /// last keyframe, which odometry alone placed (matcher_from_registered_keyframe).
+    bool fromRegisteredKeyframe = false;
     /// The graph matcher answered, but only the scan's foreground objects bore its answer out
     /// against where ICP ended (matcher_foreground_check): the scan kept the prediction.
     bool matcherRefusedForeground = false;
@@ -160,6 +166,15 @@ struct Prediction {
     mrpt::poses::CPose2D fromLastKeyframe;  ///< robot pose in the last keyframe's frame
     double distanceFromLastKeyframe = 0;    ///< m travelled by odometry since then
     double turnFromLastKeyframe = 0;        ///< rad turned by odometry since then
+    /// Where the last keyframe was placed by odometry alone: the newest keyframe a registration
+    /// placed, its readings, the robot pose in its frame, and the odometry's distance (m) and
+    /// turn (rad) since it; the graph matcher's first reference then
+    /// (matcher_from_registered_keyframe). Unset (nullptr) otherwise.
+    const Keyframe* registeredKeyframe = nullptr;
+    const matching::PolarScan* registeredKeyframeReadings = nullptr;
+    mrpt::poses::CPose2D fromRegisteredKeyframe;
+    double distanceFromRegisteredKeyframe = 0;
+    double turnFromRegisteredKeyframe = 0;
     bool odometryJumped = false;
     /// After a jump or in a catch-up (odometryLagging), the odometry's own step, set aside
     /// for the last motion (robot frame, m, rad).
@@ -198,6 +213,9 @@ struct Prediction {
     /// predicted since that keyframe. A pose in that keyframe's frame (the graph matcher's
     /// answer) composed onto it is in the submap's frame.
     mrpt::poses::CPose2D lastKeyframeInSubmap() const { return inSubmap + (-fromLastKeyframe); }
+    /// The same prediction with the registered keyframe (registeredKeyframe, set) as its last
+    /// keyframe.
+    Prediction fromRegistered() const;
     /// The last scan's robot pose in the last keyframe's frame: the prediction less the step
     /// predicted since that scan.
     mrpt::poses::CPose2D lastScanPose() const { return fromLastKeyframe + (-odometryStep); }
@@ -286,15 +304,21 @@ class ScanRegistration {
     bool tryIcp(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                 const Prediction& prediction, Registration& out,
                 const IcpAttempt* started = nullptr);
-    /// The graph matcher against the last keyframe. An answer beyond the odometry's jump
-    /// bounds is a look-alike unless the odometry jumped, or `failedIcp` (where ICP from the
-    /// prediction ended, rejected; null when it was not tried or not rejected) is given and
-    /// confirmOnSubmap() confirms it. An answer within them is refused when `failedIcp`
-    /// stayed within the correction bounds (rejected for its overlap) and
-    /// bornOutWithoutForeground() says only the scan's foreground objects bear the answer out.
+    /// The graph matcher against the last keyframe (first against the newest keyframe a
+    /// registration placed, Prediction::registeredKeyframe, when set). An answer beyond the
+    /// odometry's jump bounds is a look-alike unless the odometry jumped, or `failedIcp` (where ICP
+    /// from the prediction ended, rejected; null when it was not tried or not rejected) is given
+    /// and confirmOnSubmap() confirms it. An answer within them is refused when `failedIcp` stayed
+    /// within the correction bounds (rejected for its overlap) and bornOutWithoutForeground() says
+    /// only the scan's foreground objects bear the answer out.
     bool tryGraphMatcher(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                          const Prediction& prediction, const features::ScanFeatures& features,
                          const mrpt::poses::CPose2D* failedIcp, Registration& out);
+    /// The graph matcher against `prediction`'s last keyframe: tryGraphMatcher's work for
+    /// one reference keyframe.
+    bool matchKeyframe(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
+                       const Prediction& prediction, const features::ScanFeatures& features,
+                       const mrpt::poses::CPose2D* failedIcp, Registration& out);
     /// After an odometry jump: the graph matcher's robot pose `matched` (in the last keyframe's
     /// frame) is a look-alike when it is twice the jump bounds away from both the odometry's
     /// step and the last motion (a stall caught up is off by less), or, beyond the bounds

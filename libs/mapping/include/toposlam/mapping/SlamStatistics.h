@@ -53,6 +53,9 @@ struct SlamStatistics {
     /// Of those, answers beyond the odometry's jump bounds that ICP on the submap confirmed
     /// (confirm_large_corrections).
     std::size_t graphMatcherConfirmed = 0;
+    /// Of those, matched against the newest keyframe a registration placed, the last keyframe
+    /// having been placed by odometry alone (matcher_from_registered_keyframe).
+    std::size_t graphMatcherFromRegisteredKeyframe = 0;
     /// Scans predicted by the robot's last motion instead of the odometry's step, whatever
     /// registered them (confirm_large_corrections).
     std::size_t lastMotionPredictions = 0;

@@ -294,6 +294,32 @@ TEST(OdometryLag, AShortReadingThatTurnedTheOtherWayMissedItsTurn) {
     EXPECT_NEAR(mrpt::RAD2DEG(lag.stepPastShortfall(catchUp).phi()), -47.0 + 23.0, 0.01);
 }
 
+TEST(OdometryLag, AStepOfTheRobotsLengthMayHoldTheTurnAShortReadingMissed) {
+    // Bormann's lab_f, stalling robot, seed 7, a third of the scans. A short reading read
+    // 0.34 m and 18 deg where the robot went 0.93 m and turned 42; the next read 1.05 m and
+    // 25 deg where the robot went 1.05 m straight on (1 deg): a step as long as the last
+    // motion, so no catch-up, but it holds the 24 deg missed. Less that turn, its chord turned
+    // back by half of it, it is within 0.07 m and 1 deg of the robot's step.
+    const CPose2D shortRead(0.34, -0.05, mrpt::DEG2RAD(-18.0)),
+        registered(0.94, -0.43, mrpt::DEG2RAD(-42.0)), next(1.00, -0.31, mrpt::DEG2RAD(-25.0)),
+        truth(1.05, -0.03, mrpt::DEG2RAD(-1.0));
+    OdometryLag lag;
+    lag.registered(shortRead, registered);
+    EXPECT_FALSE(lag.catchesUpShortfall(next, registered));
+    const auto past = lag.pastMissedTurn(next);
+    ASSERT_TRUE(past);
+    EXPECT_LT((*past - truth).norm(), 0.07);
+    EXPECT_NEAR(mrpt::RAD2DEG(past->phi()), -1.0, 1.0);
+    // A step that turned less than was missed, or the other way, is no such step; nor is
+    // any step after readings that missed 10 deg or less.
+    EXPECT_FALSE(lag.pastMissedTurn(CPose2D(1.0, 0, mrpt::DEG2RAD(-20.0))));
+    EXPECT_FALSE(lag.pastMissedTurn(CPose2D(1.0, 0, mrpt::DEG2RAD(30.0))));
+    OdometryLag little;
+    little.registered(CPose2D(0.34, 0, mrpt::DEG2RAD(-10.0)),
+                      CPose2D(0.94, 0, mrpt::DEG2RAD(-18.0)));
+    EXPECT_FALSE(little.pastMissedTurn(next));
+}
+
 TEST(OdometryLag, ReadingsInStepOrAStepThatDoesNotHoldTheShortfallAreNoCatchUp) {
     const CPose2D ahead(1.0, 0.0, 0.0);
     // Readings within noise of the registered motion (1 cm short each) add nothing up.

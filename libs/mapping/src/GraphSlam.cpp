@@ -160,6 +160,8 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement,
                         OdometryLag::scanChanged(previousPolar_, polar_);
     stats_.odometryTranslationStalls += p.odometryStalled && translationStalled;
     p.odometryPredicted = odometryIncrement && !p.odometryJumped && !p.odometryLagging;
+    if (options_.missedTurnStart && p.odometryPredicted && !shortfallBridged && !bridged)
+        p.pastMissedTurn = odometryLag_.pastMissedTurn(increment);
     p.odometryStep = increment;
     p.lastMotion = lastMotion_;
     p.longestRecentStep = *std::max_element(recentSteps_.begin(), recentSteps_.end());
@@ -248,6 +250,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     stats_.odometryJumpsByPrior += r.jumpByPrior;
     stats_.odometryJumpsBetween += r.jumpBetween;
     stats_.odometryJumpsOverTwoReadings += r.jumpOverTwoReadings;
+    stats_.icpPastMissedTurn += r.pastMissedTurn;
     stats_.odometryCatchUpsKept += r.catchUpReadingKept;
     stats_.odometryJumpReadingsKept += r.jumpReadingKept;
     stats_.icpUnsettledRefused += r.unsettledRefused;

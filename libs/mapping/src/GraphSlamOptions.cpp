@@ -130,6 +130,10 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "after an odometry jump nothing else places, where the last scan's registration "
            "departed from its reading, ICP also starts from the scan before the last followed "
            "by both readings (a stall within a scan interval)");
+    s.flag("missed_turn_start", missedTurnStart,
+           "where nothing places a scan, and short readings before it missed part of the turn "
+           "that its reading turned farther than, ICP also starts from the reading less that "
+           "turn");
     s.flag("undecided_jump_by_prior", undecidedJumpByPrior,
            "after an odometry jump the scan fits as well from the odometry's step as from the "
            "last motion (a corridor), the log's earlier clear jumps choose between them before "

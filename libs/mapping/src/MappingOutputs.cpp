@@ -162,10 +162,10 @@ std::string formatSummary(const MappingResult& r) {
             "registration: %zu by ICP (%.1f %%; %zu unsettled, %zu of them from a second start, "
             "%zu more refused beyond the odometry's noise; "
             "%zu without foreground objects; %zu held at the odometry's position along the "
-            "heading, %zu of them where ICP's pose saw through the submap), %zu by the graph "
-            "matcher (%.1f %%; %zu of them beyond a jump, confirmed on the submap; %zu against "
-            "the last keyframe a registration placed, where odometry alone placed the last), "
-            "%zu failed "
+            "heading, %zu of them where ICP's pose saw through the submap; %zu from the reading "
+            "less the turn short readings before it missed), %zu by the graph matcher (%.1f %%; "
+            "%zu of them beyond a jump, confirmed on the submap; %zu against the last keyframe a "
+            "registration placed, where odometry alone placed the last), %zu failed "
             "(%.1f %%, odometry kept; %zu of them with a graph-matcher answer only foreground "
             "objects bore out); %s; %zu odometry stalls bridged (%zu of their scans placed "
             "between; %s), %s, %s catching up after a stall (%zu of them placed by ICP from the "
@@ -173,11 +173,12 @@ std::string formatSummary(const MappingResult& r) {
             "last motion instead of the odometry",
             st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
             st->icpSecondStarts, st->icpUnsettledRefused, st->icpWithoutForeground,
-            st->icpHeldAlongHeading, st->icpHeldForFreeSpace, st->registeredByGraphMatcher,
-            percent(st->registeredByGraphMatcher, n), st->graphMatcherConfirmed,
-            st->graphMatcherFromRegisteredKeyframe, st->registrationFailed,
-            percent(st->registrationFailed, n), st->matcherRefusedForeground, jumps.c_str(),
-            st->odometryStallsBridged, st->stalledScansPlaced,
+            st->icpHeldAlongHeading, st->icpHeldForFreeSpace, st->icpPastMissedTurn,
+            st->registeredByGraphMatcher, percent(st->registeredByGraphMatcher, n),
+            st->graphMatcherConfirmed, st->graphMatcherFromRegisteredKeyframe,
+            st->registrationFailed, percent(st->registrationFailed, n),
+            st->matcherRefusedForeground, jumps.c_str(), st->odometryStallsBridged,
+            st->stalledScansPlaced,
             counted(st->odometryTranslationStalls, "stall of the distance alone",
                     "stalls of the distance alone")
                 .c_str(),
@@ -262,6 +263,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
             {"icp_without_foreground", st->icpWithoutForeground},
             {"icp_held_along_heading", st->icpHeldAlongHeading},
             {"icp_held_for_free_space", st->icpHeldForFreeSpace},
+            {"icp_past_missed_turn", st->icpPastMissedTurn},
             {"graph_matcher", st->registeredByGraphMatcher},
             {"graph_matcher_confirmed", st->graphMatcherConfirmed},
             {"graph_matcher_from_registered_keyframe", st->graphMatcherFromRegisteredKeyframe},

@@ -160,6 +160,18 @@ mrpt::poses::CPose2D OdometryLag::stepPastShortfall(const mrpt::poses::CPose2D& 
             holdsMissedTurn ? turn - shortfallTurn_ : increment.phi()};
 }
 
+std::optional<mrpt::poses::CPose2D> OdometryLag::pastMissedTurn(
+    const mrpt::poses::CPose2D& increment) const {
+    const double turn = mrpt::math::wrapToPi(increment.phi());
+    if (std::abs(shortfallTurn_) <= kAgreeAngle || turn * shortfallTurn_ <= 0 ||
+        std::abs(turn) <= std::abs(shortfallTurn_))
+        return std::nullopt;
+    // Turned along the step, the missed turn bent its chord by half of it.
+    const double c = std::cos(-0.5 * shortfallTurn_), s = std::sin(-0.5 * shortfallTurn_);
+    return mrpt::poses::CPose2D(c * increment.x() - s * increment.y(),
+                                s * increment.x() + c * increment.y(), turn - shortfallTurn_);
+}
+
 mrpt::poses::CPose2D OdometryLag::stepSinceStall(const mrpt::poses::CPose2D& increment) const {
     return (-sinceReading_) + increment;
 }

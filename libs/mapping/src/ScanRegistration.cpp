@@ -412,6 +412,7 @@ const Prediction& ScanRegistration::shifted(const Prediction& prediction, const 
     motionPrediction_.odometryStep = prediction.odometryStep + shift;
     motionPrediction_.inSubmap = prediction.inSubmap + shift;
     motionPrediction_.fromLastKeyframe = prediction.fromLastKeyframe + shift;
+    motionPrediction_.fromRegisteredKeyframe = prediction.fromRegisteredKeyframe + shift;
     motionPrediction_.odometryPredicted = false;
     return motionPrediction_;
 }
@@ -527,6 +528,21 @@ const Prediction& ScanRegistration::jumpBetween(const matching::PolarScan& scan,
     started = *best;
     motionPrediction_.odometryJumped = false;
     return motionPrediction_;
+}
+
+bool ScanRegistration::tryPastMissedTurn(const matching::PolarScan& scan,
+                                         const CPose2D& sensorOnRobot, const Prediction& prediction,
+                                         Registration& out) {
+    if (!prediction.pastMissedTurn || !prediction.odometryPredicted || !prediction.submap)
+        return false;
+    const CPose2D start =
+        prediction.inSubmap + ((-prediction.odometryStep) + *prediction.pastMissedTurn);
+    const IcpAttempt icp = icpFrom(scan, sensorOnRobot, *prediction.submap, start);
+    if (!acceptable(icp, start))
+        return false;
+    answerOnSubmap(icp, prediction, RegistrationMethod::Icp, out);
+    out.pastMissedTurn = true;
+    return true;
 }
 
 const Prediction& ScanRegistration::jumpOverTwoReadings(const matching::PolarScan& scan,

@@ -157,6 +157,12 @@ struct GraphSlamOptions : public config::Options {
     /// followed by both readings, an odometry that stalled within a scan interval having read
     /// too little of a step and the rest with the next (ScanRegistration::jumpOverTwoReadings).
     bool jumpOverTwoReadings = true;
+    /// Where nothing above placed a scan predicted by the odometry's step, and short readings
+    /// before it missed part of the registered turn (more than 10 deg) that this reading turned
+    /// farther than, the same way: ICP also starts from the step less that turn
+    /// (ScanRegistration::tryPastMissedTurn). A lagging odometry delivers a missed turn with a
+    /// step of the robot's length, so it is no catch-up (OdometryLag::catchesUpShortfall).
+    bool missedTurnStart = true;
     /// After an odometry jump where ICP from the odometry's step and from the last motion both
     /// pass and neither fits jumpChoiceMargin better, the odometry's step is the prediction when
     /// this log's earlier clear jumps were mostly the odometry's own steps, before the graph

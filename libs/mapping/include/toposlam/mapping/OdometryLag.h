@@ -71,6 +71,8 @@
 #include <mrpt/poses/CPose2D.h>
 #include <toposlam/matching/PolarScan.h>
 
+#include <optional>
+
 namespace toposlam::mapping {
 
 class OdometryLag {
@@ -144,6 +146,11 @@ class OdometryLag {
     /// m by which the readings since the odometry was last in step fell short of the motion
     /// registered for them.
     double shortfall() const { return shortfall_; }
+    /// `increment` with its heading less the turn the short readings since the odometry was
+    /// last in step missed, where that is more than kAgreeAngle and `increment` turned farther
+    /// the same way (it may hold the missed turn on top of its own: robot frame of the last
+    /// scan, m, rad); nothing otherwise.
+    std::optional<mrpt::poses::CPose2D> pastMissedTurn(const mrpt::poses::CPose2D& increment) const;
     /// After each scan with odometry: its `increment`, and the `step` registered for it (robot
     /// frame of the last scan). A stalled scan's step adds to the backlog.
     void registered(const mrpt::poses::CPose2D& increment, const mrpt::poses::CPose2D& step);

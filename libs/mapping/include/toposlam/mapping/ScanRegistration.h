@@ -137,6 +137,9 @@ struct Registration {
     /// last followed by the last reading and this one (the last reading fell short of the
     /// step and this one holds the rest; jump_over_two_readings).
     bool jumpOverTwoReadings = false;
+    /// Nothing above placed the scan: ICP from the odometry's step less the turn the short
+    /// readings before it missed (Prediction::pastMissedTurn; missed_turn_start).
+    bool pastMissedTurn = false;
     /// Of the jumps borne out (jumpBorneOut), those the scan fitted as well from the last
     /// motion: this log's earlier jumps chose the reading (undecided_jump_by_prior).
     bool jumpByPrior = false;
@@ -208,6 +211,11 @@ struct Prediction {
     /// The odometry's reading at the last scan, when it had one (robot frame of the scan
     /// before it, m, rad; ScanRegistration::jumpOverTwoReadings).
     std::optional<mrpt::poses::CPose2D> lastReading;
+    /// The odometry's step (the prediction) less the turn short readings before it missed,
+    /// where this step turned farther the same way (OdometryLag::pastMissedTurn): where ICP
+    /// from the step fails, a start that takes the missed turn out (missed_turn_start; robot
+    /// frame of the last scan, m, rad).
+    std::optional<mrpt::poses::CPose2D> pastMissedTurn;
 
     /// The last keyframe's robot pose in the submap's frame: the prediction less the motion
     /// predicted since that keyframe. A pose in that keyframe's frame (the graph matcher's
@@ -461,6 +469,10 @@ class ScanRegistration {
     /// the sideways bound grown with the two steps' length, and ends where ICP from the last
     /// motion does, or puts jump_choice_margin more of `scan` on the submap, or ICP from the
     /// last motion fails those tests (but the sideways bound). Otherwise `prediction`.
+    /// ICP from Prediction::pastMissedTurn, taken where it passes step 1's tests.
+    bool tryPastMissedTurn(const matching::PolarScan& scan,
+                           const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
+                           Registration& out);
     const Prediction& jumpOverTwoReadings(const matching::PolarScan& scan,
                                           const mrpt::poses::CPose2D& sensorOnRobot,
                                           const Prediction& prediction,
@@ -584,6 +596,10 @@ Registration ScanRegistration::registerScan(const matching::PolarScan& scan,
         out.jumpOverTwoReadings = true;
         return out;
     }
+    // Or, no jump, short readings before it missed part of the turn and this reading holds
+    // it on top of its own turn: ICP from the reading less that turn.
+    if (tryPastMissedTurn(scan, sensorOnRobot, prediction, out))
+        return out;
     // Or it did not jump at all, and the step went where the scan sees little of the submap.
     if (keepJumpedReading(scan, sensorOnRobot, prediction, out))
         return out;

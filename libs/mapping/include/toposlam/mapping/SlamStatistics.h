@@ -79,6 +79,9 @@ struct SlamStatistics {
     /// (jump_over_two_readings): the last reading fell short of the step, this one holds the
     /// rest.
     std::size_t odometryJumpsOverTwoReadings = 0;
+    /// Scans ICP placed from the odometry's step less the turn short readings before it
+    /// missed, where nothing else placed them (missed_turn_start).
+    std::size_t icpPastMissedTurn = 0;
     /// Of the jumps nothing registered, those kept as the odometry read them, not as the last
     /// motion: the log's earlier jumps were mostly the odometry's own steps.
     std::size_t odometryJumpReadingsKept = 0;

@@ -1513,7 +1513,9 @@ TEST(GraphSlam, TheMatcherPlacesACatchUpAgainstAKeyframeRegistrationPlaced) {
     // the last motion, 38 deg off, and becomes a keyframe placed by odometry alone. The next
     // reading catches up, a jump, and the graph matcher placed that scan right relative to that
     // keyframe, so the rest of the tour kept its 38 deg (ATE 2.0 m). Matched against the keyframe
-    // a registration placed before it, the catch-up lands where the robot is.
+    // a registration placed before it, the catch-up lands where the robot is. (Not making
+    // that scan a keyframe at all, defer_keyframe_in_stall, mends the tour too, 0.66 m: it is
+    // left out to test this rule.)
     TOPOSLAM_SHARED_DATA_OR_SKIP(plan, "rooms/lab_f_scan_furnitures.png");
     const test::TempDir dir;
     const GeneratedTour tour = tourPlanByBenchRobot(dir, plan, "stalling-odometry", 5);
@@ -1521,13 +1523,36 @@ TEST(GraphSlam, TheMatcherPlacesACatchUpAgainstAKeyframeRegistrationPlaced) {
     const std::string third = thirdOfTheScans(dir, tour);
     const io::Trajectory2D truth = io::loadTrajectory(tour.groundTruth);
     const std::string key = "matcher_from_registered_keyframe";
-    const FlaggedRun off = mapWithFlag(third, truth, key, false);
+    const FlaggedRun off = mapWithFlag(third, truth, key, false, {"defer_keyframe_in_stall"});
     EXPECT_EQ(off.statistics.graphMatcherFromRegisteredKeyframe, 0u);
     EXPECT_GT(off.ate, 1.5) << "the scenario no longer shows the heading kept";
-    const FlaggedRun on = mapWithFlag(third, truth, key, true);
+    const FlaggedRun on = mapWithFlag(third, truth, key, true, {"defer_keyframe_in_stall"});
     EXPECT_GT(on.statistics.graphMatcherFromRegisteredKeyframe, 0u);
     // Measured 0.37 m: what is left is the stalls along corridors (0.3-0.6 m short steps).
     EXPECT_LT(on.ate, off.ate / 3);
+}
+
+TEST(GraphSlam, AStalledScanNothingPlacedIsNoKeyframe) {
+    // Bormann's office_h toured by B3-sim's stalling robot, seed 6, one scan in three kept.
+    // The odometry stalls whole (reads nothing) while the robot goes 0.94 m and turns 20 deg
+    // right; the scan keeps the last motion, 8 deg left, since nothing registers it, and
+    // becomes a keyframe 28 deg off. The catch-up after it is bridged and ICP places it right,
+    // but that keyframe's readings stay in the submap 28 deg off, and the next steps, partly
+    // registered on them, came out 7 and 8 deg off (ATE 1.2 m). Not a keyframe, the scan
+    // leaves the submap and the matcher's reference alone.
+    TOPOSLAM_SHARED_DATA_OR_SKIP(plan, "rooms/office_h_furnitures.png");
+    const test::TempDir dir;
+    const GeneratedTour tour = tourPlanByBenchRobot(dir, plan, "stalling-odometry", 6);
+    ASSERT_EQ(tour.sim.exitCode, 0) << tour.sim.output;
+    const std::string third = thirdOfTheScans(dir, tour);
+    const io::Trajectory2D truth = io::loadTrajectory(tour.groundTruth);
+    const FlaggedRun off = mapWithFlag(third, truth, "defer_keyframe_in_stall", false);
+    EXPECT_EQ(off.statistics.keyframesDeferredInStall, 0u);
+    EXPECT_GT(off.ate, 0.8) << "the scenario no longer shows the keyframe's error kept";
+    const FlaggedRun on = mapWithFlag(third, truth, "defer_keyframe_in_stall", true);
+    EXPECT_GT(on.statistics.keyframesDeferredInStall, 0u);
+    // Measured 0.09 m.
+    EXPECT_LT(on.ate, off.ate / 5);
 }
 
 TEST(GraphSlam, AScanNothingPlacedIsTriedWithoutTheTurnShortReadingsMissed) {

@@ -306,7 +306,14 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     turned_ += std::abs(mrpt::math::wrapToPi(step.phi()));
     current_ = pose;
     currentCovariance_ = r.covariance;
-    if (isKeyframe(r, pose)) {
+    // A scan of an odometry stall that nothing placed kept the last motion, tens of degrees
+    // off where the robot turned: as a keyframe its readings would go into the submap and be
+    // the graph matcher's reference, and the scans after it would keep its error.
+    const bool deferred = options_.deferKeyframeInStall &&
+                          r.method == RegistrationMethod::Odometry && prediction.odometryStalled;
+    const bool keyframe = isKeyframe(r, pose);
+    stats_.keyframesDeferredInStall += keyframe && deferred;
+    if (keyframe && !deferred) {
         extract(features_);
         addKeyframe(scan, r, pose, storedFeatures);
     } else {

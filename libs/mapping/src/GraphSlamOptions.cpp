@@ -138,6 +138,9 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "after an odometry jump the scan fits as well from the odometry's step as from the "
            "last motion (a corridor), the log's earlier clear jumps choose between them before "
            "the graph matcher is asked");
+    s.flag("defer_keyframe_in_stall", deferKeyframeInStall,
+           "a scan of an odometry stall that nothing placed (it kept the last motion) does not "
+           "become a keyframe; the next scan that qualifies does");
     s.flag("matcher_from_registered_keyframe", matcherFromRegisteredKeyframe,
            "where the last keyframe was placed by odometry alone, the graph matcher matches the "
            "scan against the newest keyframe a registration placed (the last one only when that "

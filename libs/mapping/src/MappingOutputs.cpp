@@ -141,10 +141,16 @@ std::string formatSummary(const MappingResult& r) {
                 : " (" + std::to_string(st->tiedToLaterPart) +
                       " of them tied to the part of their submap after a keyframe placed by "
                       "odometry alone)";
-        s += line("keyframes: %zu in %s%s; the scans between them placed by %s", st->keyframes,
-                  counted(st->submaps, "submap", "submaps").c_str(), parts.c_str(),
-                  r.smoothedScans ? "registration and odometry together"
-                                  : "registration alone (smooth_scans off)");
+        const std::string deferred =
+            st->keyframesDeferredInStall == 0
+                ? std::string()
+                : " (" + std::to_string(st->keyframesDeferredInStall) +
+                      " more deferred: scans of an odometry stall that nothing placed)";
+        s +=
+            line("keyframes: %zu%s in %s%s; the scans between them placed by %s", st->keyframes,
+                 deferred.c_str(), counted(st->submaps, "submap", "submaps").c_str(), parts.c_str(),
+                 r.smoothedScans ? "registration and odometry together"
+                                 : "registration alone (smooth_scans off)");
         std::string jumps = counted(st->odometryJumps, "odometry jump", "odometry jumps");
         if (st->odometryJumps > 0)
             jumps += " (" + std::to_string(st->odometryJumpsBorneOut) +
@@ -254,6 +260,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
         j["keyframes"] = st->keyframes;
         j["submaps"] = st->submaps;
         j["keyframes_tied_to_later_part"] = st->tiedToLaterPart;
+        j["keyframes_deferred_in_stall"] = st->keyframesDeferredInStall;
         j["smoothed_scans"] = r.smoothedScans;
         j["registration"] = {
             {"icp", st->registeredByIcp},

@@ -175,6 +175,12 @@ struct GraphSlamOptions : public config::Options {
     /// and against the last one only when that finds nothing. A stall during a turn leaves
     /// such a keyframe tens of degrees off; an answer relative to it keeps the error.
     bool matcherFromRegisteredKeyframe = true;
+    /// A scan of an odometry stall (Prediction::odometryStalled) that nothing placed does not
+    /// become a keyframe, whatever keyframeDistance and keyframeAngle say: it kept the last
+    /// motion, which may be tens of degrees off where the robot turned, and as a keyframe its
+    /// readings would go into the submap (the next scans registered partly on them) and be the
+    /// graph matcher's reference. The next scan that qualifies is the keyframe.
+    bool deferKeyframeInStall = true;
     /// An odometry reading is a jump only where it is out of step with the reading before it
     /// (OdometryLag::inStep): at a low scan rate every step is beyond the jump bounds, and
     /// after one scan registration placed short along a corridor, each step in step with the

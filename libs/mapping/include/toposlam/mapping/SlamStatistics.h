@@ -32,6 +32,9 @@ struct SlamStatistics {
     /// Keyframes registered by ICP that are tied to a part of their submap started by a keyframe
     /// placed by odometry alone, not to its anchor (submap_parts; Submap.h).
     std::size_t tiedToLaterPart = 0;
+    /// Scans that would have been keyframes but were in an odometry stall that nothing placed
+    /// (defer_keyframe_in_stall).
+    std::size_t keyframesDeferredInStall = 0;
     // Registration of each scan (the first scan is the origin and counts in none of them).
     std::size_t registeredByIcp = 0;  ///< point-to-line ICP against the local submap
     /// Of those, not settled (ScanRegistration.h; with second_opinion on), and how many of

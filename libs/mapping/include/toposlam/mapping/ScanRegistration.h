@@ -55,7 +55,9 @@
 //     last followed by both readings, where the last scan's registered motion departed from
 //     its reading (jump_over_two_readings): an odometry that stalled within a scan interval
 //     read too little of a step and the rest with the next (generated plan 60, stalling
-//     robot, a third of the scans);
+//     robot, a third of the scans); without a jump, where short readings before it missed
+//     part of the turn that this one turned farther than, ICP from the reading less that turn
+//     (missed_turn_start: a step of the robot's length that delivers the missed turn);
 //  4. after a jump, ICP from the odometry's step where it fits the submap clearly better than
 //     ICP from the last motion, though it failed step 1's tests (keepJumpedReading: a step
 //     into new ground, little of the scan on the submap), or fits as well and the log's
@@ -457,6 +459,10 @@ class ScanRegistration {
     const Prediction& jumpBetween(const matching::PolarScan& scan,
                                   const mrpt::poses::CPose2D& sensorOnRobot,
                                   const Prediction& prediction, std::optional<IcpAttempt>& started);
+    /// ICP from Prediction::pastMissedTurn, taken where it passes step 1's tests.
+    bool tryPastMissedTurn(const matching::PolarScan& scan,
+                           const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
+                           Registration& out);
     /// After an odometry jump that neither ICP from the odometry's step, the graph matcher nor
     /// jumpBetween() placed, where the last scan's registered motion departed from its reading
     /// by more than OdometryLag::kAgreeDistance or kAgreeAngle: ICP from the pose of the scan
@@ -469,10 +475,6 @@ class ScanRegistration {
     /// the sideways bound grown with the two steps' length, and ends where ICP from the last
     /// motion does, or puts jump_choice_margin more of `scan` on the submap, or ICP from the
     /// last motion fails those tests (but the sideways bound). Otherwise `prediction`.
-    /// ICP from Prediction::pastMissedTurn, taken where it passes step 1's tests.
-    bool tryPastMissedTurn(const matching::PolarScan& scan,
-                           const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
-                           Registration& out);
     const Prediction& jumpOverTwoReadings(const matching::PolarScan& scan,
                                           const mrpt::poses::CPose2D& sensorOnRobot,
                                           const Prediction& prediction,

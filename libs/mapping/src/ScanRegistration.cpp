@@ -537,10 +537,8 @@ bool ScanRegistration::tryPastMissedTurn(const matching::PolarScan& scan,
         return false;
     const CPose2D start =
         prediction.inSubmap + ((-prediction.odometryStep) + *prediction.pastMissedTurn);
-    const IcpAttempt icp = icpFrom(scan, sensorOnRobot, *prediction.submap, start);
-    if (!acceptable(icp, start))
+    if (!answerIcpFrom(scan, sensorOnRobot, prediction, start, out))
         return false;
-    answerOnSubmap(icp, prediction, RegistrationMethod::Icp, out);
     out.pastMissedTurn = true;
     return true;
 }
@@ -689,10 +687,8 @@ bool ScanRegistration::keepCaughtUpReading(const matching::PolarScan& scan,
     // A catch-up is a guess from the size of the step alone: at a low scan rate a turn on the
     // spot after a stall reads as much more turn than the last motion, and is the robot's.
     const CPose2D byReading = prediction.inSubmap + prediction.toReading();
-    const IcpAttempt fromReading = icpFrom(scan, sensorOnRobot, *prediction.submap, byReading);
-    if (!acceptable(fromReading, byReading))
+    if (!answerIcpFrom(scan, sensorOnRobot, prediction, byReading, out))
         return false;
-    answerOnSubmap(fromReading, prediction, RegistrationMethod::Icp, out);
     out.catchUpReadingKept = true;
     return true;
 }
@@ -719,6 +715,16 @@ bool ScanRegistration::keepJumpedReading(const matching::PolarScan& scan,
         return false;
     answerOnSubmap(reading, prediction, RegistrationMethod::Icp, out);
     out.jumpBorneOut = true;
+    return true;
+}
+
+bool ScanRegistration::answerIcpFrom(const matching::PolarScan& scan, const CPose2D& sensorOnRobot,
+                                     const Prediction& prediction, const CPose2D& start,
+                                     Registration& out) {
+    const IcpAttempt icp = icpFrom(scan, sensorOnRobot, *prediction.submap, start);
+    if (!acceptable(icp, start))
+        return false;
+    answerOnSubmap(icp, prediction, RegistrationMethod::Icp, out);
     return true;
 }
 

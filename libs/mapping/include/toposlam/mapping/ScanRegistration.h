@@ -397,6 +397,11 @@ class ScanRegistration {
     void recordJumpChoice(const Submap& submap, const matching::PolarScan& scan,
                           const mrpt::poses::CPose2D& sensorOnRobot, const IcpAttempt& reading,
                           const IcpAttempt& motion);
+    /// ICP on the submap from robot pose `start` (submap frame); where it passes step 1's
+    /// overlap and correction tests, `out` is its answer (by ICP) and true.
+    bool answerIcpFrom(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
+                       const Prediction& prediction, const mrpt::poses::CPose2D& start,
+                       Registration& out);
     /// `out` becomes `icp`'s answer on the prediction's submap, registered by `method`.
     void answerOnSubmap(const IcpAttempt& icp, const Prediction& prediction,
                         RegistrationMethod method, Registration& out) const;

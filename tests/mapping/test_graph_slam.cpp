@@ -1553,12 +1553,14 @@ TEST(GraphSlam, AStalledScanNothingPlacedIsNoKeyframe) {
     // becomes a keyframe 28 deg off. The catch-up after it is bridged and ICP places it right,
     // but that keyframe's readings stay in the submap 28 deg off, and the next steps, partly
     // registered on them, came out 7 and 8 deg off (ATE 1.2 m). Not a keyframe, the scan
-    // leaves the submap and the matcher's reference alone.
+    // leaves the submap and the matcher's reference alone. (A second start from the last
+    // motion for the registrations after it, short_turn_second_opinion, mends the tour too,
+    // 0.08 m: it is left out to test this rule.)
     // Measured 0.09 m on.
     TOPOSLAM_SHARED_DATA_OR_SKIP(plan, "rooms/office_h_furnitures.png");
-    expectRuleMendsStallingPlanAtAThird(plan, 6, "defer_keyframe_in_stall",
-                                        &mapping::SlamStatistics::keyframesDeferredInStall, 0.8, 5,
-                                        "the scenario no longer shows the keyframe's error kept");
+    expectRuleMendsStallingPlanAtAThird(
+        plan, 6, "defer_keyframe_in_stall", &mapping::SlamStatistics::keyframesDeferredInStall, 0.8,
+        5, "the scenario no longer shows the keyframe's error kept", {"short_turn_second_opinion"});
 }
 
 TEST(GraphSlam, AScanNothingPlacedIsTriedWithoutTheTurnShortReadingsMissed) {
@@ -1571,6 +1573,21 @@ TEST(GraphSlam, AScanNothingPlacedIsTriedWithoutTheTurnShortReadingsMissed) {
     TOPOSLAM_SHARED_DATA_OR_SKIP(plan, "rooms/lab_f_scan_furnitures.png");
     expectRuleMendsStallingPlanAtAThird(plan, 7, "missed_turn_start",
                                         &mapping::SlamStatistics::icpPastMissedTurn, 1.0, 5,
+                                        "the scenario no longer shows the heading kept");
+}
+
+TEST(GraphSlam, IcpShortOfATurnOnLittleOfTheScanIsTriedFromTheLastMotion) {
+    // Bormann's lab_b toured by B3-sim's stalling robot, seed 8, one scan in three kept.
+    // Mid-turn (47 deg a step) a short reading (0.35 m, -12 deg, where the robot went 0.90 m
+    // and turned -47 deg) starts ICP 35 deg short of the turn; it ends at -15 deg with 0.37
+    // of the scan on the submap, not settled, the second opinion's turned starts (+-17 deg)
+    // do not reach, and the rest of the tour keeps the 32 deg (ATE 3.0 m). From the last
+    // motion ICP puts 220 of the 361 readings on the submap where the short start put 67,
+    // and that start is taken.
+    // Measured 0.007 m on.
+    TOPOSLAM_SHARED_DATA_OR_SKIP(plan, "rooms/lab_b_scan_furnitures.png");
+    expectRuleMendsStallingPlanAtAThird(plan, 8, "short_turn_second_opinion",
+                                        &mapping::SlamStatistics::icpShortOfTurnReplaced, 2.0, 20,
                                         "the scenario no longer shows the heading kept");
 }
 

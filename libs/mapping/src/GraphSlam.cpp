@@ -262,7 +262,9 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
         case RegistrationMethod::Icp:
             ++stats_.registeredByIcp;
             stats_.icpUnsettled += r.unsettled;
-            stats_.icpSecondStarts += r.secondStart;
+            stats_.icpSecondStarts += r.secondStart && r.unsettled;  // see SlamStatistics
+            stats_.icpShortOfTurn += r.shortOfTurn;
+            stats_.icpShortOfTurnReplaced += r.shortOfTurn && r.secondStart;
             stats_.icpWithoutForeground += r.withoutForeground;
             stats_.icpHeldAlongHeading += r.heldAlongHeading();
             stats_.icpHeldForFreeSpace += r.heldAlongHeading() && r.alongHeading->heldForFreeSpace;

@@ -67,6 +67,10 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
             "... the prediction turned by +-1 and +-2 times this (0: no turned starts)")
         .atLeast(0)
         .atMost(90);
+    s.flag("short_turn_second_opinion", shortTurnSecondOpinion,
+           "ICP that ended on little of the scan, settled or not, from a reading that turned "
+           "less than the last motion, the same way, by more than the second opinion's turns "
+           "reach, gets the second opinion with one more start, the last motion");
     s.real("unsettled_max_chi2", unsettledMaxChi2, "",
            "ICP that has not settled is taken only within this chi-square (3 dof) of the "
            "odometry model's step (0 = off)")

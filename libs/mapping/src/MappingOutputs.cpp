@@ -169,7 +169,9 @@ std::string formatSummary(const MappingResult& r) {
             "%zu more refused beyond the odometry's noise; "
             "%zu without foreground objects; %zu held at the odometry's position along the "
             "heading, %zu of them where ICP's pose saw through the submap; %zu from the reading "
-            "less the turn short readings before it missed), %zu by the graph matcher (%.1f %%; "
+            "less the turn short readings before it missed; %zu short of the last motion's turn on "
+            "little of the scan, %zu of them replaced from a second start), %zu by the "
+            "graph matcher (%.1f %%; "
             "%zu of them beyond a jump, confirmed on the submap; %zu against the last keyframe a "
             "registration placed, where odometry alone placed the last), %zu failed "
             "(%.1f %%, odometry kept; %zu of them with a graph-matcher answer only foreground "
@@ -180,11 +182,11 @@ std::string formatSummary(const MappingResult& r) {
             st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
             st->icpSecondStarts, st->icpUnsettledRefused, st->icpWithoutForeground,
             st->icpHeldAlongHeading, st->icpHeldForFreeSpace, st->icpPastMissedTurn,
-            st->registeredByGraphMatcher, percent(st->registeredByGraphMatcher, n),
-            st->graphMatcherConfirmed, st->graphMatcherFromRegisteredKeyframe,
-            st->registrationFailed, percent(st->registrationFailed, n),
-            st->matcherRefusedForeground, jumps.c_str(), st->odometryStallsBridged,
-            st->stalledScansPlaced,
+            st->icpShortOfTurn, st->icpShortOfTurnReplaced, st->registeredByGraphMatcher,
+            percent(st->registeredByGraphMatcher, n), st->graphMatcherConfirmed,
+            st->graphMatcherFromRegisteredKeyframe, st->registrationFailed,
+            percent(st->registrationFailed, n), st->matcherRefusedForeground, jumps.c_str(),
+            st->odometryStallsBridged, st->stalledScansPlaced,
             counted(st->odometryTranslationStalls, "stall of the distance alone",
                     "stalls of the distance alone")
                 .c_str(),
@@ -271,6 +273,8 @@ nlohmann::json summaryJson(const MappingResult& r) {
             {"icp_held_along_heading", st->icpHeldAlongHeading},
             {"icp_held_for_free_space", st->icpHeldForFreeSpace},
             {"icp_past_missed_turn", st->icpPastMissedTurn},
+            {"icp_short_of_turn", st->icpShortOfTurn},
+            {"icp_short_of_turn_replaced", st->icpShortOfTurnReplaced},
             {"graph_matcher", st->registeredByGraphMatcher},
             {"graph_matcher_confirmed", st->graphMatcherConfirmed},
             {"graph_matcher_from_registered_keyframe", st->graphMatcherFromRegisteredKeyframe},

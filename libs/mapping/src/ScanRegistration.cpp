@@ -276,12 +276,27 @@ bool ScanRegistration::settled(const IcpAttempt& attempt) const {
            attempt.icp.residualRms <= kUnsettledResidualRatio * typical;
 }
 
+bool ScanRegistration::shortOfTurn(const Prediction& prediction, const Registration& icp) const {
+    if (!options_.shortTurnSecondOpinion || !options_.secondOpinion ||
+        !prediction.odometryPredicted || prediction.odometryStalled ||
+        icp.overlap >= options_.keyframeMinOverlap)
+        return false;
+    const double last = mrpt::math::wrapToPi(prediction.lastMotion.phi());
+    const double step = mrpt::math::wrapToPi(prediction.odometryStep.phi());
+    return last * step >= 0 && std::abs(last) - std::abs(step) > 2 * options_.secondOpinionTurn;
+}
+
 bool ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPose2D& sensorOnRobot,
                                      const Prediction& prediction, const Registration* matched,
-                                     Registration& icp) {
+                                     Registration& icp, bool fromLastMotion) {
     const Submap& submap = *prediction.submap;
-    std::array<CPose2D, 5> starts;
+    std::array<CPose2D, 6> starts;
     std::size_t count = 0;
+    // The last motion's start is judged against the jump bounds from itself, not from the
+    // reading it replaces (which missed part of the turn).
+    const std::size_t lastMotionStart = fromLastMotion ? 0 : starts.size();
+    if (fromLastMotion)
+        starts[count++] = prediction.inSubmap + (-prediction.odometryStep) + prediction.lastMotion;
     if (matched) {
         starts[count++] = prediction.lastKeyframeInSubmap() + matched->pose;
     }
@@ -303,8 +318,9 @@ bool ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
         if (settled(alt))
             settledEnds[settledCount++] = alt.robot;
         const std::size_t altOn = onMap(alt.robot);
-        if (altOn <= bestOn || (!prediction.odometryJumped &&
-                                beyondOdometryJump(options_, alt.robot - prediction.inSubmap))) {
+        const CPose2D& from = i == lastMotionStart ? starts[i] : prediction.inSubmap;
+        if (altOn <= bestOn ||
+            (!prediction.odometryJumped && beyondOdometryJump(options_, alt.robot - from))) {
             continue;
         }
         bestOn = altOn;

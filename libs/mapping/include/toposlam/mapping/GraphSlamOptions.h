@@ -67,6 +67,11 @@ struct GraphSlamOptions : public config::Options {
     bool secondOpinion = true;
     double secondOpinionMargin = 0.25;
     double secondOpinionTurn = 0.15;  ///< rad (8.6 deg)
+    /// ICP that ended on less than keyframeMinOverlap of the scan, settled or not, from a
+    /// reading that turned the way the last motion did but less by more than 2
+    /// secondOpinionTurn (a reading mid-turn that fell short of it), gets the second opinion,
+    /// with one more start: the last motion (ScanRegistration::shortOfTurn).
+    bool shortTurnSecondOpinion = true;
     /// The second opinion's answer (unsettled ICP from the prediction, or a second start) that
     /// corrects the odometry's step by more than this chi-square (3 dof) of the odometry model
     /// for that step (odometry_sigma_*) counts only where one of the second starts settled;

@@ -31,7 +31,8 @@ std::string formatSummary(const MappingResult& result);
 
 /// The summary as JSON: engine, scans, log_duration_s, wall_s, cpu_s, real_time_factor (null
 /// without one), wall_alignment_deg; graph engine also keyframes, submaps, registration {icp,
-/// icp_unsettled, icp_second_start, icp_unsettled_refused, icp_without_foreground, graph_matcher,
+/// icp_unsettled, icp_second_start, icp_unsettled_refused, icp_without_foreground,
+/// icp_short_of_turn, icp_short_of_turn_replaced, graph_matcher,
 /// failed, odometry_jumps, odometry_catch_ups, odometry_catch_ups_kept, registered_share}, loops
 /// {candidates, accepted, guess_free_accepted, contested_accepted, unmatched, rejected, withdrawn},
 /// cpu_by_stage_s {front_end, loop_search, loop_search_on_workers, optimization}, optimizations,

@@ -103,6 +103,10 @@ struct Registration {
     bool secondStart = false;
     /// ICP had not settled, so a second start was tried (second_opinion on).
     bool unsettled = false;
+    /// ICP (settled or not) ended on little of the scan from a reading short of the last
+    /// motion's turn, so second starts, one from the last motion, were tried
+    /// (short_turn_second_opinion).
+    bool shortOfTurn = false;
     /// ... and no start settled where the odometry model allows (unsettled_max_chi2): the scan
     /// went to the graph matcher instead.
     bool unsettledRefused = false;
@@ -405,14 +409,22 @@ class ScanRegistration {
     /// `out` becomes `icp`'s answer on the prediction's submap, registered by `method`.
     void answerOnSubmap(const IcpAttempt& icp, const Prediction& prediction,
                         RegistrationMethod method, Registration& out) const;
-    /// ICP from `prediction` ended in `icp` without settling: ICP again from the graph
-    /// matcher's answer `matched` (when it has one) and from the prediction turned by +-1 and
-    /// +-2 second_opinion_turn; the end that puts at least second_opinion_margin more of the
-    /// scan's readings on the submap than `icp` replaces it. Returns false when the answer
-    /// outruns the odometry (outrunsOdometry) and none of those starts settled there: no answer.
+    /// ICP from `prediction` ended in `icp` without settling, or short of a turn (see
+    /// shortOfTurn): ICP again from the graph matcher's answer `matched` (when it has one),
+    /// from the prediction turned by +-1 and +-2 second_opinion_turn and, with
+    /// `fromLastMotion`, from the robot's last motion; the end that puts at least
+    /// second_opinion_margin more of the scan's readings on the submap than `icp` replaces it.
+    /// Returns false when the answer outruns the odometry (outrunsOdometry) and none of those
+    /// starts settled there: no answer.
     bool secondOpinion(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
-                       const Prediction& prediction, const Registration* matched,
-                       Registration& icp);
+                       const Prediction& prediction, const Registration* matched, Registration& icp,
+                       bool fromLastMotion);
+    /// ICP from the odometry's step ended with less than keyframe_min_overlap of the scan on
+    /// the submap, and that step turned the way the robot's last motion did but less, by more
+    /// than the second opinion's turned starts reach (2 second_opinion_turn): a reading
+    /// mid-turn that fell short of the turn, and ICP that stayed near it on too little of the
+    /// scan (short_turn_second_opinion).
+    bool shortOfTurn(const Prediction& prediction, const Registration& icp) const;
     /// ICP that converged, or ended with a residual within kUnsettledResidualRatio of the
     /// recent registrations' (or before there are enough to judge); tryIcp's "unsettled" is
     /// its negation.
@@ -564,14 +576,17 @@ Registration ScanRegistration::registerScan(const matching::PolarScan& scan,
     out.byLastMotion = !out.jumpBorneOut && &prediction != &odometryPrediction;
     if (!prediction.odometryJumped &&
         tryIcp(scan, sensorOnRobot, prediction, out, started ? &*started : nullptr)) {
-        if (!icpUnsettled_ || !prediction.lastKeyframe)  // set only with second_opinion on
-            return out;
-        out.unsettled = true;
+        const bool shortTurn = shortOfTurn(prediction, out);
+        if ((!icpUnsettled_ && !shortTurn) || !prediction.lastKeyframe)
+            return out;  // icpUnsettled_ is set only with second_opinion on
+        out.unsettled = icpUnsettled_;
+        out.shortOfTurn = shortTurn;
         extractFeatures(features);
         Registration matched;
         const bool found =
             tryGraphMatcher(scan, sensorOnRobot, prediction, features, nullptr, matched);
-        if (secondOpinion(scan, sensorOnRobot, prediction, found ? &matched : nullptr, out))
+        if (secondOpinion(scan, sensorOnRobot, prediction, found ? &matched : nullptr, out,
+                          shortTurn))
             return out;
         // Settled from no start, and ten sigmas or more off the odometry's step: no pose fits
         // the scan clearly (people close around the laser), and the odometry knows better.

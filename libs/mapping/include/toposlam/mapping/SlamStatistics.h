@@ -40,6 +40,11 @@ struct SlamStatistics {
     /// Of those, not settled (ScanRegistration.h; with second_opinion on), and how many of
     /// these a second start replaced.
     std::size_t icpUnsettled = 0, icpSecondStarts = 0;
+    /// ICP (settled or not) that ended on little of the scan from a reading short of the last
+    /// motion's turn (short_turn_second_opinion), and how many of these a second start
+    /// replaced (where that ICP had not settled either, it counts in icpUnsettled and
+    /// icpSecondStarts too).
+    std::size_t icpShortOfTurn = 0, icpShortOfTurnReplaced = 0;
     /// Unsettled ICP refused: from no start did it settle within the odometry model's noise
     /// (unsettled_max_chi2); those scans count as registered by the graph matcher or failed.
     std::size_t icpUnsettledRefused = 0;

@@ -290,11 +290,13 @@ bool ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
                                      const Prediction& prediction, const Registration* matched,
                                      Registration& icp, bool fromLastMotion) {
     const Submap& submap = *prediction.submap;
-    std::array<CPose2D, 6> starts;
+    // The last motion, the matcher's answer and four turned predictions at most.
+    constexpr std::size_t kMaxStarts = 6;
+    std::array<CPose2D, kMaxStarts> starts;
     std::size_t count = 0;
     // The last motion's start is judged against the jump bounds from itself, not from the
     // reading it replaces (which missed part of the turn).
-    const std::size_t lastMotionStart = fromLastMotion ? 0 : starts.size();
+    const std::size_t lastMotionStart = fromLastMotion ? 0 : kMaxStarts;
     if (fromLastMotion)
         starts[count++] = prediction.inSubmap + (-prediction.odometryStep) + prediction.lastMotion;
     if (matched) {
@@ -311,7 +313,7 @@ bool ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
     std::size_t bestOn =
         onMap(icp.pose) + std::size_t(options_.secondOpinionMargin * double(scan.validCount()));
     std::optional<IcpAttempt> best;
-    std::array<CPose2D, 5> settledEnds;  // where the starts' ICP settled
+    std::array<CPose2D, kMaxStarts> settledEnds;  // where the starts' ICP settled
     std::size_t settledCount = 0;
     for (std::size_t i = 0; i < count; ++i) {
         IcpAttempt alt = icpFrom(scan, sensorOnRobot, submap, starts[i]);

@@ -1553,9 +1553,8 @@ TEST(GraphSlam, AStalledScanNothingPlacedIsNoKeyframe) {
     // becomes a keyframe 28 deg off. The catch-up after it is bridged and ICP places it right,
     // but that keyframe's readings stay in the submap 28 deg off, and the next steps, partly
     // registered on them, came out 7 and 8 deg off (ATE 1.2 m). Not a keyframe, the scan
-    // leaves the submap and the matcher's reference alone. (A second start from the last
-    // motion for the registrations after it, short_turn_second_opinion, mends the tour too,
-    // 0.08 m: it is left out to test this rule.)
+    // leaves the submap and the matcher's reference alone. (short_turn_second_opinion mends
+    // this tour on its own too, 0.08 m: it is left out to test this rule.)
     // Measured 0.09 m on.
     TOPOSLAM_SHARED_DATA_OR_SKIP(plan, "rooms/office_h_furnitures.png");
     expectRuleMendsStallingPlanAtAThird(

@@ -298,7 +298,7 @@ bool ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
     // reading it replaces (which missed part of the turn).
     const std::size_t lastMotionStart = fromLastMotion ? 0 : kMaxStarts;
     if (fromLastMotion)
-        starts[count++] = prediction.inSubmap + (-prediction.odometryStep) + prediction.lastMotion;
+        starts[count++] = prediction.inSubmap + prediction.toLastMotion();
     if (matched) {
         starts[count++] = prediction.lastKeyframeInSubmap() + matched->pose;
     }
@@ -360,8 +360,7 @@ const Prediction& ScanRegistration::preferredPrediction(const matching::PolarSca
         return prediction;
     if (prediction.odometryJumped)
         return jumpBorneOut(scan, sensorOnRobot, prediction, started);
-    // The last motion's pose is the odometry's, less the odometry's step, plus that motion.
-    const CPose2D toMotion = (-prediction.odometryStep) + prediction.lastMotion;
+    const CPose2D toMotion = prediction.toLastMotion();
     if (toMotion.norm() <= options_.icpMaxDistance)
         return prediction;  // ICP from the odometry reaches it
     const Submap& submap = *prediction.submap;
@@ -390,7 +389,7 @@ const Prediction& ScanRegistration::standstillBorneOut(const matching::PolarScan
     // says. Along a corridor whose walls fix nothing along it ICP keeps whichever start it
     // gets, and from the standstill the stall's scans stay behind (keyframes among them, which
     // the scans after are registered against). Turns are left alone: the laser fixes them.
-    const CPose2D toMotion = (-prediction.odometryStep) + prediction.lastMotion;
+    const CPose2D toMotion = prediction.toLastMotion();
     if (toMotion.norm() <= OdometryLag::kMovedDistance)
         return prediction;
     const Submap& submap = *prediction.submap;

@@ -236,6 +236,9 @@ struct Prediction {
     /// After a jump or in a catch-up: from the predicted pose (the last motion's) to the
     /// odometry's reading, in the robot frame of the prediction (m, rad).
     mrpt::poses::CPose2D toReading() const { return (-odometryStep) + readingStep; }
+    /// From the predicted pose to where the robot's last motion would have put it: the
+    /// prediction less its step, plus that motion (robot frame of the prediction, m, rad).
+    mrpt::poses::CPose2D toLastMotion() const { return (-odometryStep) + lastMotion; }
 };
 
 class ScanRegistration {

@@ -24,8 +24,10 @@ bool viewsOverlap(const Keyframe& a, const Keyframe& b, const PoseGraph& graph) 
     const double aperture = std::min(a.fieldOfView, b.fieldOfView);
     if (aperture >= 1.75 * M_PI)
         return true;
-    const double ha = (graph.pose(a.id) + a.sensorOnRobot).phi();
-    const double hb = (graph.pose(b.id) + b.sensorOnRobot).phi();
+    // The sensors' headings, as the poses composed would give them, without composing: this
+    // runs for every older keyframe at every new one, and a composition costs a sine and cosine.
+    const double ha = graph.pose(a.id).phi() + a.sensorOnRobot.phi();
+    const double hb = graph.pose(b.id).phi() + b.sensorOnRobot.phi();
     return std::abs(mrpt::math::wrapToPi(ha - hb)) <= 0.5 * aperture + M_PI / 8;
 }
 

@@ -49,6 +49,9 @@ std::optional<LocalLine> fitLocalLine(const PolarScan& scan, std::size_t beam,
                                       double maxJoinDistance, double reach) {
     const mrpt::math::TPoint2D& p = scan.point(beam);
     const double join = jumpGap(scan, scan.range(beam), maxJoinDistance);
+    // Squared distances against squared limits: no root per neighbour (this runs for every
+    // reading of every scan that goes into a map).
+    const double join2 = join * join, reach2 = reach * reach;
     // Neighbours on each side, walking outwards and stopping at a jump or at `reach`.
     double sx = p.x, sy = p.y, sxx = p.x * p.x, sxy = p.x * p.y, syy = p.y * p.y;
     int count = 1;
@@ -59,12 +62,14 @@ std::optional<LocalLine> fitLocalLine(const PolarScan& scan, std::size_t beam,
             if (q < 0 || !scan.valid(std::size_t(q)))
                 break;
             const mrpt::math::TPoint2D& o = scan.point(std::size_t(q));
-            if (std::hypot(o.x - last.x, o.y - last.y) > join)
+            const double jx = o.x - last.x, jy = o.y - last.y;
+            if (jx * jx + jy * jy > join2)
                 break;
             sx += o.x, sy += o.y, sxx += o.x * o.x, sxy += o.x * o.y, syy += o.y * o.y;
             ++count;
             last = o;
-            if (k >= kMinBeams && std::hypot(o.x - p.x, o.y - p.y) >= reach)
+            const double rx = o.x - p.x, ry = o.y - p.y;
+            if (k >= kMinBeams && rx * rx + ry * ry >= reach2)
                 break;
         }
     }

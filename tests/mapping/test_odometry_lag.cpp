@@ -105,6 +105,40 @@ TEST(OdometryLag, AStallWhoseReadingDidNotTurnAsRegistrationSawOrAStandstillIsNo
     EXPECT_FALSE(standing.bridges(ahead, kStill));
 }
 
+TEST(OdometryLag, AStallNothingRegisteredIsBridgedWhateverTurnItWasGiven) {
+    // Bormann's lab_f toured at a third of the scan rate: the odometry stalls in a bend, and
+    // neither ICP nor the graph matcher places the scan, which keeps the last motion, 55 deg.
+    // The robot turned 17 deg there and 3 deg at the next scan, whose reading holds both: 20
+    // deg. That is no reading that "turned otherwise than registration saw": nothing saw the
+    // 55 deg, so the reading less that guess is the step, and the stall's scan lies between.
+    const CPose2D before(0.62, 0.0, mrpt::DEG2RAD(55.0)), reading(2.0, 0.3, mrpt::DEG2RAD(20.0));
+    OdometryLag guessed;
+    guessed.registered(before, before);
+    guessed.registered(kStill, before, /*measured=*/false);
+    EXPECT_TRUE(guessed.stallUnmeasured());
+    ASSERT_TRUE(guessed.bridges(reading, before));
+    EXPECT_TRUE(guessed.stallScansBehind(reading));
+    const CPose2D expected = (-before) + reading;
+    EXPECT_NEAR(guessed.stepSinceStall(reading).phi(), expected.phi(), 1e-12);
+    // The same stall placed by ICP: its turn was seen, and the reading that turned otherwise
+    // is not the stall's motion (the case of mit-csail above).
+    OdometryLag seen;
+    seen.registered(before, before);
+    seen.registered(kStill, before);
+    EXPECT_FALSE(seen.stallUnmeasured());
+    EXPECT_FALSE(seen.bridges(reading, before));
+    // One scan of the stall placed by a registration is a measurement of it.
+    OdometryLag partly;
+    partly.registered(before, before);
+    partly.registered(kStill, before, false);
+    partly.registered(kStill, before, true);
+    EXPECT_FALSE(partly.stallUnmeasured());
+    EXPECT_FALSE(partly.bridges(reading, before));
+    // Once a reading moves, no stall is left to be unmeasured.
+    guessed.registered(reading, guessed.stepSinceStall(reading));
+    EXPECT_FALSE(guessed.stallUnmeasured());
+}
+
 TEST(OdometryLag, AScanChangesWhereTheRobotMovedNotWhereOnePersonWalked) {
     // 181 beams over 180 deg in a room: a wall 3 m ahead, and a step of 0.3 m towards it.
     std::vector<float> before(181), moved(181), person(181);

@@ -117,6 +117,8 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement,
         intervals += odometryLag_.repeatedScans();
         p.stallScans = odometryLag_.repeatedScans();
         p.stallScansBehind = odometryLag_.stallScansBehind(*odometryIncrement);
+        p.stallUnmeasured = odometryLag_.stallUnmeasured();
+        stats_.odometryUnplacedStallsBridged += p.stallUnmeasured;
         catchingUp = false;
         ++stats_.odometryStallsBridged;
     } else if (shortfallBridged) {
@@ -300,7 +302,9 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     }
     doubtSinceKeyframe_ = doubtSinceKeyframe_ || r.method != RegistrationMethod::Icp;
     if (odometry)
-        odometryLag_.registered(*odometry, step);
+        odometryLag_.registered(
+            *odometry, step,
+            !options_.bridgeUnplacedStalls || r.method != RegistrationMethod::Odometry);
     lastReading_ = odometry;
     lastMotion_ = step;
     recentSteps_[stats_.scans % recentSteps_.size()] = step.norm();
@@ -334,10 +338,12 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     // taken for the motion then.
     if (prediction.odometryBridged && prediction.stallScansBehind && odometry &&
         (!prediction.odometryJumped || r.jumpBorneOut))
-        placeStalledScans(std::size_t(prediction.stallScans), *odometry);
+        placeStalledScans(std::size_t(prediction.stallScans), *odometry,
+                          prediction.stallUnmeasured);
 }
 
-void GraphSlam::placeStalledScans(std::size_t stallScans, const CPose2D& reading) {
+void GraphSlam::placeStalledScans(std::size_t stallScans, const CPose2D& reading,
+                                  bool turnBetween) {
     const std::size_t last = scans_.size() - 1;  // the catch-up scan
     if (last < stallScans + 1)
         return;
@@ -352,8 +358,11 @@ void GraphSlam::placeStalledScans(std::size_t stallScans, const CPose2D& reading
         if (keyframes_[s.keyframe].scanIndex == i)
             continue;  // a keyframe stays where the graph has it
         const double a = double(k) / intervals;
+        const double heading = turnBetween
+                                   ? from.phi() + a * mrpt::math::wrapToPi(to.phi() - from.phi())
+                                   : scanPose(i).phi();
         const CPose2D placed(from.x() + a * (to.x() - from.x()), from.y() + a * (to.y() - from.y()),
-                             scanPose(i).phi());
+                             heading);
         s.fromKeyframe = placed - graph_.pose(s.keyframe);
         s.odometry = share;
         ++stats_.stalledScansPlaced;

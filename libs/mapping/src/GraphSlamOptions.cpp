@@ -157,6 +157,10 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "(no translation, or 0.2 m less where the reading turned as far as registration saw, "
            "within 10 deg), that reading less the motion registered meanwhile is the step "
            "predicted, and the stall's scans registration left behind are placed between");
+    s.flag("bridge_unplaced_stalls", bridgeUnplacedStalls,
+           "a stall whose scans nothing placed (they kept the last motion) is bridged as one "
+           "registration saw nothing of, whatever turn the last motion carried on; its scans are "
+           "placed between, headings spread over the turn");
     s.flag("predict_stalls_by_last_motion", predictStallsByLastMotion,
            "in an odometry stall (a reading repeated exactly while the robot moved and the scan "
            "changed) ICP also starts from the last registered motion, and the standstill stays "

@@ -175,9 +175,10 @@ std::string formatSummary(const MappingResult& r) {
             "%zu of them beyond a jump, confirmed on the submap; %zu against the last keyframe a "
             "registration placed, where odometry alone placed the last), %zu failed "
             "(%.1f %%, odometry kept; %zu of them with a graph-matcher answer only foreground "
-            "objects bore out); %s; %zu odometry stalls bridged (%zu of their scans placed "
-            "between; %s), %s, %s catching up after a stall (%zu of them placed by ICP from the "
-            "reading where nothing from the last motion placed them); %zu predicted by the "
+            "objects bore out); %s; %zu odometry stalls bridged (%zu of them stalls nothing had "
+            "placed; %zu of their scans placed between; %s), %s, %s catching up after a stall "
+            "(%zu of them placed by ICP from the reading where nothing from the last motion "
+            "placed them); %zu predicted by the "
             "last motion instead of the odometry",
             st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
             st->icpSecondStarts, st->icpUnsettledRefused, st->icpWithoutForeground,
@@ -186,7 +187,7 @@ std::string formatSummary(const MappingResult& r) {
             percent(st->registeredByGraphMatcher, n), st->graphMatcherConfirmed,
             st->graphMatcherFromRegisteredKeyframe, st->registrationFailed,
             percent(st->registrationFailed, n), st->matcherRefusedForeground, jumps.c_str(),
-            st->odometryStallsBridged, st->stalledScansPlaced,
+            st->odometryStallsBridged, st->odometryUnplacedStallsBridged, st->stalledScansPlaced,
             counted(st->odometryTranslationStalls, "stall of the distance alone",
                     "stalls of the distance alone")
                 .c_str(),
@@ -290,6 +291,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
             {"odometry_catch_ups", st->odometryCatchUps},
             {"odometry_catch_ups_kept", st->odometryCatchUpsKept},
             {"odometry_stalls_bridged", st->odometryStallsBridged},
+            {"odometry_unplaced_stalls_bridged", st->odometryUnplacedStallsBridged},
             {"odometry_shortfalls_bridged", st->odometryShortfallsBridged},
             {"odometry_translation_stalls", st->odometryTranslationStalls},
             {"stalled_scans_placed", st->stalledScansPlaced},

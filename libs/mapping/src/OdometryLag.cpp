@@ -95,13 +95,18 @@ bool OdometryLag::bridges(const mrpt::poses::CPose2D& increment,
         !exceeds(increment, lastMotion))
         return false;
     // Translation: a corridor fixes the heading, and ICP turns the stall's scans by its noise
-    // (a degree or so) while it cannot see how far they went along it.
-    return sinceReading_.norm() <= kMovedDistance ||
+    // (a degree or so) while it cannot see how far they went along it. Where nothing placed
+    // the stall's scans, their motion is the last one carried on: no turn was seen, only
+    // guessed (Bormann's lab_f toured at a third: 55 deg carried on where the robot turned 17,
+    // and the catch-up, which turned 20 over both scans, was refused as a jump).
+    return sinceReading_.norm() <= kMovedDistance || stallUnmeasured() ||
            (turnedAsRegistered(increment) &&
             increment.norm() - sinceReading_.norm() > kAgreeDistance);
 }
 
 bool OdometryLag::stallScansBehind(const mrpt::poses::CPose2D& increment) const {
+    if (stallUnmeasured())
+        return true;  // where the last motion put them, not where anything saw them
     const double scans = repeatedScans_;
     return turnedAsRegistered(increment) &&
            sinceReading_.norm() < increment.norm() * scans / (scans + 1) - kAgreeDistance;
@@ -177,7 +182,7 @@ mrpt::poses::CPose2D OdometryLag::stepSinceStall(const mrpt::poses::CPose2D& inc
 }
 
 void OdometryLag::registered(const mrpt::poses::CPose2D& increment,
-                             const mrpt::poses::CPose2D& step) {
+                             const mrpt::poses::CPose2D& step, bool measured) {
     if (zero(increment)) {
         shortfall_ = shortfallTurn_ = 0;  // a stall of whole scans: bridges(), catchingUp()
         shortfallAfterStall_ = false;
@@ -187,8 +192,10 @@ void OdometryLag::registered(const mrpt::poses::CPose2D& increment,
         if (repeatedScans_++ == 0) {
             movedBeforeStall_ = moved(lastStep_);
             sinceReading_ = step;
+            stallUnmeasured_ = !measured;
         } else {
             sinceReading_ = sinceReading_ + step;
+            stallUnmeasured_ = stallUnmeasured_ && !measured;
         }
     } else {
         repeatedScans_ = 0;

@@ -88,10 +88,13 @@ class GraphSlam {
     bool isKeyframe(const Registration& r, const mrpt::poses::CPose2D& pose) const;
     /// The last `stallScans` scans before this one, a bridged stall's that registration left
     /// behind (Prediction::stallScansBehind), placed at even steps between the scan before the
-    /// stall and this one (the robot at a steady speed), each keeping its heading; their
-    /// odometry, and this scan's, is the reading's share of each scan interval. `reading`: the
-    /// odometry since the scan before the stall (its frame, m, rad). Keyframes stay.
-    void placeStalledScans(std::size_t stallScans, const mrpt::poses::CPose2D& reading);
+    /// stall and this one (the robot at a steady speed), each keeping its heading unless
+    /// `turnBetween` (nothing registered them: Prediction::stallUnmeasured), when their
+    /// headings are spread evenly over the turn too; their odometry, and this scan's, is the
+    /// reading's share of each scan interval. `reading`: the odometry since the scan before the
+    /// stall (its frame, m, rad). Keyframes stay.
+    void placeStalledScans(std::size_t stallScans, const mrpt::poses::CPose2D& reading,
+                           bool turnBetween);
     void addKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan, const Registration& r,
                      const mrpt::poses::CPose2D& pose,
                      features::CObservationLaserFeatures::Ptr features);

@@ -200,6 +200,13 @@ struct GraphSlamOptions : public config::Options {
     /// scans registration left behind are placed between (OdometryLag.h,
     /// GraphSlam::placeStalledScans).
     bool bridgeOdometryStalls = true;
+    /// A stall whose scans no registration placed (neither ICP nor the graph matcher: each
+    /// kept the last motion) is bridged like one registration saw nothing of, whatever turn
+    /// the last motion carried on: the turn was guessed, not seen (OdometryLag::
+    /// stallUnmeasured). Its scans are then placed between, their headings spread over the
+    /// turn too. Off: such a stall counts as registered, and a reading that turned otherwise
+    /// than the guess is not bridged.
+    bool bridgeUnplacedStalls = true;
     /// A stalled reading (repeated exactly while the robot moved, and the scan changed:
     /// OdometryLag::scanChanged, not a robot that stopped) says nothing about the motion: ICP
     /// also starts from the last registered motion, and the standstill stays only where the

@@ -121,9 +121,10 @@ class OdometryLag {
     /// True when `increment` is the first that moves after increments of exactly zero that
     /// followed a registered motion (a stall; not a robot that stood still), is longer, or
     /// turns farther, than `lastMotion` by more than kAgreeDistance or kAgreeAngle (a
-    /// catch-up), and registration saw no translation since (at most kMovedDistance) or, where
-    /// the reading turned as registered (turnedAsRegistered()), a translation shorter than the
-    /// reading's by more than kAgreeDistance: then stepSinceStall() is the step to predict.
+    /// catch-up), and registration saw no translation since (at most kMovedDistance), or
+    /// placed none of the stall's scans (stallUnmeasured()), or, where the reading turned as
+    /// registered (turnedAsRegistered()), saw a translation shorter than the reading's by more
+    /// than kAgreeDistance: then stepSinceStall() is the step to predict.
     bool bridges(const mrpt::poses::CPose2D& increment,
                  const mrpt::poses::CPose2D& lastMotion) const;
     /// The step from the last scan that `increment` (which bridges()) reads: the motion since
@@ -152,8 +153,14 @@ class OdometryLag {
     /// scan, m, rad); nothing otherwise.
     std::optional<mrpt::poses::CPose2D> pastMissedTurn(const mrpt::poses::CPose2D& increment) const;
     /// After each scan with odometry: its `increment`, and the `step` registered for it (robot
-    /// frame of the last scan). A stalled scan's step adds to the backlog.
-    void registered(const mrpt::poses::CPose2D& increment, const mrpt::poses::CPose2D& step);
+    /// frame of the last scan). A stalled scan's step adds to the backlog. `measured`: a
+    /// registration (ICP or the graph matcher) placed the scan; false where nothing did and
+    /// `step` is only the prediction (the last motion, in a stall).
+    void registered(const mrpt::poses::CPose2D& increment, const mrpt::poses::CPose2D& step,
+                    bool measured = true);
+    /// No registration placed any scan since the last increment that moved: the motion
+    /// "registered" over the stall is the last motion carried on, no measurement at all.
+    bool stallUnmeasured() const { return repeatedScans_ > 0 && stallUnmeasured_; }
     /// Scans since the last increment that moved (0 when the last one did).
     int repeatedScans() const { return repeatedScans_; }
     /// For each scan with odometry, before registration: its `increment` over the scan
@@ -172,7 +179,7 @@ class OdometryLag {
     /// For `increment` that bridges(): registration left the stall's scans behind where the
     /// reading turned as registered, the translation registered over them shorter than the
     /// reading's share of those scan intervals (of repeatedScans() + 1) by more than
-    /// kAgreeDistance.
+    /// kAgreeDistance; or it placed none of them (stallUnmeasured()).
     bool stallScansBehind(const mrpt::poses::CPose2D& increment) const;
 
   private:
@@ -196,6 +203,7 @@ class OdometryLag {
     int repeatedScans_ = 0;
     mrpt::poses::CPose2D sinceReading_;
     bool movedBeforeStall_ = false;  ///< the scan before the repeated increments moved
+    bool stallUnmeasured_ = false;   ///< no registration placed any of those scans
     mrpt::poses::CPose2D lastStep_;  ///< the last scan's registered step
     /// translationStalled(): the last increment and its interval (s), and whether it stalled.
     mrpt::poses::CPose2D lastReading_;

@@ -198,10 +198,12 @@ struct Prediction {
     /// step is the reading less the motion registered during the stall
     /// (OdometryLag::stepSinceStall; bridge_odometry_stalls).
     bool odometryBridged = false;
-    /// When bridged: the stall's scans (its repeated readings) before this one, and whether
-    /// registration left them behind (OdometryLag::stallScansBehind).
+    /// When bridged: the stall's scans (its repeated readings) before this one, whether
+    /// registration left them behind (OdometryLag::stallScansBehind), and whether it placed
+    /// none of them (OdometryLag::stallUnmeasured: their headings are the last motion's too).
     int stallScans = 0;
     bool stallScansBehind = false;
+    bool stallUnmeasured = false;
     /// The prediction is the odometry's own step (not the last motion: no jump, no stall, a log
     /// with odometry), so the odometry model bounds its error.
     bool odometryPredicted = false;

@@ -102,6 +102,8 @@ struct SlamStatistics {
     /// predicted as the reading (the motion since the last reading that changed) less the
     /// motion registered meanwhile (bridge_odometry_stalls)
     std::size_t odometryStallsBridged = 0;
+    /// of those, stalls whose scans no registration had placed (bridge_unplaced_stalls)
+    std::size_t odometryUnplacedStallsBridged = 0;
     /// catch-ups after readings that fell short of the registered motion (a stall within a
     /// scan interval: OdometryLag::catchesUpShortfall), predicted as the reading less the
     /// shortfall (bridge_odometry_stalls)

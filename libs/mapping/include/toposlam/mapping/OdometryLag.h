@@ -39,6 +39,9 @@
 // turned 68.8: bridged during every turn, mit-csail read by a 5.6 m laser went from 0.032 to
 // 0.046 m), and a robot that stopped and set off again reads no catch-up (bridged wherever
 // registration saw no translation, intel with every other beam went from 0.017 to 0.044 m).
+// A stall whose scans no registration placed (each kept the last motion) saw no turn either:
+// whatever turn the last motion carried on was guessed, so its catch-up is bridged and its
+// scans placed between, turned evenly too (stallUnmeasured(); bridge_unplaced_stalls).
 //
 // At a low scan rate a stall seldom spans a whole scan interval: the readings are short, not
 // zero (Bormann's lab_c toured by the stalling robot at a third of its scan rate: 0.68 m read

@@ -144,8 +144,8 @@ class OdometryLag {
                             const mrpt::poses::CPose2D& lastMotion) const;
     /// The step that `increment` (which catchesUpShortfall()) reads less the shortfall: its
     /// translation shortened by the distance the readings fell short, its heading as read less
-    /// the turn they missed where it turned farther the same way (robot frame of the last
-    /// scan, m, rad).
+    /// the turn they missed where that is more than kAgreeAngle, whichever way it turned, or
+    /// where it turned farther the same way (robot frame of the last scan, m, rad).
     mrpt::poses::CPose2D stepPastShortfall(const mrpt::poses::CPose2D& increment) const;
     /// m by which the readings since the odometry was last in step fell short of the motion
     /// registered for them.

@@ -114,8 +114,8 @@ TEST(OdometryLag, AStallNothingRegisteredIsBridgedWhateverTurnItWasGiven) {
     const CPose2D before(0.62, 0.0, mrpt::DEG2RAD(55.0)), reading(2.0, 0.3, mrpt::DEG2RAD(20.0));
     OdometryLag guessed;
     guessed.registered(before, before);
-    guessed.registered(kStill, before, /*measured=*/false);
-    EXPECT_TRUE(guessed.stallUnmeasured());
+    guessed.registered(kStill, before, /*placed=*/false);
+    EXPECT_TRUE(guessed.stallUnplaced());
     ASSERT_TRUE(guessed.bridges(reading, before));
     EXPECT_TRUE(guessed.stallScansBehind(reading));
     const CPose2D expected = (-before) + reading;
@@ -125,18 +125,18 @@ TEST(OdometryLag, AStallNothingRegisteredIsBridgedWhateverTurnItWasGiven) {
     OdometryLag seen;
     seen.registered(before, before);
     seen.registered(kStill, before);
-    EXPECT_FALSE(seen.stallUnmeasured());
+    EXPECT_FALSE(seen.stallUnplaced());
     EXPECT_FALSE(seen.bridges(reading, before));
     // One scan of the stall placed by a registration is a measurement of it.
     OdometryLag partly;
     partly.registered(before, before);
     partly.registered(kStill, before, false);
     partly.registered(kStill, before, true);
-    EXPECT_FALSE(partly.stallUnmeasured());
+    EXPECT_FALSE(partly.stallUnplaced());
     EXPECT_FALSE(partly.bridges(reading, before));
-    // Once a reading moves, no stall is left to be unmeasured.
+    // Once a reading moves, no stall is left to be unplaced.
     guessed.registered(reading, guessed.stepSinceStall(reading));
-    EXPECT_FALSE(guessed.stallUnmeasured());
+    EXPECT_FALSE(guessed.stallUnplaced());
 }
 
 TEST(OdometryLag, AScanChangesWhereTheRobotMovedNotWhereOnePersonWalked) {

@@ -117,8 +117,8 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement,
         intervals += odometryLag_.repeatedScans();
         p.stallScans = odometryLag_.repeatedScans();
         p.stallScansBehind = odometryLag_.stallScansBehind(*odometryIncrement);
-        p.stallUnmeasured = odometryLag_.stallUnmeasured();
-        stats_.odometryUnplacedStallsBridged += p.stallUnmeasured;
+        p.stallUnplaced = odometryLag_.stallUnplaced();
+        stats_.odometryUnplacedStallsBridged += p.stallUnplaced;
         catchingUp = false;
         ++stats_.odometryStallsBridged;
     } else if (shortfallBridged) {
@@ -338,8 +338,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     // taken for the motion then.
     if (prediction.odometryBridged && prediction.stallScansBehind && odometry &&
         (!prediction.odometryJumped || r.jumpBorneOut))
-        placeStalledScans(std::size_t(prediction.stallScans), *odometry,
-                          prediction.stallUnmeasured);
+        placeStalledScans(std::size_t(prediction.stallScans), *odometry, prediction.stallUnplaced);
 }
 
 void GraphSlam::placeStalledScans(std::size_t stallScans, const CPose2D& reading,

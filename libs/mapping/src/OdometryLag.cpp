@@ -99,13 +99,13 @@ bool OdometryLag::bridges(const mrpt::poses::CPose2D& increment,
     // the stall's scans, their motion is the last one carried on: no turn was seen, only
     // guessed (Bormann's lab_f toured at a third: 55 deg carried on where the robot turned 17,
     // and the catch-up, which turned 20 over both scans, was refused as a jump).
-    return sinceReading_.norm() <= kMovedDistance || stallUnmeasured() ||
+    return sinceReading_.norm() <= kMovedDistance || stallUnplaced() ||
            (turnedAsRegistered(increment) &&
             increment.norm() - sinceReading_.norm() > kAgreeDistance);
 }
 
 bool OdometryLag::stallScansBehind(const mrpt::poses::CPose2D& increment) const {
-    if (stallUnmeasured())
+    if (stallUnplaced())
         return true;  // where the last motion put them, not where anything saw them
     const double scans = repeatedScans_;
     return turnedAsRegistered(increment) &&
@@ -186,7 +186,7 @@ mrpt::poses::CPose2D OdometryLag::stepSinceStall(const mrpt::poses::CPose2D& inc
 }
 
 void OdometryLag::registered(const mrpt::poses::CPose2D& increment,
-                             const mrpt::poses::CPose2D& step, bool measured) {
+                             const mrpt::poses::CPose2D& step, bool placed) {
     if (zero(increment)) {
         shortfall_ = shortfallTurn_ = 0;  // a stall of whole scans: bridges(), catchingUp()
         shortfallAfterStall_ = false;
@@ -196,10 +196,10 @@ void OdometryLag::registered(const mrpt::poses::CPose2D& increment,
         if (repeatedScans_++ == 0) {
             movedBeforeStall_ = moved(lastStep_);
             sinceReading_ = step;
-            stallUnmeasured_ = !measured;
+            stallUnplaced_ = !placed;
         } else {
             sinceReading_ = sinceReading_ + step;
-            stallUnmeasured_ = stallUnmeasured_ && !measured;
+            stallUnplaced_ = stallUnplaced_ && !placed;
         }
     } else {
         repeatedScans_ = 0;

@@ -89,7 +89,7 @@ class GraphSlam {
     /// The last `stallScans` scans before this one, a bridged stall's that registration left
     /// behind (Prediction::stallScansBehind), placed at even steps between the scan before the
     /// stall and this one (the robot at a steady speed), each keeping its heading unless
-    /// `turnBetween` (nothing registered them: Prediction::stallUnmeasured), when their
+    /// `turnBetween` (nothing registered them: Prediction::stallUnplaced), when their
     /// headings are spread evenly over the turn too; their odometry, and this scan's, is the
     /// reading's share of each scan interval. `reading`: the odometry since the scan before the
     /// stall (its frame, m, rad). Keyframes stay.

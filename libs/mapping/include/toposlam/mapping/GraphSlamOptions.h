@@ -203,7 +203,7 @@ struct GraphSlamOptions : public config::Options {
     /// A stall whose scans no registration placed (neither ICP nor the graph matcher: each
     /// kept the last motion) is bridged like one registration saw nothing of, whatever turn
     /// the last motion carried on: the turn was guessed, not seen (OdometryLag::
-    /// stallUnmeasured). Its scans are then placed between, their headings spread over the
+    /// stallUnplaced). Its scans are then placed between, their headings spread over the
     /// turn too. Off: such a stall counts as registered, and a reading that turned otherwise
     /// than the guess is not bridged.
     bool bridgeUnplacedStalls = true;

@@ -41,7 +41,7 @@
 // registration saw no translation, intel with every other beam went from 0.017 to 0.044 m).
 // A stall whose scans no registration placed (each kept the last motion) saw no turn either:
 // whatever turn the last motion carried on was guessed, so its catch-up is bridged and its
-// scans placed between, turned evenly too (stallUnmeasured(); bridge_unplaced_stalls).
+// scans placed between, turned evenly too (stallUnplaced(); bridge_unplaced_stalls).
 //
 // At a low scan rate a stall seldom spans a whole scan interval: the readings are short, not
 // zero (Bormann's lab_c toured by the stalling robot at a third of its scan rate: 0.68 m read
@@ -125,7 +125,7 @@ class OdometryLag {
     /// followed a registered motion (a stall; not a robot that stood still), is longer, or
     /// turns farther, than `lastMotion` by more than kAgreeDistance or kAgreeAngle (a
     /// catch-up), and registration saw no translation since (at most kMovedDistance), or
-    /// placed none of the stall's scans (stallUnmeasured()), or, where the reading turned as
+    /// placed none of the stall's scans (stallUnplaced()), or, where the reading turned as
     /// registered (turnedAsRegistered()), saw a translation shorter than the reading's by more
     /// than kAgreeDistance: then stepSinceStall() is the step to predict.
     bool bridges(const mrpt::poses::CPose2D& increment,
@@ -156,14 +156,15 @@ class OdometryLag {
     /// scan, m, rad); nothing otherwise.
     std::optional<mrpt::poses::CPose2D> pastMissedTurn(const mrpt::poses::CPose2D& increment) const;
     /// After each scan with odometry: its `increment`, and the `step` registered for it (robot
-    /// frame of the last scan). A stalled scan's step adds to the backlog. `measured`: a
+    /// frame of the last scan). A stalled scan's step adds to the backlog. `placed`: a
     /// registration (ICP or the graph matcher) placed the scan; false where nothing did and
-    /// `step` is only the prediction (the last motion, in a stall).
+    /// `step` is only the prediction (the last motion, in a stall). GraphSlam passes true for
+    /// every scan with bridge_unplaced_stalls off, so that no stall counts as unplaced.
     void registered(const mrpt::poses::CPose2D& increment, const mrpt::poses::CPose2D& step,
-                    bool measured = true);
+                    bool placed = true);
     /// No registration placed any scan since the last increment that moved: the motion
     /// "registered" over the stall is the last motion carried on, no measurement at all.
-    bool stallUnmeasured() const { return repeatedScans_ > 0 && stallUnmeasured_; }
+    bool stallUnplaced() const { return repeatedScans_ > 0 && stallUnplaced_; }
     /// Scans since the last increment that moved (0 when the last one did).
     int repeatedScans() const { return repeatedScans_; }
     /// For each scan with odometry, before registration: its `increment` over the scan
@@ -182,7 +183,7 @@ class OdometryLag {
     /// For `increment` that bridges(): registration left the stall's scans behind where the
     /// reading turned as registered, the translation registered over them shorter than the
     /// reading's share of those scan intervals (of repeatedScans() + 1) by more than
-    /// kAgreeDistance; or it placed none of them (stallUnmeasured()).
+    /// kAgreeDistance; or it placed none of them (stallUnplaced()).
     bool stallScansBehind(const mrpt::poses::CPose2D& increment) const;
 
   private:
@@ -206,7 +207,7 @@ class OdometryLag {
     int repeatedScans_ = 0;
     mrpt::poses::CPose2D sinceReading_;
     bool movedBeforeStall_ = false;  ///< the scan before the repeated increments moved
-    bool stallUnmeasured_ = false;   ///< no registration placed any of those scans
+    bool stallUnplaced_ = false;     ///< no registration placed any of those scans
     mrpt::poses::CPose2D lastStep_;  ///< the last scan's registered step
     /// translationStalled(): the last increment and its interval (s), and whether it stalled.
     mrpt::poses::CPose2D lastReading_;

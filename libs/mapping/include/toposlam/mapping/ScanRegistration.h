@@ -200,10 +200,10 @@ struct Prediction {
     bool odometryBridged = false;
     /// When bridged: the stall's scans (its repeated readings) before this one, whether
     /// registration left them behind (OdometryLag::stallScansBehind), and whether it placed
-    /// none of them (OdometryLag::stallUnmeasured: their headings are the last motion's too).
+    /// none of them (OdometryLag::stallUnplaced: their headings are the last motion's too).
     int stallScans = 0;
     bool stallScansBehind = false;
-    bool stallUnmeasured = false;
+    bool stallUnplaced = false;
     /// The prediction is the odometry's own step (not the last motion: no jump, no stall, a log
     /// with odometry), so the odometry model bounds its error.
     bool odometryPredicted = false;

@@ -256,6 +256,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     stats_.odometryCatchUpsKept += r.catchUpReadingKept;
     stats_.odometryJumpReadingsKept += r.jumpReadingKept;
     stats_.icpUnsettledRefused += r.unsettledRefused;
+    stats_.icpRefutedBeyondJump += r.refutedBeyondJump;
     if (r.alongHeading) {
         stats_.alongHeadingChecks.push_back(*r.alongHeading);
         stats_.alongHeadingChecks.back().scan = stats_.scans - 1;
@@ -267,6 +268,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
             stats_.icpSecondStarts += r.secondStart && r.unsettled;  // see SlamStatistics
             stats_.icpShortOfTurn += r.shortOfTurn;
             stats_.icpShortOfTurnReplaced += r.shortOfTurn && r.secondStart;
+            stats_.icpWideTurnStarts += r.secondStart && r.wideTurn;
             stats_.icpWithoutForeground += r.withoutForeground;
             stats_.icpHeldAlongHeading += r.heldAlongHeading();
             stats_.icpHeldForFreeSpace += r.heldAlongHeading() && r.alongHeading->heldForFreeSpace;

@@ -71,6 +71,12 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "ICP that ended on little of the scan, settled or not, from a reading that turned "
            "less than the last motion, the same way, by more than the second opinion's turns "
            "reach, gets the second opinion with one more start, the last motion");
+    s.flag("second_opinion_wide_turns", secondOpinionWideTurns,
+           "where none of the second opinion's starts settled, also start ICP from the "
+           "prediction turned by +-3 and +-4 second_opinion_turn");
+    s.flag("second_opinion_refuted_beyond_jump", secondOpinionRefutedBeyondJump,
+           "the second opinion's answer is refused where ICP from one of its starts ended "
+           "beyond the jump bounds on second_opinion_margin more of the scan");
     s.real("unsettled_max_chi2", unsettledMaxChi2, "",
            "ICP that has not settled is taken only within this chi-square (3 dof) of the "
            "odometry model's step (0 = off)")

@@ -166,11 +166,13 @@ std::string formatSummary(const MappingResult& r) {
                      "odometry's own steps)";
         s += line(
             "registration: %zu by ICP (%.1f %%; %zu unsettled, %zu of them from a second start, "
-            "%zu more refused beyond the odometry's noise; "
+            "%zu more refused (%zu of them where ICP ended beyond a jump on clearly more of the "
+            "scan, the rest beyond the odometry's noise); "
             "%zu without foreground objects; %zu held at the odometry's position along the "
             "heading, %zu of them where ICP's pose saw through the submap; %zu from the reading "
             "less the turn short readings before it missed; %zu short of the last motion's turn on "
-            "little of the scan, %zu of them replaced from a second start), %zu by the "
+            "little of the scan, %zu of them replaced from a second start; %zu from a start turned "
+            "farther where no nearer one settled), %zu by the "
             "graph matcher (%.1f %%; "
             "%zu of them beyond a jump, confirmed on the submap; %zu against the last keyframe a "
             "registration placed, where odometry alone placed the last), %zu failed "
@@ -181,9 +183,10 @@ std::string formatSummary(const MappingResult& r) {
             "placed them); %zu predicted by the "
             "last motion instead of the odometry",
             st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
-            st->icpSecondStarts, st->icpUnsettledRefused, st->icpWithoutForeground,
-            st->icpHeldAlongHeading, st->icpHeldForFreeSpace, st->icpPastMissedTurn,
-            st->icpShortOfTurn, st->icpShortOfTurnReplaced, st->registeredByGraphMatcher,
+            st->icpSecondStarts, st->icpUnsettledRefused, st->icpRefutedBeyondJump,
+            st->icpWithoutForeground, st->icpHeldAlongHeading, st->icpHeldForFreeSpace,
+            st->icpPastMissedTurn, st->icpShortOfTurn, st->icpShortOfTurnReplaced,
+            st->icpWideTurnStarts, st->registeredByGraphMatcher,
             percent(st->registeredByGraphMatcher, n), st->graphMatcherConfirmed,
             st->graphMatcherFromRegisteredKeyframe, st->registrationFailed,
             percent(st->registrationFailed, n), st->matcherRefusedForeground, jumps.c_str(),
@@ -270,12 +273,14 @@ nlohmann::json summaryJson(const MappingResult& r) {
             {"icp_unsettled", st->icpUnsettled},
             {"icp_second_start", st->icpSecondStarts},
             {"icp_unsettled_refused", st->icpUnsettledRefused},
+            {"icp_refuted_beyond_jump", st->icpRefutedBeyondJump},
             {"icp_without_foreground", st->icpWithoutForeground},
             {"icp_held_along_heading", st->icpHeldAlongHeading},
             {"icp_held_for_free_space", st->icpHeldForFreeSpace},
             {"icp_past_missed_turn", st->icpPastMissedTurn},
             {"icp_short_of_turn", st->icpShortOfTurn},
             {"icp_short_of_turn_replaced", st->icpShortOfTurnReplaced},
+            {"icp_wide_turn_starts", st->icpWideTurnStarts},
             {"graph_matcher", st->registeredByGraphMatcher},
             {"graph_matcher_confirmed", st->graphMatcherConfirmed},
             {"graph_matcher_from_registered_keyframe", st->graphMatcherFromRegisteredKeyframe},

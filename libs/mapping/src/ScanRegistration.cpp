@@ -290,22 +290,6 @@ bool ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
                                      const Prediction& prediction, const Registration* matched,
                                      Registration& icp, bool fromLastMotion) {
     const Submap& submap = *prediction.submap;
-    // The last motion, the matcher's answer and four turned predictions at most.
-    constexpr std::size_t kMaxStarts = 6;
-    std::array<CPose2D, kMaxStarts> starts;
-    std::size_t count = 0;
-    // The last motion's start is judged against the jump bounds from itself, not from the
-    // reading it replaces (which missed part of the turn).
-    const std::size_t lastMotionStart = fromLastMotion ? 0 : kMaxStarts;
-    if (fromLastMotion)
-        starts[count++] = prediction.inSubmap + prediction.toLastMotion();
-    if (matched) {
-        starts[count++] = prediction.lastKeyframeInSubmap() + matched->pose;
-    }
-    if (options_.secondOpinionTurn > 0) {
-        for (const double k : {-2.0, -1.0, 1.0, 2.0})
-            starts[count++] = prediction.inSubmap + CPose2D(0, 0, k * options_.secondOpinionTurn);
-    }
     const auto onMap = [&](const CPose2D& robot) {
         return readingsOnMap(submap.map(), scan, robot + sensorOnRobot);
     };
@@ -313,20 +297,44 @@ bool ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
     std::size_t bestOn =
         onMap(icp.pose) + std::size_t(options_.secondOpinionMargin * double(scan.validCount()));
     std::optional<IcpAttempt> best;
-    std::array<CPose2D, kMaxStarts> settledEnds;  // where the starts' ICP settled
+    bool bestWide = false;                              // from the wider ring of turned starts
+    std::array<CPose2D, kMaxSecondStarts> settledEnds;  // where the starts' ICP settled
     std::size_t settledCount = 0;
-    for (std::size_t i = 0; i < count; ++i) {
-        IcpAttempt alt = icpFrom(scan, sensorOnRobot, submap, starts[i]);
+    std::size_t beyondOn = 0;  // the best fit among ends beyond the jump bounds
+    // `judgedFromItself`: the last motion's start is judged against the jump bounds from
+    // itself, not from the reading it replaces (which missed part of the turn).
+    const auto tryStart = [&](const CPose2D& start, bool judgedFromItself, bool wide) {
+        IcpAttempt alt = icpFrom(scan, sensorOnRobot, submap, start);
         if (settled(alt))
             settledEnds[settledCount++] = alt.robot;
         const std::size_t altOn = onMap(alt.robot);
-        const CPose2D& from = i == lastMotionStart ? starts[i] : prediction.inSubmap;
-        if (altOn <= bestOn ||
-            (!prediction.odometryJumped && beyondOdometryJump(options_, alt.robot - from))) {
-            continue;
+        const CPose2D& from = judgedFromItself ? start : prediction.inSubmap;
+        if (!prediction.odometryJumped && beyondOdometryJump(options_, alt.robot - from)) {
+            beyondOn = std::max(beyondOn, altOn);
+            return;
         }
+        if (altOn <= bestOn)
+            return;
         bestOn = altOn;
-        best = alt;
+        best = std::move(alt);
+        bestWide = wide;
+    };
+    // The last motion, the matcher's answer, and the prediction turned by +-1 and +-2 turns.
+    if (fromLastMotion)
+        tryStart(prediction.inSubmap + prediction.toLastMotion(), true, false);
+    if (matched)
+        tryStart(prediction.lastKeyframeInSubmap() + matched->pose, false, false);
+    if (options_.secondOpinionTurn > 0) {
+        for (const double k : {-2.0, -1.0, 1.0, 2.0})
+            tryStart(prediction.inSubmap + CPose2D(0, 0, k * options_.secondOpinionTurn), false,
+                     false);
+        // No start settled: the reading's heading is farther off than those starts reach (a
+        // short reading that missed 30 deg of a turn), and a wider ring may find the basin.
+        if (options_.secondOpinionWideTurns && settledCount == 0) {
+            for (const double k : {-4.0, -3.0, 3.0, 4.0})
+                tryStart(prediction.inSubmap + CPose2D(0, 0, k * options_.secondOpinionTurn), false,
+                         true);
+        }
     }
     if (best) {
         icp.pose = best->robot;
@@ -335,6 +343,17 @@ bool ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
         icp.covariance = edgeCovariance(best->icp.covariance, prediction.distanceFromLastKeyframe,
                                         prediction.turnFromLastKeyframe);
         icp.secondStart = true;
+        icp.wideTurn = bestWide;
+    }
+    // An end beyond the jump bounds that fits clearly better than the answer refutes it: the
+    // answer is one of several poor fits, and the scan goes to the graph matcher (a step after
+    // a turn on the spot, from a reading that missed most of it: the answer 24 deg off on 59
+    // readings, ICP from the last motion right on 341 but 0.9 m from that start).
+    const std::size_t answerOn =
+        onMap(icp.pose) + std::size_t(options_.secondOpinionMargin * double(scan.validCount()));
+    if (options_.secondOpinionRefutedBeyondJump && beyondOn > answerOn) {
+        icp.refutedBeyondJump = true;
+        return false;
     }
     // Far beyond the odometry's noise an answer counts only where some start settled.
     return !outrunsOdometry(prediction, icp.pose) ||

@@ -72,6 +72,14 @@ struct GraphSlamOptions : public config::Options {
     /// secondOpinionTurn (a reading mid-turn that fell short of it), gets the second opinion,
     /// with one more start: the last motion (ScanRegistration::shortOfTurn).
     bool shortTurnSecondOpinion = true;
+    /// Where none of the second opinion's starts settled, also start ICP from the prediction
+    /// turned by +-3 and +-4 secondOpinionTurn, with the same margin and jump bounds: a short
+    /// reading that missed 25-35 deg of a turn, which the nearer starts do not reach.
+    bool secondOpinionWideTurns = true;
+    /// The second opinion's answer is refused (the scan goes to the graph matcher) where ICP
+    /// from one of its starts ended beyond the jump bounds (odometryJump*) on
+    /// secondOpinionMargin more of the scan: the answer is one poor fit among others.
+    bool secondOpinionRefutedBeyondJump = true;
     /// The second opinion's answer (unsettled ICP from the prediction, or a second start) that
     /// corrects the odometry's step by more than this chi-square (3 dof) of the odometry model
     /// for that step (odometry_sigma_*) counts only where one of the second starts settled;

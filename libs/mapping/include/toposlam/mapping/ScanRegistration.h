@@ -19,7 +19,9 @@
 //     With second_opinion on (the default), when ICP has not settled (no convergence, and a
 //     residual over twice the recent median), it is run again from the graph matcher's answer
 //     and from the prediction turned either way, and the start that explains clearly more of
-//     the scan wins (an odometry heading off by 10-15 deg in one step of a fast turn).
+//     the scan wins (an odometry heading off by 10-15 deg in one step of a fast turn); where
+//     no such start settles, from the prediction turned farther (25-35 deg: a short reading
+//     that missed a turn the other way than the last motion's).
 //     Before that, when ICP corrected the prediction by more than foreground_check along the
 //     robot's heading, it is run again without the small objects close to the laser
 //     (ForegroundObjects.h: a person walking just ahead, whom the submap holds where the next
@@ -107,9 +109,17 @@ struct Registration {
     /// motion's turn, so second starts, one from the last motion, were tried
     /// (short_turn_second_opinion).
     bool shortOfTurn = false;
-    /// ... and no start settled where the odometry model allows (unsettled_max_chi2): the scan
+    /// The second start that replaced ICP's answer (secondStart) was one of the wider ring of
+    /// turned starts, tried where none of the nearer starts settled (second_opinion_wide_turns).
+    bool wideTurn = false;
+    /// ... and no start settled where the odometry model allows (unsettled_max_chi2), or a start
+    /// that ended beyond the jump bounds fitted clearly better (refutedBeyondJump): the scan
     /// went to the graph matcher instead.
     bool unsettledRefused = false;
+    /// The second opinion's answer was refused because ICP from one of its starts ended beyond
+    /// the jump bounds on second_opinion_margin more of the scan
+    /// (second_opinion_refuted_beyond_jump).
+    bool refutedBeyondJump = false;
     /// ICP without the scan's foreground objects (foreground_check), which took back the step.
     bool withoutForeground = false;
     /// The graph matcher's answer beyond the jump bounds, confirmed by ICP on the submap
@@ -417,10 +427,13 @@ class ScanRegistration {
     /// ICP from `prediction` ended in `icp` without settling, or short of a turn (see
     /// shortOfTurn): ICP again from the graph matcher's answer `matched` (when it has one),
     /// from the prediction turned by +-1 and +-2 second_opinion_turn and, with
-    /// `fromLastMotion`, from the robot's last motion; the end that puts at least
+    /// `fromLastMotion`, from the robot's last motion; where none of these settled, also by
+    /// +-3 and +-4 second_opinion_turn (second_opinion_wide_turns); the end that puts at least
     /// second_opinion_margin more of the scan's readings on the submap than `icp` replaces it.
     /// Returns false when the answer outruns the odometry (outrunsOdometry) and none of those
-    /// starts settled there: no answer.
+    /// starts settled there, or when a start ended beyond the jump bounds on
+    /// second_opinion_margin more of the scan than the answer (second_opinion_refuted_beyond_
+    /// jump): no answer.
     bool secondOpinion(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                        const Prediction& prediction, const Registration* matched, Registration& icp,
                        bool fromLastMotion);
@@ -557,6 +570,8 @@ class ScanRegistration {
     Prediction motionPrediction_;  ///< shifted()'s prediction
     /// jumpBetween()'s starts: at most this many intervals (a 120 deg catch-up at 15 deg).
     static constexpr int kMaxJumpIntervals = 8;
+    /// secondOpinion()'s starts at most: the last motion, the matcher's answer, eight turns.
+    static constexpr std::size_t kMaxSecondStarts = 10;
     std::array<IcpAttempt, kMaxJumpIntervals - 1> betweenAttempts_;  ///< reused
     matching::PointToLineIcp icp_;
     matching::IcpOptions icpOptions_;

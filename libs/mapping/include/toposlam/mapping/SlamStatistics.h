@@ -45,9 +45,15 @@ struct SlamStatistics {
     /// replaced (where that ICP had not settled either, it counts in icpUnsettled and
     /// icpSecondStarts too).
     std::size_t icpShortOfTurn = 0, icpShortOfTurnReplaced = 0;
+    /// Second starts (of either kind above) from the wider ring of turned starts, tried where
+    /// none of the nearer starts settled (second_opinion_wide_turns).
+    std::size_t icpWideTurnStarts = 0;
     /// Unsettled ICP refused: from no start did it settle within the odometry model's noise
     /// (unsettled_max_chi2); those scans count as registered by the graph matcher or failed.
     std::size_t icpUnsettledRefused = 0;
+    /// Of those, refused because a start ended beyond the jump bounds on clearly more of the
+    /// scan (second_opinion_refuted_beyond_jump).
+    std::size_t icpRefutedBeyondJump = 0;
     /// Of those, registered without the scan's foreground objects (foreground_check).
     std::size_t icpWithoutForeground = 0;
     /// Of those, kept at the odometry's position along the heading (along_heading_check).

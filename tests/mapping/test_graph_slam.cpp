@@ -1588,10 +1588,9 @@ TEST(GraphSlam, IcpShortOfATurnOnLittleOfTheScanIsTriedFromTheLastMotion) {
     // 0.007 m, from the reading turned by 34 deg: it is left out to test this rule.)
     // Measured 0.007 m on.
     TOPOSLAM_SHARED_DATA_OR_SKIP(plan, "rooms/lab_b_scan_furnitures.png");
-    expectRuleMendsStallingPlanAtAThird(plan, 8, "short_turn_second_opinion",
-                                        &mapping::SlamStatistics::icpShortOfTurnReplaced, 2.0, 20,
-                                        "the scenario no longer shows the heading kept",
-                                        {"second_opinion_wide_turns"});
+    expectRuleMendsStallingPlanAtAThird(
+        plan, 8, "short_turn_second_opinion", &mapping::SlamStatistics::icpShortOfTurnReplaced, 2.0,
+        20, "the scenario no longer shows the heading kept", {"second_opinion_wide_turns"});
 }
 
 TEST(GraphSlam, AReadingThatMissedATurnTheOtherWayIsTriedFromFartherTurnedStarts) {

@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <optional>
 #include <utility>
 
@@ -294,8 +295,8 @@ bool ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
         return readingsOnMap(submap.map(), scan, robot + sensorOnRobot);
     };
     // A clear margin: along a corridor a shifted start explains nearly as much as the right one.
-    std::size_t bestOn =
-        onMap(icp.pose) + std::size_t(options_.secondOpinionMargin * double(scan.validCount()));
+    const auto margin = std::size_t(options_.secondOpinionMargin * double(scan.validCount()));
+    std::size_t bestOn = onMap(icp.pose) + margin;
     std::optional<IcpAttempt> best;
     bool bestWide = false;                              // from the wider ring of turned starts
     std::array<CPose2D, kMaxSecondStarts> settledEnds;  // where the starts' ICP settled
@@ -324,17 +325,17 @@ bool ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
         tryStart(prediction.inSubmap + prediction.toLastMotion(), true, false);
     if (matched)
         tryStart(prediction.lastKeyframeInSubmap() + matched->pose, false, false);
-    if (options_.secondOpinionTurn > 0) {
-        for (const double k : {-2.0, -1.0, 1.0, 2.0})
+    const auto tryTurns = [&](std::initializer_list<double> turns, bool wide) {
+        for (const double k : turns)
             tryStart(prediction.inSubmap + CPose2D(0, 0, k * options_.secondOpinionTurn), false,
-                     false);
+                     wide);
+    };
+    if (options_.secondOpinionTurn > 0) {
+        tryTurns({-2.0, -1.0, 1.0, 2.0}, false);
         // No start settled: the reading's heading is farther off than those starts reach (a
         // short reading that missed 30 deg of a turn), and a wider ring may find the basin.
-        if (options_.secondOpinionWideTurns && settledCount == 0) {
-            for (const double k : {-4.0, -3.0, 3.0, 4.0})
-                tryStart(prediction.inSubmap + CPose2D(0, 0, k * options_.secondOpinionTurn), false,
-                         true);
-        }
+        if (options_.secondOpinionWideTurns && settledCount == 0)
+            tryTurns({-4.0, -3.0, 3.0, 4.0}, true);
     }
     if (best) {
         icp.pose = best->robot;
@@ -349,8 +350,8 @@ bool ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
     // answer is one of several poor fits, and the scan goes to the graph matcher (a step after
     // a turn on the spot, from a reading that missed most of it: the answer 24 deg off on 59
     // readings, ICP from the last motion right on 341 but 0.9 m from that start).
-    const std::size_t answerOn =
-        onMap(icp.pose) + std::size_t(options_.secondOpinionMargin * double(scan.validCount()));
+    // (bestOn is the answer's fit, with the margin until a start replaced it.)
+    const std::size_t answerOn = best ? bestOn + margin : bestOn;
     if (options_.secondOpinionRefutedBeyondJump && beyondOn > answerOn) {
         icp.refutedBeyondJump = true;
         return false;

@@ -21,7 +21,8 @@
 //     and from the prediction turned either way, and the start that explains clearly more of
 //     the scan wins (an odometry heading off by 10-15 deg in one step of a fast turn); where
 //     no such start settles, from the prediction turned farther (25-35 deg: a short reading
-//     that missed a turn the other way than the last motion's).
+//     that missed a turn the other way than the last motion's); and where a start ends beyond
+//     the jump bounds on clearly more of the scan than the answer, the answer is refused.
 //     Before that, when ICP corrected the prediction by more than foreground_check along the
 //     robot's heading, it is run again without the small objects close to the laser
 //     (ForegroundObjects.h: a person walking just ahead, whom the submap holds where the next
@@ -568,10 +569,10 @@ class ScanRegistration {
         return jumpsForOdometry_ >= kJumpPriorCases && jumpsForOdometry_ > 2 * jumpsForLastMotion_;
     }
     Prediction motionPrediction_;  ///< shifted()'s prediction
-    /// jumpBetween()'s starts: at most this many intervals (a 120 deg catch-up at 15 deg).
-    static constexpr int kMaxJumpIntervals = 8;
     /// secondOpinion()'s starts at most: the last motion, the matcher's answer, eight turns.
     static constexpr std::size_t kMaxSecondStarts = 10;
+    /// jumpBetween()'s starts: at most this many intervals (a 120 deg catch-up at 15 deg).
+    static constexpr int kMaxJumpIntervals = 8;
     std::array<IcpAttempt, kMaxJumpIntervals - 1> betweenAttempts_;  ///< reused
     matching::PointToLineIcp icp_;
     matching::IcpOptions icpOptions_;

@@ -28,16 +28,6 @@ EdgeKind edgeKind(RegistrationMethod m) {
     return EdgeKind::Odometry;
 }
 
-matching::LineMapOptions lineMapOptions(const GraphSlamOptions& o) {
-    matching::LineMapOptions m;
-    m.resolution = o.mapResolution;
-    m.radius = o.icpMaxDistance;
-    m.fuseDistance = o.mapFuseDistance;
-    m.confirmDistance = o.mapConfirmDistance;
-    m.maxRange = o.mapMaxRange;
-    m.carveMargin = o.freeSpaceCarving ? kSeenThroughMargin : 0.0;
-    return m;
-}
 }  // namespace
 
 GraphSlam::GraphSlam(const GraphSlamOptions& options,
@@ -379,7 +369,7 @@ void GraphSlam::addKeyframe(const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
     kf.scanIndex = scans_.size();
     kf.scan = scan;
     kf.fieldOfView = std::abs(polar_.bearingStep()) * double(polar_.size());
-    matching::LineMapOptions surface = lineMapOptions(options_);
+    matching::LineMapOptions surface = options_.lineMapOptions();
     surface.maxRange = mapRange(polar_, options_);
     matching::surfacePoints(polar_, surface, kf.surface);
     kf.sensorOnRobot = CPose2D(scan->sensorPose);
@@ -490,7 +480,7 @@ void GraphSlam::addKeyframeEdges(const Registration& r, Keyframe& kf) {
 void GraphSlam::updateSubmaps(const Keyframe& kf) {
     const std::size_t perSubmap = std::max<std::size_t>(2, options_.submapKeyframes);
     if (submaps_.empty()) {
-        submaps_.emplace_back(kf.id, lineMapOptions(options_));
+        submaps_.emplace_back(kf.id, options_.lineMapOptions());
         submaps_.back().insert(kf, CPose2D());
         stats_.submaps = 1;
         return;
@@ -511,7 +501,7 @@ void GraphSlam::updateSubmaps(const Keyframe& kf) {
             submaps_.emplace_back(kf.id, std::move(*spareLineMap_));
             spareLineMap_.reset();
         } else {
-            submaps_.emplace_back(kf.id, lineMapOptions(options_));
+            submaps_.emplace_back(kf.id, options_.lineMapOptions());
         }
         submaps_.back().insert(kf, CPose2D());
         stats_.submaps = submaps_.size();

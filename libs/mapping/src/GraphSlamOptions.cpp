@@ -1,11 +1,37 @@
 #include <toposlam/features/FeatureExtractor.h>
 #include <toposlam/mapping/GraphSlamOptions.h>
 
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace toposlam::mapping {
+
+matching::LineMapOptions GraphSlamOptions::lineMapOptions() const {
+    matching::LineMapOptions m;
+    m.resolution = mapResolution;
+    m.radius = icpMaxDistance;
+    m.fuseDistance = mapFuseDistance;
+    m.confirmDistance = mapConfirmDistance;
+    m.maxRange = mapMaxRange;
+    m.carveMargin = freeSpaceCarving ? kSeenThroughMargin : 0.0;
+    return m;
+}
+
+matching::IcpOptions GraphSlamOptions::icpOptions() const {
+    matching::IcpOptions icp;
+    icp.maxIterations = icpMaxIterations;
+    icp.maxDistance = icpMaxDistance;
+    icp.robustScale = icpRobustScale;
+    icp.stride = icpStride;
+    icp.minMapViews = static_cast<std::uint32_t>(icpMinViews);
+    icp.skipMovedMapPoints = freeSpaceCarving;
+    icp.maxIncidence = icpMaxIncidence;
+    icp.translationTolerance = 1e-4;
+    icp.rotationTolerance = 1e-5;
+    return icp;
+}
 
 void GraphSlamOptions::declare(config::OptionsSchema& s) {
     declareFrontEnd(s);

@@ -91,18 +91,9 @@ Prediction Prediction::fromRegistered() const {
 
 ScanRegistration::ScanRegistration(const GraphSlamOptions& options,
                                    const matching::GraphMatcherOptions& matcherOptions)
-    : options_(options), matcher_(matcherOptions) {
+    : options_(options), icpOptions_(options.icpOptions()), matcher_(matcherOptions) {
     foregroundOptions_.maxRange = options.foregroundMaxRange;
     foregroundOptions_.maxWidth = options.foregroundMaxWidth;
-    icpOptions_.maxIterations = options.icpMaxIterations;
-    icpOptions_.maxDistance = options.icpMaxDistance;
-    icpOptions_.robustScale = options.icpRobustScale;
-    icpOptions_.stride = options.icpStride;
-    icpOptions_.minMapViews = static_cast<std::uint32_t>(options.icpMinViews);
-    icpOptions_.skipMovedMapPoints = options.freeSpaceCarving;
-    icpOptions_.maxIncidence = options.icpMaxIncidence;
-    icpOptions_.translationTolerance = 1e-4;
-    icpOptions_.rotationTolerance = 1e-5;
 }
 
 CMatrixDouble33 ScanRegistration::odometryCovariance(double distance, double turn) const {

@@ -4,6 +4,8 @@
 // (keys ending in _deg), radians in code. Loading is strict (config/Options.h).
 #include <toposlam/config/Options.h>
 #include <toposlam/mapping/OdometryCalibration.h>
+#include <toposlam/matching/LineMap.h>
+#include <toposlam/matching/PointToLineIcp.h>
 
 #include <cmath>
 #include <cstddef>
@@ -331,6 +333,11 @@ struct GraphSlamOptions : public config::Options {
     std::string extractor = "corners";
 
     void declare(config::OptionsSchema& s) override;
+
+    /// The line map every submap keeps (mapping::Submap), from these settings.
+    matching::LineMapOptions lineMapOptions() const;
+    /// ICP of a scan on a submap (ScanRegistration), from these settings.
+    matching::IcpOptions icpOptions() const;
 
   private:
     void declareFrontEnd(config::OptionsSchema& s);

@@ -24,7 +24,8 @@ long floorDiv(long a, long b) {
 LineMap::LineMap(const LineMapOptions& options)
     : options_(options),
       inverseResolution_(1.0 / options.resolution),
-      stampRadius_(long(std::ceil(options.radius / options.resolution))) {}
+      stampRadius_(long(std::ceil(options.radius / options.resolution))),
+      columnDx2_(std::size_t(2 * stampRadius_ + 1)) {}
 
 void LineMap::clear() {
     points_.clear();
@@ -188,26 +189,35 @@ void LineMap::stamp(std::uint32_t i) {
     const long px = long(std::floor((p.x - latticeX_) * inverseResolution_)) - firstCellX_;
     const long py = long(std::floor((p.y - latticeY_) * inverseResolution_)) - firstCellY_;
     const float r2 = float(options_.radius * options_.radius);
-    const long xBegin = px - stampRadius_, xEnd = px + stampRadius_ + 1;
-    // Offsets of the first column's centre, stepped by one cell along the row (no per-cell
-    // conversions: this runs for every cell around every new map point).
-    const float dxBegin =
-        float(latticeX_ + (double(firstCellX_ + xBegin) + 0.5) * options_.resolution) - p.x;
+    const long xBegin = px - stampRadius_;
+    // The squared offsets of the stamp's columns from the point, once per point rather than
+    // once per row: the first column's centre, stepped by one cell along the row. They fall,
+    // then rise, so the cells of a row within radius are one run of columns.
+    float dx = float(latticeX_ + (double(firstCellX_ + xBegin) + 0.5) * options_.resolution) - p.x;
+    for (float& dx2 : columnDx2_) {
+        dx2 = dx * dx;
+        dx += res;
+    }
+    const long columns = long(columnDx2_.size());
     for (long cy = py - stampRadius_; cy <= py + stampRadius_; ++cy) {
         const float dy =
             float(latticeY_ + (double(firstCellY_ + cy) + 0.5) * options_.resolution) - p.y;
         const float dy2 = dy * dy;
-        if (dy2 > r2)
-            continue;  // no cell of this row is within radius: make no tile for it
-        float dx = dxBegin;
-        for (long cx = xBegin; cx < xEnd;) {
-            // The run of this row inside one tile.
-            const long tx = cx / kTile, runEnd = std::min(xEnd, (tx + 1) * kTile);
+        long first = 0, last = columns - 1;
+        while (first <= last && columnDx2_[std::size_t(first)] + dy2 > r2)
+            ++first;
+        while (last >= first && columnDx2_[std::size_t(last)] + dy2 > r2)
+            --last;
+        // Columns xBegin + [first, last]: the run within radius (none: this row makes no tile).
+        for (long cx = xBegin + first, end = xBegin + last + 1; cx < end;) {
+            // The part of the run inside one tile.
+            const long tx = cx / kTile, runEnd = std::min(end, (tx + 1) * kTile);
             Cell* row = tileAt(tx, cy / kTile) + (cy % kTile) * kTile;
-            for (; cx < runEnd; ++cx, dx += res) {
-                const float d2 = dx * dx + dy2;
+            for (; cx < runEnd; ++cx) {
+                // An empty cell's distance is infinite: the nearer point takes the cell.
+                const float d2 = columnDx2_[std::size_t(cx - xBegin)] + dy2;
                 Cell& cell = row[cx - tx * kTile];
-                if (d2 <= r2 && (cell.point == kNone || d2 < cell.distance2))
+                if (d2 < cell.distance2)
                     cell = {i, d2};
             }
         }

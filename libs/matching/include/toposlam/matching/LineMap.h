@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace toposlam::matching {
@@ -128,7 +129,8 @@ class LineMap {
     static constexpr std::size_t kTileCells = std::size_t(kTile * kTile);
     struct Cell {
         std::uint32_t point = kNone;
-        float distance2 = 0;  ///< squared distance of that point to the cell centre
+        /// Squared distance of that point to the cell centre (m^2); infinite when there is none.
+        float distance2 = std::numeric_limits<float>::infinity();
     };
     /// Makes the tile directory cover the box [minX, maxX] x [minY, maxY] +- radius (tiles
     /// themselves are made when a point is stamped into them).
@@ -155,7 +157,8 @@ class LineMap {
     double latticeX_ = 0, latticeY_ = 0;
     long firstCellX_ = 0, firstCellY_ = 0;
     double inverseResolution_ = 20;
-    long stampRadius_ = 8;  ///< radius in cells
+    long stampRadius_ = 8;          ///< radius in cells
+    std::vector<float> columnDx2_;  ///< stamp()'s scratch: squared x offsets of its columns (m^2)
     std::uint32_t scans_ = 0;
 };
 

@@ -2,6 +2,7 @@
 // to the part most of its readings lie on.
 #include <gtest/gtest.h>
 #include <toposlam/mapping/Submap.h>
+#include <toposlam/matching/PointToLineIcp.h>
 
 #include <cmath>
 #include <limits>
@@ -62,6 +63,32 @@ TEST(Submap, AScanIsTiedToThePartItsReadingsLieOn) {
     submap.insert(keyframeOf(3, wallAhead, false), mrpt::poses::CPose2D());
     submap.insert(keyframeOf(4, both, true), mrpt::poses::CPose2D());
     EXPECT_EQ(submap.partHolding(wallLeft, mrpt::poses::CPose2D(), 0.05), 4u);
+}
+
+TEST(Submap, CountsReadingsOnTheMapBeforeItsNewestPart) {
+    // The anchor saw the wall ahead; keyframe 4, placed by odometry alone, both walls. A scan of
+    // both lies on the whole map, but before keyframe 4's part nearly only on the wall ahead (a
+    // reading counts for the part of its nearest map point: keyframe 4 added a few points of
+    // the wall ahead beside the anchor's).
+    const matching::PolarScan wallAhead = scanOfWalls(true, false);
+    const matching::PolarScan wallLeft = scanOfWalls(false, true);
+    const matching::PolarScan both = scanOfWalls(true, true);
+    const mrpt::poses::CPose2D origin;
+    const auto onWholeMap = [](const Submap& s, const matching::PolarScan& scan) {
+        return matching::PointToLineIcp::countOnMap(s.map(), scan, mrpt::poses::CPose2D(), 0.05);
+    };
+    Submap submap(3, matching::LineMapOptions());
+    submap.insert(keyframeOf(3, wallAhead, false), origin);
+    const std::size_t ahead = onWholeMap(submap, wallAhead);
+    ASSERT_GT(ahead, 30u);
+    EXPECT_EQ(submap.readingsBeforeNewestPart(both, origin, 0.05), onWholeMap(submap, both))
+        << "one part: the whole map counts";
+    submap.insert(keyframeOf(4, both, true), origin);
+    const std::size_t before = submap.readingsBeforeNewestPart(both, origin, 0.05);
+    EXPECT_GT(before, ahead / 2);
+    EXPECT_LT(before + 30, onWholeMap(submap, both)) << "the left wall is keyframe 4's";
+    EXPECT_LT(submap.readingsBeforeNewestPart(wallLeft, origin, 0.05),
+              onWholeMap(submap, wallLeft) / 10);
 }
 
 TEST(Submap, KeyframesPlacedByRegistrationAndTheAnchorStartNoPart) {

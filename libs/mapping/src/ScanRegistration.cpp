@@ -285,6 +285,12 @@ bool ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
     const auto onMap = [&](const CPose2D& robot) {
         return readingsOnMap(submap.map(), scan, robot + sensorOnRobot);
     };
+    // The refutation below weighs fits on the submap before its newest part only: a keyframe
+    // placed by odometry alone may be far off, and a start that fits the copy of the place it
+    // added (turned with it) refutes nothing.
+    const auto onRegisteredMap = [&](const CPose2D& robot) {
+        return submap.readingsBeforeNewestPart(scan, robot + sensorOnRobot, kFitDistance);
+    };
     // A clear margin: along a corridor a shifted start explains nearly as much as the right one.
     const auto margin = std::size_t(options_.secondOpinionMargin * double(scan.validCount()));
     std::size_t bestOn = onMap(icp.pose) + margin;
@@ -302,7 +308,7 @@ bool ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
         const std::size_t altOn = onMap(alt.robot);
         const CPose2D& from = judgedFromItself ? start : prediction.inSubmap;
         if (!prediction.odometryJumped && beyondOdometryJump(options_, alt.robot - from)) {
-            beyondOn = std::max(beyondOn, altOn);
+            beyondOn = std::max(beyondOn, onRegisteredMap(alt.robot));
             return;
         }
         if (altOn <= bestOn)
@@ -341,9 +347,7 @@ bool ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
     // answer is one of several poor fits, and the scan goes to the graph matcher (a step after
     // a turn on the spot, from a reading that missed most of it: the answer 24 deg off on 59
     // readings, ICP from the last motion right on 341 but 0.9 m from that start).
-    // (bestOn is the answer's fit, with the margin until a start replaced it.)
-    const std::size_t answerOn = best ? bestOn + margin : bestOn;
-    if (options_.secondOpinionRefutedBeyondJump && beyondOn > answerOn) {
+    if (options_.secondOpinionRefutedBeyondJump && beyondOn > onRegisteredMap(icp.pose) + margin) {
         icp.refutedBeyondJump = true;
         return false;
     }

@@ -1,6 +1,7 @@
 #include <toposlam/mapping/Submap.h>
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 namespace toposlam::mapping {
@@ -57,6 +58,18 @@ std::size_t Submap::partHolding(const matching::PolarScan& scan, const mrpt::pos
         std::size_t(std::max_element(readingsPerPart_.begin(), readingsPerPart_.end()) -
                     readingsPerPart_.begin());
     return most == 0 ? anchor_ : parts_[most - 1].keyframe;
+}
+
+std::size_t Submap::readingsBeforeNewestPart(const matching::PolarScan& scan,
+                                             const mrpt::poses::CPose2D& sensor,
+                                             double distance) const {
+    const std::uint32_t newest =
+        parts_.empty() ? std::numeric_limits<std::uint32_t>::max() : parts_.back().firstScan;
+    std::size_t on = 0;
+    matching::forEachReadingOnSurface(
+        map_, scan, sensor, distance,
+        [&](const matching::LineMapPoint& m) { on += m.firstScan < newest ? 1 : 0; });
+    return on;
 }
 
 void Submap::clear() {

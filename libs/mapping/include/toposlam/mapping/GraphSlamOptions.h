@@ -80,7 +80,9 @@ struct GraphSlamOptions : public config::Options {
     bool secondOpinionWideTurns = true;
     /// The second opinion's answer is refused (the scan goes to the graph matcher) where ICP
     /// from one of its starts ended beyond the jump bounds (odometryJump*) on
-    /// secondOpinionMargin more of the scan: the answer is one poor fit among others.
+    /// secondOpinionMargin more of the scan: the answer is one poor fit among others. Both fits
+    /// are counted on the submap before its newest part: a keyframe placed by odometry alone
+    /// starts one, and the copy of the place it adds is turned with its error.
     bool secondOpinionRefutedBeyondJump = true;
     /// The second opinion's answer (unsettled ICP from the prediction, or a second start) that
     /// corrects the odometry's step by more than this chi-square (3 dof) of the odometry model

@@ -434,7 +434,8 @@ class ScanRegistration {
     /// Returns false when the answer outruns the odometry (outrunsOdometry) and none of those
     /// starts settled there, or when a start ended beyond the jump bounds on
     /// second_opinion_margin more of the scan than the answer (second_opinion_refuted_beyond_
-    /// jump): no answer.
+    /// jump; both counted on the submap before its newest part, Submap::readingsBeforeNewestPart):
+    /// no answer.
     bool secondOpinion(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                        const Prediction& prediction, const Registration* matched, Registration& icp,
                        bool fromLastMotion);

@@ -53,6 +53,12 @@ class Submap {
     /// none lies on it.
     std::size_t partHolding(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensor,
                             double distance) const;
+    /// Readings of `scan` at SENSOR pose `sensor` (submap frame) within `distance` (m) of the
+    /// surface, counting only the map points of the parts before the newest one (all of them
+    /// when the submap has one part): what a scan fits beyond the last keyframe placed by
+    /// odometry alone and what later keyframes added on it, which may be as far off as it.
+    std::size_t readingsBeforeNewestPart(const matching::PolarScan& scan,
+                                         const mrpt::poses::CPose2D& sensor, double distance) const;
     /// Empties the line map (for a rebuild: insert the keyframes again); keeps nothing.
     void clear();
     /// Gives up the line map, returned for a new submap to reuse; the keyframe list stays.

@@ -12,11 +12,11 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/obs/carmen_log_tools.h>
 #include <mrpt/system/datetime.h>
+#include <toposlam/cli/CommandLine.h>
 #include <toposlam/io/LaserLogReader.h>
 #include <toposlam/io/LogConversion.h>
 #include <unistd.h>
 
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -83,16 +83,7 @@ void mrptRawlog(benchmark::State& state, const std::string& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string data = TOPOSLAM_SHARED_DATA_DIR;
-    for (int i = 1; i + 1 < argc; ++i) {
-        if (std::strcmp(argv[i], "--data") == 0) {
-            data = argv[i + 1];
-            for (int k = i; k + 2 < argc + 1; ++k)
-                argv[k] = argv[k + 2];
-            argc -= 2;
-            break;
-        }
-    }
+    const std::string data = cli::takeOption(argc, argv, "--data", TOPOSLAM_SHARED_DATA_DIR);
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv))
         return 2;  // bad usage, as every TopoSLAM app

@@ -5,6 +5,7 @@
 // counter cpu_ms_per_map is B4's "time per Bormann map" (CPU time of the calling thread).
 // Data: --data <dir> (default ../shared/data/rooms); without it, nothing is timed.
 #include <benchmark/benchmark.h>
+#include <toposlam/cli/CommandLine.h>
 #include <toposlam/cli/ImageMemoryReuse.h>
 #include <toposlam/io/CpuTime.h>
 #include <toposlam/io/InputError.h>
@@ -79,20 +80,6 @@ void segmentAll(benchmark::State& state, const rooms::RoomSegmenter* segmenter,
         state.counters["ms_" + counterName(stage)] = ms / runs;
 }
 
-// Removes "--data <dir>" from argv; the folder, or the default.
-std::string takeDataOption(int& argc, char** argv) {
-    std::string data = std::string(TOPOSLAM_SHARED_DATA_DIR) + "/rooms";
-    for (int i = 1; i + 1 < argc; ++i) {
-        if (std::strcmp(argv[i], "--data") == 0) {
-            data = argv[i + 1];
-            std::copy(argv + i + 2, argv + argc, argv + i);
-            argc -= 2;
-            break;
-        }
-    }
-    return data;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -103,7 +90,8 @@ int main(int argc, char** argv) {
         std::cout << kHelp;
         return 0;
     }
-    const std::string data = takeDataOption(argc, argv);
+    const std::string data =
+        cli::takeOption(argc, argv, "--data", std::string(TOPOSLAM_SHARED_DATA_DIR) + "/rooms");
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv))
         return 2;  // bad usage, as every TopoSLAM app

@@ -12,6 +12,7 @@
 // slam/intel.clf, slam/fr079.clf and rawlog/simul.rawlog, the first 3000 scans of each.
 #include <benchmark/benchmark.h>
 #include <mrpt/config/CConfigFile.h>
+#include <toposlam/cli/CommandLine.h>
 #include <toposlam/io/InputError.h>
 #include <toposlam/io/LaserLogReader.h>
 #include <toposlam/mapping/GraphSlamOptions.h>
@@ -124,19 +125,6 @@ void icp(benchmark::State& state, const SubmapLog* log, const mapping::GraphSlam
     state.counters["iterations"] = iterations / (scans * static_cast<double>(state.iterations()));
 }
 
-// Removes "<flag> <value>" from argv; the value, or `fallback`.
-std::string takeOption(int& argc, char** argv, const char* flag, std::string fallback) {
-    for (int i = 1; i + 1 < argc; ++i) {
-        if (std::strcmp(argv[i], flag) == 0) {
-            fallback = argv[i + 1];
-            std::copy(argv + i + 2, argv + argc, argv + i);
-            argc -= 2;
-            break;
-        }
-    }
-    return fallback;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -146,9 +134,9 @@ int main(int argc, char** argv) {
         std::cout << kHelp;
         return 0;
     }
-    const std::string data = takeOption(argc, argv, "--data", TOPOSLAM_SHARED_DATA_DIR);
+    const std::string data = cli::takeOption(argc, argv, "--data", TOPOSLAM_SHARED_DATA_DIR);
     const std::string ini =
-        takeOption(argc, argv, "-c", TOPOSLAM_SOURCE_DIR "/config_ini/toposlam-slam.ini");
+        cli::takeOption(argc, argv, "-c", TOPOSLAM_SOURCE_DIR "/config_ini/toposlam-slam.ini");
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv))
         return 2;  // bad usage, as every TopoSLAM app

@@ -112,6 +112,18 @@ std::vector<double> parseNumberList(const std::string& text, std::size_t count,
     return values;
 }
 
+std::string takeOption(int& argc, char** argv, const std::string& flag, std::string fallback) {
+    for (int i = 1; i + 1 < argc; ++i) {
+        if (flag == argv[i]) {
+            fallback = argv[i + 1];
+            std::copy(argv + i + 2, argv + argc, argv + i);
+            argc -= 2;
+            break;
+        }
+    }
+    return fallback;
+}
+
 std::vector<std::string> splitList(const std::string& text) {
     std::vector<std::string> items;
     std::stringstream in(text);

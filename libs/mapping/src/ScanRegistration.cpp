@@ -305,12 +305,12 @@ bool ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
         IcpAttempt alt = icpFrom(scan, sensorOnRobot, submap, start);
         if (settled(alt))
             settledEnds[settledCount++] = alt.robot;
-        const std::size_t altOn = onMap(alt.robot);
         const CPose2D& from = judgedFromItself ? start : prediction.inSubmap;
         if (!prediction.odometryJumped && beyondOdometryJump(options_, alt.robot - from)) {
             beyondOn = std::max(beyondOn, onRegisteredMap(alt.robot));
             return;
         }
+        const std::size_t altOn = onMap(alt.robot);
         if (altOn <= bestOn)
             return;
         bestOn = altOn;

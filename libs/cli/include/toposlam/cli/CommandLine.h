@@ -26,6 +26,11 @@ std::vector<double> parseNumberList(
     const std::string& text, std::size_t count, const std::string& option,
     const NumberRange<double>& range = NumberRange<double>::closed(-1e6, 1e6));
 
+/// Takes "<flag> <value>" out of argv (the first such pair; argc shrinks by two) and returns
+/// the value, or `fallback` when the flag is not there: an app's own option, before the rest of
+/// the command line goes to a parser of its own (Google Benchmark's).
+std::string takeOption(int& argc, char** argv, const std::string& flag, std::string fallback);
+
 /// "a,b,,c" -> {"a", "b", "c"}: the items of a comma-separated list option, empty ones left out.
 std::vector<std::string> splitList(const std::string& text);
 

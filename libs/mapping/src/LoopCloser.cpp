@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
+#include <iterator>
 
 namespace toposlam::mapping {
 
@@ -51,22 +53,30 @@ std::vector<std::size_t> LoopCloser::gatedCandidates(std::size_t current, std::s
                                                      const std::vector<Keyframe>& keyframes,
                                                      const PoseGraph& graph) {
     const CPose2D& here = graph.pose(current);
+    // Nearest first, as a heap: the gate usually fills from the few nearest, while the older
+    // keyframes, and a full sort of them at every new one, grow with the log. Squared distances
+    // order them as the distances do.
     std::vector<std::pair<double, std::size_t>>& near = nearFirst_;
     near.clear();
     for (std::size_t j = 0; j < firstActive && j < current; ++j) {
-        if (keyframes[current].travelled - keyframes[j].travelled < options_.loopMinTravel ||
-            !viewsOverlap(keyframes[j], keyframes[current], graph))
+        if (keyframes[current].travelled - keyframes[j].travelled < options_.loopMinTravel)
             continue;
-        near.push_back({std::hypot(graph.pose(j).x() - here.x(), graph.pose(j).y() - here.y()), j});
+        const double dx = graph.pose(j).x() - here.x(), dy = graph.pose(j).y() - here.y();
+        near.push_back({dx * dx + dy * dy, j});
     }
-    std::sort(near.begin(), near.end());
-    // Nearest first, spread out so that look-alike places in the gate get tried as well. The
-    // path uncertainty is searched only as far as the keyframes looked at (PathUncertainty).
+    const auto nearer = std::greater<std::pair<double, std::size_t>>();
+    std::make_heap(near.begin(), near.end(), nearer);
+    // Spread out so that look-alike places in the gate get tried as well. The path uncertainty
+    // is searched only as far as the keyframes looked at (PathUncertainty).
     uncertainty_.start(graph, current);
     std::vector<std::size_t> chosen;
-    for (const auto& [d, j] : near) {
-        if (chosen.size() >= options_.loopMaxCandidates)
-            break;
+    for (auto end = near.end(); end != near.begin() && chosen.size() < options_.loopMaxCandidates;
+         --end) {
+        std::pop_heap(near.begin(), end, nearer);
+        const std::size_t j = std::prev(end)->second;
+        if (!viewsOverlap(keyframes[j], keyframes[current], graph))
+            continue;
+        const double d = std::hypot(graph.pose(j).x() - here.x(), graph.pose(j).y() - here.y());
         const PathVariance& v = uncertainty_.to(j);
         if (!v.reached ||
             d > options_.loopOverlapDistance + options_.loopGateSigmas * std::sqrt(v.at(d)))

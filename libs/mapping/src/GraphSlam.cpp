@@ -259,6 +259,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
             stats_.icpShortOfTurn += r.shortOfTurn;
             stats_.icpShortOfTurnReplaced += r.shortOfTurn && r.secondStart;
             stats_.icpWideTurnStarts += r.secondStart && r.wideTurn;
+            stats_.icpOutfittedMatcher += r.outfitsMatcher;
             stats_.icpWithoutForeground += r.withoutForeground;
             stats_.icpHeldAlongHeading += r.heldAlongHeading();
             stats_.icpHeldForFreeSpace += r.heldAlongHeading() && r.alongHeading->heldForFreeSpace;

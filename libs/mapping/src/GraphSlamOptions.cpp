@@ -103,6 +103,10 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
     s.flag("second_opinion_refuted_beyond_jump", secondOpinionRefutedBeyondJump,
            "the second opinion's answer is refused where ICP from one of its starts ended "
            "beyond the jump bounds on second_opinion_margin more of the scan");
+    s.flag("matcher_second_opinion", matcherSecondOpinion,
+           "where ICP from the prediction failed and the graph matcher answers, ICP from the "
+           "prediction turned by +-1 and +-2 second_opinion_turn that fits second_opinion_margin "
+           "more of the scan replaces the answer");
     s.real("unsettled_max_chi2", unsettledMaxChi2, "",
            "ICP that has not settled is taken only within this chi-square (3 dof) of the "
            "odometry model's step (0 = off)")

@@ -172,7 +172,8 @@ std::string formatSummary(const MappingResult& r) {
             "heading, %zu of them where ICP's pose saw through the submap; %zu from the reading "
             "less the turn short readings before it missed; %zu short of the last motion's turn on "
             "little of the scan, %zu of them replaced from a second start; %zu from a start turned "
-            "farther where no nearer one settled), %zu by the "
+            "farther where no nearer one settled; %zu from a turned start that fitted clearly "
+            "more of the scan than the graph matcher's answer after ICP failed), %zu by the "
             "graph matcher (%.1f %%; "
             "%zu of them beyond a jump, confirmed on the submap; %zu against the last keyframe a "
             "registration placed, where odometry alone placed the last), %zu failed "
@@ -186,7 +187,7 @@ std::string formatSummary(const MappingResult& r) {
             st->icpSecondStarts, st->icpUnsettledRefused, st->icpRefutedBeyondJump,
             st->icpWithoutForeground, st->icpHeldAlongHeading, st->icpHeldForFreeSpace,
             st->icpPastMissedTurn, st->icpShortOfTurn, st->icpShortOfTurnReplaced,
-            st->icpWideTurnStarts, st->registeredByGraphMatcher,
+            st->icpWideTurnStarts, st->icpOutfittedMatcher, st->registeredByGraphMatcher,
             percent(st->registeredByGraphMatcher, n), st->graphMatcherConfirmed,
             st->graphMatcherFromRegisteredKeyframe, st->registrationFailed,
             percent(st->registrationFailed, n), st->matcherRefusedForeground, jumps.c_str(),
@@ -281,6 +282,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
             {"icp_short_of_turn", st->icpShortOfTurn},
             {"icp_short_of_turn_replaced", st->icpShortOfTurnReplaced},
             {"icp_wide_turn_starts", st->icpWideTurnStarts},
+            {"icp_outfitted_matcher", st->icpOutfittedMatcher},
             {"graph_matcher", st->registeredByGraphMatcher},
             {"graph_matcher_confirmed", st->graphMatcherConfirmed},
             {"graph_matcher_from_registered_keyframe", st->graphMatcherFromRegisteredKeyframe},

@@ -84,6 +84,14 @@ struct GraphSlamOptions : public config::Options {
     /// are counted on the submap before its newest part: a keyframe placed by odometry alone
     /// starts one, and the copy of the place it adds is turned with its error.
     bool secondOpinionRefutedBeyondJump = true;
+    /// Where ICP from the prediction failed the registration tests and the graph matcher
+    /// answers, ICP also starts from the prediction turned by +-1 and +-2 secondOpinionTurn; an
+    /// end that settles, passes min_inlier_ratio and the correction bounds from its start (not
+    /// the sideways one), lies within the jump bounds of the prediction and is not where the
+    /// failed ICP ended, and puts secondOpinionMargin more of the scan on the submap than the
+    /// matcher's answer, replaces that answer (a fast turn the odometry over-read: the matcher
+    /// answered 12 deg off, on a turned copy of the room).
+    bool matcherSecondOpinion = true;
     /// The second opinion's answer (unsettled ICP from the prediction, or a second start) that
     /// corrects the odometry's step by more than this chi-square (3 dof) of the odometry model
     /// for that step (odometry_sigma_*) counts only where one of the second starts settled;

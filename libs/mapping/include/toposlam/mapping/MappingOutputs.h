@@ -33,10 +33,11 @@ std::string formatSummary(const MappingResult& result);
 /// without one), wall_alignment_deg; graph engine also keyframes, submaps, registration {icp,
 /// icp_unsettled, icp_second_start, icp_unsettled_refused, icp_refuted_beyond_jump,
 /// icp_without_foreground, icp_short_of_turn, icp_short_of_turn_replaced,
-/// icp_wide_turn_starts, graph_matcher, failed, odometry_jumps, odometry_catch_ups,
-/// odometry_catch_ups_kept, registered_share}, loops {candidates, accepted, guess_free_accepted,
-/// contested_accepted, unmatched, rejected, withdrawn}, cpu_by_stage_s {front_end, loop_search,
-/// loop_search_on_workers, optimization}, optimizations, mostly_unregistered, weak_front_end.
+/// icp_wide_turn_starts, icp_outfitted_matcher, graph_matcher, failed, odometry_jumps,
+/// odometry_catch_ups, odometry_catch_ups_kept, registered_share}, loops {candidates, accepted,
+/// guess_free_accepted, contested_accepted, unmatched, rejected, withdrawn}, cpu_by_stage_s
+/// {front_end, loop_search, loop_search_on_workers, optimization}, optimizations,
+/// mostly_unregistered, weak_front_end.
 nlohmann::json summaryJson(const MappingResult& result);
 
 /// True when fewer than half of the scans were registered (graph engine).

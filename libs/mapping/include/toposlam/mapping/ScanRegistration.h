@@ -129,6 +129,9 @@ struct Registration {
     /// The graph matcher's answer against the newest keyframe a registration placed, not the
     /// last keyframe, which odometry alone placed (matcher_from_registered_keyframe).
     bool fromRegisteredKeyframe = false;
+    /// ICP from a turned start fitted clearly more of the scan than the graph matcher's answer
+    /// after ICP from the prediction failed, and replaced it (matcher_second_opinion).
+    bool outfitsMatcher = false;
     /// The graph matcher answered, but only the scan's foreground objects bore its answer out
     /// against where ICP ended (matcher_foreground_check): the scan kept the prediction.
     bool matcherRefusedForeground = false;
@@ -292,6 +295,17 @@ class ScanRegistration {
     };
     IcpAttempt icpFrom(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                        const Submap& submap, const mrpt::poses::CPose2D& start);
+    /// ICP from the prediction turned by +-1 and +-2 second_opinion_turn that settles, passes
+    /// min_inlier_ratio and the correction bounds from its start (not sideways), stays within
+    /// the jump bounds of the prediction, does not end where the failed ICP did (`failedIcp`:
+    /// refused for its correction), and puts second_opinion_margin more of `scan` on the
+    /// submap than the graph matcher's answer (`matchedInSubmap`; robot poses in the submap's
+    /// frame): the best such end, if any (matcher_second_opinion).
+    std::optional<IcpAttempt> icpOutfitsMatcher(const matching::PolarScan& scan,
+                                                const mrpt::poses::CPose2D& sensorOnRobot,
+                                                const Prediction& prediction,
+                                                const mrpt::poses::CPose2D& matchedInSubmap,
+                                                const mrpt::poses::CPose2D& failedIcp);
     /// The correction passes max_correction_distance, _angle and, when `boundSideways`,
     /// max_lateral_correction times `sidewaysScale`.
     bool plausibleCorrection(const mrpt::poses::CPose2D& correction, bool boundSideways = true,

@@ -48,6 +48,9 @@ struct SlamStatistics {
     /// Second starts (of either kind above) from the wider ring of turned starts, tried where
     /// none of the nearer starts settled (second_opinion_wide_turns).
     std::size_t icpWideTurnStarts = 0;
+    /// Graph-matcher answers, after ICP from the prediction failed, that ICP from a turned start
+    /// replaced: it fitted clearly more of the scan (matcher_second_opinion).
+    std::size_t icpOutfittedMatcher = 0;
     /// Unsettled ICP refused: from no start did it settle within the odometry model's noise
     /// (unsettled_max_chi2); those scans count as registered by the graph matcher or failed.
     std::size_t icpUnsettledRefused = 0;

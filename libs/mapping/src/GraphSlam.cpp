@@ -142,6 +142,11 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement,
         increment = lastMotion_;
     }
     p.odometryBridged = bridged || shortfallBridged;
+    // A reading right after a stall that no rule above took for a catch-up may still hold the
+    // stall's motion: a robot that nearly stopped reads no more than its last motion.
+    if (options_.matcherBoundedByCatchUp && odometryIncrement && !p.odometryBridged &&
+        !p.odometryJumped && !p.odometryLagging && odometryLag_.repeatedScans() > 0)
+        p.stallCatchUpStep = odometryLag_.stepSinceStall(*odometryIncrement);
     // A stall, not a stop: the scan changed. Also where only the wheels' count stalled and
     // the heading still reads (OdometryLag::translationStalled).
     const bool translationStalled =
@@ -268,6 +273,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
             ++stats_.registeredByGraphMatcher;
             stats_.graphMatcherConfirmed += r.confirmedOnSubmap;
             stats_.graphMatcherFromRegisteredKeyframe += r.fromRegisteredKeyframe;
+            stats_.graphMatcherWithinStallCatchUp += r.withinStallCatchUp;
             break;
         case RegistrationMethod::Odometry:
             ++stats_.registrationFailed;

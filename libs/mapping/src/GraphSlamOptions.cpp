@@ -107,6 +107,9 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "where ICP from the prediction failed and the graph matcher answers, ICP from the "
            "prediction turned by +-1 and +-2 second_opinion_turn that fits second_opinion_margin "
            "more of the scan replaces the answer");
+    s.flag("matcher_bounded_by_catch_up", matcherBoundedByCatchUp,
+           "right after a stall, a graph-matcher answer within the jump bounds of the reading "
+           "less the motion registered over the stall is no jump");
     s.real("unsettled_max_chi2", unsettledMaxChi2, "",
            "ICP that has not settled is taken only within this chi-square (3 dof) of the "
            "odometry model's step (0 = off)")

@@ -176,7 +176,9 @@ std::string formatSummary(const MappingResult& r) {
             "more of the scan than the graph matcher's answer after ICP failed), %zu by the "
             "graph matcher (%.1f %%; "
             "%zu of them beyond a jump, confirmed on the submap; %zu against the last keyframe a "
-            "registration placed, where odometry alone placed the last), %zu failed "
+            "registration placed, where odometry alone placed the last; %zu beyond a jump from "
+            "the reading after a stall, within the bounds of the catch-up it may hold), %zu "
+            "failed "
             "(%.1f %%, odometry kept; %zu of them with a graph-matcher answer only foreground "
             "objects bore out); %s; %zu odometry stalls bridged (%zu of them stalls nothing had "
             "placed; %zu of their scans placed between; %s), %s, %s catching up after a stall "
@@ -189,9 +191,10 @@ std::string formatSummary(const MappingResult& r) {
             st->icpPastMissedTurn, st->icpShortOfTurn, st->icpShortOfTurnReplaced,
             st->icpWideTurnStarts, st->icpOutfittedMatcher, st->registeredByGraphMatcher,
             percent(st->registeredByGraphMatcher, n), st->graphMatcherConfirmed,
-            st->graphMatcherFromRegisteredKeyframe, st->registrationFailed,
-            percent(st->registrationFailed, n), st->matcherRefusedForeground, jumps.c_str(),
-            st->odometryStallsBridged, st->odometryUnplacedStallsBridged, st->stalledScansPlaced,
+            st->graphMatcherFromRegisteredKeyframe, st->graphMatcherWithinStallCatchUp,
+            st->registrationFailed, percent(st->registrationFailed, n),
+            st->matcherRefusedForeground, jumps.c_str(), st->odometryStallsBridged,
+            st->odometryUnplacedStallsBridged, st->stalledScansPlaced,
             counted(st->odometryTranslationStalls, "stall of the distance alone",
                     "stalls of the distance alone")
                 .c_str(),
@@ -286,6 +289,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
             {"graph_matcher", st->registeredByGraphMatcher},
             {"graph_matcher_confirmed", st->graphMatcherConfirmed},
             {"graph_matcher_from_registered_keyframe", st->graphMatcherFromRegisteredKeyframe},
+            {"graph_matcher_within_stall_catch_up", st->graphMatcherWithinStallCatchUp},
             {"last_motion_predictions", st->lastMotionPredictions},
             {"failed", st->registrationFailed},
             {"failed_matcher_refused_foreground", st->matcherRefusedForeground},

@@ -92,6 +92,10 @@ struct GraphSlamOptions : public config::Options {
     /// matcher's answer, replaces that answer (a fast turn the odometry over-read: the matcher
     /// answered 12 deg off, on a turned copy of the room).
     bool matcherSecondOpinion = true;
+    /// Right after a stall of whole scans whose reading no rule took for a catch-up, a graph-
+    /// matcher answer within the jump bounds of the reading less the motion registered over
+    /// the stall is no jump (Prediction::stallCatchUpStep).
+    bool matcherBoundedByCatchUp = true;
     /// The second opinion's answer (unsettled ICP from the prediction, or a second start) that
     /// corrects the odometry's step by more than this chi-square (3 dof) of the odometry model
     /// for that step (odometry_sigma_*) counts only where one of the second starts settled;

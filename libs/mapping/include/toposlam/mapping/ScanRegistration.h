@@ -132,6 +132,9 @@ struct Registration {
     /// ICP from a turned start fitted clearly more of the scan than the graph matcher's answer
     /// after ICP from the prediction failed, and replaced it (matcher_second_opinion).
     bool outfitsMatcher = false;
+    /// The graph matcher's answer, beyond the jump bounds of the reading right after a stall
+    /// but within those of the catch-up it may hold (matcher_bounded_by_catch_up).
+    bool withinStallCatchUp = false;
     /// The graph matcher answered, but only the scan's foreground objects bore its answer out
     /// against where ICP ended (matcher_foreground_check): the scan kept the prediction.
     bool matcherRefusedForeground = false;
@@ -218,6 +221,11 @@ struct Prediction {
     int stallScans = 0;
     bool stallScansBehind = false;
     bool stallUnplaced = false;
+    /// Right after a stall of whole scans whose reading was neither bridged nor taken for a
+    /// catch-up (it read no more than the robot's last motion: the robot slowed down or turned
+    /// on the spot meanwhile): the step as a catch-up would be, the reading less the motion
+    /// registered over the stall (robot frame of the last scan; OdometryLag::stepSinceStall).
+    std::optional<mrpt::poses::CPose2D> stallCatchUpStep;
     /// The prediction is the odometry's own step (not the last motion: no jump, no stall, a log
     /// with odometry), so the odometry model bounds its error.
     bool odometryPredicted = false;

@@ -73,6 +73,9 @@ struct SlamStatistics {
     /// Of those, matched against the newest keyframe a registration placed, the last keyframe
     /// having been placed by odometry alone (matcher_from_registered_keyframe).
     std::size_t graphMatcherFromRegisteredKeyframe = 0;
+    /// Of those, beyond the jump bounds of the reading right after a stall but within those of
+    /// the catch-up it may hold (matcher_bounded_by_catch_up).
+    std::size_t graphMatcherWithinStallCatchUp = 0;
     /// Scans predicted by the robot's last motion instead of the odometry's step, whatever
     /// registered them (confirm_large_corrections).
     std::size_t lastMotionPredictions = 0;

@@ -1665,10 +1665,11 @@ TEST(GraphSlam, AStartThatFitsOnlyWhatAnOdometryPlacedKeyframeAddedRefutesNothin
 
 TEST(GraphSlam, ATurnedStartThatFitsClearlyMoreReplacesTheMatchersAnswer) {
     // Bormann's office_c toured by B3-sim's stalling robot, seed 9, one scan in three kept. A
-    // turn on the spot of 48 deg is read as 66: ICP from the reading ends 11 deg short of it
-    // and is refused for the size of its correction, and the graph matcher answers 12 deg off
-    // the other way, 0.44 m from where the robot stood. From the reading turned 17 deg back ICP
-    // settles right, on clearly more of the scan, and replaces the answer (ATE 1.26 -> 0.17 m).
+    // turn on the spot of 48 deg is read as 66: ICP from the reading ends 7 deg from it, still
+    // 11 deg off the turn, and is refused for the size of its correction, and the graph
+    // matcher answers 12 deg off the other way, 0.44 m from where the robot stood. From the
+    // reading turned 17 deg back ICP settles right, on clearly more of the scan, and replaces
+    // the answer (ATE 1.26 -> 0.17 m).
     TOPOSLAM_SHARED_DATA_OR_SKIP(plan, "rooms/office_c_furnitures.png");
     expectRuleMendsStallingPlanAtAThird(plan, 9, "matcher_second_opinion",
                                         &mapping::SlamStatistics::icpOutfittedMatcher, 0.8, 5,
@@ -1691,8 +1692,9 @@ TEST(GraphSlam, AMatcherAnswerWithinTheCatchUpAfterAStallIsNoJump) {
 }
 
 TEST(GraphSlam, TheFirstTurnsOnTheSpotGetTheSecondOpinionToo) {
-    // The same tour: at its 20th scan the robot turns 45 deg on the spot, the odometry reads 30,
-    // and ICP from there ends 15 deg short, unconverged, on a fifth of the scan. The second
+    // office_c's tour two tests above (stalling robot, seed 9, one scan in three): at its 20th
+    // scan the robot turns 45 deg on the spot, the odometry reads 30, and ICP from there ends
+    // 15 deg short, unconverged, on a fifth of the scan. The second
     // opinion judges "unsettled" against the median residual of the registrations so far,
     // which it took only from the twentieth on: the log's first turns went unchecked. From the
     // fifth on, every step of the tour's first 40 scans is right to a degree.

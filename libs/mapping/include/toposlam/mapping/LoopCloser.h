@@ -146,7 +146,8 @@ class LoopCloser {
     WorkerPool pool_;
     std::vector<matching::GraphScanMatcher> guided_, free_;  // one of each per pool thread
     std::vector<matching::PolarScan> olderReadings_;         // per pool thread (reused)
-    // The gate's candidates of the current query, nearest first (reused).
+    // The gate's candidates of the current query: a min-heap of (squared distance, keyframe),
+    // popped nearest first (reused).
     std::vector<std::pair<double, std::size_t>> nearFirst_;
     std::deque<Measurement> pending_;    // guess-free matches awaiting confirmation
     std::deque<Measurement> recent_;     // accepted loops, for confirming guess-free ones

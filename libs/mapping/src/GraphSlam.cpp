@@ -245,6 +245,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     stats_.lastMotionPredictions += r.byLastMotion;
     stats_.odometryJumpsBorneOut += r.jumpBorneOut && !r.jumpByPrior;
     stats_.odometryJumpsByPrior += r.jumpByPrior;
+    stats_.odometryJumpsSidewaysByTurn += r.jumpSidewaysByTurn;
     stats_.odometryJumpsBetween += r.jumpBetween;
     stats_.odometryJumpsOverTwoReadings += r.jumpOverTwoReadings;
     stats_.icpPastMissedTurn += r.pastMissedTurn;

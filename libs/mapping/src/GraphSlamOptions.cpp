@@ -110,6 +110,10 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
     s.flag("matcher_bounded_by_catch_up", matcherBoundedByCatchUp,
            "right after a stall, a graph-matcher answer within the jump bounds of the reading "
            "less the motion registered over the stall is no jump");
+    s.flag("jump_sideways_by_turn", jumpSidewaysByTurn,
+           "where ICP from a jumped reading turns back a turn the last reading missed, it may "
+           "also correct the reading sideways by the step's length x sin(half that turn): the "
+           "chord of a step whose heading lagged");
     s.real("unsettled_max_chi2", unsettledMaxChi2, "",
            "ICP that has not settled is taken only within this chi-square (3 dof) of the "
            "odometry model's step (0 = off)")

@@ -157,6 +157,8 @@ std::string formatSummary(const MappingResult& r) {
                      " of them borne out by the scan: a fast turn; " +
                      std::to_string(st->odometryJumpsByPrior) +
                      " taken as read where the scan fitted them and the last motion alike; " +
+                     std::to_string(st->odometryJumpsSidewaysByTurn) +
+                     " of those two corrected sideways by the turn of the step's chord; " +
                      std::to_string(st->odometryJumpsBetween) +
                      " placed by ICP between the odometry's step and the last motion; " +
                      std::to_string(st->odometryJumpsOverTwoReadings) +
@@ -296,6 +298,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
             {"odometry_jumps", st->odometryJumps},
             {"odometry_jumps_borne_out", st->odometryJumpsBorneOut},
             {"odometry_jumps_by_prior", st->odometryJumpsByPrior},
+            {"odometry_jumps_sideways_by_turn", st->odometryJumpsSidewaysByTurn},
             {"odometry_jumps_between", st->odometryJumpsBetween},
             {"odometry_jumps_over_two_readings", st->odometryJumpsOverTwoReadings},
             {"odometry_jump_readings_kept", st->odometryJumpReadingsKept},

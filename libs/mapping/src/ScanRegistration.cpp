@@ -366,6 +366,7 @@ const Prediction& ScanRegistration::preferredPrediction(const matching::PolarSca
     motionIcp_.reset();
     jumpChoiceRecorded_ = false;
     jumpByPrior_ = false;
+    jumpSidewaysByTurn_ = false;
     stallStepBorneOut_.reset();
     if (!prediction.submap || prediction.submap->map().size() == 0 || scan.validCount() == 0)
         return prediction;
@@ -460,22 +461,31 @@ const Prediction& ScanRegistration::jumpBorneOut(const matching::PolarScan& scan
     IcpAttempt fromOdometry = icpFrom(scan, sensorOnRobot, submap, byOdometry);
     // The odometry's sideways error grows with the step: max_lateral_correction is for steps
     // up to the jump distance (a 1.1 m step at a third of the scan rate is 0.1 m off sideways).
-    const double sidewaysScale =
+    double sidewaysScale =
         std::max(1.0, prediction.readingStep.norm() / options_.odometryJumpDistance);
     if (!acceptable(fromOdometry, byOdometry, true, sidewaysScale)) {
-        jumpedIcpEnd_ = fromOdometry.robot;  // for jumpBetween() and jumpOverTwoReadings()
-        readingIcp_ = fromOdometry;
-        return prediction;
+        // Unless the reading holds a turn the last reading missed, and the chord's turn by it
+        // accounts for ICP's sideways correction (sidewaysByTurn()).
+        const double widened = sidewaysByTurn(prediction, fromOdometry.robot - byOdometry);
+        jumpSidewaysByTurn_ =
+            widened > sidewaysScale && acceptable(fromOdometry, byOdometry, true, widened);
+        if (!jumpSidewaysByTurn_) {
+            jumpedIcpEnd_ = fromOdometry.robot;  // for jumpBetween() and jumpOverTwoReadings()
+            readingIcp_ = fromOdometry;
+            return prediction;
+        }
+        sidewaysScale = widened;
     }
     // A real jump (a stall caught up in one step) puts ICP from the odometry off the robot:
     // along a corridor it may fit as well as from the last motion, but not better. Where ICP
     // from the last motion fails the tests, that motion is off the robot instead.
     const IcpAttempt& fromMotion = icpFromLastMotion(scan, sensorOnRobot, prediction);
-    recordJumpChoice(submap, scan, sensorOnRobot, fromOdometry, fromMotion);
     const matching::LineMap& map = submap.map();
     const bool motionPasses = acceptable(fromMotion, prediction.inSubmap, /*boundSideways=*/false);
     const bool readingFitsBetter = bearsOut(map, scan, sensorOnRobot, fromOdometry.robot,
                                             fromMotion.robot, options_.jumpChoiceMargin);
+    if (!jumpSidewaysByTurn_)
+        recordJumpChoice(submap, scan, sensorOnRobot, fromOdometry, fromMotion);
     // Undecided by the scan, the log's earlier jumps decide here, before the graph matcher:
     // along a corridor ICP holds wherever it starts, and the matcher's answer, confirmed on the
     // same submap, would be no better a guess (a stalled odometry's catch-up, taken for the
@@ -483,6 +493,10 @@ const Prediction& ScanRegistration::jumpBorneOut(const matching::PolarScan& scan
     jumpByPrior_ = motionPasses && !readingFitsBetter && options_.undecidedJumpByPrior &&
                    priorFavoursReading(map, scan, sensorOnRobot, fromOdometry, fromMotion);
     if (motionPasses && !readingFitsBetter && !jumpByPrior_) {
+        if (jumpSidewaysByTurn_) {
+            jumpSidewaysByTurn_ = false;
+            jumpedIcpEnd_ = fromOdometry.robot;
+        }
         readingIcp_ = std::move(fromOdometry);
         return prediction;
     }
@@ -495,6 +509,26 @@ const Prediction& ScanRegistration::jumpBorneOut(const matching::PolarScan& scan
     // and the failed scan kept the reading, 18 deg off the robot's turn).
     motionPrediction_.sidewaysScale = sidewaysScale;
     return motionPrediction_;
+}
+
+double ScanRegistration::sidewaysByTurn(const Prediction& prediction,
+                                        const CPose2D& correction) const {
+    const double stepScale =
+        std::max(1.0, prediction.readingStep.norm() / options_.odometryJumpDistance);
+    if (!options_.jumpSidewaysByTurn || !(options_.maxLateralCorrection > 0) ||
+        !prediction.lastReading)
+        return stepScale;
+    // The turn the last reading missed (registration turned that step further than it read),
+    // and ICP's heading correction, which takes it back where the reading holds it.
+    const double missed =
+        mrpt::math::wrapToPi(prediction.lastMotion.phi() - prediction.lastReading->phi());
+    const double back = mrpt::math::wrapToPi(correction.phi());
+    if (missed * back >= 0)
+        return stepScale;
+    // The step's chord turned by half of what it took back.
+    return stepScale + prediction.readingStep.norm() *
+                           std::sin(0.5 * std::min(std::abs(missed), std::abs(back))) /
+                           options_.maxLateralCorrection;
 }
 
 const Prediction& ScanRegistration::jumpBetween(const matching::PolarScan& scan,

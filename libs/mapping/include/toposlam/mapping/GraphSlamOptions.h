@@ -96,6 +96,12 @@ struct GraphSlamOptions : public config::Options {
     /// matcher answer within the jump bounds of the reading less the motion registered over
     /// the stall is no jump (Prediction::stallCatchUpStep).
     bool matcherBoundedByCatchUp = true;
+    /// Where ICP from a jumped reading (the odometry caught up in one step) turns back a turn
+    /// the last reading missed (registration turned the last step further than it read), its
+    /// sideways bound grows by the step's length x sin(half the turn taken back): the odometry
+    /// integrated the step along a heading that lagged, which turns the step's chord by about
+    /// half the lag (ScanRegistration::sidewaysByTurn).
+    bool jumpSidewaysByTurn = true;
     /// The second opinion's answer (unsettled ICP from the prediction, or a second start) that
     /// corrects the odometry's step by more than this chi-square (3 dof) of the odometry model
     /// for that step (odometry_sigma_*) counts only where one of the second starts settled;

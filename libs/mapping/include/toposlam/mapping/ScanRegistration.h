@@ -166,6 +166,10 @@ struct Registration {
     /// Of the jumps borne out (jumpBorneOut), those the scan fitted as well from the last
     /// motion: this log's earlier jumps chose the reading (undecided_jump_by_prior).
     bool jumpByPrior = false;
+    /// Of the jumps borne out, those whose ICP corrected the reading sideways beyond the
+    /// step's own bound, within the chord's turn by ICP's heading correction
+    /// (jump_sideways_by_turn).
+    bool jumpSidewaysByTurn = false;
     /// The along-heading check's evidence when it ran (its `scan` is left 0: the caller knows
     /// which scan this is).
     std::optional<AlongHeadingCheck> alongHeading;
@@ -428,6 +432,15 @@ class ScanRegistration {
                                   const Prediction& prediction, const mrpt::poses::CPose2D& matched,
                                   const mrpt::poses::CPose2D& failedIcp);
 
+    /// The sideways bound (in max_lateral_correction) for ICP's `correction` of a jumped
+    /// reading: the step's own (its length over odometry_jump_distance, at least 1), plus, where
+    /// the reading holds a turn the last reading missed (registration turned the last step
+    /// further than it read) and ICP's heading correction takes it back, the step's length x
+    /// sin(half the turn taken back) (jump_sideways_by_turn): a heading that lagged through the
+    /// step turned its chord by about half the lag.
+    double sidewaysByTurn(const Prediction& prediction,
+                          const mrpt::poses::CPose2D& correction) const;
+
     /// After an odometry jump, ICP from the jumped prediction's own pose (the last motion):
     /// run once per scan, kept in motionIcp_ for the jump's later steps.
     const IcpAttempt& icpFromLastMotion(const matching::PolarScan& scan,
@@ -569,6 +582,9 @@ class ScanRegistration {
     /// This scan's jump was taken as read by the log's prior (jumpBorneOut(); reset for every
     /// scan).
     bool jumpByPrior_ = false;
+    /// This scan's jumped reading passed the sideways bound only by its heading correction's
+    /// turn of the step's chord (jumpBorneOut(); reset for every scan).
+    bool jumpSidewaysByTurn_ = false;
     /// In a stall, ICP from the standstill and from the last motion ended at the same pose,
     /// nearer the last motion's start: that start, in the submap frame (standstillBorneOut();
     /// reset for every scan). checkAlongHeading measures ICP's correction from it.
@@ -617,6 +633,7 @@ Registration ScanRegistration::registerScan(const matching::PolarScan& scan,
         preferredPrediction(scan, sensorOnRobot, odometryPrediction, started);
     out.jumpBorneOut = odometryPrediction.odometryJumped && !prediction.odometryJumped;
     out.jumpByPrior = out.jumpBorneOut && jumpByPrior_;
+    out.jumpSidewaysByTurn = out.jumpBorneOut && jumpSidewaysByTurn_;
     out.byLastMotion = !out.jumpBorneOut && &prediction != &odometryPrediction;
     if (!prediction.odometryJumped &&
         tryIcp(scan, sensorOnRobot, prediction, out, started ? &*started : nullptr)) {

@@ -91,6 +91,10 @@ struct SlamStatistics {
     /// this log's earlier jumps were mostly the odometry's own steps (undecided_jump_by_prior;
     /// not counted in odometryJumpsBorneOut).
     std::size_t odometryJumpsByPrior = 0;
+    /// Of the jumps borne out or taken by the prior, those whose ICP corrected the reading
+    /// sideways beyond the step's own bound, within the turn ICP's heading correction gives
+    /// the step's chord (jump_sideways_by_turn).
+    std::size_t odometryJumpsSidewaysByTurn = 0;
     /// Of the others, placed by neither ICP from the odometry's step nor the graph matcher, those
     /// ICP placed from a start between the odometry's step and the last motion
     /// (jump_search_step): the odometry caught up past the turn or short of it.

@@ -465,8 +465,9 @@ const Prediction& ScanRegistration::jumpBorneOut(const matching::PolarScan& scan
         std::max(1.0, prediction.readingStep.norm() / options_.odometryJumpDistance);
     if (!acceptable(fromOdometry, byOdometry, true, sidewaysScale)) {
         // Unless the reading holds a turn the last reading missed, and the chord's turn by it
-        // accounts for ICP's sideways correction (sidewaysByTurn()).
-        const double widened = sidewaysByTurn(prediction, fromOdometry.robot - byOdometry);
+        // accounts for ICP's sideways correction.
+        const double widened =
+            sidewaysScale + chordTurnAllowance(prediction, fromOdometry.robot - byOdometry);
         jumpSidewaysByTurn_ =
             widened > sidewaysScale && acceptable(fromOdometry, byOdometry, true, widened);
         if (!jumpSidewaysByTurn_) {
@@ -484,6 +485,7 @@ const Prediction& ScanRegistration::jumpBorneOut(const matching::PolarScan& scan
     const bool motionPasses = acceptable(fromMotion, prediction.inSubmap, /*boundSideways=*/false);
     const bool readingFitsBetter = bearsOut(map, scan, sensorOnRobot, fromOdometry.robot,
                                             fromMotion.robot, options_.jumpChoiceMargin);
+    // A reading only the widened bound let through is no evidence of how this log's jumps go.
     if (!jumpSidewaysByTurn_)
         recordJumpChoice(submap, scan, sensorOnRobot, fromOdometry, fromMotion);
     // Undecided by the scan, the log's earlier jumps decide here, before the graph matcher:
@@ -493,7 +495,7 @@ const Prediction& ScanRegistration::jumpBorneOut(const matching::PolarScan& scan
     jumpByPrior_ = motionPasses && !readingFitsBetter && options_.undecidedJumpByPrior &&
                    priorFavoursReading(map, scan, sensorOnRobot, fromOdometry, fromMotion);
     if (motionPasses && !readingFitsBetter && !jumpByPrior_) {
-        if (jumpSidewaysByTurn_) {
+        if (jumpSidewaysByTurn_) {  // not taken: as refused, for the searches after
             jumpSidewaysByTurn_ = false;
             jumpedIcpEnd_ = fromOdometry.robot;
         }
@@ -511,24 +513,22 @@ const Prediction& ScanRegistration::jumpBorneOut(const matching::PolarScan& scan
     return motionPrediction_;
 }
 
-double ScanRegistration::sidewaysByTurn(const Prediction& prediction,
-                                        const CPose2D& correction) const {
-    const double stepScale =
-        std::max(1.0, prediction.readingStep.norm() / options_.odometryJumpDistance);
+double ScanRegistration::chordTurnAllowance(const Prediction& prediction,
+                                            const CPose2D& correction) const {
     if (!options_.jumpSidewaysByTurn || !(options_.maxLateralCorrection > 0) ||
         !prediction.lastReading)
-        return stepScale;
+        return 0;
     // The turn the last reading missed (registration turned that step further than it read),
     // and ICP's heading correction, which takes it back where the reading holds it.
     const double missed =
         mrpt::math::wrapToPi(prediction.lastMotion.phi() - prediction.lastReading->phi());
     const double back = mrpt::math::wrapToPi(correction.phi());
     if (missed * back >= 0)
-        return stepScale;
+        return 0;
     // The step's chord turned by half of what it took back.
-    return stepScale + prediction.readingStep.norm() *
-                           std::sin(0.5 * std::min(std::abs(missed), std::abs(back))) /
-                           options_.maxLateralCorrection;
+    return prediction.readingStep.norm() *
+           std::sin(0.5 * std::min(std::abs(missed), std::abs(back))) /
+           options_.maxLateralCorrection;
 }
 
 const Prediction& ScanRegistration::jumpBetween(const matching::PolarScan& scan,

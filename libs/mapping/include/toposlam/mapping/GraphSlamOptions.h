@@ -100,7 +100,7 @@ struct GraphSlamOptions : public config::Options {
     /// the last reading missed (registration turned the last step further than it read), its
     /// sideways bound grows by the step's length x sin(half the turn taken back): the odometry
     /// integrated the step along a heading that lagged, which turns the step's chord by about
-    /// half the lag (ScanRegistration::sidewaysByTurn).
+    /// half the lag (ScanRegistration::chordTurnAllowance).
     bool jumpSidewaysByTurn = true;
     /// The second opinion's answer (unsettled ICP from the prediction, or a second start) that
     /// corrects the odometry's step by more than this chi-square (3 dof) of the odometry model

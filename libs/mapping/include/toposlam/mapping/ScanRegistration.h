@@ -432,14 +432,14 @@ class ScanRegistration {
                                   const Prediction& prediction, const mrpt::poses::CPose2D& matched,
                                   const mrpt::poses::CPose2D& failedIcp);
 
-    /// The sideways bound (in max_lateral_correction) for ICP's `correction` of a jumped
-    /// reading: the step's own (its length over odometry_jump_distance, at least 1), plus, where
-    /// the reading holds a turn the last reading missed (registration turned the last step
-    /// further than it read) and ICP's heading correction takes it back, the step's length x
-    /// sin(half the turn taken back) (jump_sideways_by_turn): a heading that lagged through the
-    /// step turned its chord by about half the lag.
-    double sidewaysByTurn(const Prediction& prediction,
-                          const mrpt::poses::CPose2D& correction) const;
+    /// jump_sideways_by_turn: how much farther (in max_lateral_correction) ICP's `correction`
+    /// of a jumped reading may go sideways than the step's own bound. Where the reading holds a
+    /// turn the last reading missed (registration turned the last step further than it read)
+    /// and ICP's heading correction takes it back, the step's length x sin(half the turn taken
+    /// back, at most what was missed): a heading that lagged through the step turned its chord
+    /// by about half the lag. 0 elsewhere.
+    double chordTurnAllowance(const Prediction& prediction,
+                              const mrpt::poses::CPose2D& correction) const;
 
     /// After an odometry jump, ICP from the jumped prediction's own pose (the last motion):
     /// run once per scan, kept in motionIcp_ for the jump's later steps.

@@ -166,9 +166,9 @@ struct Registration {
     /// Of the jumps borne out (jumpBorneOut), those the scan fitted as well from the last
     /// motion: this log's earlier jumps chose the reading (undecided_jump_by_prior).
     bool jumpByPrior = false;
-    /// Of the jumps borne out, those whose ICP corrected the reading sideways beyond the
-    /// step's own bound, within the chord's turn by ICP's heading correction
-    /// (jump_sideways_by_turn).
+    /// Of the jumps borne out (by the scan or the prior), those whose ICP corrected the reading
+    /// sideways beyond the step's own bound, within the allowance for the turn it took back
+    /// (jump_sideways_by_turn; ScanRegistration::chordTurnAllowance).
     bool jumpSidewaysByTurn = false;
     /// The along-heading check's evidence when it ran (its `scan` is left 0: the caller knows
     /// which scan this is).
@@ -582,8 +582,8 @@ class ScanRegistration {
     /// This scan's jump was taken as read by the log's prior (jumpBorneOut(); reset for every
     /// scan).
     bool jumpByPrior_ = false;
-    /// This scan's jumped reading passed the sideways bound only by its heading correction's
-    /// turn of the step's chord (jumpBorneOut(); reset for every scan).
+    /// This scan's jumped reading passed the sideways bound only with chordTurnAllowance()
+    /// (jumpBorneOut(); reset for every scan).
     bool jumpSidewaysByTurn_ = false;
     /// In a stall, ICP from the standstill and from the last motion ended at the same pose,
     /// nearer the last motion's start: that start, in the submap frame (standstillBorneOut();

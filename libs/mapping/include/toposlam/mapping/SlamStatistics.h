@@ -92,8 +92,8 @@ struct SlamStatistics {
     /// not counted in odometryJumpsBorneOut).
     std::size_t odometryJumpsByPrior = 0;
     /// Of the jumps borne out or taken by the prior, those whose ICP corrected the reading
-    /// sideways beyond the step's own bound, within the turn ICP's heading correction gives
-    /// the step's chord (jump_sideways_by_turn).
+    /// sideways beyond the step's own bound, within the allowance for a turn the last reading
+    /// missed and this one held (jump_sideways_by_turn).
     std::size_t odometryJumpsSidewaysByTurn = 0;
     /// Of the others, placed by neither ICP from the odometry's step nor the graph matcher, those
     /// ICP placed from a start between the odometry's step and the last motion

@@ -139,6 +139,44 @@ TEST(OdometryLag, AStallNothingRegisteredIsBridgedWhateverTurnItWasGiven) {
     EXPECT_FALSE(guessed.stallUnplaced());
 }
 
+TEST(OdometryLag, AStallsTurnOnlyTheGraphMatcherSawIsRefutedByAReadingThatTurnedOtherwise) {
+    // lab_intel, stalling robot, seed 14: the last motion 1.03 m, -33 deg; the stall's scan
+    // matched at 0.54 m, -60 deg (a look-alike turned by 90 deg); the reading over the stall
+    // and the next interval, 0.51 m and +83 deg.
+    const double maxTurn = mrpt::DEG2RAD(45.0);
+    const CPose2D before(1.03, 0, mrpt::DEG2RAD(-33.0));
+    const CPose2D matched(0.27, -0.47, mrpt::DEG2RAD(-60.0));
+    const CPose2D reading(0.06, 0.51, mrpt::DEG2RAD(83.0));
+    OdometryLag byMatcher;
+    byMatcher.registered(before, before);
+    byMatcher.registered(kStill, matched, /*placed=*/true, /*guessFree=*/true);
+    EXPECT_FALSE(byMatcher.stallUnplaced());
+    EXPECT_TRUE(byMatcher.stallTurnRefuted(reading, maxTurn));
+    // A reading within the bounds of the two intervals it spans (the robot turned on by 40 or
+    // by 80 deg) does not refute it.
+    EXPECT_FALSE(byMatcher.stallTurnRefuted(CPose2D(0.5, 0, mrpt::DEG2RAD(-20.0)), maxTurn));
+    EXPECT_FALSE(byMatcher.stallTurnRefuted(CPose2D(0.5, 0, mrpt::DEG2RAD(20.0)), maxTurn));
+    // ICP placed the stall: its turn was seen where the scan was started from a guess.
+    OdometryLag byIcp;
+    byIcp.registered(before, before);
+    byIcp.registered(kStill, matched);
+    EXPECT_FALSE(byIcp.stallTurnRefuted(reading, maxTurn));
+    // One of the stall's scans ICP placed is enough.
+    OdometryLag mixed;
+    mixed.registered(before, before);
+    mixed.registered(kStill, matched, true, true);
+    mixed.registered(kStill, CPose2D(), true, false);
+    EXPECT_FALSE(mixed.stallTurnRefuted(reading, maxTurn));
+    // Nothing placed it: refuted as well (and unplaced besides).
+    OdometryLag unplaced;
+    unplaced.registered(before, before);
+    unplaced.registered(kStill, matched, false);
+    EXPECT_TRUE(unplaced.stallTurnRefuted(reading, maxTurn));
+    // No stall, no refutation.
+    byMatcher.registered(reading, reading);
+    EXPECT_FALSE(byMatcher.stallTurnRefuted(reading, maxTurn));
+}
+
 TEST(OdometryLag, AScanChangesWhereTheRobotMovedNotWhereOnePersonWalked) {
     // 181 beams over 180 deg in a room: a wall 3 m ahead, and a step of 0.3 m towards it.
     std::vector<float> before(181), moved(181), person(181);

@@ -94,8 +94,13 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement,
     // A catch-up after a stall registration saw too little of: not the last motion, but the
     // reading less what was registered, over that many scan intervals (a jump only beyond the
     // bounds for all of them).
+    // Or one whose turn only the guess-free matcher registered and the reading refutes: as if
+    // nothing had placed the stall's scans (bridge_refuted_stalls).
+    const bool refuted =
+        odometryIncrement && options_.bridgeOdometryStalls && options_.bridgeRefutedStalls &&
+        odometryLag_.stallTurnRefuted(*odometryIncrement, options_.odometryJumpAngle);
     const bool bridged = odometryIncrement && options_.bridgeOdometryStalls &&
-                         odometryLag_.bridges(*odometryIncrement, lastMotion_);
+                         (refuted || odometryLag_.bridges(*odometryIncrement, lastMotion_));
     // Or one after readings that fell short of the registered motion (a stall within a scan
     // interval, as at a low scan rate): the reading less what they missed.
     const bool shortfallBridged = !bridged && odometryIncrement && options_.bridgeOdometryStalls &&
@@ -106,9 +111,10 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement,
         increment = odometryLag_.stepSinceStall(*odometryIncrement);
         intervals += odometryLag_.repeatedScans();
         p.stallScans = odometryLag_.repeatedScans();
-        p.stallScansBehind = odometryLag_.stallScansBehind(*odometryIncrement);
-        p.stallUnplaced = odometryLag_.stallUnplaced();
-        stats_.odometryUnplacedStallsBridged += p.stallUnplaced;
+        p.stallScansBehind = refuted || odometryLag_.stallScansBehind(*odometryIncrement);
+        p.stallUnplaced = refuted || odometryLag_.stallUnplaced();
+        stats_.odometryUnplacedStallsBridged += odometryLag_.stallUnplaced();
+        stats_.odometryRefutedStallsBridged += refuted && !odometryLag_.stallUnplaced();
         catchingUp = false;
         ++stats_.odometryStallsBridged;
     } else if (shortfallBridged) {
@@ -304,7 +310,8 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     if (odometry)
         odometryLag_.registered(
             *odometry, step,
-            !options_.bridgeUnplacedStalls || r.method != RegistrationMethod::Odometry);
+            !options_.bridgeUnplacedStalls || r.method != RegistrationMethod::Odometry,
+            r.method == RegistrationMethod::GraphMatcher);
     lastReading_ = odometry;
     lastMotion_ = step;
     recentSteps_[stats_.scans % recentSteps_.size()] = step.norm();

@@ -204,6 +204,11 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "a stall whose scans nothing placed (they kept the last motion) is bridged as one "
            "registration saw nothing of, whatever turn the last motion carried on; its scans are "
            "placed between, headings spread over the turn");
+    s.flag("bridge_refuted_stalls", bridgeRefutedStalls,
+           "a stall whose scans ICP placed none of (the graph matcher alone, or nothing) is "
+           "bridged as one nothing placed where the reading after it turned otherwise than "
+           "registered by more than odometry_jump_angle per scan interval it spans; its scans are "
+           "placed between");
     s.flag("predict_stalls_by_last_motion", predictStallsByLastMotion,
            "in an odometry stall (a reading repeated exactly while the robot moved and the scan "
            "changed) ICP also starts from the last registered motion, and the standstill stays "

@@ -183,7 +183,8 @@ std::string formatSummary(const MappingResult& r) {
             "failed "
             "(%.1f %%, odometry kept; %zu of them with a graph-matcher answer only foreground "
             "objects bore out); %s; %zu odometry stalls bridged (%zu of them stalls nothing had "
-            "placed; %zu of their scans placed between; %s), %s, %s catching up after a stall "
+            "placed, %zu whose turn the graph matcher alone registered and the reading after "
+            "refuted; %zu of their scans placed between; %s), %s, %s catching up after a stall "
             "(%zu of them placed by ICP from the reading where nothing from the last motion "
             "placed them); %zu predicted by the "
             "last motion instead of the odometry",
@@ -196,7 +197,8 @@ std::string formatSummary(const MappingResult& r) {
             st->graphMatcherFromRegisteredKeyframe, st->graphMatcherWithinStallCatchUp,
             st->registrationFailed, percent(st->registrationFailed, n),
             st->matcherRefusedForeground, jumps.c_str(), st->odometryStallsBridged,
-            st->odometryUnplacedStallsBridged, st->stalledScansPlaced,
+            st->odometryUnplacedStallsBridged, st->odometryRefutedStallsBridged,
+            st->stalledScansPlaced,
             counted(st->odometryTranslationStalls, "stall of the distance alone",
                     "stalls of the distance alone")
                 .c_str(),
@@ -306,6 +308,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
             {"odometry_catch_ups_kept", st->odometryCatchUpsKept},
             {"odometry_stalls_bridged", st->odometryStallsBridged},
             {"odometry_unplaced_stalls_bridged", st->odometryUnplacedStallsBridged},
+            {"odometry_refuted_stalls_bridged", st->odometryRefutedStallsBridged},
             {"odometry_shortfalls_bridged", st->odometryShortfallsBridged},
             {"odometry_translation_stalls", st->odometryTranslationStalls},
             {"stalled_scans_placed", st->stalledScansPlaced},

@@ -104,6 +104,17 @@ bool OdometryLag::bridges(const mrpt::poses::CPose2D& increment,
             increment.norm() - sinceReading_.norm() > kAgreeDistance);
 }
 
+bool OdometryLag::stallTurnRefuted(const mrpt::poses::CPose2D& increment,
+                                   double maxTurnPerScan) const {
+    if (repeatedScans_ == 0 || zero(increment) || !movedBeforeStall_ || !stallGuessFree_)
+        return false;
+    // Bounded over every interval the reading spans, as the jump bounds are: the catch-up's
+    // own interval alone may turn beyond one interval's bound (office_a, stalling robot at a
+    // third, seed 1: 49 deg where the matcher had the stall's turn right).
+    const double maxTurn = double(repeatedScans_ + 1) * maxTurnPerScan;
+    return std::abs(mrpt::math::wrapToPi(increment.phi() - sinceReading_.phi())) > maxTurn;
+}
+
 bool OdometryLag::stallScansBehind(const mrpt::poses::CPose2D& increment) const {
     if (stallUnplaced())
         return true;  // where the last motion put them, not where anything saw them
@@ -186,7 +197,7 @@ mrpt::poses::CPose2D OdometryLag::stepSinceStall(const mrpt::poses::CPose2D& inc
 }
 
 void OdometryLag::registered(const mrpt::poses::CPose2D& increment,
-                             const mrpt::poses::CPose2D& step, bool placed) {
+                             const mrpt::poses::CPose2D& step, bool placed, bool guessFree) {
     if (zero(increment)) {
         shortfall_ = shortfallTurn_ = 0;  // a stall of whole scans: bridges(), catchingUp()
         shortfallAfterStall_ = false;
@@ -197,9 +208,11 @@ void OdometryLag::registered(const mrpt::poses::CPose2D& increment,
             movedBeforeStall_ = moved(lastStep_);
             sinceReading_ = step;
             stallUnplaced_ = !placed;
+            stallGuessFree_ = !placed || guessFree;
         } else {
             sinceReading_ = sinceReading_ + step;
             stallUnplaced_ = stallUnplaced_ && !placed;
+            stallGuessFree_ = stallGuessFree_ && (!placed || guessFree);
         }
     } else {
         repeatedScans_ = 0;

@@ -237,6 +237,15 @@ struct GraphSlamOptions : public config::Options {
     /// turn too. Off: such a stall counts as registered, and a reading that turned otherwise
     /// than the guess is not bridged.
     bool bridgeUnplacedStalls = true;
+    /// A stall whose scans ICP placed none of (the graph matcher alone, or nothing) is bridged
+    /// like one nothing placed where the first reading after it turned otherwise than the
+    /// stall's scans were registered by more than odometryJumpAngle per scan interval it spans
+    /// (OdometryLag::stallTurnRefuted): in a place that looks alike turned by 90 deg (a square
+    /// room, a crossing) the guess-free matcher may take the turned look-alike, and the reading is
+    /// the only other evidence of the turn. Its scans that are no keyframes are placed between; a
+    /// keyframe among them stays where the graph has it (keeping the matcher's stall scans out
+    /// of the submap broke far more tours than it mended, benchmarks.md B3).
+    bool bridgeRefutedStalls = true;
     /// A stalled reading (repeated exactly while the robot moved, and the scan changed:
     /// OdometryLag::scanChanged, not a robot that stopped) says nothing about the motion: ICP
     /// also starts from the last registered motion, and the standstill stays only where the

@@ -41,7 +41,10 @@
 // registration saw no translation, intel with every other beam went from 0.017 to 0.044 m).
 // A stall whose scans no registration placed (each kept the last motion) saw no turn either:
 // whatever turn the last motion carried on was guessed, so its catch-up is bridged and its
-// scans placed between, turned evenly too (stallUnplaced(); bridge_unplaced_stalls).
+// scans placed between, turned evenly too (stallUnplaced(); bridge_unplaced_stalls). So is a
+// stall whose scans only the guess-free graph matcher placed, where the reading turned otherwise
+// by more than the jump bound of the intervals it spans: the matcher took a look-alike of the
+// place turned by 90 deg (stallTurnRefuted(); bridge_refuted_stalls).
 //
 // At a low scan rate a stall seldom spans a whole scan interval: the readings are short, not
 // zero (Bormann's lab_c toured by the stalling robot at a third of its scan rate: 0.68 m read
@@ -160,11 +163,21 @@ class OdometryLag {
     /// registration (ICP or the graph matcher) placed the scan; false where nothing did and
     /// `step` is only the prediction (the last motion, in a stall). GraphSlam passes true for
     /// every scan with bridge_unplaced_stalls off, so that no stall counts as unplaced.
+    /// `guessFree`: the graph matcher placed it, with no guess to check its answer by (the
+    /// stalled reading gave none).
     void registered(const mrpt::poses::CPose2D& increment, const mrpt::poses::CPose2D& step,
-                    bool placed = true);
+                    bool placed = true, bool guessFree = false);
     /// No registration placed any scan since the last increment that moved: the motion
     /// "registered" over the stall is the last motion carried on, no measurement at all.
     bool stallUnplaced() const { return repeatedScans_ > 0 && stallUnplaced_; }
+    /// The stall's turn as registered is refuted by `increment`, the first reading after it:
+    /// ICP placed none of its scans (the guess-free graph matcher or nothing did), and the
+    /// reading turned otherwise than registered by more than `maxTurnPerScan` (rad) for each
+    /// scan interval it spans (repeatedScans() + 1, as the jump bounds scale), more than a
+    /// right answer leaves to the catch-up's own interval. In a place that looks alike turned
+    /// (a square room, a crossing) the matcher may take the turned look-alike, and over a
+    /// stall the reading is the only other evidence of the turn.
+    bool stallTurnRefuted(const mrpt::poses::CPose2D& increment, double maxTurnPerScan) const;
     /// Scans since the last increment that moved (0 when the last one did).
     int repeatedScans() const { return repeatedScans_; }
     /// For each scan with odometry, before registration: its `increment` over the scan
@@ -208,6 +221,7 @@ class OdometryLag {
     mrpt::poses::CPose2D sinceReading_;
     bool movedBeforeStall_ = false;  ///< the scan before the repeated increments moved
     bool stallUnplaced_ = false;     ///< no registration placed any of those scans
+    bool stallGuessFree_ = false;    ///< ICP placed none of them (stallTurnRefuted)
     mrpt::poses::CPose2D lastStep_;  ///< the last scan's registered step
     /// translationStalled(): the last increment and its interval (s), and whether it stalled.
     mrpt::poses::CPose2D lastReading_;

@@ -120,6 +120,9 @@ struct SlamStatistics {
     std::size_t odometryStallsBridged = 0;
     /// of those, stalls whose scans no registration had placed (bridge_unplaced_stalls)
     std::size_t odometryUnplacedStallsBridged = 0;
+    /// of those, stalls whose turn the guess-free matcher registered and the reading after
+    /// refuted (bridge_refuted_stalls)
+    std::size_t odometryRefutedStallsBridged = 0;
     /// catch-ups after readings that fell short of the registered motion (a stall within a
     /// scan interval: OdometryLag::catchesUpShortfall), predicted as the reading less the
     /// shortfall (bridge_odometry_stalls)

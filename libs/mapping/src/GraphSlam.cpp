@@ -144,6 +144,11 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement,
         // starts from the last motion.
         p.odometryLagging = true;
         p.readingStep = increment;
+        // Right after a stall registration placed, the reading holds the stall's registered
+        // motion and this interval's own (catch_up_less_stall).
+        if (options_.catchUpLessStall && odometryLag_.repeatedScans() > 0 &&
+            !odometryLag_.stallUnplaced())
+            p.catchUpLessStall = odometryLag_.stepSinceStall(*odometryIncrement);
         ++stats_.odometryCatchUps;
         increment = lastMotion_;
     }
@@ -256,6 +261,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     stats_.odometryJumpsOverTwoReadings += r.jumpOverTwoReadings;
     stats_.icpPastMissedTurn += r.pastMissedTurn;
     stats_.odometryCatchUpsKept += r.catchUpReadingKept;
+    stats_.odometryCatchUpsLessStall += r.catchUpLessStall;
     stats_.odometryJumpReadingsKept += r.jumpReadingKept;
     stats_.icpUnsettledRefused += r.unsettledRefused;
     stats_.icpRefutedBeyondJump += r.refutedBeyondJump;

@@ -209,6 +209,10 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "bridged as one nothing placed where the reading after it turned otherwise than "
            "registered by more than odometry_jump_angle per scan interval it spans; its scans are "
            "placed between");
+    s.flag("catch_up_less_stall", catchUpLessStall,
+           "in the first catch-up after a stall registration placed, where nothing from the last "
+           "motion or the reading placed the scan, ICP also starts from the reading less the "
+           "motion registered over the stall");
     s.flag("predict_stalls_by_last_motion", predictStallsByLastMotion,
            "in an odometry stall (a reading repeated exactly while the robot moved and the scan "
            "changed) ICP also starts from the last registered motion, and the standstill stays "

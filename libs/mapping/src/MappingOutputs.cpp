@@ -186,7 +186,8 @@ std::string formatSummary(const MappingResult& r) {
             "placed, %zu whose turn the graph matcher alone registered and the reading after "
             "refuted; %zu of their scans placed between; %s), %s, %s catching up after a stall "
             "(%zu of them placed by ICP from the reading where nothing from the last motion "
-            "placed them); %zu predicted by the "
+            "placed them, %zu of those from the reading less the stall's registered motion); "
+            "%zu predicted by the "
             "last motion instead of the odometry",
             st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
             st->icpSecondStarts, st->icpUnsettledRefused, st->icpRefutedBeyondJump,
@@ -206,7 +207,7 @@ std::string formatSummary(const MappingResult& r) {
                     "catch-ups after short readings bridged")
                 .c_str(),
             counted(st->odometryCatchUps, "odometry step", "odometry steps").c_str(),
-            st->odometryCatchUpsKept, st->lastMotionPredictions);
+            st->odometryCatchUpsKept, st->odometryCatchUpsLessStall, st->lastMotionPredictions);
         if (st->scansWithoutOdometry > 0)
             s += line(
                 "odometry: none for %zu of %zu scans (%zu of them before the odometry first "
@@ -306,6 +307,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
             {"odometry_jump_readings_kept", st->odometryJumpReadingsKept},
             {"odometry_catch_ups", st->odometryCatchUps},
             {"odometry_catch_ups_kept", st->odometryCatchUpsKept},
+            {"odometry_catch_ups_less_stall", st->odometryCatchUpsLessStall},
             {"odometry_stalls_bridged", st->odometryStallsBridged},
             {"odometry_unplaced_stalls_bridged", st->odometryUnplacedStallsBridged},
             {"odometry_refuted_stalls_bridged", st->odometryRefutedStallsBridged},

@@ -246,6 +246,13 @@ struct GraphSlamOptions : public config::Options {
     /// keyframe among them stays where the graph has it (keeping the matcher's stall scans out
     /// of the submap broke far more tours than it mended, benchmarks.md B3).
     bool bridgeRefutedStalls = true;
+    /// In the first catch-up after a stall whose scans a registration placed, where nothing
+    /// from the last motion (the catch-up's prediction) nor from the reading placed the scan:
+    /// ICP also starts from the reading less the motion registered over the stall
+    /// (OdometryLag::stepSinceStall). The reading holds the stall's motion on top of its own,
+    /// and a robot that stopped and turned on the spot after the stall is neither where the
+    /// last motion nor where the reading from the last scan puts it.
+    bool catchUpLessStall = true;
     /// A stalled reading (repeated exactly while the robot moved, and the scan changed:
     /// OdometryLag::scanChanged, not a robot that stopped) says nothing about the motion: ICP
     /// also starts from the last registered motion, and the standstill stays only where the

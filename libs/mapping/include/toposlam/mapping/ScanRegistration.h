@@ -149,6 +149,9 @@ struct Registration {
     /// In a catch-up after a stall that nothing registered from the last motion: ICP from the
     /// odometry's step placed it (ScanRegistration::keepCaughtUpReading).
     bool catchUpReadingKept = false;
+    /// Of those, from the reading less the motion registered over the stall
+    /// (Prediction::catchUpLessStall): the robot stopped and turned on the spot meanwhile.
+    bool catchUpLessStall = false;
     /// After a jump that nothing registered: the scan kept the odometry's reading, not the last
     /// motion, because this log's earlier jumps were mostly the odometry's own steps.
     bool jumpReadingKept = false;
@@ -230,6 +233,10 @@ struct Prediction {
     /// on the spot meanwhile): the step as a catch-up would be, the reading less the motion
     /// registered over the stall (robot frame of the last scan; OdometryLag::stepSinceStall).
     std::optional<mrpt::poses::CPose2D> stallCatchUpStep;
+    /// In a catch-up right after a stall (odometryLagging) whose scans a registration placed:
+    /// the reading less the motion registered over the stall (OdometryLag::stepSinceStall;
+    /// robot frame of the last scan, m, rad; catch_up_less_stall).
+    std::optional<mrpt::poses::CPose2D> catchUpLessStall;
     /// The prediction is the odometry's own step (not the last motion: no jump, no stall, a log
     /// with odometry), so the odometry model bounds its error.
     bool odometryPredicted = false;
@@ -386,7 +393,8 @@ class ScanRegistration {
                           const mrpt::poses::CPose2D& matched);
     /// In a catch-up after a stall (odometryLagging: the last motion predicted) that nothing
     /// placed: ICP from the odometry's own step is the answer when it passes as a
-    /// registration (acceptable()).
+    /// registration (acceptable()); failing that, ICP from that step less the motion
+    /// registered over the stall (Prediction::catchUpLessStall).
     bool keepCaughtUpReading(const matching::PolarScan& scan,
                              const mrpt::poses::CPose2D& sensorOnRobot,
                              const Prediction& prediction, Registration& out);

@@ -114,6 +114,9 @@ struct SlamStatistics {
     /// Of those, placed by ICP from the odometry's step where nothing from the last motion
     /// placed them (ScanRegistration::keepCaughtUpReading: a turn on the spot after a stall).
     std::size_t odometryCatchUpsKept = 0;
+    /// Of those, from the reading less the motion registered over the stall before it
+    /// (catch_up_less_stall: the robot stopped and turned on the spot meanwhile).
+    std::size_t odometryCatchUpsLessStall = 0;
     /// catch-ups after an odometry stall registration saw too little of (OdometryLag::bridges),
     /// predicted as the reading (the motion since the last reading that changed) less the
     /// motion registered meanwhile (bridge_odometry_stalls)

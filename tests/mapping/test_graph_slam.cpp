@@ -1771,9 +1771,10 @@ TEST(GraphSlam, AStallsTurnTheReadingAfterRefutesIsBridgedAsOneNothingPlaced) {
     // 91 % of the scan. As a keyframe it went into the submap, the next scan registered on
     // it, 90 deg off too, although the reading over both scans turned +83 deg; two stalls
     // later the tour was turned by 180 deg (ATE 16 m). A reading that turns otherwise than
-    // the stall's scans were registered by more than one scan interval can turn refutes the
-    // matcher: the stall is bridged as one nothing placed, the scan after it predicted by the
-    // reading from the scan before the stall (0.10 m).
+    // the stall's scans were registered by more than the jump bound of the two intervals it
+    // spans (143 deg here, beyond 90) refutes the matcher: the stall is bridged as one nothing
+    // placed, the scan after it predicted by the reading from the scan before the stall
+    // (0.10 m).
     TOPOSLAM_SHARED_DATA_OR_SKIP(plan, "rooms/lab_intel_furnitures.png");
     expectRuleMendsStallingPlanAtAThird(plan, 14, "bridge_refuted_stalls",
                                         &mapping::SlamStatistics::odometryRefutedStallsBridged, 5.0,

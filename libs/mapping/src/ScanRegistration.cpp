@@ -601,8 +601,7 @@ bool ScanRegistration::tryPastMissedTurn(const matching::PolarScan& scan,
                                          Registration& out) {
     if (!prediction.pastMissedTurn || !prediction.odometryPredicted || !prediction.submap)
         return false;
-    const CPose2D start =
-        prediction.inSubmap + ((-prediction.odometryStep) + *prediction.pastMissedTurn);
+    const CPose2D start = prediction.inSubmapAfter(*prediction.pastMissedTurn);
     if (!answerIcpFrom(scan, sensorOnRobot, prediction, start, out))
         return false;
     out.pastMissedTurn = true;
@@ -777,8 +776,7 @@ bool ScanRegistration::keepCaughtUpReading(const matching::PolarScan& scan,
         // after a stall of 1.04 m and -18 deg where the robot went 0.04 m and turned -47).
         if (!prediction.catchUpLessStall)
             return false;
-        const CPose2D lessStall =
-            prediction.inSubmap + ((-prediction.odometryStep) + *prediction.catchUpLessStall);
+        const CPose2D lessStall = prediction.inSubmapAfter(*prediction.catchUpLessStall);
         if (!answerIcpFrom(scan, sensorOnRobot, prediction, lessStall, out))
             return false;
         out.catchUpLessStall = true;

@@ -274,6 +274,11 @@ struct Prediction {
     /// From the predicted pose to where the robot's last motion would have put it: the
     /// prediction less its step, plus that motion (robot frame of the prediction, m, rad).
     mrpt::poses::CPose2D toLastMotion() const { return (-odometryStep) + lastMotion; }
+    /// Where `step` from the last scan (its robot frame, m, rad) puts the robot, in the
+    /// submap's frame: the prediction less its own step, plus `step`.
+    mrpt::poses::CPose2D inSubmapAfter(const mrpt::poses::CPose2D& step) const {
+        return inSubmap + ((-odometryStep) + step);
+    }
 };
 
 class ScanRegistration {

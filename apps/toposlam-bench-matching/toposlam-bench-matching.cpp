@@ -8,10 +8,10 @@
 #include <toposlam/cli/NumberArg.h>
 #include <toposlam/config/IniFile.h>
 #include <toposlam/io/ProgressDisplay.h>
-#include <toposlam/matching/CGraphMatcherAlignment.h>
 #include <toposlam/matchingbench/MatchingBenchmark.h>
 #include <toposlam/matchingbench/RelationPairs.h>
 #include <toposlam/matchingbench/SimulatedPairs.h>
+#include <toposlam/mrptslam/CGraphMatcherAlignment.h>
 
 #include <filesystem>
 #include <iostream>
@@ -55,7 +55,7 @@ MatcherOptions matcherOptions(const std::string& iniPath) {
     o.ini = toposlam::config::openIniFile(iniPath);
     // The section CGraphMatcherAlignment reads (graph-matcher.ini); its two keys of the MRPT
     // interface do not apply to the benchmark, which calls the matcher directly.
-    matching::CGraphMatcherAlignment::Options alignment;
+    mrptslam::CGraphMatcherAlignment::Options alignment;
     alignment.loadFromConfigFile(*o.ini, "GraphScanMatcher");
     o.graph = alignment.matcher;
     o.icp.loadFromConfigFile(*o.ini, "ICP");

@@ -1,6 +1,6 @@
 // toposlam-slam: laser SLAM over a robot log, run like MRPT's icp-slam:
 //   toposlam-slam <config.ini> <log.{rawlog,clf}> [-o outdir]
-// The algorithm lives in libs/mapping (mapLog, CGraphSlamBuilder); this app parses the
+// The algorithm lives in libs/mapping (mapLog, GraphSlamInput); this app parses the
 // command line, shows progress and writes the outputs.
 #include <toposlam/classes/TopoSlamClasses.h>
 #include <toposlam/cli/CommandLine.h>

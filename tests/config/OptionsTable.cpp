@@ -4,8 +4,8 @@
 #include <toposlam/mapping/GraphSlamOptions.h>
 #include <toposlam/mapping/LogMapper.h>
 #include <toposlam/mapping/OccupancyGridBuilder.h>
-#include <toposlam/matching/CGraphMatcherAlignment.h>
 #include <toposlam/matching/CScanFeaturesMap.h>
+#include <toposlam/mrptslam/CGraphMatcherAlignment.h>
 #include <toposlam/rooms/RoomSegmenter.h>
 #include <toposlam/simulation/SimulatorConfig.h>
 
@@ -23,7 +23,7 @@ const std::map<std::string, OptionsFactory>& sectionStructs() {
         {"CornerExtractor", make<features::CornerExtractorOptions>()},
         {"SegmentExtractor", make<features::SegmentExtractorOptions>()},
         {"SplitAndMergeExtractor", make<features::SplitAndMergeOptions>()},
-        {"GraphScanMatcher", make<matching::CGraphMatcherAlignment::Options>()},
+        {"GraphScanMatcher", make<mrptslam::CGraphMatcherAlignment::Options>()},
         {"Laser", make(sim.log.laser)},
         {"Odometry", make(sim.log.odometry)},
         {"People", make(sim.log.people)},

@@ -13,7 +13,7 @@
 #include <mrpt/serialization/CArchive.h>
 #include <toposlam/features/CObservationLaserFeatures.h>
 #include <toposlam/io/JsonFile.h>
-#include <toposlam/mapping/CGraphSlamBuilder.h>
+#include <toposlam/mrptslam/CGraphSlamBuilder.h>
 
 #include <cmath>
 #include <fstream>
@@ -50,7 +50,7 @@ test::SimulatedDrive roomTour() {
 
 TEST(CGraphSlamBuilder, DrivenByActionsAndSensoryFramesLikeMrptBuilders) {
     const auto drive = roomTour();
-    mapping::CGraphSlamBuilder builder;
+    mrptslam::CGraphSlamBuilder builder;
     builder.loadFromConfigFile(mrpt::config::CConfigFile(test::configIni("toposlam-slam.ini")));
     builder.initialize();
     for (std::size_t i = 0; i < drive.scans.size(); ++i) {
@@ -101,7 +101,7 @@ TEST(CGraphSlamBuilder, DrivenByActionsAndSensoryFramesLikeMrptBuilders) {
 TEST(CGraphSlamBuilder, AnUpsideDownLaserIsMappedAsTheUprightOne) {
     const auto drive = roomTour();
     const auto run = [&](bool upsideDown) {
-        mapping::CGraphSlamBuilder builder;
+        mrptslam::CGraphSlamBuilder builder;
         builder.loadFromConfigFile(mrpt::config::CConfigFile(test::configIni("toposlam-slam.ini")));
         builder.initialize();
         for (std::size_t i = 0; i < drive.scans.size(); ++i) {
@@ -136,7 +136,7 @@ TEST(CGraphSlamBuilder, MapsTheFirstLaserAndSkipsOthersKeepingTheirOdometry) {
     // alone.
     const auto drive = roomTour();
     const auto run = [&](bool withOther) {
-        auto builder = std::make_unique<mapping::CGraphSlamBuilder>();
+        auto builder = std::make_unique<mrptslam::CGraphSlamBuilder>();
         builder->loadFromConfigFile(
             mrpt::config::CConfigFile(test::configIni("toposlam-slam.ini")));
         builder->initialize();

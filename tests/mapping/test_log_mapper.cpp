@@ -19,6 +19,7 @@
 #include <sys/stat.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -286,6 +287,39 @@ TEST(LogMapper, AMisspeltSectionIsAConfigErrorButMrptMapSectionsAreNot) {
     EXPECT_EQ(test::errorOf<config::ConfigError>(
                   [&] { mapping::mapLog(dir.file("sim.rawlog"), icpSlam); }),
               "");
+}
+
+// libmrpt-slam pulls in mrpt-vision, OpenCV's video I/O, Qt and FFmpeg: 117 shared libraries
+// that cost 0.13 s at every start. The graph engine's app links none of them; engine = icp
+// loads them with libtoposlam-mrptslam.so (IcpEngine.h). The dynamic loader's own account
+// (LD_DEBUG=files) says which libraries each run loaded.
+TEST(LogMapper, TheAppLoadsMrptSlamOnlyForTheIcpEngine) {
+    test::TempDir dir;
+    writeLog(dir.file("sim.rawlog"));
+    std::string ini = test::readFile(test::configIni("toposlam-slam.ini"));
+    test::writeText(dir.file("graph.ini"), ini);
+    ini = std::regex_replace(ini, std::regex("\nengine = graph"), "\nengine = icp");
+    test::writeText(dir.file("icp.ini"), ini);
+    const auto run = [&](const std::string& engine) {
+        ::setenv("LD_DEBUG", "files", 1);
+        const auto result = test::runApp("toposlam-slam", "'" + dir.file(engine + ".ini") + "' '" +
+                                                              dir.file("sim.rawlog") + "' -o '" +
+                                                              dir.file(engine) + "'");
+        ::unsetenv("LD_DEBUG");
+        return result;
+    };
+    const auto graph = run("graph");
+    ASSERT_EQ(graph.exitCode, 0) << graph.output;
+    EXPECT_TRUE(test::contains(graph.output, "libmrpt-maps.so")) << "LD_DEBUG said nothing";
+    EXPECT_FALSE(test::contains(graph.output, "libmrpt-slam.so"));
+    EXPECT_FALSE(test::contains(graph.output, "libmrpt-vision.so"));
+    EXPECT_FALSE(test::contains(graph.output, "libtoposlam-mrptslam.so"));
+
+    const auto icp = run("icp");
+    ASSERT_EQ(icp.exitCode, 0) << icp.output;
+    EXPECT_TRUE(test::contains(icp.output, "libtoposlam-mrptslam.so"));
+    EXPECT_TRUE(test::contains(icp.output, "libmrpt-slam.so"));
+    EXPECT_TRUE(test::contains(test::readFile(dir.file("icp/summary.txt")), "engine: icp"));
 }
 
 TEST(LogMapper, AppWritesOutputsAndRejectsBadInput) {

@@ -4,7 +4,7 @@
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/slam/CICP.h>
 #include <toposlam/config/ConfigError.h>
-#include <toposlam/matching/CGraphMatcherAlignment.h>
+#include <toposlam/mrptslam/CGraphMatcherAlignment.h>
 
 #include <TestSupport.h>
 
@@ -35,7 +35,7 @@ TEST(ConfigIni, EveryStepOptionIsReadIncludingBothIcpStages) {
     EXPECT_EQ(o.icp.translationTolerance, GraphMatcherOptions().icp.translationTolerance);
     // The MRPT interface's section is the matcher's plus two keys of its own.
     ini.write("GraphScanMatcher", "use_guess", "false");
-    toposlam::matching::CGraphMatcherAlignment::Options alignment;
+    toposlam::mrptslam::CGraphMatcherAlignment::Options alignment;
     alignment.loadFromConfigFile(ini, "GraphScanMatcher");
     EXPECT_FALSE(alignment.useGuess);
     EXPECT_EQ(alignment.matcher.scanIcp.translationTolerance, 0.002);

@@ -10,8 +10,8 @@
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/poses/CPosePDFGaussian.h>
 #include <mrpt/serialization/CArchive.h>
-#include <toposlam/matching/CGraphMatcherAlignment.h>
 #include <toposlam/matching/CScanFeaturesMap.h>
+#include <toposlam/mrptslam/CGraphMatcherAlignment.h>
 
 #include <cmath>
 #include <random>
@@ -20,6 +20,8 @@
 
 using mrpt::poses::CPose2D;
 using namespace toposlam::matching;
+using toposlam::mrptslam::CGraphMatcherAlignment;
+using toposlam::mrptslam::TGraphMatcherAlignmentResult;
 
 namespace {
 toposlam::simulation::LaserModel offsetLaser() {

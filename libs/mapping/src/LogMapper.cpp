@@ -5,14 +5,15 @@
 #include <toposlam/io/CpuTime.h>
 #include <toposlam/io/InputError.h>
 #include <toposlam/io/LaserLogReader.h>
-#include <toposlam/mapping/CGraphSlamBuilder.h>
-#include <toposlam/mapping/IcpSlam.h>
+#include <toposlam/mapping/GraphSlamInput.h>
+#include <toposlam/mapping/IcpEngine.h>
 #include <toposlam/mapping/LogMapper.h>
 #include <toposlam/mapping/ManhattanAlignment.h>
 #include <toposlam/mapping/OccupancyGridBuilder.h>
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -61,25 +62,25 @@ void runGraphEngine(const std::string& logPath, const mrpt::config::CConfigFileB
                     const SlamEngineOptions& engine, const io::ProgressCallback& progress,
                     std::vector<PosedScan>& scans, io::Trajectory2D& trajectory,
                     MappingResult& result) {
-    CGraphSlamBuilder builder;
-    builder.loadFromConfigFile(ini);
-    builder.initialize();
+    GraphSlamInput input;
+    input.loadFromConfigFile(ini);
+    input.start();
     readLog(logPath, engine, progress, result, [&](const io::LaserLogRecord& record) {
         if (record.hasOdometry) {
             auto odometry = mrpt::obs::CObservationOdometry::Create();
             odometry->odometry = record.odometry;
             odometry->timestamp = record.scan->timestamp;
             odometry->sensorLabel = "ODOMETRY";
-            builder.processObservation(odometry);
+            input.processObservation(odometry);
         }
-        if (record.storedFeatures)  // an annotated rawlog: the builder reuses them
-            builder.processObservation(record.storedFeatures);
-        builder.processObservation(record.scan);
+        if (record.storedFeatures)  // an annotated rawlog: the engine reuses them
+            input.processObservation(record.storedFeatures);
+        input.processObservation(record.scan);
         trajectory.push_back({record.fileStamp, {}});
         scans.push_back({record.scan, {}});
     });
-    builder.finish();
-    const GraphSlam& slam = builder.slam();
+    input.finish();
+    const GraphSlam& slam = input.slam();
     const std::vector<mrpt::poses::CPose2D> poses = slam.scanPoses();
     for (std::size_t i = 0; i < scans.size(); ++i) {
         scans[i].robotPose = poses[i];
@@ -91,17 +92,17 @@ void runGraphEngine(const std::string& logPath, const mrpt::config::CConfigFileB
     result.odometryCalibration = slam.options().odometryCalibration.enabled;
     result.contestedLoops = slam.options().loopContestedSupport > 0;
     result.graph = slam.graph();
-    builder.getCurrentlyBuiltMap(result.keyframes);
+    input.getKeyframes(result.keyframes);
 }
 
-/// MRPT's ICP map builder (icp-slam's engine) over the log.
+/// MRPT's ICP map builder (icp-slam's engine) over the log, loaded for it (IcpEngine.h).
 void runIcpEngine(const std::string& logPath, const mrpt::config::CConfigFileBase& ini,
                   const SlamEngineOptions& engine, const io::ProgressCallback& progress,
                   std::vector<PosedScan>& scans, io::Trajectory2D& trajectory,
                   MappingResult& result) {
-    IcpSlam slam(ini);
+    const std::unique_ptr<IcpEngine> slam = loadIcpEngine(ini);
     readLog(logPath, engine, progress, result, [&](const io::LaserLogRecord& record) {
-        const CPose2D pose = slam.process(record);
+        const CPose2D pose = slam->process(record);
         trajectory.push_back({record.fileStamp, pose.asTPose()});
         scans.push_back({record.scan, pose});
     });
@@ -134,8 +135,8 @@ void alignWithWalls(const OccupancyGridOptions& options, std::vector<PosedScan>&
 /// settings at their defaults. MRPT's map definitions ([MappingApplication_<map>_<NN>_<opts>],
 /// read by engine = icp) are MRPT's to check.
 void requireSlamSections(const mrpt::config::CConfigFileBase& ini) {
-    std::vector<std::string> known = CGraphSlamBuilder::configSections();
-    known.insert(known.end(), {kEngineSection, IcpSlam::kMappingSection, IcpSlam::kIcpSection});
+    std::vector<std::string> known = GraphSlamInput::configSections();
+    known.insert(known.end(), {kEngineSection, IcpEngine::kMappingSection, IcpEngine::kIcpSection});
     std::vector<std::string> sections;
     ini.getAllSections(sections);
     for (const std::string& s : sections) {
@@ -158,7 +159,7 @@ MappingResult mapLog(const std::string& logPath, const mrpt::config::CConfigFile
     result.engine = engine.engine;
     OccupancyGridOptions gridOptions;
     // The grid of the optimised poses has the builder's options, whichever engine ran.
-    gridOptions.loadFromConfigFile(ini, CGraphSlamBuilder::kGridSection);
+    gridOptions.loadFromConfigFile(ini, GraphSlamInput::kGridSection);
 
     std::vector<PosedScan> scans;
     if (engine.engine == "graph")

@@ -1,5 +1,6 @@
 #pragma once
-// Graph SLAM on TopoSLAM's own features and matchers (the engine behind CGraphSlamBuilder):
+// Graph SLAM on TopoSLAM's own features and matchers (fed by GraphSlamInput; CGraphSlamBuilder
+// wraps it as an MRPT map builder):
 //   front end  every scan is registered against the local submap (ScanRegistration:
 //              point-to-line ICP from the odometry prediction, the graph matcher where that
 //              fails, odometry where both fail); keyframes (distance / angle / overlap rule)

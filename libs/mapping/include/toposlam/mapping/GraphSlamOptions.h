@@ -1,5 +1,5 @@
 #pragma once
-// Settings of the graph SLAM (CGraphSlamBuilder), one .ini section ([GraphSlam] in
+// Settings of the graph SLAM (GraphSlamInput, CGraphSlamBuilder), one .ini section ([GraphSlam] in
 // config_ini/toposlam-slam.ini, every key commented there). Units: m, and degrees in the file
 // (keys ending in _deg), radians in code. Loading is strict (config/Options.h).
 #include <toposlam/config/Options.h>

@@ -2,10 +2,10 @@
 // SLAM over a whole laser log: read every scan (any format io::LaserLogReader accepts), run
 // the configured engine, and produce the trajectory, the occupancy grid and, for the graph
 // engine, the keyframe graph and keyframes.
-//   engine = graph  TopoSLAM's graph SLAM (CGraphSlamBuilder: our features, point-to-line
+//   engine = graph  TopoSLAM's graph SLAM (GraphSlamInput: our features, point-to-line
 //                   registration, graph matcher, loop closure, pose-graph optimisation)
-//   engine = icp    MRPT's CMetricMapBuilderICP, the engine of icp-slam (IcpSlam), kept as
-//                   the comparison row
+//   engine = icp    MRPT's CMetricMapBuilderICP, the engine of icp-slam (IcpEngine.h, loaded
+//                   only for it), kept as the comparison row
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/maps/CSimpleMap.h>
@@ -25,8 +25,8 @@ namespace toposlam::mapping {
 
 /// Section [Slam] of config_ini/toposlam-slam.ini: which SLAM engine maps the log.
 struct SlamEngineOptions : public config::Options {
-    /// "graph": TopoSLAM's graph SLAM (CGraphSlamBuilder); "icp": MRPT's ICP map builder,
-    /// the engine of icp-slam (IcpSlam), kept as the comparison row of B3.
+    /// "graph": TopoSLAM's graph SLAM (GraphSlamInput); "icp": MRPT's ICP map builder,
+    /// the engine of icp-slam (IcpEngine.h), kept as the comparison row of B3.
     std::string engine = "graph";
     /// The laser to map with, by sensor label (CARMEN: FLASER, RLASER, ROBOTLASER1, ...).
     /// "auto": the log's only laser, or when it has several its front laser (CARMEN) or the
@@ -71,8 +71,8 @@ struct MappingResult {
 };
 
 /// Runs SLAM on `logPath` with the settings in `ini`: [Slam] engine (graph, the default, or
-/// icp); the graph engine's sections (CGraphSlamBuilder.h) or icp-slam's [MappingApplication]
-/// and [ICP] (IcpSlam.h); and [OccupancyGrid] (OccupancyGridOptions, with the alignment of
+/// icp); the graph engine's sections (GraphSlamInput.h) or icp-slam's [MappingApplication]
+/// and [ICP] (IcpEngine.h); and [OccupancyGrid] (OccupancyGridOptions, with the alignment of
 /// the map to its dominant walls, ManhattanAlignment.h; a bad value there is a
 /// config::ConfigError naming the file when `ini` is an mrpt::config::CConfigFile). Reports
 /// progress through `progress` (fraction of the file read, scans). Throws io::InputError for

@@ -17,11 +17,11 @@
 #include <mrpt/slam/CMetricMapsAlignmentAlgorithm.h>
 #include <toposlam/matching/GraphScanMatcher.h>
 
-namespace toposlam::matching {
+namespace toposlam::mrptslam {
 
 /// outInfo of CGraphMatcherAlignment: the matcher's full result.
 struct TGraphMatcherAlignmentResult : public mrpt::slam::TMetricMapAlignmentResult {
-    MatchResult match;
+    matching::MatchResult match;
     /// match.pose converted into map frames: pose of m2 relative to m1.
     mrpt::poses::CPose2D mapPose;
 };
@@ -31,7 +31,7 @@ class CGraphMatcherAlignment : public mrpt::slam::CMetricMapsAlignmentAlgorithm 
     /// Section [GraphScanMatcher] of config_ini/graph-matcher.ini: the matcher's keys plus
     /// use_guess and unreliable_variance.
     struct Options : public config::Options {
-        GraphMatcherOptions matcher;
+        matching::GraphMatcherOptions matcher;
         bool useGuess = true;
         double unreliableVariance = 1e4;  ///< m^2 and rad^2
         void declare(config::OptionsSchema& s) override;
@@ -50,7 +50,7 @@ class CGraphMatcherAlignment : public mrpt::slam::CMetricMapsAlignmentAlgorithm 
         mrpt::optional_ref<mrpt::slam::TMetricMapAlignmentResult> outInfo = std::nullopt) override;
 
   private:
-    GraphScanMatcher matcher_;
+    matching::GraphScanMatcher matcher_;
 };
 
-}  // namespace toposlam::matching
+}  // namespace toposlam::mrptslam

@@ -6,7 +6,7 @@
 #include <toposlam/config/ConfigError.h>
 #include <toposlam/config/IniFile.h>
 #include <toposlam/config/Options.h>
-#include <toposlam/mapping/IcpSlam.h>
+#include <toposlam/mrptslam/IcpSlam.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +14,7 @@
 #include <sstream>
 #include <string>
 
-namespace toposlam::mapping {
+namespace toposlam::mrptslam {
 
 namespace {
 
@@ -105,4 +105,10 @@ mrpt::poses::CPose2D IcpSlam::process(const io::LaserLogRecord& record) {
     return mrpt::poses::CPose2D(pose);
 }
 
-}  // namespace toposlam::mapping
+}  // namespace toposlam::mrptslam
+
+/// mapping::loadIcpEngine()'s entry point (mapping::kIcpEngineFactorySymbol).
+extern "C" toposlam::mapping::IcpEngine* toposlam_mrptslam_make_icp_engine(
+    const mrpt::config::CConfigFileBase& ini) {
+    return new toposlam::mrptslam::IcpSlam(ini);
+}

@@ -1,13 +1,17 @@
-#include <toposlam/matching/CGraphMatcherAlignment.h>
 #include <toposlam/matching/CScanFeaturesMap.h>
+#include <toposlam/mrptslam/CGraphMatcherAlignment.h>
 #include <Eigen/Dense>
 
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
 
-namespace toposlam::matching {
+namespace toposlam::mrptslam {
 
+using matching::CScanFeaturesMap;
+using matching::GraphMatcherOptions;
+using matching::MatchResult;
+using matching::MatchStatus;
 using mrpt::poses::CPose2D;
 
 CGraphMatcherAlignment::CGraphMatcherAlignment() {
@@ -116,4 +120,4 @@ mrpt::poses::CPose3DPDF::Ptr CGraphMatcherAlignment::Align3DPDF(
     return out;
 }
 
-}  // namespace toposlam::matching
+}  // namespace toposlam::mrptslam

@@ -23,7 +23,9 @@ IcpEngineFactory icpEngineFactory() {
                 .string();
         void* library = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
         if (!library)
-            throw std::runtime_error("engine = icp needs " + path + ": " + dlerror());
+            throw std::runtime_error(  // dlerror() names the file
+                "engine = icp needs libtoposlam-mrptslam.so beside libtoposlam-mapping.so: " +
+                std::string(dlerror()));
         void* entry = dlsym(library, kIcpEngineFactorySymbol);
         if (!entry)
             throw std::runtime_error(path + " has no " + kIcpEngineFactorySymbol + ": " +

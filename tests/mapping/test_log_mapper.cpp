@@ -322,6 +322,30 @@ TEST(LogMapper, TheAppLoadsMrptSlamOnlyForTheIcpEngine) {
     EXPECT_TRUE(test::contains(test::readFile(dir.file("icp/summary.txt")), "engine: icp"));
 }
 
+// engine = icp loads libtoposlam-mrptslam.so from beside libtoposlam-mapping.so. A copy of the
+// latter alone in a folder that LD_LIBRARY_PATH puts first (ahead of the app's RUNPATH) has
+// none beside it: the run stops with the library named, before any output is written.
+TEST(LogMapper, TheIcpEngineWithoutItsLibraryIsAnErrorNamingIt) {
+    test::TempDir dir;
+    writeLog(dir.file("sim.rawlog"));
+    std::string ini = test::readFile(test::configIni("toposlam-slam.ini"));
+    ini = std::regex_replace(ini, std::regex("\nengine = graph"), "\nengine = icp");
+    test::writeText(dir.file("icp.ini"), ini);
+    fs::create_directory(dir.file("lib"));
+    fs::copy_file(fs::path(test::pluginPath()).parent_path() / "libtoposlam-mapping.so",
+                  dir.file("lib/libtoposlam-mapping.so"));
+    ::setenv("LD_LIBRARY_PATH", dir.file("lib").c_str(), 1);
+    const auto run =
+        test::runApp("toposlam-slam", "'" + dir.file("icp.ini") + "' '" + dir.file("sim.rawlog") +
+                                          "' -o '" + dir.file("out") + "'");
+    ::unsetenv("LD_LIBRARY_PATH");
+    EXPECT_EQ(run.exitCode, 1) << run.output;
+    EXPECT_TRUE(test::contains(run.output, "engine = icp needs libtoposlam-mrptslam.so"))
+        << run.output;
+    EXPECT_TRUE(test::contains(run.output, dir.file("lib/libtoposlam-mrptslam.so"))) << run.output;
+    EXPECT_FALSE(fs::exists(dir.file("out")));
+}
+
 TEST(LogMapper, AppWritesOutputsAndRejectsBadInput) {
     test::TempDir dir;
     writeLog(dir.file("sim.rawlog"));

@@ -34,6 +34,16 @@ bool looksLikeText(const std::string& path) {
 
 }  // namespace
 
+mrpt::obs::CObservationOdometry::Ptr LaserLogRecord::odometryObservation() const {
+    if (!hasOdometry)
+        return nullptr;
+    auto observation = mrpt::obs::CObservationOdometry::Create();
+    observation->odometry = odometry;
+    observation->timestamp = scan->timestamp;
+    observation->sensorLabel = "ODOMETRY";
+    return observation;
+}
+
 const char* toString(LaserLogFormat f) {
     switch (f) {
         case LaserLogFormat::RawlogSensoryFrames:

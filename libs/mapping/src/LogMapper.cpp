@@ -1,4 +1,3 @@
-#include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/poses/CPose3DPDF.h>
 #include <mrpt/system/datetime.h>
 #include <toposlam/config/IniFile.h>
@@ -66,13 +65,7 @@ void runGraphEngine(const std::string& logPath, const mrpt::config::CConfigFileB
     input.loadFromConfigFile(ini);
     input.start();
     readLog(logPath, engine, progress, result, [&](const io::LaserLogRecord& record) {
-        if (record.hasOdometry) {
-            auto odometry = mrpt::obs::CObservationOdometry::Create();
-            odometry->odometry = record.odometry;
-            odometry->timestamp = record.scan->timestamp;
-            odometry->sensorLabel = "ODOMETRY";
-            input.processObservation(odometry);
-        }
+        input.processObservation(record.odometryObservation());  // null (ignored) if none
         if (record.storedFeatures)  // an annotated rawlog: the engine reuses them
             input.processObservation(record.storedFeatures);
         input.processObservation(record.scan);

@@ -1,6 +1,5 @@
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/core/bits_math.h>
-#include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/poses/CPose3DPDF.h>
 #include <toposlam/config/ConfigError.h>
@@ -91,14 +90,9 @@ IcpSlam::IcpSlam(const mrpt::config::CConfigFileBase& ini, const std::string& ma
 }
 
 mrpt::poses::CPose2D IcpSlam::process(const io::LaserLogRecord& record) {
-    if (record.hasOdometry) {
-        // The builder predicts each scan's pose from the odometry increment since the last one.
-        auto odometry = mrpt::obs::CObservationOdometry::Create();
-        odometry->odometry = record.odometry;
-        odometry->timestamp = record.scan->timestamp;
-        odometry->sensorLabel = "ODOMETRY";
-        builder_.processObservation(odometry);
-    }
+    // The builder predicts each scan's pose from the odometry increment since the last one.
+    if (record.hasOdometry)
+        builder_.processObservation(record.odometryObservation());
     builder_.processObservation(record.scan);
     mrpt::poses::CPose3D pose;
     builder_.getCurrentPoseEstimation()->getMean(pose);

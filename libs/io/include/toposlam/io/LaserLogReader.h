@@ -75,6 +75,7 @@
 #include <mrpt/math/TPose2D.h>
 #include <mrpt/obs/CObservation.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/poses/CPose2D.h>
 
 #include <cstddef>
@@ -137,6 +138,10 @@ struct LaserLogRecord {
     /// the log has none (CARMEN logs never have). The class lives in libs/features, which
     /// builds on this library; read it with laserFeatures().
     mrpt::obs::CObservation::Ptr storedFeatures;
+
+    /// `odometry` as MRPT's map builders take it: a CObservationOdometry labelled "ODOMETRY"
+    /// with the scan's timestamp, to be given before the scan. Null when hasOdometry is false.
+    mrpt::obs::CObservationOdometry::Ptr odometryObservation() const;
 
     /// storedFeatures as its class, or null; include
     /// <toposlam/features/CObservationLaserFeatures.h> to call it.

@@ -122,6 +122,9 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "ICP correcting the prediction by more than this along the heading runs again "
            "without small objects near the laser (people); 0 = off")
         .atLeast(0);
+    s.flag("foreground_beyond_odometry", foregroundBeyondOdometry,
+           "ICP correcting the odometry's step beyond unsettled_max_chi2 also runs again without "
+           "small objects near the laser; kept where the rest of the scan fits it no worse");
     s.real("foreground_max_range", foregroundMaxRange, "m",
            "... objects whose nearest reading is at most this far ...")
         .above(0);

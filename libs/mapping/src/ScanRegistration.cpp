@@ -131,16 +131,18 @@ ScanRegistration::IcpAttempt ScanRegistration::icpFrom(const matching::PolarScan
     return a;
 }
 
-bool ScanRegistration::outrunsOdometry(const Prediction& prediction, const CPose2D& pose) const {
-    if (!(options_.unsettledMaxChi2 > 0) || !prediction.odometryPredicted)
-        return false;
+double ScanRegistration::odometryChi2(const Prediction& prediction, const CPose2D& pose) const {
     const CPose2D correction = pose - prediction.inSubmap;
     const Eigen::Vector3d e(correction.x(), correction.y(), mrpt::math::wrapToPi(correction.phi()));
     const CMatrixDouble33 c =
         odometryCovariance(prediction.odometryStep.norm(),
                            std::abs(mrpt::math::wrapToPi(prediction.odometryStep.phi())));
-    const double chi2 = e.dot(c.asEigen().ldlt().solve(e));
-    return chi2 > options_.unsettledMaxChi2;
+    return e.dot(c.asEigen().ldlt().solve(e));
+}
+
+bool ScanRegistration::outrunsOdometry(const Prediction& prediction, const CPose2D& pose) const {
+    return options_.unsettledMaxChi2 > 0 && prediction.odometryPredicted &&
+           odometryChi2(prediction, pose) > options_.unsettledMaxChi2;
 }
 
 bool ScanRegistration::plausibleCorrection(const CPose2D& correction, bool boundSideways,
@@ -174,12 +176,28 @@ void ScanRegistration::checkAlongHeading(const matching::PolarScan& scan,
                                          const CPose2D& sensorOnRobot, const Prediction& prediction,
                                          const CPose2D& from, IcpAttempt& icp, Registration& out) {
     const double along = std::abs((icp.robot - from).x());
-    const bool foreground = options_.foregroundCheck > 0 && along > options_.foregroundCheck;
+    const bool ahead = options_.foregroundCheck > 0 && along > options_.foregroundCheck;
+    const bool outruns = options_.foregroundCheck > 0 && options_.foregroundBeyondOdometry &&
+                         outrunsOdometry(prediction, icp.robot);
     const bool support = options_.alongHeadingCheck > 0 && along > options_.alongHeadingCheck;
-    if (foreground && foreground_.remove(scan, foregroundOptions_, background_) > 0) {
+    if ((ahead || outruns) && foreground_.remove(scan, foregroundOptions_, background_) > 0) {
         IcpAttempt alt = icpFrom(background_, sensorOnRobot, *prediction.submap, from);
         const CPose2D altCorrection = alt.robot - from;
-        if (acceptable(alt, from)) {
+        // Beyond the odometry's noise on the objects' evidence alone: without them ICP stays
+        // within it and keeps less than half of the correction (a quarter of its chi-square),
+        // and the rest of the scan fits that no worse. If it fits too little of the scan,
+        // tryIcp fails it and the scan goes on as a failed ICP.
+        if (outruns && !outrunsOdometry(prediction, alt.robot) &&
+            odometryChi2(prediction, alt.robot) < 0.25 * odometryChi2(prediction, icp.robot)) {
+            const matching::LineMap& map = prediction.submap->map();
+            if (readingsOnMap(map, background_, alt.robot + sensorOnRobot) >=
+                readingsOnMap(map, background_, icp.robot + sensorOnRobot)) {
+                out.withoutForeground = true;
+                icp = alt;
+                return;
+            }
+        }
+        if (ahead && acceptable(alt, from)) {
             // Without the objects ICP keeps most of the odometry's step: they took it back.
             // Or it slid along a corridor: the walls left fix nothing along it.
             const bool keptStep = std::abs(altCorrection.x()) < 0.5 * along;

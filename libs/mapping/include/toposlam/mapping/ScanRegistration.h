@@ -27,13 +27,17 @@
 //     robot's heading, it is run again without the small objects close to the laser
 //     (ForegroundObjects.h: a person walking just ahead, whom the submap holds where the next
 //     scan sees it again); if that keeps less than half of the correction and passes the
-//     same tests, it is the answer. And a correction of more than along_heading_check along
-//     the heading must be borne out by the scan (by its rest, without such objects): where
-//     the odometry's position along the heading fits it nearly as well, along a corridor whose
-//     walls do not fix that position, or where ICP's pose has the scan see through walls the
-//     submap holds (along_heading_free_space), the pose is moved back there. Both corrections are
-//     measured from the prediction, except in an odometry stall where ICP from the standstill
-//     and from the last motion end at the same pose, nearer the last motion, on a step
+//     same tests, it is the answer. So too where ICP corrects the odometry's step beyond its
+//     noise (unsettled_max_chi2; a turn as well: people close by, whom the submap holds from
+//     an earlier keyframe): where ICP without the objects stays within that noise and the
+//     rest of the scan fits it no worse, it is the answer, or a failed ICP where it fits too
+//     little of the scan (foreground_beyond_odometry). And a correction of more than
+//     along_heading_check along the heading must be borne out by the scan (by its rest, without
+//     such objects): where the odometry's position along the heading fits it nearly as well, along
+//     a corridor whose walls do not fix that position, or where ICP's pose has the scan see through
+//     walls the submap holds (along_heading_free_space), the pose is moved back there. Both
+//     corrections are measured from the prediction, except in an odometry stall where ICP from the
+//     standstill and from the last motion end at the same pose, nearer the last motion, on a step
 //     straight on: the scan bore that step out, and they are measured from the last motion;
 //  2. otherwise (poor overlap, a correction too large to trust, or an odometry jump) the graph
 //     matcher against the last keyframe, from the prediction and, failing that, guess-free.
@@ -121,7 +125,8 @@ struct Registration {
     /// the jump bounds on second_opinion_margin more of the scan
     /// (second_opinion_refuted_beyond_jump).
     bool refutedBeyondJump = false;
-    /// ICP without the scan's foreground objects (foreground_check), which took back the step.
+    /// ICP without the scan's foreground objects (foreground_check), which took back the step,
+    /// or turned or pushed it beyond the odometry's noise (foreground_beyond_odometry).
     bool withoutForeground = false;
     /// The graph matcher's answer beyond the jump bounds, confirmed by ICP on the submap
     /// (confirm_large_corrections).
@@ -305,10 +310,12 @@ class ScanRegistration {
     /// them (people, mostly; ForegroundObjects.h with foreground_max_range and _width).
     bool seesForegroundObjects(const matching::PolarScan& scan) const;
 
-    /// True when `pose` (robot, in the prediction's submap frame) corrects the odometry's
-    /// predicted step by more than unsettled_max_chi2 (a chi-square, 3 dof) of the odometry
-    /// model for that step (odometryCovariance).
-    /// False when the prediction is not the odometry's own step or the rule is off.
+    /// The chi-square (3 dof) of the odometry model for the predicted step (odometryCovariance)
+    /// by which `pose` (robot, in the prediction's submap frame) corrects that step.
+    double odometryChi2(const Prediction& prediction, const mrpt::poses::CPose2D& pose) const;
+    /// True when `pose` corrects the odometry's predicted step by more than unsettled_max_chi2
+    /// (odometryChi2). False when the prediction is not the odometry's own step or the rule is
+    /// off.
     bool outrunsOdometry(const Prediction& prediction, const mrpt::poses::CPose2D& pose) const;
 
   private:
@@ -347,14 +354,19 @@ class ScanRegistration {
                      const mrpt::poses::CPose2D& sensorOnRobot, const IcpAttempt& attempt,
                      const mrpt::poses::CPose2D& start, const IcpAttempt& other,
                      const mrpt::poses::CPose2D& otherStart) const;
-    /// The checks of a large correction along the heading, on `icp`, ICP from the prediction.
+    /// The checks of a large correction along the heading (or beyond the odometry's noise), on
+    /// `icp`, ICP from the prediction.
     /// The foreground check (foreground_check): replaced by ICP without the scan's foreground
-    /// objects when that keeps less than half of the correction. Then the along-heading check
-    /// (along_heading_check), on that ICP and the scan without the objects if there were any:
-    /// held at the odometry's position along the heading when the readings do not fit better
-    /// at ICP's. Sets out.withoutForeground and out.alongHeading. The correction is measured
-    /// from `from`: the prediction's pose, or the last motion's start where a stall's step was
-    /// borne out from it (stallStepBorneOut_).
+    /// objects when that keeps less than half of the correction, or, where `icp` corrects the
+    /// odometry's step beyond unsettled_max_chi2 (foreground_beyond_odometry), when that stays
+    /// within it, keeps less than half of the correction and the rest of the scan fits it no
+    /// worse (then without the along-heading
+    /// check; tryIcp judges it as any ICP, and fails it on too little of the scan). Then the
+    /// along-heading check (along_heading_check), on that ICP and the scan without the objects if
+    /// there were any: held at the odometry's position along the heading when the readings do not
+    /// fit better at ICP's. Sets out.withoutForeground and out.alongHeading. The correction is
+    /// measured from `from`: the prediction's pose, or the last motion's start where a stall's step
+    /// was borne out from it (stallStepBorneOut_).
     void checkAlongHeading(const matching::PolarScan& scan,
                            const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
                            const mrpt::poses::CPose2D& from, IcpAttempt& icp, Registration& out);

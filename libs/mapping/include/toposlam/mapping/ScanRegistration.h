@@ -360,13 +360,12 @@ class ScanRegistration {
     /// objects when that keeps less than half of the correction, or, where `icp` corrects the
     /// odometry's step beyond unsettled_max_chi2 (foreground_beyond_odometry), when that stays
     /// within it, keeps less than half of the correction and the rest of the scan fits it no
-    /// worse (then without the along-heading
-    /// check; tryIcp judges it as any ICP, and fails it on too little of the scan). Then the
-    /// along-heading check (along_heading_check), on that ICP and the scan without the objects if
-    /// there were any: held at the odometry's position along the heading when the readings do not
-    /// fit better at ICP's. Sets out.withoutForeground and out.alongHeading. The correction is
-    /// measured from `from`: the prediction's pose, or the last motion's start where a stall's step
-    /// was borne out from it (stallStepBorneOut_).
+    /// worse (then without the along-heading check; tryIcp judges it as any ICP, and fails it
+    /// on too little of the scan). Then the along-heading check (along_heading_check), on that ICP
+    /// and the scan without the objects if there were any: held at the odometry's position along
+    /// the heading when the readings do not fit better at ICP's. Sets out.withoutForeground and
+    /// out.alongHeading. The correction is measured from `from`: the prediction's pose, or the last
+    /// motion's start where a stall's step was borne out from it (stallStepBorneOut_).
     void checkAlongHeading(const matching::PolarScan& scan,
                            const mrpt::poses::CPose2D& sensorOnRobot, const Prediction& prediction,
                            const mrpt::poses::CPose2D& from, IcpAttempt& icp, Registration& out);

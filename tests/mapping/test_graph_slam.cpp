@@ -1987,38 +1987,42 @@ TEST(MappingOutputs, CountsAgreeInNumber) {
     mapping::MappingResult result;
     result.statistics.emplace();
     mapping::SlamStatistics& st = *result.statistics;
-    st.scans = st.registeredByIcp = 100;
+    st.scans = 101;
+    st.registeredByIcp = 96;
+    st.registeredByGraphMatcher = 3;
+    st.registrationFailed = 1;
     st.submaps = st.optimizations = st.odometryJumps = st.loopCandidates = 1;
+    st.odometryJumpsBetween = 1;
     st.odometryCatchUps = 2;
     st.odometryShortfallsBridged = st.odometryTranslationStalls = 1;
     const std::string summary = mapping::formatSummary(result);
     for (const char* phrase :
          {" in 1 submap;",
-          "; 1 odometry jump (0 of them borne out by the scan: a fast turn; 0 taken as read "
-          "where the scan fitted them and the last motion alike; 0 of those two corrected "
-          "sideways by the turn of the step's chord; 0 placed by ICP "
-          "between the odometry's step and the last motion; 0 placed by ICP over the last two "
-          "readings together (the first fell short); 0 placed by nothing and kept as "
-          "read: this log's jumps were mostly the odometry's own steps); 0 odometry stalls "
-          "bridged (0 of them stalls nothing had placed, 0 whose turn the graph matcher alone "
-          "registered and the reading after refuted; 0 of "
-          "their scans placed between; 1 stall of the distance alone), 1 catch-up after short "
-          "readings bridged, 2 odometry "
-          "steps catching up after a stall (0 of "
-          "them placed by ICP from the reading where nothing from the last motion placed "
-          "them, 0 of those from the reading less the stall's registered motion);",
+          "registration: 96 by ICP (96.0 %), 3 by the graph matcher (3.0 %), 1 failed (1.0 %, "
+          "odometry kept)\n",
+          "\n  odometry steps: 1 odometry jump (1 placed by ICP between the odometry's step and "
+          "the last motion); 1 stall of the distance alone; 1 catch-up after short readings "
+          "bridged; 2 odometry steps catching up after a stall\n",
           "loop closures: 1 candidate verified,", "(1 run)"}) {
         EXPECT_NE(summary.find(phrase), std::string::npos) << phrase << "\n" << summary;
     }
-    st.odometryJumps = 0;  // no jumps: nothing said of those borne out
+    // Only the cases that occurred are listed: nothing of ICP's, the matcher's or the failures'.
+    for (const char* absent : {"  by ICP:", "  by the graph matcher:", "  failed:", "(0 "})
+        EXPECT_EQ(summary.find(absent), std::string::npos) << absent << "\n" << summary;
+    // A count's parts follow it, each only where it is not 0.
+    st.icpUnsettled = 4;
+    st.icpSecondStarts = 1;
+    st.icpHeldAlongHeading = 2;
+    st.odometryJumps = 0;
+    st.odometryJumpsBetween = 0;
     st.odometryTranslationStalls = 0;
     const std::string noJumps = mapping::formatSummary(result);
-    EXPECT_NE(noJumps.find("; 0 odometry jumps; 0 odometry stalls bridged (0 of them stalls "
-                           "nothing had placed, 0 whose turn the graph matcher alone registered "
-                           "and the reading after refuted; 0 of their scans placed between; 0 "
-                           "stalls of "
-                           "the distance alone), 1 catch-up after "
-                           "short readings bridged, 2 odometry steps"),
+    EXPECT_NE(noJumps.find("\n  by ICP: 4 unsettled (1 of them from a second start); 2 held at "
+                           "the odometry's position along the heading\n"),
+              std::string::npos)
+        << noJumps;
+    EXPECT_NE(noJumps.find("\n  odometry steps: 1 catch-up after short readings bridged; 2 "
+                           "odometry steps catching up after a stall\n"),
               std::string::npos)
         << noJumps;
 }

@@ -15,6 +15,8 @@
 #include <fstream>
 #include <future>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace toposlam::mapping {
 
@@ -37,6 +39,32 @@ std::string line(const char* format, ...) {
 // "1 odometry jump", "2 odometry jumps".
 std::string counted(std::size_t n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+// A count of the summary's registration breakdown, and the counts it splits into.
+struct Count {
+    Count(std::size_t n, const char* phrase, std::vector<Count> parts = {})
+        : Count(n, phrase, phrase, std::move(parts)) {}
+    Count(std::size_t n, const char* one, const char* many, std::vector<Count> parts = {})
+        : n(n), one(one), many(many), parts(std::move(parts)) {}
+    std::size_t n;
+    const char *one, *many;  // the phrase after 1, after any other number
+    std::vector<Count> parts;
+};
+
+// "3 unsettled (1 of them from a second start); 2 without foreground objects": the counts that
+// are not 0, each with its parts that are not 0 in parentheses.
+std::string nonZero(const std::vector<Count>& counts, const char* separator = "; ") {
+    std::string out;
+    for (const Count& c : counts) {
+        if (c.n == 0)
+            continue;
+        out += (out.empty() ? "" : separator) + counted(c.n, c.one, c.many);
+        const std::string parts = nonZero(c.parts, ", ");
+        if (!parts.empty())
+            out += " (" + parts + ")";
+    }
+    return out;
 }
 
 double percent(std::size_t part, std::size_t whole) {
@@ -151,63 +179,88 @@ std::string formatSummary(const MappingResult& r) {
                  deferred.c_str(), counted(st->submaps, "submap", "submaps").c_str(), parts.c_str(),
                  r.smoothedScans ? "registration and odometry together"
                                  : "registration alone (smooth_scans off)");
-        std::string jumps = counted(st->odometryJumps, "odometry jump", "odometry jumps");
-        if (st->odometryJumps > 0)
-            jumps += " (" + std::to_string(st->odometryJumpsBorneOut) +
-                     " of them borne out by the scan: a fast turn; " +
-                     std::to_string(st->odometryJumpsByPrior) +
-                     " taken as read where the scan fitted them and the last motion alike; " +
-                     std::to_string(st->odometryJumpsSidewaysByTurn) +
-                     " of those two corrected sideways by the turn of the step's chord; " +
-                     std::to_string(st->odometryJumpsBetween) +
-                     " placed by ICP between the odometry's step and the last motion; " +
-                     std::to_string(st->odometryJumpsOverTwoReadings) +
-                     " placed by ICP over the last two readings together (the first fell short); " +
-                     std::to_string(st->odometryJumpReadingsKept) +
-                     " placed by nothing and kept as read: this log's jumps were mostly the "
-                     "odometry's own steps)";
+        // The three outcomes on one line; below it, one line per kind of registration for the
+        // rarer cases that occurred in this log (summary.json's "registration" has every count,
+        // zeros too).
         s += line(
-            "registration: %zu by ICP (%.1f %%; %zu unsettled, %zu of them from a second start, "
-            "%zu more refused (%zu of them where ICP ended beyond a jump on clearly more of the "
-            "scan, the rest beyond the odometry's noise); "
-            "%zu without foreground objects; %zu held at the odometry's position along the "
-            "heading, %zu of them where ICP's pose saw through the submap; %zu from the reading "
-            "less the turn short readings before it missed; %zu short of the last motion's turn on "
-            "little of the scan, %zu of them replaced from a second start; %zu from a start turned "
-            "farther where no nearer one settled; %zu from a turned start that fitted clearly "
-            "more of the scan than the graph matcher's answer after ICP failed), %zu by the "
-            "graph matcher (%.1f %%; "
-            "%zu of them beyond a jump, confirmed on the submap; %zu against the last keyframe a "
-            "registration placed, where odometry alone placed the last; %zu beyond a jump from "
-            "the reading after a stall, within the bounds of the catch-up it may hold), %zu "
-            "failed "
-            "(%.1f %%, odometry kept; %zu of them with a graph-matcher answer only foreground "
-            "objects bore out); %s; %zu odometry stalls bridged (%zu of them stalls nothing had "
-            "placed, %zu whose turn the graph matcher alone registered and the reading after "
-            "refuted; %zu of their scans placed between; %s), %s, %s catching up after a stall "
-            "(%zu of them placed by ICP from the reading where nothing from the last motion "
-            "placed them, %zu of those from the reading less the stall's registered motion); "
-            "%zu predicted by the "
-            "last motion instead of the odometry",
-            st->registeredByIcp, percent(st->registeredByIcp, n), st->icpUnsettled,
-            st->icpSecondStarts, st->icpUnsettledRefused, st->icpRefutedBeyondJump,
-            st->icpWithoutForeground, st->icpHeldAlongHeading, st->icpHeldForFreeSpace,
-            st->icpPastMissedTurn, st->icpShortOfTurn, st->icpShortOfTurnReplaced,
-            st->icpWideTurnStarts, st->icpOutfittedMatcher, st->registeredByGraphMatcher,
-            percent(st->registeredByGraphMatcher, n), st->graphMatcherConfirmed,
-            st->graphMatcherFromRegisteredKeyframe, st->graphMatcherWithinStallCatchUp,
-            st->registrationFailed, percent(st->registrationFailed, n),
-            st->matcherRefusedForeground, jumps.c_str(), st->odometryStallsBridged,
-            st->odometryUnplacedStallsBridged, st->odometryRefutedStallsBridged,
-            st->stalledScansPlaced,
-            counted(st->odometryTranslationStalls, "stall of the distance alone",
-                    "stalls of the distance alone")
-                .c_str(),
-            counted(st->odometryShortfallsBridged, "catch-up after short readings bridged",
-                    "catch-ups after short readings bridged")
-                .c_str(),
-            counted(st->odometryCatchUps, "odometry step", "odometry steps").c_str(),
-            st->odometryCatchUpsKept, st->odometryCatchUpsLessStall, st->lastMotionPredictions);
+            "registration: %zu by ICP (%.1f %%), %zu by the graph matcher (%.1f %%), %zu "
+            "failed (%.1f %%, odometry kept)",
+            st->registeredByIcp, percent(st->registeredByIcp, n), st->registeredByGraphMatcher,
+            percent(st->registeredByGraphMatcher, n), st->registrationFailed,
+            percent(st->registrationFailed, n));
+        const std::vector<Count> byIcp = {
+            {st->icpUnsettled, "unsettled", {{st->icpSecondStarts, "of them from a second start"}}},
+            {st->icpUnsettledRefused,
+             "more refused",
+             {{st->icpRefutedBeyondJump,
+               "of them where ICP ended beyond a jump on clearly more of the scan"},
+              {st->icpUnsettledRefused -
+                   std::min(st->icpRefutedBeyondJump, st->icpUnsettledRefused),
+               "beyond the odometry's noise"}}},
+            {st->icpWithoutForeground, "without foreground objects"},
+            {st->icpHeldAlongHeading,
+             "held at the odometry's position along the heading",
+             {{st->icpHeldForFreeSpace, "of them where ICP's pose saw through the submap"}}},
+            {st->icpPastMissedTurn,
+             "from the reading less the turn short readings before it missed"},
+            {st->icpShortOfTurn,
+             "short of the last motion's turn on little of the scan",
+             {{st->icpShortOfTurnReplaced, "of them replaced from a second start"}}},
+            {st->icpWideTurnStarts, "from a start turned farther where no nearer one settled"},
+            {st->icpOutfittedMatcher,
+             "from a turned start that fitted clearly more of the scan "
+             "than the graph matcher's answer after ICP failed"}};
+        const std::vector<Count> byMatcher = {
+            {st->graphMatcherConfirmed, "beyond a jump, confirmed on the submap"},
+            {st->graphMatcherFromRegisteredKeyframe,
+             "against the last keyframe a registration placed, where odometry alone placed the "
+             "last"},
+            {st->graphMatcherWithinStallCatchUp,
+             "beyond a jump from the reading after a stall, within the bounds of the catch-up it "
+             "may hold"}};
+        const std::vector<Count> failed = {
+            {st->matcherRefusedForeground,
+             "with a graph-matcher answer only foreground objects bore out"}};
+        const std::vector<Count> odometry = {
+            {st->odometryJumps,
+             "odometry jump",
+             "odometry jumps",
+             {{st->odometryJumpsBorneOut, "of them borne out by the scan: a fast turn"},
+              {st->odometryJumpsByPrior,
+               "taken as read where the scan fitted them and the last motion alike"},
+              {st->odometryJumpsSidewaysByTurn,
+               "of those two corrected sideways by the turn of the step's chord"},
+              {st->odometryJumpsBetween,
+               "placed by ICP between the odometry's step and the last motion"},
+              {st->odometryJumpsOverTwoReadings,
+               "placed by ICP over the last two readings together (the first fell short)"},
+              {st->odometryJumpReadingsKept, "placed by nothing and kept as read"}}},
+            {st->odometryStallsBridged,
+             "odometry stall bridged",
+             "odometry stalls bridged",
+             {{st->odometryUnplacedStallsBridged, "of them stalls nothing had placed"},
+              {st->odometryRefutedStallsBridged,
+               "whose turn the graph matcher alone registered and the reading after refuted"},
+              {st->stalledScansPlaced, "of their scans placed between"}}},
+            {st->odometryTranslationStalls, "stall of the distance alone",
+             "stalls of the distance alone"},
+            {st->odometryShortfallsBridged, "catch-up after short readings bridged",
+             "catch-ups after short readings bridged"},
+            {st->odometryCatchUps,
+             "odometry step catching up after a stall",
+             "odometry steps catching up after a stall",
+             {{st->odometryCatchUpsKept,
+               "placed by ICP from the reading where nothing from the last motion placed them",
+               {{st->odometryCatchUpsLessStall,
+                 "of those from the reading less the stall's registered motion"}}}}},
+            {st->lastMotionPredictions, "predicted by the last motion instead of the odometry"}};
+        for (const auto& [kind, counts] :
+             {std::pair{"by ICP", &byIcp}, std::pair{"by the graph matcher", &byMatcher},
+              std::pair{"failed", &failed}, std::pair{"odometry steps", &odometry}}) {
+            const std::string listed = nonZero(*counts);
+            if (!listed.empty())
+                s += line("  %s: %s", kind, listed.c_str());
+        }
         if (st->scansWithoutOdometry > 0)
             s += line(
                 "odometry: none for %zu of %zu scans (%zu of them before the odometry first "

@@ -2007,18 +2007,22 @@ TEST(MappingOutputs, CountsAgreeInNumber) {
         EXPECT_NE(summary.find(phrase), std::string::npos) << phrase << "\n" << summary;
     }
     // Only the cases that occurred are listed: nothing of ICP's, the matcher's or the failures'.
-    for (const char* absent : {"  by ICP:", "  by the graph matcher:", "  failed:", "(0 "})
+    for (const char* absent : {"  ICP:", "  graph matcher:", "  failed:", "(0 "})
         EXPECT_EQ(summary.find(absent), std::string::npos) << absent << "\n" << summary;
     // A count's parts follow it, each only where it is not 0.
     st.icpUnsettled = 4;
     st.icpSecondStarts = 1;
     st.icpHeldAlongHeading = 2;
+    st.icpUnsettledRefused = 3;
+    st.icpRefutedBeyondJump = 1;
     st.odometryJumps = 0;
     st.odometryJumpsBetween = 0;
     st.odometryTranslationStalls = 0;
     const std::string noJumps = mapping::formatSummary(result);
-    EXPECT_NE(noJumps.find("\n  by ICP: 4 unsettled (1 of them from a second start); 2 held at "
-                           "the odometry's position along the heading\n"),
+    EXPECT_NE(noJumps.find("\n  ICP: 4 unsettled (1 of them from a second start); 3 answers "
+                           "refused (1 of them where ICP ended beyond a jump on clearly more of "
+                           "the scan, 2 beyond the odometry's noise); 2 held at the odometry's "
+                           "position along the heading\n"),
               std::string::npos)
         << noJumps;
     EXPECT_NE(noJumps.find("\n  odometry steps: 1 catch-up after short readings bridged; 2 "

@@ -179,9 +179,9 @@ std::string formatSummary(const MappingResult& r) {
                  deferred.c_str(), counted(st->submaps, "submap", "submaps").c_str(), parts.c_str(),
                  r.smoothedScans ? "registration and odometry together"
                                  : "registration alone (smooth_scans off)");
-        // The three outcomes on one line; below it, one line per kind of registration for the
-        // rarer cases that occurred in this log (summary.json's "registration" has every count,
-        // zeros too).
+        // The three outcomes on one line; below it, one line each for ICP, the graph matcher,
+        // the failures and the odometry's steps, with the rarer cases that occurred in this log
+        // (summary.json's "registration" has every count, zeros too).
         s += line(
             "registration: %zu by ICP (%.1f %%), %zu by the graph matcher (%.1f %%), %zu "
             "failed (%.1f %%, odometry kept)",
@@ -191,7 +191,8 @@ std::string formatSummary(const MappingResult& r) {
         const std::vector<Count> byIcp = {
             {st->icpUnsettled, "unsettled", {{st->icpSecondStarts, "of them from a second start"}}},
             {st->icpUnsettledRefused,
-             "more refused",
+             "answer refused",
+             "answers refused",
              {{st->icpRefutedBeyondJump,
                "of them where ICP ended beyond a jump on clearly more of the scan"},
               {st->icpUnsettledRefused -
@@ -255,7 +256,7 @@ std::string formatSummary(const MappingResult& r) {
                  "of those from the reading less the stall's registered motion"}}}}},
             {st->lastMotionPredictions, "predicted by the last motion instead of the odometry"}};
         for (const auto& [kind, counts] :
-             {std::pair{"by ICP", &byIcp}, std::pair{"by the graph matcher", &byMatcher},
+             {std::pair{"ICP", &byIcp}, std::pair{"graph matcher", &byMatcher},
               std::pair{"failed", &failed}, std::pair{"odometry steps", &odometry}}) {
             const std::string listed = nonZero(*counts);
             if (!listed.empty())

@@ -62,18 +62,14 @@ std::string metres(double v) {
 
 /// The order in which the tour visits `places` (indices; the first is the start), and the
 /// tour's visitOrder / unreachable areas. Areas the start cannot reach are left out.
-std::vector<std::size_t> orderPlaces(GridPathPlanner& planner, const ClearanceMap& map,
-                                     const std::vector<TPoint2D>& places,
+std::vector<std::size_t> orderPlaces(GridPathPlanner& planner, const std::vector<TPoint2D>& places,
                                      const std::vector<long>& areaOfPlace, bool returnToStart,
                                      Tour& tour) {
     // Path costs between all places; drop areas that cannot be reached from the start.
     std::vector<std::vector<double>> cost(places.size(), std::vector<double>(places.size()));
     for (std::size_t i = 0; i < places.size(); ++i) {
-        const std::vector<float>& costs = planner.costsFrom(places[i]);
-        const GridGeometry& g = map.geometry();
-        for (std::size_t j = 0; j < places.size(); ++j) {
-            cost[i][j] = costs[g.index(g.cellX(places[j].x), g.cellY(places[j].y))];
-        }
+        const std::vector<float> costs = planner.costsTo(places[i], places);
+        std::copy(costs.begin(), costs.end(), cost[i].begin());
     }
     std::vector<std::size_t> reachable;
     for (std::size_t j = 0; j < places.size(); ++j) {
@@ -132,21 +128,22 @@ void planLegs(GridPathPlanner& planner, const std::vector<TPoint2D>& places,
 /// the group of areas reachable from one another that holds the most areas (then the most
 /// area). A free courtyard, or the free background around a drawn building, is one large area
 /// from where no room is reached.
-std::size_t defaultStartArea(GridPathPlanner& planner, const ClearanceMap& map,
-                             const std::vector<RoomSizedArea>& areas,
+std::size_t defaultStartArea(GridPathPlanner& planner, const std::vector<RoomSizedArea>& areas,
                              const std::vector<std::size_t>& toured) {
-    const GridGeometry& g = map.geometry();
+    std::vector<TPoint2D> centres;
+    for (std::size_t a : toured)
+        centres.push_back(areas[a].centre);
     std::vector<bool> grouped(areas.size(), false);
     std::size_t best = toured.front();
     std::pair<std::size_t, double> bestSize{0, 0.0};  // areas, m^2
     for (std::size_t first : toured) {
         if (grouped[first])
             continue;
-        const std::vector<float>& costs = planner.costsFrom(areas[first].centre);
+        const std::vector<float> costs = planner.costsTo(areas[first].centre, centres);
         std::pair<std::size_t, double> size{0, 0.0};
-        for (std::size_t a : toured) {
-            const TPoint2D& c = areas[a].centre;
-            if (!grouped[a] && std::isfinite(costs[g.index(g.cellX(c.x), g.cellY(c.y))])) {
+        for (std::size_t k = 0; k < toured.size(); ++k) {
+            const std::size_t a = toured[k];
+            if (!grouped[a] && std::isfinite(costs[k])) {
                 grouped[a] = true;
                 ++size.first;
                 size.second += areas[a].erodedAreaM2;
@@ -216,7 +213,7 @@ Tour planTour(const ClearanceMap& map, const TourOptions& options) {
         (anyEnclosed && tour.areas[a].openToMapEdge ? tour.outside : toured).push_back(a);
     if (!options.start) {
         // The start first: the areas the robot can reach from it are the ones it tours.
-        const std::size_t start = defaultStartArea(planner, map, tour.areas, toured);
+        const std::size_t start = defaultStartArea(planner, tour.areas, toured);
         const auto first = std::find(toured.begin(), toured.end(), start);
         std::rotate(toured.begin(), first, first + 1);
     }
@@ -226,7 +223,7 @@ Tour planTour(const ClearanceMap& map, const TourOptions& options) {
     }
 
     std::vector<std::size_t> order =
-        orderPlaces(planner, map, places, areaOfPlace, options.returnToStart, tour);
+        orderPlaces(planner, places, areaOfPlace, options.returnToStart, tour);
     planLegs(planner, places, order, options.smoothingSigma, tour);
     if (options.coverage.lookIntoUnseen) {
         // Where the robot can get to from the start, and what the tour so far has in view.
@@ -255,7 +252,7 @@ Tour planTour(const ClearanceMap& map, const TourOptions& options) {
         if (places.size() > before) {  // the same tour, with the viewpoints among its stops
             tour.visitOrder.clear();
             tour.unreachable.clear();
-            order = orderPlaces(planner, map, places, areaOfPlace, options.returnToStart, tour);
+            order = orderPlaces(planner, places, areaOfPlace, options.returnToStart, tour);
             planLegs(planner, places, order, options.smoothingSigma, tour);
         }
     }

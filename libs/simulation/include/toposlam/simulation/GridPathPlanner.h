@@ -45,6 +45,12 @@ class GridPathPlanner {
     /// until the next call.
     const std::vector<float>& costsFrom(const mrpt::math::TPoint2D& from);
 
+    /// Path cost (m, clearance-weighted) from the cell of `from` to the cell of each of `to`,
+    /// in their order (kUnreachable where there is no path): costsFrom()'s values for those
+    /// cells, from a search that stops once it has reached them all.
+    std::vector<float> costsTo(const mrpt::math::TPoint2D& from,
+                               const std::vector<mrpt::math::TPoint2D>& to);
+
   private:
     const ClearanceMap& map_;
     PathCostOptions options_;

@@ -260,6 +260,7 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
     stats_.odometryJumpsBetween += r.jumpBetween;
     stats_.odometryJumpsOverTwoReadings += r.jumpOverTwoReadings;
     stats_.icpPastMissedTurn += r.pastMissedTurn;
+    stats_.icpFromTurnedStarts += r.turnedStart;
     stats_.odometryCatchUpsKept += r.catchUpReadingKept;
     stats_.odometryCatchUpsLessStall += r.catchUpLessStall;
     stats_.odometryJumpReadingsKept += r.jumpReadingKept;

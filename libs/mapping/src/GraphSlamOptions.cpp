@@ -184,6 +184,12 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "where nothing places a scan, and short readings before it missed part of the turn "
            "that its reading turned farther than, ICP also starts from the reading less that "
            "turn");
+    s.flag("turned_start_search", turnedStartSearch,
+           "where nothing places a scan whose reading is at least 0.6 times as long as the last "
+           "motion, in a log whose odometry has jumped, ICP also starts from the reading turned "
+           "by 1 to 4 x second_opinion_turn_deg either way, taken where every start that settles "
+           "within the jump bounds ends at the same pose (a heading that stalled through the "
+           "scan interval)");
     s.flag("undecided_jump_by_prior", undecidedJumpByPrior,
            "after an odometry jump the scan fits as well from the odometry's step as from the "
            "last motion (a corridor), the log's earlier clear jumps choose between them before "

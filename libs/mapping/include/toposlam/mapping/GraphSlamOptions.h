@@ -207,6 +207,14 @@ struct GraphSlamOptions : public config::Options {
     /// (ScanRegistration::tryPastMissedTurn). A lagging odometry delivers a missed turn with a
     /// step of the robot's length, so it is no catch-up (OdometryLag::catchesUpShortfall).
     bool missedTurnStart = true;
+    /// Where nothing above placed a scan predicted by a reading at least 0.6 times as long as the
+    /// last motion (the wheels read the step; only the heading may have lagged), in a log whose
+    /// odometry has jumped at least three times (clear jump choices), ICP also
+    /// starts from the reading turned by +-1 to +-4 x secondOpinionTurn; taken where every
+    /// start that settled within the jump bounds ended at the same pose, at least two did, and
+    /// it went no farther sideways than the turn swings the step's chord
+    /// (ScanRegistration::tryTurnedStarts).
+    bool turnedStartSearch = true;
     /// After an odometry jump where ICP from the odometry's step and from the last motion both
     /// pass and neither fits jumpChoiceMargin better, the odometry's step is the prediction when
     /// this log's earlier clear jumps were mostly the odometry's own steps, before the graph

@@ -171,6 +171,9 @@ struct Registration {
     /// Nothing above placed the scan: ICP from the odometry's step less the turn the short
     /// readings before it missed (Prediction::pastMissedTurn; missed_turn_start).
     bool pastMissedTurn = false;
+    /// Placed by ICP from a turned start where nothing else placed it (tryTurnedStarts;
+    /// turned_start_search).
+    bool turnedStart = false;
     /// Of the jumps borne out (jumpBorneOut), those the scan fitted as well from the last
     /// motion: this log's earlier jumps chose the reading (undecided_jump_by_prior).
     bool jumpByPrior = false;
@@ -465,6 +468,18 @@ class ScanRegistration {
     double chordTurnAllowance(const Prediction& prediction,
                               const mrpt::poses::CPose2D& correction) const;
 
+    /// Where nothing else placed the scan and the odometry did not jump: ICP from the prediction
+    /// turned by +-1 to +-4 x second_opinion_turn_deg (turned_start_search), for a heading that
+    /// stalled through the scan interval by more than ICP's basin. The answer is the end every
+    /// start that settled within the jump bounds reached (at least two of them), with
+    /// min_inlier_ratio of the scan on the submap and sideways no farther than the turn swings
+    /// the step's chord. Only in a log whose odometry has jumped (kJumpPriorCases clear jump
+    /// choices) and for a reading at least kStepAsStepped of the last motion's length.
+    bool tryTurnedStarts(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
+                         const Prediction& prediction, Registration& out);
+    /// ... only for a reading at least this share of the last motion's length.
+    static constexpr double kStepAsStepped = 0.6;
+
     /// After an odometry jump, ICP from the jumped prediction's own pose (the last motion):
     /// run once per scan, kept in motionIcp_ for the jump's later steps.
     const IcpAttempt& icpFromLastMotion(const matching::PolarScan& scan,
@@ -711,6 +726,10 @@ Registration ScanRegistration::registerScan(const matching::PolarScan& scan,
     if (keepJumpedReading(scan, sensorOnRobot, prediction, out))
         return out;
     if (keepCaughtUpReading(scan, sensorOnRobot, prediction, out))
+        return out;
+    // Or the odometry missed part of a turn (its heading stalled within the interval) by more
+    // than ICP's basin: ICP from the prediction turned further either way.
+    if (tryTurnedStarts(scan, sensorOnRobot, prediction, out))
         return out;
     out.method = RegistrationMethod::Odometry;
     out.reference = prediction.lastKeyframe ? prediction.lastKeyframe->id : 0;

@@ -106,6 +106,9 @@ struct SlamStatistics {
     /// Scans ICP placed from the odometry's step less the turn short readings before it
     /// missed, where nothing else placed them (missed_turn_start).
     std::size_t icpPastMissedTurn = 0;
+    /// Scans ICP placed from the reading turned farther either way, where nothing else placed
+    /// them (turned_start_search).
+    std::size_t icpFromTurnedStarts = 0;
     /// Of the jumps nothing registered, those kept as the odometry read them, not as the last
     /// motion: the log's earlier jumps were mostly the odometry's own steps.
     std::size_t odometryJumpReadingsKept = 0;

@@ -58,26 +58,23 @@ std::vector<mrpt::math::TPoint2D> GridPathPlanner::plan(const mrpt::math::TPoint
     return path;
 }
 
-const std::vector<float>& GridPathPlanner::costsFrom(const mrpt::math::TPoint2D& from) {
+std::size_t GridPathPlanner::cellOf(const mrpt::math::TPoint2D& p) const {
     const GridGeometry& g = map_.geometry();
-    const int cx = g.cellX(from.x), cy = g.cellY(from.y);
-    // Outside the grid: an index past the end, which GridAStar reports as all unreachable.
-    return search_.costsFrom(g.contains(cx, cy) ? g.index(cx, cy) : g.cellCount());
+    const int cx = g.cellX(p.x), cy = g.cellY(p.y);
+    return g.contains(cx, cy) ? g.index(cx, cy) : g.cellCount();
+}
+
+const std::vector<float>& GridPathPlanner::costsFrom(const mrpt::math::TPoint2D& from) {
+    return search_.costsFrom(cellOf(from));
 }
 
 std::vector<float> GridPathPlanner::costsTo(const mrpt::math::TPoint2D& from,
                                             const std::vector<mrpt::math::TPoint2D>& to) {
-    const GridGeometry& g = map_.geometry();
-    // Outside the grid: an index past the end, which GridAStar reports as unreachable.
-    const auto cell = [&](const mrpt::math::TPoint2D& p) {
-        const int cx = g.cellX(p.x), cy = g.cellY(p.y);
-        return g.contains(cx, cy) ? g.index(cx, cy) : g.cellCount();
-    };
     std::vector<std::size_t> targets;
     targets.reserve(to.size());
     for (const auto& p : to)
-        targets.push_back(cell(p));
-    return search_.costsTo(cell(from), targets);
+        targets.push_back(cellOf(p));
+    return search_.costsTo(cellOf(from), targets);
 }
 
 }  // namespace toposlam::simulation

@@ -52,6 +52,10 @@ class GridPathPlanner {
                                const std::vector<mrpt::math::TPoint2D>& to);
 
   private:
+    /// The grid index of the cell holding `p`; outside the grid an index past the end, which
+    /// GridAStar reports as unreachable.
+    std::size_t cellOf(const mrpt::math::TPoint2D& p) const;
+
     const ClearanceMap& map_;
     PathCostOptions options_;
     gridpath::GridAStar search_;  ///< step costs: the clearance penalty per cell, 0 = blocked

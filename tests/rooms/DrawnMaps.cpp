@@ -202,6 +202,20 @@ DrawnMap singleRoom() {
     return m;
 }
 
+DrawnMap doorAtAWallsEndBesideAnOuterWall() {
+    DrawnMap m;
+    m.image = cv::Mat(140, 160, CV_8U, cv::Scalar(128));
+    cv::Mat& img = m.image;
+    fill(img, 1, 1, 7.4, 6, 0);
+    fill(img, 1.15, 1.15, 7.25, 5.85, 255);
+    fill(img, 1, 3.4, 6.35, 3.55, 0);     // the wall, from the left outer wall
+    fill(img, 7.05, 3.4, 7.25, 3.55, 0);  // the stub on the right outer wall
+    m.rooms = {{3.5, 2.2}, {3.5, 4.7}};
+    m.doors = {{{6.7, 3.475}, 0.7}};
+    m.tour = {{3.5, 2.2}, {6.7, 2.2}, {6.7, 4.7}, {3.5, 4.7}};
+    return m;
+}
+
 DrawnMap thickWall() {
     DrawnMap m;
     m.image = cv::Mat(140, 240, CV_8U, cv::Scalar(128));

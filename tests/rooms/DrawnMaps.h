@@ -101,6 +101,11 @@ DrawnMap thinWalls();
 /// with a 1 m door in it: the wall is a staircase at any angle of the plan, and off both of the
 /// building's main directions. 2 rooms, 1 door.
 DrawnMap wallAtAnAngle();
+/// A 6.1 x 4.7 m room parted by a 0.15 m wall from the left outer wall that ends 0.7 m short of
+/// the right one, where a 0.2 m stub in its line stands out of the outer wall (as the B4-flats
+/// generator draws a door at a wall's end). From the wall's end a cut runs to the stub and two
+/// run diagonally to the outer wall's face, all three within a door's width. 2 rooms, 1 door.
+DrawnMap doorAtAWallsEndBesideAnOuterWall();
 /// Two 4.4 x 4 m rooms either side of a 0.55 m thick wall (as thick as B4's Freiburg52 walls)
 /// with a 1 m door in it. 2 rooms, 1 door.
 DrawnMap thickWall();

@@ -587,19 +587,31 @@ TEST(DoorSearchPaths, TrajectoryCellsJoinConsecutivePoses) {
         EXPECT_NE(space.free.at<std::uint8_t>(c), 0);
 }
 
+namespace {
+
+// A 5 x 3 m room with nothing in it: where the distance filter looks for walls, none.
+FreeSpace openRoom() {
+    cv::Mat img(60, 100, CV_8U, cv::Scalar(0));
+    img(cv::Rect(1, 1, 98, 58)) = 255;
+    return spaceOf(img);
+}
+
+}  // namespace
+
 TEST(DoorFilters, DistanceFilterKeepsTheNarrowestOfAGroup) {
+    const FreeSpace open = openRoom();
     std::vector<VirtualDoor> doors;
     for (int k = 0; k < 5; ++k) {  // parallel cuts 1 cell apart, the middle one narrowest
         const double w = 20 - (k == 2 ? 2 : 0);
         doors.push_back({{10 + k, 10}, {10 + k, static_cast<int>(10 + w)}, w, 0, {10 + k, 15}});
     }
     doors.push_back({{50, 10}, {50, 30}, 20, 0, {50, 20}});  // far away: its own group
-    const auto kept = DoorFilters().distance(doors, kRes);
+    const auto kept = DoorFilters().distance(open, doors);
     ASSERT_EQ(kept.size(), 2u);
     EXPECT_EQ(kept[0].jambA.x, 12);
     DoorFilters::Options paper;
     paper.keepNarrowestOfGroup = false;
-    const auto greedy = DoorFilters(paper).distance(doors, kRes);
+    const auto greedy = DoorFilters(paper).distance(open, doors);
     ASSERT_EQ(greedy.size(), 2u);
     EXPECT_EQ(greedy[0].jambA.x, 10);  // the paper: first come, first kept
 }
@@ -607,14 +619,37 @@ TEST(DoorFilters, DistanceFilterKeepsTheNarrowestOfAGroup) {
 TEST(DoorFilters, DistanceFilterChainsGroups) {
     // Cuts 8 cells apart (N_d = 10 cells): the first and the last are 32 cells apart, but the
     // chain joins them into one group, of which the narrowest is kept.
+    const FreeSpace open = openRoom();
     std::vector<VirtualDoor> doors;
     for (int k = 0; k < 5; ++k) {
         const double w = 20 - (k == 3 ? 1 : 0);
         doors.push_back({{10 + 8 * k, 10}, {10 + 8 * k, static_cast<int>(10 + w)}, w, 0, {0, 0}});
     }
-    const auto kept = DoorFilters().distance(doors, kRes);
+    const auto kept = DoorFilters().distance(open, doors);
     ASSERT_EQ(kept.size(), 1u);
     EXPECT_EQ(kept[0].jambA.x, 34);
+}
+
+TEST(DoorFilters, CutsFanningFromOneJambAreOneOpeningWhereTheirFarSideIsWall) {
+    // From the jamb cell (40, 30) one cut runs 16 cells to the right, one 22 cells at 45
+    // degrees down-right: the far side of their triangle, from (56, 30) to (55, 45), is open
+    // floor in an empty room (a third opening: both cuts stay), and wall once a wall stands
+    // just beyond it (one opening: the narrower cut stays).
+    const std::vector<VirtualDoor> doors = {{{40, 30}, {56, 30}, 16, 0, {48, 30}},
+                                            {{40, 30}, {55, 45}, std::hypot(15, 15), 0, {47, 37}}};
+    EXPECT_EQ(DoorFilters().distance(openRoom(), doors).size(), 2u);
+
+    cv::Mat img(60, 100, CV_8U, cv::Scalar(0));
+    img(cv::Rect(1, 1, 98, 58)) = 255;
+    img(cv::Rect(58, 25, 4, 30)) = 0;  // a wall 2-3 cells beyond the far side
+    const auto kept = DoorFilters().distance(spaceOf(img), doors);
+    ASSERT_EQ(kept.size(), 1u);
+    EXPECT_EQ(kept[0].jambB, cv::Point(56, 30));
+
+    // Beyond 60 degrees apart: two doors whatever lies beyond.
+    const std::vector<VirtualDoor> apart = {{{40, 30}, {56, 30}, 16, 0, {48, 30}},
+                                            {{40, 30}, {46, 45}, std::hypot(6, 15), 0, {43, 37}}};
+    EXPECT_EQ(DoorFilters().distance(spaceOf(img), apart).size(), 2u);
 }
 
 TEST(DoorFilters, MinimumAreaMergesSmallestFirstThroughTheWidestCut) {

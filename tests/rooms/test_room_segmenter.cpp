@@ -498,6 +498,19 @@ TEST(RoomSegmenter, CorridorBendIsNotCutAtAnyAngle) {
                                  {0.0, 10.0, 17.0, 30.0, 45.0});
 }
 
+TEST(RoomSegmenter, ADoorAtAWallsEndBesideAnOuterWallIsFoundAtAnyAngle) {
+    // The cut to the stub and the two diagonal ones to the outer wall fan out from the wall's
+    // end 45-55 degrees apart and all pass the tests: kept all, they left slivers the area
+    // filter joined to both rooms, and the door was lost (B4-flats, generated flat 303 at 0
+    // degrees). The far sides of their triangles are wall, so they are one opening.
+    const DrawnMap drawn = toposlam::rooms::test::doorAtAWallsEndBesideAnOuterWall();
+    segmentBothWays(toposlam::rooms::test::gridOf(drawn.image), drawn,
+                    [&](const RoomSegmenter::Result& result) {
+                        expectMatchesDrawing(result.map, drawn, kDoorTolerance);
+                    });
+    expectMatchesDrawingAtAngles(drawn, everyFiveDegrees());
+}
+
 TEST(RoomSegmenter, DoorInAThickWallIsCut) {
     const DrawnMap drawn = toposlam::rooms::test::thickWall();
     const auto grid = toposlam::rooms::test::gridOf(drawn.image);

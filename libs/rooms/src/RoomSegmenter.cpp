@@ -193,7 +193,7 @@ DoorFilters::Rooms RoomSegmenter::findRooms(const FreeSpace& space,
     result.afterTests.insert(result.afterTests.end(), result.wideOpenings.begin(),
                              result.wideOpenings.end());
     lap("wide openings");
-    result.afterDistance = ws.filters.distance(result.afterTests, res);
+    result.afterDistance = ws.filters.distance(space, result.afterTests);
     lap("distance filter");
     ws.partition.compute(space.free, result.afterDistance);
     const std::vector<std::size_t> adjacent = DoorFilters::adjacency(ws.partition);

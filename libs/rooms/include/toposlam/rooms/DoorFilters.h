@@ -62,7 +62,8 @@ class DoorFilters {
         /// N_d (m). The paper gives it in cells (N_d = 2 at 5 cm, fig. 5b), for SLAM maps whose
         /// walls are a few cells thick. Groups are chained (closer pairs linked), so the
         /// cross-sections found all along a doorway count as one door however thick the wall;
-        /// cuts fanning out from one jamb cell at less than 30 degrees are linked too.
+        /// cuts fanning out from one jamb cell at less than 30 degrees are linked too, and at
+        /// less than 60 degrees where the far side of the triangle they span is wall.
         double frameDistance = 0.5;
         double minRoomArea = 2.0;  ///< N_s (m^2)
         /// Distance filter: of a group of doors closer than N_d, keep the narrowest (the
@@ -150,8 +151,9 @@ class DoorFilters {
     /// door width (a no-op when off).
     std::vector<VirtualDoor> constriction(const FreeSpace& space, std::vector<VirtualDoor> doors,
                                           double probeDistance) const;
-    /// The distance filter; `resolution` in m per pixel.
-    std::vector<VirtualDoor> distance(std::vector<VirtualDoor> doors, double resolution) const;
+    /// The distance filter (`space`: where the cuts fan out from one jamb, whether the far
+    /// side of the triangle they span is wall).
+    std::vector<VirtualDoor> distance(const FreeSpace& space, std::vector<VirtualDoor> doors) const;
     /// The adjacency filter: indices of the doors of `partition` that touch two regions.
     static std::vector<std::size_t> adjacency(const RegionPartition& partition);
 

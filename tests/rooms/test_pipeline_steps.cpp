@@ -590,10 +590,14 @@ TEST(DoorSearchPaths, TrajectoryCellsJoinConsecutivePoses) {
 namespace {
 
 // A 5 x 3 m room with nothing in it: where the distance filter looks for walls, none.
-FreeSpace openRoom() {
+cv::Mat openRoomImage() {
     cv::Mat img(60, 100, CV_8U, cv::Scalar(0));
     img(cv::Rect(1, 1, 98, 58)) = 255;
-    return spaceOf(img);
+    return img;
+}
+
+FreeSpace openRoom() {
+    return spaceOf(openRoomImage());
 }
 
 }  // namespace
@@ -639,8 +643,7 @@ TEST(DoorFilters, CutsFanningFromOneJambAreOneOpeningWhereTheirFarSideIsWall) {
                                             {{40, 30}, {55, 45}, std::hypot(15, 15), 0, {47, 37}}};
     EXPECT_EQ(DoorFilters().distance(openRoom(), doors).size(), 2u);
 
-    cv::Mat img(60, 100, CV_8U, cv::Scalar(0));
-    img(cv::Rect(1, 1, 98, 58)) = 255;
+    cv::Mat img = openRoomImage();
     img(cv::Rect(58, 25, 4, 30)) = 0;  // a wall 2-3 cells beyond the far side
     const auto kept = DoorFilters().distance(spaceOf(img), doors);
     ASSERT_EQ(kept.size(), 1u);

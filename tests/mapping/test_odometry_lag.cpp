@@ -177,6 +177,55 @@ TEST(OdometryLag, AStallsTurnOnlyTheGraphMatcherSawIsRefutedByAReadingThatTurned
     EXPECT_FALSE(byMatcher.stallTurnRefuted(reading, maxTurn));
 }
 
+TEST(OdometryLag, AReadingAsLongAsTheRegisteredStallPlusAStepIsBridgedWhateverItTurned) {
+    // office_a, stalling robot, seed 41: registration follows the robot through a stall of
+    // three scans (1.05 m, turning -11 deg); in the reading's own interval the robot goes
+    // 0.34 m and turns +19 deg. The reading holds both.
+    const CPose2D ahead(0.35, 0, 0), stallStep(0.35, 0, mrpt::DEG2RAD(-11.0 / 3.0));
+    const CPose2D ownStep(0.34, 0.03, mrpt::DEG2RAD(19.0));
+    const CPose2D reading = stallStep + stallStep + stallStep + ownStep;
+    OdometryLag lag;
+    lag.registered(ahead, ahead);
+    for (int k = 0; k < 3; ++k)
+        lag.registered(kStill, stallStep);
+    // It turned otherwise than registration saw over the stall (+8 against -11 deg).
+    EXPECT_FALSE(lag.bridges(reading, stallStep));
+    ASSERT_TRUE(lag.holdsStallAndStep(reading, stallStep));
+    const CPose2D step = lag.stepSinceStall(reading);
+    EXPECT_NEAR(step.x(), ownStep.x(), 1e-9);
+    EXPECT_NEAR(step.y(), ownStep.y(), 1e-9);
+    EXPECT_NEAR(step.phi(), ownStep.phi(), 1e-9);
+    // The stall alone (the robot stopped after it), or a reading that registration saw too
+    // little of (0.5 m over the stall where the reading holds 1.39), does not add up.
+    EXPECT_FALSE(lag.holdsStallAndStep(stallStep + stallStep + stallStep, stallStep));
+    const CPose2D part(0.5 / 3.0, 0, mrpt::DEG2RAD(-11.0 / 3.0));
+    OdometryLag behind;
+    behind.registered(ahead, ahead);
+    for (int k = 0; k < 3; ++k)
+        behind.registered(kStill, part);
+    EXPECT_FALSE(behind.holdsStallAndStep(reading, part));
+    // After a turn on the spot the lengths tell little: a stall in which registration saw the
+    // last 0.1 m to a corner, then 24 deg of the turn. A reading of those 0.1 m and 30 deg
+    // leaves a step that turns as the last motion did (6 deg); one of 0.1 m and 10 deg is not
+    // all of the stall.
+    const CPose2D toCorner(0.1, 0, 0), spotTurn(0, 0, mrpt::DEG2RAD(6.0));
+    OdometryLag cornered;
+    cornered.registered(toCorner, toCorner);
+    cornered.registered(kStill, toCorner);
+    for (int k = 0; k < 4; ++k)
+        cornered.registered(kStill, spotTurn);
+    EXPECT_TRUE(cornered.holdsStallAndStep(CPose2D(0.1, 0, mrpt::DEG2RAD(30.0)), spotTurn));
+    EXPECT_FALSE(cornered.holdsStallAndStep(CPose2D(0.1, 0, mrpt::DEG2RAD(10.0)), spotTurn));
+    // No stall (the reading before moved), or a robot that stood still before it: nothing.
+    OdometryLag moving;
+    moving.registered(ahead, ahead);
+    EXPECT_FALSE(moving.holdsStallAndStep(ahead + ahead + ahead + ahead, ahead));
+    OdometryLag standing;
+    standing.registered(kStill, kStill);
+    standing.registered(kStill, kStill);
+    EXPECT_FALSE(standing.holdsStallAndStep(ahead, kStill));
+}
+
 TEST(OdometryLag, AScanChangesWhereTheRobotMovedNotWhereOnePersonWalked) {
     // 181 beams over 180 deg in a room: a wall 3 m ahead, and a step of 0.3 m towards it.
     std::vector<float> before(181), moved(181), person(181);

@@ -99,8 +99,15 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement,
     const bool refuted =
         odometryIncrement && options_.bridgeOdometryStalls && options_.bridgeRefutedStalls &&
         odometryLag_.stallTurnRefuted(*odometryIncrement, options_.odometryJumpAngle);
-    const bool bridged = odometryIncrement && options_.bridgeOdometryStalls &&
-                         (refuted || odometryLag_.bridges(*odometryIncrement, lastMotion_));
+    const bool bridgedByStallTests =
+        odometryIncrement && options_.bridgeOdometryStalls &&
+        (refuted || odometryLag_.bridges(*odometryIncrement, lastMotion_));
+    // Or one as long as the stall's registered translation plus a step, whatever it turned
+    // (bridge_stall_and_step).
+    const bool byLength = !bridgedByStallTests && odometryIncrement &&
+                          options_.bridgeOdometryStalls && options_.bridgeStallAndStep &&
+                          odometryLag_.holdsStallAndStep(*odometryIncrement, lastMotion_);
+    const bool bridged = bridgedByStallTests || byLength;
     // Or one after readings that fell short of the registered motion (a stall within a scan
     // interval, as at a low scan rate): the reading less what they missed.
     const bool shortfallBridged = !bridged && odometryIncrement && options_.bridgeOdometryStalls &&
@@ -115,6 +122,7 @@ Prediction GraphSlam::predict(const std::optional<CPose2D>& odometryIncrement,
         p.stallUnplaced = refuted || odometryLag_.stallUnplaced();
         stats_.odometryUnplacedStallsBridged += odometryLag_.stallUnplaced();
         stats_.odometryRefutedStallsBridged += refuted && !odometryLag_.stallUnplaced();
+        stats_.odometryStallsAndStepBridged += byLength;
         catchingUp = false;
         ++stats_.odometryStallsBridged;
     } else if (shortfallBridged) {
@@ -277,6 +285,8 @@ void GraphSlam::processScanTimed(const mrpt::obs::CObservation2DRangeScan::Ptr& 
             stats_.icpSecondStarts += r.secondStart && r.unsettled;  // see SlamStatistics
             stats_.icpShortOfTurn += r.shortOfTurn;
             stats_.icpShortOfTurnReplaced += r.shortOfTurn && r.secondStart;
+            stats_.icpShortOnTheSpot += r.shortOnTheSpot;
+            stats_.icpShortOnTheSpotReplaced += r.shortOnTheSpot && r.secondStart;
             stats_.icpWideTurnStarts += r.secondStart && r.wideTurn;
             stats_.icpOutfittedMatcher += r.outfitsMatcher;
             stats_.icpWithoutForeground += r.withoutForeground;

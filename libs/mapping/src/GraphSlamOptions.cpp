@@ -97,6 +97,9 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "ICP that ended on little of the scan, settled or not, from a reading that turned "
            "less than the last motion, the same way, by more than the second opinion's turns "
            "reach, gets the second opinion with one more start, the last motion");
+    s.flag("spot_turn_second_opinion", spotTurnSecondOpinion,
+           "ICP that ended on little of the scan from a reading of a turn on the spot, in a log "
+           "whose odometry has jumped, gets the second opinion");
     s.flag("second_opinion_wide_turns", secondOpinionWideTurns,
            "where none of the second opinion's starts settled, also start ICP from the "
            "prediction turned by +-3 and +-4 second_opinion_turn");
@@ -218,6 +221,10 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "bridged as one nothing placed where the reading after it turned otherwise than "
            "registered by more than odometry_jump_angle per scan interval it spans; its scans are "
            "placed between");
+    s.flag("bridge_stall_and_step", bridgeStallAndStep,
+           "a catch-up after a stall as long as the translation registered over the stall plus "
+           "a step of the last motion's length (within 0.2 m) is bridged whatever it turned; "
+           "after a last motion of 0.2 m or less the step left must also turn as it did");
     s.flag("catch_up_less_stall", catchUpLessStall,
            "in the first catch-up after a stall registration placed, where nothing from the last "
            "motion or the reading placed the scan, ICP also starts from the reading less the "

@@ -89,10 +89,15 @@ bool OdometryLag::turned(const mrpt::poses::CPose2D& motion) {
     return std::abs(mrpt::math::wrapToPi(motion.phi())) > kAgreeAngle;
 }
 
+bool OdometryLag::catchUpAfterStall(const mrpt::poses::CPose2D& increment,
+                                    const mrpt::poses::CPose2D& lastMotion) const {
+    return repeatedScans_ > 0 && !zero(increment) && movedBeforeStall_ &&
+           exceeds(increment, lastMotion);
+}
+
 bool OdometryLag::bridges(const mrpt::poses::CPose2D& increment,
                           const mrpt::poses::CPose2D& lastMotion) const {
-    if (repeatedScans_ == 0 || zero(increment) || !movedBeforeStall_ ||
-        !exceeds(increment, lastMotion))
+    if (!catchUpAfterStall(increment, lastMotion))
         return false;
     // Translation: a corridor fixes the heading, and ICP turns the stall's scans by its noise
     // (a degree or so) while it cannot see how far they went along it. Where nothing placed
@@ -102,6 +107,24 @@ bool OdometryLag::bridges(const mrpt::poses::CPose2D& increment,
     return sinceReading_.norm() <= kMovedDistance || stallUnplaced() ||
            (turnedAsRegistered(increment) &&
             increment.norm() - sinceReading_.norm() > kAgreeDistance);
+}
+
+bool OdometryLag::holdsStallAndStep(const mrpt::poses::CPose2D& increment,
+                                    const mrpt::poses::CPose2D& lastMotion) const {
+    // The lengths: the turns may differ (the robot turned -11 deg over the stall and +19 in
+    // its own interval), and a reading that turned otherwise than registration saw is what
+    // bridges() refuses. A stall registration left short, or a reading that is not all of the
+    // stall, does not add up.
+    if (!catchUpAfterStall(increment, lastMotion) ||
+        std::abs(increment.norm() - (sinceReading_.norm() + lastMotion.norm())) > kAgreeDistance)
+        return false;
+    if (lastMotion.norm() > kAgreeDistance)
+        return true;
+    // A step within the margin (a turn on the spot, a slow robot) does not tell the stall and a
+    // step from the stall alone by its length: the step the reading leaves must also turn as
+    // the last motion did.
+    return std::abs(mrpt::math::wrapToPi(stepSinceStall(increment).phi() - lastMotion.phi())) <=
+           kAgreeAngle;
 }
 
 bool OdometryLag::stallTurnRefuted(const mrpt::poses::CPose2D& increment,

@@ -297,6 +297,20 @@ bool ScanRegistration::shortOfTurn(const Prediction& prediction, const Registrat
     return last * step >= 0 && std::abs(last) - std::abs(step) > 2 * options_.secondOpinionTurn;
 }
 
+bool ScanRegistration::shortOnTheSpot(const Prediction& prediction, const Registration& icp) const {
+    if (!options_.spotTurnSecondOpinion || !options_.secondOpinion ||
+        !prediction.odometryPredicted || prediction.odometryStalled ||
+        icp.overlap >= options_.keyframeMinOverlap)
+        return false;
+    // Only where the odometry is known to lag (as for tryTurnedStarts): at every scan of a
+    // sound odometry the second starts settle on people or furniture as often as they mend.
+    if (jumpsForOdometry_ + jumpsForLastMotion_ < kJumpPriorCases)
+        return false;
+    return prediction.odometryStep.norm() <= OdometryLag::kMovedDistance &&
+           std::abs(mrpt::math::wrapToPi(prediction.odometryStep.phi())) >
+               options_.secondOpinionTurn;
+}
+
 bool ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPose2D& sensorOnRobot,
                                      const Prediction& prediction, const Registration* matched,
                                      Registration& icp, bool fromLastMotion) {

@@ -74,6 +74,12 @@ struct GraphSlamOptions : public config::Options {
     /// secondOpinionTurn (a reading mid-turn that fell short of it), gets the second opinion,
     /// with one more start: the last motion (ScanRegistration::shortOfTurn).
     bool shortTurnSecondOpinion = true;
+    /// ICP that ended on less than keyframeMinOverlap of the scan from a reading of a turn on
+    /// the spot (at most 2 cm, more than secondOpinionTurn) gets the second opinion too, in a
+    /// log whose odometry has jumped (ScanRegistration::kJumpPriorCases clear jump choices): a
+    /// turn on the spot the odometry read short, where nothing along the heading tells ICP so
+    /// (ScanRegistration::shortOnTheSpot).
+    bool spotTurnSecondOpinion = true;
     /// Where none of the second opinion's starts settled, also start ICP from the prediction
     /// turned by +-3 and +-4 secondOpinionTurn, with the same margin and jump bounds: a short
     /// reading that missed 25-35 deg of a turn, which the nearer starts do not reach.
@@ -263,6 +269,14 @@ struct GraphSlamOptions : public config::Options {
     /// keyframe among them stays where the graph has it (keeping the matcher's stall scans out
     /// of the submap broke far more tours than it mended, benchmarks.md B3).
     bool bridgeRefutedStalls = true;
+    /// A catch-up after a stall that bridgeOdometryStalls' tests leave alone is bridged all the
+    /// same where it is as long as the translation registered over the stall plus a step of the
+    /// last motion's length, within 0.2 m, whatever it turned (OdometryLag::holdsStallAndStep):
+    /// registration saw the stall right, the reading holds all of it, and the robot turned in
+    /// the reading's own interval otherwise than over the stall. After a last motion of 0.2 m
+    /// or less (a turn on the spot, a slow robot) the step the reading leaves must also turn
+    /// as the last motion did, within 10 deg.
+    bool bridgeStallAndStep = true;
     /// In the first catch-up after a stall whose scans a registration placed, where nothing
     /// from the last motion (the catch-up's prediction) nor from the reading placed the scan:
     /// ICP also starts from the reading less the motion registered over the stall

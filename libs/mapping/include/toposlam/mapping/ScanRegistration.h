@@ -114,6 +114,9 @@ struct Registration {
     /// motion's turn, so second starts, one from the last motion, were tried
     /// (short_turn_second_opinion).
     bool shortOfTurn = false;
+    /// ICP (settled or not) ended on little of the scan from a reading of a turn on the spot,
+    /// so second starts were tried (spot_turn_second_opinion).
+    bool shortOnTheSpot = false;
     /// The second start that replaced ICP's answer (secondStart) was one of the wider ring of
     /// turned starts, tried where none of the nearer starts settled (second_opinion_wide_turns).
     bool wideTurn = false;
@@ -519,6 +522,12 @@ class ScanRegistration {
     /// mid-turn that fell short of the turn, and ICP that stayed near it on too little of the
     /// scan (short_turn_second_opinion).
     bool shortOfTurn(const Prediction& prediction, const Registration& icp) const;
+    /// ICP from the odometry's step ended with less than keyframe_min_overlap of the scan on
+    /// the submap, that step is a turn on the spot (at most OdometryLag::kMovedDistance, more
+    /// than second_opinion_turn), and this log's odometry has jumped (kJumpPriorCases clear jump
+    /// choices): a lagging heading may have read a fraction of the turn, and on the spot
+    /// nothing in the step says how much (spot_turn_second_opinion).
+    bool shortOnTheSpot(const Prediction& prediction, const Registration& icp) const;
     /// ICP that converged, or ended with a residual within kUnsettledResidualRatio of the
     /// recent registrations' (or before there are enough to judge); tryIcp's "unsettled" is
     /// its negation.
@@ -677,10 +686,12 @@ Registration ScanRegistration::registerScan(const matching::PolarScan& scan,
     if (!prediction.odometryJumped &&
         tryIcp(scan, sensorOnRobot, prediction, out, started ? &*started : nullptr)) {
         const bool shortTurn = shortOfTurn(prediction, out);
-        if ((!icpUnsettled_ && !shortTurn) || !prediction.lastKeyframe)
+        const bool onTheSpot = shortOnTheSpot(prediction, out);
+        if ((!icpUnsettled_ && !shortTurn && !onTheSpot) || !prediction.lastKeyframe)
             return out;  // icpUnsettled_ is set only with second_opinion on
         out.unsettled = icpUnsettled_;
         out.shortOfTurn = shortTurn;
+        out.shortOnTheSpot = onTheSpot;
         extractFeatures(features);
         Registration matched;
         const bool found =

@@ -45,6 +45,8 @@ struct SlamStatistics {
     /// replaced (where that ICP had not settled either, it counts in icpUnsettled and
     /// icpSecondStarts too).
     std::size_t icpShortOfTurn = 0, icpShortOfTurnReplaced = 0;
+    /// The same from a reading of a turn on the spot (spot_turn_second_opinion).
+    std::size_t icpShortOnTheSpot = 0, icpShortOnTheSpotReplaced = 0;
     /// Second starts (of either kind above) from the wider ring of turned starts, tried where
     /// none of the nearer starts settled (second_opinion_wide_turns).
     std::size_t icpWideTurnStarts = 0;
@@ -129,6 +131,9 @@ struct SlamStatistics {
     /// of those, stalls whose turn the guess-free matcher registered and the reading after
     /// refuted (bridge_refuted_stalls)
     std::size_t odometryRefutedStallsBridged = 0;
+    /// of those, readings as long as the stall's registered translation plus a step like the
+    /// last, bridged only for that (OdometryLag::holdsStallAndStep; bridge_stall_and_step)
+    std::size_t odometryStallsAndStepBridged = 0;
     /// catch-ups after readings that fell short of the registered motion (a stall within a
     /// scan interval: OdometryLag::catchesUpShortfall), predicted as the reading less the
     /// shortfall (bridge_odometry_stalls)

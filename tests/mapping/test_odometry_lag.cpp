@@ -206,8 +206,8 @@ TEST(OdometryLag, AReadingAsLongAsTheRegisteredStallPlusAStepIsBridgedWhateverIt
     EXPECT_FALSE(behind.holdsStallAndStep(reading, part));
     // After a turn on the spot the lengths tell little: a stall in which registration saw the
     // last 0.1 m to a corner, then 24 deg of the turn. A reading of those 0.1 m and 30 deg
-    // leaves a step that turns as the last motion did (6 deg); one of 0.1 m and 10 deg is not
-    // all of the stall.
+    // leaves a step that turns as the last motion did (6 deg); one of 0.1 m and 17 deg, a
+    // catch-up too (11 deg beyond the last motion), leaves -7 deg: not all of the stall.
     const CPose2D toCorner(0.1, 0, 0), spotTurn(0, 0, mrpt::DEG2RAD(6.0));
     OdometryLag cornered;
     cornered.registered(toCorner, toCorner);
@@ -215,7 +215,7 @@ TEST(OdometryLag, AReadingAsLongAsTheRegisteredStallPlusAStepIsBridgedWhateverIt
     for (int k = 0; k < 4; ++k)
         cornered.registered(kStill, spotTurn);
     EXPECT_TRUE(cornered.holdsStallAndStep(CPose2D(0.1, 0, mrpt::DEG2RAD(30.0)), spotTurn));
-    EXPECT_FALSE(cornered.holdsStallAndStep(CPose2D(0.1, 0, mrpt::DEG2RAD(10.0)), spotTurn));
+    EXPECT_FALSE(cornered.holdsStallAndStep(CPose2D(0.1, 0, mrpt::DEG2RAD(17.0)), spotTurn));
     // No stall (the reading before moved), or a robot that stood still before it: nothing.
     OdometryLag moving;
     moving.registered(ahead, ahead);

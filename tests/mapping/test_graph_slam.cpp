@@ -190,25 +190,36 @@ void expectRuleMendsGen60AtAThird(const std::string& key,
 }
 
 /// Bormann's plan `plan` (a file of ../shared/data) toured by B3-sim's stalling robot, `seed`,
-/// one scan in three kept, mapped with [GraphSlam] `key` off, then on (each of `alsoOff` off in
-/// both: another rule that mends the same tour). Off, the rule does not act and the ATE exceeds
-/// `offAbove` (m), or the tour no longer shows the failure (`offMessage`); on, it acts (its
-/// `count` in the statistics) and the ATE falls below off's divided by `factor`.
+/// at every scan or with one scan in three kept (`atAThird`), mapped with [GraphSlam] `key` off,
+/// then on (each of `alsoOff` off in both: another rule that mends the same tour). Off, the rule
+/// does not act and the ATE exceeds `offAbove` (m), or the tour no longer shows the failure
+/// (`offMessage`); on, it acts (its `count` in the statistics) and the ATE falls below off's
+/// divided by `factor`.
+void expectRuleMendsStallingPlan(const std::string& plan, int seed, bool atAThird,
+                                 const std::string& key,
+                                 std::size_t mapping::SlamStatistics::*count, double offAbove,
+                                 double factor, const char* offMessage,
+                                 std::initializer_list<const char*> alsoOff = {}) {
+    const test::TempDir dir;
+    const GeneratedTour tour = tourPlanByBenchRobot(dir, plan, "stalling-odometry", seed);
+    ASSERT_EQ(tour.sim.exitCode, 0) << tour.sim.output;
+    const std::string log = atAThird ? thirdOfTheScans(dir, tour) : tour.log;
+    const io::Trajectory2D truth = io::loadTrajectory(tour.groundTruth);
+    const FlaggedRun off = mapWithFlag(log, truth, key, false, alsoOff);
+    EXPECT_EQ(off.statistics.*count, 0u);
+    EXPECT_GT(off.ate, offAbove) << offMessage;
+    const FlaggedRun on = mapWithFlag(log, truth, key, true, alsoOff);
+    EXPECT_GT(on.statistics.*count, 0u);
+    EXPECT_LT(on.ate, off.ate / factor);
+}
+
+/// The same with one scan in three kept.
 void expectRuleMendsStallingPlanAtAThird(const std::string& plan, int seed, const std::string& key,
                                          std::size_t mapping::SlamStatistics::*count,
                                          double offAbove, double factor, const char* offMessage,
                                          std::initializer_list<const char*> alsoOff = {}) {
-    const test::TempDir dir;
-    const GeneratedTour tour = tourPlanByBenchRobot(dir, plan, "stalling-odometry", seed);
-    ASSERT_EQ(tour.sim.exitCode, 0) << tour.sim.output;
-    const std::string third = thirdOfTheScans(dir, tour);
-    const io::Trajectory2D truth = io::loadTrajectory(tour.groundTruth);
-    const FlaggedRun off = mapWithFlag(third, truth, key, false, alsoOff);
-    EXPECT_EQ(off.statistics.*count, 0u);
-    EXPECT_GT(off.ate, offAbove) << offMessage;
-    const FlaggedRun on = mapWithFlag(third, truth, key, true, alsoOff);
-    EXPECT_GT(on.statistics.*count, 0u);
-    EXPECT_LT(on.ate, off.ate / factor);
+    expectRuleMendsStallingPlan(plan, seed, true, key, count, offAbove, factor, offMessage,
+                                alsoOff);
 }
 
 /// Maps `tour` with the shipped configuration and [GraphSlam] `key` on (`onValue`), then off: on,
@@ -1855,16 +1866,9 @@ TEST(GraphSlam, ACatchUpAsLongAsTheRegisteredStallPlusAStepIsBridgedWhateverItTu
     // 0.8 m on (ATE 0.31 m). The lengths add up: the reading less the registered stall is the
     // step (0.02 m).
     TOPOSLAM_SHARED_DATA_OR_SKIP(plan, "rooms/office_a_furnitures.png");
-    const test::TempDir dir;
-    const GeneratedTour tour = tourPlanByBenchRobot(dir, plan, "stalling-odometry", 41);
-    ASSERT_EQ(tour.sim.exitCode, 0) << tour.sim.output;
-    const io::Trajectory2D truth = io::loadTrajectory(tour.groundTruth);
-    const FlaggedRun off = mapWithFlag(tour.log, truth, "bridge_stall_and_step", false);
-    EXPECT_EQ(off.statistics.odometryStallsAndStepBridged, 0u);
-    EXPECT_GT(off.ate, 0.2) << "the tour no longer shows the catch-up ICP settled past";
-    const FlaggedRun on = mapWithFlag(tour.log, truth, "bridge_stall_and_step", true);
-    EXPECT_GT(on.statistics.odometryStallsAndStepBridged, 0u);
-    EXPECT_LT(on.ate, off.ate / 5);
+    expectRuleMendsStallingPlan(plan, 41, /*atAThird=*/false, "bridge_stall_and_step",
+                                &mapping::SlamStatistics::odometryStallsAndStepBridged, 0.2, 5,
+                                "the tour no longer shows the catch-up ICP settled past");
 }
 
 TEST(GraphSlam, ATurnOnTheSpotTheOdometryReadShortGetsASecondOpinion) {

@@ -304,7 +304,7 @@ bool ScanRegistration::shortOnTheSpot(const Prediction& prediction, const Regist
         return false;
     // Only where the odometry is known to lag (as for tryTurnedStarts): at every scan of a
     // sound odometry the second starts settle on people or furniture as often as they mend.
-    if (jumpsForOdometry_ + jumpsForLastMotion_ < kJumpPriorCases)
+    if (!odometryHasJumped())
         return false;
     return prediction.odometryStep.norm() <= OdometryLag::kMovedDistance &&
            std::abs(mrpt::math::wrapToPi(prediction.odometryStep.phi())) >
@@ -651,7 +651,7 @@ bool ScanRegistration::tryTurnedStarts(const matching::PolarScan& scan,
     // Only in a log whose odometry has jumped (a low scan rate, a stalling odometry): at every
     // scan a failed registration is a crowd's doing, and turned starts settle on the people
     // (eight tours with 15 people at every scan broke, office_i seed 32 0.20 -> 5.41 m).
-    if (jumpsForOdometry_ + jumpsForLastMotion_ < kJumpPriorCases)
+    if (!odometryHasJumped())
         return false;
     // A shorter reading stalled in distance too: turned starts settle on the right heading but
     // short along it, as far as the reading fell short (0.5-0.9 m on six such readings).

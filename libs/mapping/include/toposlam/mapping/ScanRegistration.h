@@ -647,6 +647,11 @@ class ScanRegistration {
     int jumpsForOdometry_ = 0, jumpsForLastMotion_ = 0;
     /// ... once the odometry's step has won this many times, and more than twice as often.
     static constexpr int kJumpPriorCases = 3;
+    /// This log's odometry has jumped: kJumpPriorCases clear jump choices either way (the
+    /// rules for a lagging heading ask it: tryTurnedStarts, shortOnTheSpot).
+    bool odometryHasJumped() const {
+        return jumpsForOdometry_ + jumpsForLastMotion_ >= kJumpPriorCases;
+    }
     /// A jumped reading nothing registered is kept by that prior only when no longer than this
     /// times the longest motion registered at the last ten scans: a catch-up after a stall
     /// adds the stalled motion and reads longer than the robot ever steps.

@@ -287,10 +287,14 @@ bool ScanRegistration::settled(const IcpAttempt& attempt) const {
            attempt.icp.residualRms <= kUnsettledResidualRatio * typical;
 }
 
+bool ScanRegistration::shortFromOdometry(const Prediction& prediction,
+                                         const Registration& icp) const {
+    return options_.secondOpinion && prediction.odometryPredicted && !prediction.odometryStalled &&
+           icp.overlap < options_.keyframeMinOverlap;
+}
+
 bool ScanRegistration::shortOfTurn(const Prediction& prediction, const Registration& icp) const {
-    if (!options_.shortTurnSecondOpinion || !options_.secondOpinion ||
-        !prediction.odometryPredicted || prediction.odometryStalled ||
-        icp.overlap >= options_.keyframeMinOverlap)
+    if (!options_.shortTurnSecondOpinion || !shortFromOdometry(prediction, icp))
         return false;
     const double last = mrpt::math::wrapToPi(prediction.lastMotion.phi());
     const double step = mrpt::math::wrapToPi(prediction.odometryStep.phi());
@@ -298,9 +302,7 @@ bool ScanRegistration::shortOfTurn(const Prediction& prediction, const Registrat
 }
 
 bool ScanRegistration::shortOnTheSpot(const Prediction& prediction, const Registration& icp) const {
-    if (!options_.spotTurnSecondOpinion || !options_.secondOpinion ||
-        !prediction.odometryPredicted || prediction.odometryStalled ||
-        icp.overlap >= options_.keyframeMinOverlap)
+    if (!options_.spotTurnSecondOpinion || !shortFromOdometry(prediction, icp))
         return false;
     // Only where the odometry is known to lag (as for tryTurnedStarts): at every scan of a
     // sound odometry the second starts settle on people or furniture as often as they mend.
@@ -357,8 +359,7 @@ bool ScanRegistration::secondOpinion(const matching::PolarScan& scan, const CPos
         tryStart(prediction.lastKeyframeInSubmap() + matched->pose, false, false);
     const auto tryTurns = [&](std::initializer_list<double> turns, bool wide) {
         for (const double k : turns)
-            tryStart(prediction.inSubmap + CPose2D(0, 0, k * options_.secondOpinionTurn), false,
-                     wide);
+            tryStart(turnedStart(prediction, k), false, wide);
     };
     if (options_.secondOpinionTurn > 0) {
         tryTurns({-2.0, -1.0, 1.0, 2.0}, false);
@@ -660,8 +661,7 @@ bool ScanRegistration::tryTurnedStarts(const matching::PolarScan& scan,
     std::array<IcpAttempt, 8> ends;  // those that settled within the bounds
     std::size_t count = 0;
     for (const double k : {-4.0, -3.0, -2.0, -1.0, 1.0, 2.0, 3.0, 4.0}) {
-        IcpAttempt a = icpFrom(scan, sensorOnRobot, *prediction.submap,
-                               prediction.inSubmap + CPose2D(0, 0, k * options_.secondOpinionTurn));
+        IcpAttempt a = icpFrom(scan, sensorOnRobot, *prediction.submap, turnedStart(prediction, k));
         const CPose2D correction = a.robot - prediction.inSubmap;
         if (!settled(a) || a.overlap < options_.minInlierRatio ||
             beyondOdometryJump(options_, correction))

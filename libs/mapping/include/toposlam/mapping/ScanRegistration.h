@@ -516,6 +516,15 @@ class ScanRegistration {
     bool secondOpinion(const matching::PolarScan& scan, const mrpt::poses::CPose2D& sensorOnRobot,
                        const Prediction& prediction, const Registration* matched, Registration& icp,
                        bool fromLastMotion);
+    /// The prediction turned on the spot by `turns` times second_opinion_turn: the starts of
+    /// the second opinion and of the turned-start search (tryTurnedStarts).
+    mrpt::poses::CPose2D turnedStart(const Prediction& prediction, double turns) const {
+        return prediction.inSubmap + mrpt::poses::CPose2D(0, 0, turns * options_.secondOpinionTurn);
+    }
+    /// ICP from the odometry's step (not a stalled reading) ended with less than
+    /// keyframe_min_overlap of the scan on the submap, and the second opinion is on: what
+    /// shortOfTurn and shortOnTheSpot both ask first.
+    bool shortFromOdometry(const Prediction& prediction, const Registration& icp) const;
     /// ICP from the odometry's step ended with less than keyframe_min_overlap of the scan on
     /// the submap, and that step turned the way the robot's last motion did but less, by more
     /// than the second opinion's turned starts reach (2 second_opinion_turn): a reading

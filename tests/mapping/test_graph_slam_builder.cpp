@@ -203,7 +203,7 @@ TEST(CGraphSlamBuilder, AppOutputsAreReadByMrpt) {
 TEST(CGraphSlamBuilder, SummarySaysWhichLoopRulesRan) {
     const test::TempDir dir;
     test::writeRawlog(roomTour(), dir.file("tour.rawlog"));
-    // The shipped ini has the contested rule on, the other two off.
+    // The shipped ini has the contested rule and the gate's lever arm on, the other two off.
     const std::string shipped = test::readFile(test::configIni("toposlam-slam.ini"));
     const auto edited = [&](std::vector<std::pair<std::string, std::string>> edits,
                             const std::string& name) {
@@ -222,7 +222,9 @@ TEST(CGraphSlamBuilder, SummarySaysWhichLoopRulesRan) {
                 {"\nodometry_calibration = false", "\nodometry_calibration = true"}},
                "rules-on.ini");
     const std::string rulesOff =
-        edited({{"\nloop_contested_support = 4", "\nloop_contested_support = 0"}}, "rules-off.ini");
+        edited({{"\nloop_contested_support = 4", "\nloop_contested_support = 0"},
+                {"\nloop_gate_lever_arm = true", "\nloop_gate_lever_arm = false"}},
+               "rules-off.ini");
     for (const bool on : {false, true}) {
         const std::string out = dir.file(on ? "on" : "off");
         const auto run =
@@ -233,6 +235,8 @@ TEST(CGraphSlamBuilder, SummarySaysWhichLoopRulesRan) {
         const auto loops = io::loadJsonFile(out + "/summary.json").at("loops");
         EXPECT_EQ(loops.at("guess_free_search").get<bool>(), on);
         EXPECT_EQ(loops.at("contested_rule").get<bool>(), on);
+        EXPECT_EQ(loops.at("lever_arm_gate").get<bool>(), on);
+        EXPECT_TRUE(loops.at("lever_arm_accepted").is_number_unsigned());
         const auto odometry = io::loadJsonFile(out + "/summary.json").at("odometry");
         EXPECT_EQ(odometry.at("calibration").get<bool>(), on);
         // The evidence is gathered either way (this tour's odometry reads 3 % long); only the
@@ -264,10 +268,12 @@ TEST(CGraphSlamBuilder, SummarySaysWhichLoopRulesRan) {
             << text;
         if (on) {
             EXPECT_NE(text.find(" of them guess-free, "), std::string::npos) << text;
-            EXPECT_NE(text.find(" beyond the gate on agreeing evidence)"), std::string::npos)
+            EXPECT_NE(text.find(" beyond the gate on agreeing evidence, "), std::string::npos)
                 << text;
+            EXPECT_NE(text.find(" let in by the gate's lever arm)"), std::string::npos) << text;
         } else {
-            EXPECT_NE(text.find("(guess-free search off, acceptance beyond the gate off)"),
+            EXPECT_NE(text.find("(guess-free search off, acceptance beyond the gate off, the "
+                                "gate's lever arm off)"),
                       std::string::npos)
                 << text;
         }

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
+
 #include <cmath>
 #include <numeric>
 #include <random>
@@ -54,7 +56,11 @@ void expectSame(const PathVariance& lazy, const PathVariance& full, std::size_t 
     EXPECT_EQ(lazy.reached, full.reached) << "node " << node;
     EXPECT_EQ(lazy.position, full.position) << "node " << node;  // the same sums, bit for bit
     EXPECT_EQ(lazy.heading, full.heading) << "node " << node;
-    EXPECT_EQ(lazy.swung, full.swung) << "node " << node;
+    EXPECT_EQ(lazy.swung.xx, full.swung.xx) << "node " << node;
+    EXPECT_EQ(lazy.swung.xy, full.swung.xy) << "node " << node;
+    EXPECT_EQ(lazy.swung.yh, full.swung.yh) << "node " << node;
+    EXPECT_EQ(lazy.swung.hh, full.swung.hh) << "node " << node;
+    EXPECT_EQ(lazy.reach, full.reach) << "node " << node;
 }
 
 }  // namespace
@@ -120,30 +126,45 @@ TEST(PathUncertainty, EdgesWithTinyCovariancesAddTheDriftModelsVariances) {
     }
 }
 
+/// Out 9 m along x in steps of `step`, two steps across, and back: the last pose is 0.6 m
+/// from the first. Registration edges with a negligible covariance (the drift model's floor
+/// is all there is).
+struct UTurn {
+    std::vector<CPose2D> poses;
+    PoseGraph graph;
+};
+
+UTurn uTurn(double step, int n) {
+    mrpt::math::CMatrixDouble33 tiny = mrpt::math::CMatrixDouble33::Zero();
+    tiny(0, 0) = tiny(1, 1) = tiny(2, 2) = 1e-12;
+    UTurn u;
+    for (int i = 0; i <= n; ++i)
+        u.poses.emplace_back(step * i, 0, 0);  // out along x
+    for (int i = 1; i <= 2; ++i)
+        u.poses.emplace_back(step * n, step * i, M_PI / 2);  // across
+    for (int i = 1; i <= n; ++i)
+        u.poses.emplace_back(step * (n - i), 0.6, M_PI);  // and back
+    for (const CPose2D& p : u.poses)
+        u.graph.addNode(p);
+    for (std::size_t i = 1; i < u.poses.size(); ++i)
+        u.graph.addEdge(i - 1, i, u.poses[i] - u.poses[i - 1], tiny, EdgeKind::Registration);
+    return u;
+}
+
 // Back round a U, the current keyframe is close to the first one, but the chain between them
 // went 9 m away: a heading error out there swings the current keyframe, seen from the first,
-// by its lever arm. The swung variance is the largest eigenvalue of
-//   sum over edges of (a l)^2 I + (b l)^2 w w^T,  w = the lever from where the error enters
-// to the source, turned by 90 deg,
-// which the search builds edge by edge (first-order pose compounding), and which is far more
-// than the position + heading d^2 of the two keyframes' distance d.
+// by its lever arm. The swung covariance is (world axes, before it is turned into the source's
+// frame)
+//   sum over edges of (a l)^2 diag(1, 1, 0) + (b l)^2 (w, 1) (w, 1)^T,  w = the lever from
+// where the error enters to the source, turned by 90 deg,
+// which the search builds edge by edge (first-order pose compounding); its position part is far
+// more than the position + heading d^2 of the two keyframes' distance d.
 TEST(PathUncertainty, AHeadingErrorFarAlongTheChainSwingsTheSourceByItsLeverArm) {
     const double a = 0.01, b = 0.01, step = 0.3;
     const int n = 30;  // steps out and back
-    mrpt::math::CMatrixDouble33 tiny = mrpt::math::CMatrixDouble33::Zero();
-    tiny(0, 0) = tiny(1, 1) = tiny(2, 2) = 1e-12;
-    std::vector<CPose2D> poses;
-    for (int i = 0; i <= n; ++i)
-        poses.emplace_back(step * i, 0, 0);  // out along x
-    for (int i = 1; i <= 2; ++i)
-        poses.emplace_back(step * n, step * i, M_PI / 2);  // across
-    for (int i = 1; i <= n; ++i)
-        poses.emplace_back(step * (n - i), 0.6, M_PI);  // and back
-    PoseGraph g;
-    for (const CPose2D& p : poses)
-        g.addNode(p);
-    for (std::size_t i = 1; i < poses.size(); ++i)
-        g.addEdge(i - 1, i, poses[i] - poses[i - 1], tiny, EdgeKind::Registration);
+    const UTurn turn = uTurn(step, n);
+    const std::vector<CPose2D>& poses = turn.poses;
+    const PoseGraph& g = turn.graph;
 
     const std::size_t source = poses.size() - 1;  // (0, 0.6): 0.6 m from node 0
     PathUncertainty u(a, b);
@@ -151,22 +172,65 @@ TEST(PathUncertainty, AHeadingErrorFarAlongTheChainSwingsTheSourceByItsLeverArm)
     const PathVariance& v = u.to(0);
     // Searched from the source, the error of the edge between nodes k and k + 1 enters at
     // node k.
-    double sxx = 0, syy = 0, sxy = 0;
+    double sxx = 0, syy = 0, sxy = 0, sxh = 0, syh = 0, shh = 0;
     for (std::size_t k = 0; k < source; ++k) {
         const double l = (poses[k + 1] - poses[k]).norm();
         const double q = std::max(b * b * l * l, 1e-12), p = std::max(a * a * l * l, 1e-12);
         const double wx = poses[k].y() - poses[source].y(), wy = poses[source].x() - poses[k].x();
         sxx += p + q * wx * wx, syy += p + q * wy * wy, sxy += q * wx * wy;
+        sxh += q * wx, syh += q * wy, shh += q;
     }
     const double largest =
         0.5 * (sxx + syy) + std::sqrt(0.25 * (sxx - syy) * (sxx - syy) + sxy * sxy);
-    EXPECT_NEAR(v.swung, largest, 1e-9 * largest);
+    EXPECT_NEAR(v.swungPosition(), largest, 1e-9 * largest);
+    // In the source's frame: it heads back along -x, so x and y change sign.
+    EXPECT_NEAR(v.swung.xx, sxx, 1e-9 * sxx);
+    EXPECT_NEAR(v.swung.yy, syy, 1e-9 * sxx);
+    EXPECT_NEAR(v.swung.xy, sxy, 1e-9 * sxx);
+    EXPECT_NEAR(v.swung.xh, -sxh, 1e-9 * std::abs(sxh));
+    EXPECT_NEAR(v.swung.yh, -syh, 1e-9 * std::abs(syh) + 1e-15);
+    EXPECT_NEAR(v.swung.hh, shh, 1e-12 * shh);
     const double d = 0.6;
-    EXPECT_GT(v.swung, 10 * v.at(d));
+    EXPECT_GT(v.swungPosition(), 10 * v.at(d));
     // Straight out, the old bound (all heading error at the far end) is the larger one.
     u.start(g, n);
     const double sumOfSquares = n * (n + 1) * (2 * n + 1) / 6.0;  // levers of 1..n steps
-    EXPECT_LT(u.to(0).swung, u.to(0).at(step * n));
-    EXPECT_NEAR(u.to(0).swung, u.to(0).position + b * b * step * step * step * step * sumOfSquares,
-                1e-12);
+    EXPECT_LT(u.to(0).swungPosition(), u.to(0).at(step * n));
+    EXPECT_NEAR(u.to(0).swungPosition(),
+                u.to(0).position + b * b * step * step * step * step * sumOfSquares, 1e-12);
+}
+
+// What the correlation is for. Back round the U, a heading error at the far end moves the
+// current keyframe across the U and turns it alike; a shift as long without that turn is what
+// a look-alike place gives (a corridor matched one door along). Both are as far from the
+// first keyframe's view of it; only the first fits the swung covariance.
+TEST(PathUncertainty, AShiftWithoutTheTurnThatWouldExplainItStaysOutsideTheSwungCovariance) {
+    const double a = 0.01, b = 0.01, step = 0.3;
+    const int n = 30;
+    const UTurn turn = uTurn(step, n);
+    const std::size_t source = turn.poses.size() - 1;
+    PathUncertainty u(a, b);
+    u.start(turn.graph, source);
+    const PathVariance::Covariance& c = u.to(0).swung;
+    Eigen::Matrix3d cov;
+    cov << c.xx, c.xy, c.xh, c.xy, c.yy, c.yh, c.xh, c.yh, c.hh;
+    const auto mahalanobis = [&](const Eigen::Vector3d& e) { return e.dot(cov.ldlt().solve(e)); };
+    // Two sigmas of the chain's heading, all at the far end of the U (node n): the source
+    // swings about it by the lever from there, turned by 90 deg, and by the source's heading
+    // (pi) into its own frame.
+    const double turnError = 2 * std::sqrt(c.hh);
+    const CPose2D& far = turn.poses[static_cast<std::size_t>(n)];
+    const CPose2D& here = turn.poses[source];
+    const Eigen::Vector2d swungBy(-turnError * (far.y() - here.y()),
+                                  -turnError * (here.x() - far.x()));
+    const Eigen::Vector3d drift(swungBy.x(), swungBy.y(), turnError);
+    const Eigen::Vector3d lookAlike(swungBy.x(), swungBy.y(), 0);
+    // The farthest the chain went from the source, the longest lever: the U's far corner.
+    EXPECT_NEAR(u.to(0).reach, std::hypot(step * n, 0.6), 1e-9);
+    const double gate = 16.27;  // loop_chi2
+    // Far outside the gate without the lever arm (the two keyframes are 0.6 m apart) ...
+    EXPECT_GT(swungBy.squaredNorm() / u.to(0).at(0.6), 10 * gate);
+    // ... inside it with the swung covariance, but only with the turn.
+    EXPECT_LT(mahalanobis(drift), gate);
+    EXPECT_GT(mahalanobis(lookAlike), 2 * gate);
 }

@@ -311,7 +311,9 @@ void GraphSlamOptions::declareLoopClosure(config::OptionsSchema& s) {
            "chi-square bound (3 dof) on a new loop's disagreement with the graph (16.27 = 99.9 %)")
         .above(0);
     s.flag("loop_gate_lever_arm", loopGateLeverArm,
-           "the gate's chi-square swings each edge's heading variance by its lever arm");
+           "a loop outside the gate is let in where it is off by a turn and the shift that turn "
+           "makes across the chain's reach, and the path's covariance, each edge's heading "
+           "variance swung by its lever arm, explains it within loop_chi2");
     s.real("loop_withdraw_chi2", loopWithdrawChi2, "",
            "after optimisation, the worst loop whose chi-square is still above this is withdrawn")
         .above(0);

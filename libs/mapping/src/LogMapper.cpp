@@ -84,6 +84,7 @@ void runGraphEngine(const std::string& logPath, const mrpt::config::CConfigFileB
     result.smoothedScans = slam.options().smoothScans;
     result.odometryCalibration = slam.options().odometryCalibration.enabled;
     result.contestedLoops = slam.options().loopContestedSupport > 0;
+    result.leverArmGate = slam.options().loopGateLeverArm;
     result.graph = slam.graph();
     input.getKeyframes(result.keyframes);
 }

@@ -33,6 +33,18 @@ bool viewsOverlap(const Keyframe& a, const Keyframe& b, const PoseGraph& graph) 
     return std::abs(mrpt::math::wrapToPi(ha - hb)) <= 0.5 * aperture + M_PI / 8;
 }
 
+/// A loop's covariance plus the path's swung covariance (PathVariance::swung), both in the
+/// current keyframe's frame.
+CMatrixDouble33 withSwung(const CMatrixDouble33& loop, const PathVariance& v) {
+    const PathVariance::Covariance& c = v.swung;
+    CMatrixDouble33 out = loop;
+    out(0, 0) += c.xx, out(1, 1) += c.yy, out(2, 2) += c.hh;
+    out(0, 1) += c.xy, out(1, 0) += c.xy;
+    out(0, 2) += c.xh, out(2, 0) += c.xh;
+    out(1, 2) += c.yh, out(2, 1) += c.yh;
+    return out;
+}
+
 /// Error of pose b against pose a: a^-1 (+) b as (distance, |angle|).
 std::pair<double, double> disagreement(const CPose2D& a, const CPose2D& b) {
     const CPose2D e = b - a;
@@ -170,10 +182,16 @@ std::vector<LoopCloser::Measurement> LoopCloser::consistentGated(
         const PathVariance& v = uncertainty_.to(m.older);
         CMatrixDouble33 combined = m.covariance;
         const double d = m.pose.norm();
-        const double position = options_.loopGateLeverArm ? std::max(v.at(d), v.swung) : v.at(d);
-        combined(0, 0) += position, combined(1, 1) += position, combined(2, 2) += v.heading;
-        if (graph.chi2(m.older, m.current, m.pose, combined) <= options_.loopChi2) {
+        combined(0, 0) += v.at(d), combined(1, 1) += v.at(d), combined(2, 2) += v.heading;
+        const bool inGate = graph.chi2(m.older, m.current, m.pose, combined) <= options_.loopChi2;
+        // Beyond it, a loop may still be off by what a heading error far along the chain does
+        // to the current keyframe: a shift across the lever arm together with the same turn.
+        const bool swungIn =
+            !inGate && options_.loopGateLeverArm && swungByTurn(m, v, graph) &&
+            graph.chi2(m.older, m.current, m.pose, withSwung(m.covariance, v)) <= options_.loopChi2;
+        if (inGate || swungIn) {
             out.push_back(m);
+            out.back().swungIn = swungIn;
         } else {
             ++stats.loopsGateRejected;
             if (options_.loopContestedSupport > 0)
@@ -181,6 +199,16 @@ std::vector<LoopCloser::Measurement> LoopCloser::consistentGated(
         }
     }
     return out;
+}
+
+bool LoopCloser::swungByTurn(const Measurement& m, const PathVariance& v,
+                             const PoseGraph& graph) const {
+    // A heading error along the chain moves the current keyframe by at most its turn times the
+    // chain's reach; what the gate allows covers the rest. A look-alike place one door along is
+    // a shift without the turn, which a long chain's covariance (heading errors that cancel)
+    // may still explain.
+    const auto [shift, turn] = disagreement(m.pose, graph.pose(m.current) - graph.pose(m.older));
+    return shift <= turn * v.reach + std::sqrt(options_.loopChi2 * v.at(m.pose.norm()));
 }
 
 void LoopCloser::acceptContested(const std::vector<Keyframe>& keyframes, const PoseGraph& graph,
@@ -355,9 +383,11 @@ void LoopCloser::accept(const Measurement& m, PoseGraph& graph, LoopClosureOutco
     const auto [d, phi] = disagreement(m.pose, graph.pose(m.current) - graph.pose(m.older));
     outcome.maxDistanceError = std::max(outcome.maxDistanceError, d);
     outcome.maxAngleError = std::max(outcome.maxAngleError, phi);
-    graph.addEdge(m.older, m.current, m.pose, m.covariance, EdgeKind::Loop, !m.contested);
+    graph.addEdge(m.older, m.current, m.pose, m.covariance, EdgeKind::Loop,
+                  !m.contested && !m.swungIn);
     ++outcome.accepted;
     ++stats.loopsAccepted;
+    stats.loopsSwungIn += m.swungIn;
     recent_.push_back(m);
     if (!m.contested && options_.loopContestedSupport > 0)
         throughGate_.push_back(m);  // evidence against contested groups

@@ -284,12 +284,15 @@ std::string formatSummary(const MappingResult& r) {
         const std::string contested = r.contestedLoops ? std::to_string(st->loopsContested) +
                                                              " beyond the gate on agreeing evidence"
                                                        : "acceptance beyond the gate off";
+        const std::string swungIn =
+            r.leverArmGate ? std::to_string(st->loopsSwungIn) + " let in by the gate's lever arm"
+                           : "the gate's lever arm off";
         s += line(
-            "loop closures: %s verified, %zu accepted (%s, %s), %zu not matched, %zu "
+            "loop closures: %s verified, %zu accepted (%s, %s, %s), %zu not matched, %zu "
             "rejected by the consistency checks, %zu withdrawn after optimisation",
             counted(st->loopCandidates, "candidate", "candidates").c_str(), st->loopsAccepted,
-            guessFree.c_str(), contested.c_str(), st->loopsUnmatched, st->loopsGateRejected,
-            st->loopsWithdrawn);
+            guessFree.c_str(), contested.c_str(), swungIn.c_str(), st->loopsUnmatched,
+            st->loopsGateRejected, st->loopsWithdrawn);
         s += line(
             "CPU time: front end %.2f s, loop search %.2f s (%.2f s of it on worker threads), "
             "optimisation %.2f s (%s)",
@@ -410,6 +413,8 @@ nlohmann::json summaryJson(const MappingResult& r) {
                       {"contested_accepted", st->loopsContested},
                       {"guess_free_search", r.guessFreeSearch},
                       {"contested_rule", r.contestedLoops},
+                      {"lever_arm_accepted", st->loopsSwungIn},
+                      {"lever_arm_gate", r.leverArmGate},
                       {"unmatched", st->loopsUnmatched},
                       {"rejected", st->loopsGateRejected},
                       {"withdrawn", st->loopsWithdrawn}};

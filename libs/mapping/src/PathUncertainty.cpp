@@ -42,6 +42,8 @@ void PathUncertainty::start(const PoseGraph& graph, std::size_t source) {
     variance_.assign(n, PathVariance());
     covariance_.assign(n, PoseCovariance());
     source_ = source;
+    sourceCos_ = std::cos(graph.pose(source).phi());
+    sourceSin_ = std::sin(graph.pose(source).phi());
     cost_.assign(n, std::numeric_limits<double>::infinity());
     settled_.assign(n, 0);
     heap_.clear();
@@ -65,14 +67,23 @@ void PathUncertainty::compound(std::size_t node, std::size_t next, const Step& s
     b.yh = a.yh + uy * a.hh;
     b.hh = a.hh + step.heading;
     // The source seen from `next`: next's heading error swings it by the lever next -> source
-    // (v); the largest eigenvalue of that 2x2 covariance.
+    // (v) and turns it alike; then turned into the source's frame.
     const mrpt::poses::CPose2D& ps = graph_->pose(source_);
     const double vx = pb.y() - ps.y(), vy = ps.x() - pb.x();
     const double sxx = b.xx + 2 * vx * b.xh + vx * vx * b.hh;
     const double syy = b.yy + 2 * vy * b.yh + vy * vy * b.hh;
     const double sxy = b.xy + vx * b.yh + vy * b.xh + vx * vy * b.hh;
-    variance_[next].swung =
-        0.5 * (sxx + syy) + std::sqrt(0.25 * (sxx - syy) * (sxx - syy) + sxy * sxy);
+    const double sxh = b.xh + vx * b.hh, syh = b.yh + vy * b.hh;
+    const double c = sourceCos_, s = sourceSin_;
+    PathVariance::Covariance& r = variance_[next].swung;
+    r.xx = c * c * sxx + 2 * c * s * sxy + s * s * syy;
+    r.yy = s * s * sxx - 2 * c * s * sxy + c * c * syy;
+    r.xy = -c * s * sxx + (c * c - s * s) * sxy + c * s * syy;
+    r.xh = c * sxh + s * syh;
+    r.yh = -s * sxh + c * syh;
+    r.hh = b.hh;
+    variance_[next].reach =
+        std::max(variance_[node].reach, std::hypot(pb.x() - ps.x(), pb.y() - ps.y()));
 }
 
 bool PathUncertainty::settleNext() {
@@ -97,7 +108,7 @@ bool PathUncertainty::settleNext() {
                 v.position = position;
                 v.heading = heading;
                 v.reached = true;
-                compound(node, next, step);  // v.swung
+                compound(node, next, step);  // v.swung, v.reach
                 heap_.push_back({c, next});
                 std::push_heap(heap_.begin(), heap_.end(), later);
             }

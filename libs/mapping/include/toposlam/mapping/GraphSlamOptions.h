@@ -346,13 +346,17 @@ struct GraphSlamOptions : public config::Options {
     /// Chi-square (3 degrees of freedom) bound on a new loop's disagreement with the graph (the
     /// gate). 16.27 = 99.9 %.
     double loopChi2 = 16.27;
-    /// The gate's position variance is at least what each edge's heading variance, swung about
-    /// its lever arm, does to the current keyframe seen from the older one
-    /// (PathVariance::swung): a loop round a building, whose keyframes are close but whose
-    /// chain went far away. The candidates and the chains are chosen as without it. Off by
-    /// default: it closes a short laser's loops round simulated ring buildings, but lets wrong
-    /// loops in on the public logs read to 3.5 m (benchmarks.md, B3 "The gate's lever arm").
-    bool loopGateLeverArm = false;
+    /// A loop outside the gate is let in where the path's full covariance explains it within
+    /// loopChi2: each edge's heading variance swung by its lever arm to the current keyframe,
+    /// which moves it and turns it alike (PathVariance::swung), and where it is off by a turn
+    /// and no more shift than that turn makes across the chain's reach plus what the gate
+    /// allows (LoopCloser::swungByTurn). Back round a building the two keyframes are close, but
+    /// a heading error far along the chain moved the current one by far more than their
+    /// distance says; a look-alike place one door along is a shift without that turn and stays
+    /// out. Such loops are added without the robust loss (a right one is many of its own
+    /// sigmas off the graph). The candidates and the chains are chosen as without it
+    /// (benchmarks.md, B3 "The gate's lever arm").
+    bool loopGateLeverArm = true;
     /// After optimisation the worst loop still above this chi-square is withdrawn. Far above
     /// the gate: scan-registration edges are overconfident (their floor is 1 cm), so a right
     /// loop that corrects a front-end error strains against them with a chi-square of 20-90

@@ -58,9 +58,10 @@ struct MappingResult {
     double cpuSeconds = 0;   ///< CPU time of the process spent on it (s)
     // Graph engine only (map frame, like the trajectory):
     std::optional<SlamStatistics> statistics;
-    /// Which loop rules ran: guess-free search (global_search_every > 0) and accepting agreeing
-    /// matches beyond the gate (loop_contested_support > 0); both off by default.
-    bool guessFreeSearch = false, contestedLoops = false;
+    /// Which loop rules ran: guess-free search (global_search_every > 0), accepting agreeing
+    /// matches beyond the gate (loop_contested_support > 0) and the gate's lever arm
+    /// (loop_gate_lever_arm).
+    bool guessFreeSearch = false, contestedLoops = false, leverArmGate = false;
     /// Whether the scans between keyframes were placed by registration and odometry together
     /// (smooth_scans) or by registration alone.
     bool smoothedScans = false;

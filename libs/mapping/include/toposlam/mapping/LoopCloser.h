@@ -11,14 +11,18 @@
 //  - Verification: the graph matcher (reliable status, its ambiguity margin), guided by the
 //    graph's relative pose for gated candidates, guess-free for the others.
 //  - Consistency: a gated match must agree with the graph within the chi-square bound of
-//    their combined covariance; when two reliable matches inside the gate put the robot in
-//    clearly different places (identical rooms), all of them are rejected. A match that the
-//    graph already agrees with (within the match's own covariance) is accepted; one that
-//    would correct the graph needs support: a second match to another older keyframe in the
-//    same search, or a loop within loopConfirmWindow keyframes that agrees with it around
-//    their common cycle (pairwise consistency); guess-free matches always need support.
-//    After optimisation the builder withdraws loops whose residual still exceeds a far looser
-//    bound, loopWithdrawChi2 (withdrawWorstOutlier).
+//    their combined covariance (with loopGateLeverArm, the default, also one that agrees within
+//    that bound once the path's covariance carries each heading error swung by its lever arm,
+//    PathVariance::swung, and that is off by a turn and no more shift than the turn makes
+//    across the chain, swungByTurn: back round a building; added without the robust loss);
+//    when two reliable matches inside the gate put the robot in clearly different places
+//    (identical rooms), all of them are rejected. A match that the graph already agrees with
+//    (within the match's own covariance) is accepted; one that would correct the graph needs
+//    support: a second match to another older keyframe in the same search, or a loop within
+//    loopConfirmWindow keyframes that agrees with it around their common cycle (pairwise
+//    consistency); guess-free matches always need support. After optimisation the builder
+//    withdraws loops whose residual still exceeds a far looser bound, loopWithdrawChi2
+//    (withdrawWorstOutlier).
 //  - Contested matches (loopContestedSupport > 0, the default): a front-end failure (a step
 //    neither ICP nor the graph matcher could place, a laser dropout while the wheels slip) can
 //    put the robot farther off than the drift model's gate allows, and then every right loop is
@@ -86,6 +90,9 @@ class LoopCloser {
         mrpt::math::CMatrixDouble33 covariance;
         /// Accepted beyond the gate on agreeing evidence: added without the robust loss.
         bool contested = false;
+        /// Let in by the gate's lever arm only (loop_gate_lever_arm): added without the robust
+        /// loss too, under which a correction many of its own sigmas long would hardly pull.
+        bool swungIn = false;
     };
     /// Older keyframes to verify: in the Mahalanobis gate, nearest first, spaced; the path
     /// uncertainty is searched only as far as the keyframes looked at (and kept in uncertainty_
@@ -114,6 +121,10 @@ class LoopCloser {
     /// ones the gate rejects go to contested_.
     std::vector<Measurement> consistentGated(const std::vector<Measurement>& matches,
                                              const PoseGraph& graph, SlamStatistics& stats);
+    /// The disagreement of `m` with the graph is a turn and the shift that turn makes across
+    /// the chain's reach (PathVariance::reach), plus no more than the gate allows: what a
+    /// heading error along the chain does (loop_gate_lever_arm).
+    bool swungByTurn(const Measurement& m, const PathVariance& v, const PoseGraph& graph) const;
     /// Accepts (into `accepted`) the largest set of contested matches that agree pairwise
     /// when it has loopContestedSupport members, from several searches, against older
     /// keyframes of two or more visits, and no gated loop contradicts it.

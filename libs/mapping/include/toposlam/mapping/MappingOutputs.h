@@ -35,7 +35,8 @@ std::string formatSummary(const MappingResult& result);
 /// icp_without_foreground, icp_short_of_turn, icp_short_of_turn_replaced,
 /// icp_wide_turn_starts, icp_outfitted_matcher, graph_matcher, failed, odometry_jumps,
 /// odometry_catch_ups, odometry_catch_ups_kept, registered_share}, loops {candidates, accepted,
-/// guess_free_accepted, contested_accepted, unmatched, rejected, withdrawn}, cpu_by_stage_s
+/// guess_free_accepted, contested_accepted, lever_arm_accepted, unmatched, rejected, withdrawn,
+/// guess_free_search, contested_rule, lever_arm_gate}, cpu_by_stage_s
 /// {front_end, loop_search, loop_search_on_workers, optimization}, optimizations,
 /// mostly_unregistered, weak_front_end.
 nlohmann::json summaryJson(const MappingResult& result);

@@ -13,7 +13,8 @@
 // compounding), in which each edge's heading variance swings the rest of the chain about it:
 // seen from an older keyframe, the source's position then varies by what heading errors far
 // out along the chain do to it. Back round a ring, where the two keyframes are close and the
-// chain went 20 m away, that is several times position + heading d^2 (PathVariance::swung).
+// chain went 20 m away, that is several times position + heading d^2, and it comes with the
+// heading error that caused it (PathVariance::swung).
 // Dijkstra with a scalar cost (position variance + heading variance times a lever arm of
 // kLeverArm), no allocation after the first query. It runs lazily: to(node) carries the
 // search on only until that node is settled, and keyframes are settled in order of cost, so a
@@ -22,6 +23,7 @@
 // as those of a full search (from()).
 #include <toposlam/mapping/PoseGraph.h>
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -32,12 +34,26 @@ namespace toposlam::mapping {
 struct PathVariance {
     double position = 0;  ///< m^2, isotropic
     double heading = 0;   ///< rad^2
-    /// m^2: the largest variance of the source's position as seen from the node (in its frame),
-    /// each edge's heading variance taken with its lever arm to the source.
-    double swung = 0;
+    /// Covariance of the source's pose as seen from the node, each edge's heading variance
+    /// taken with its lever arm to the source (first-order pose compounding), in the source's
+    /// own frame, where a loop's chi-square measures its error (m^2, m rad, rad^2). A heading
+    /// error along the chain moves the source across its lever arm and turns it alike: the
+    /// position and heading errors are correlated, and a loop that is off by a shift without
+    /// the turn that would explain it stays far outside.
+    struct Covariance {
+        double xx = 0, xy = 0, yy = 0, xh = 0, yh = 0, hh = 0;
+    } swung;
+    /// m: the farthest the chain went from the source, the longest lever arm a heading error
+    /// along it has.
+    double reach = 0;
     bool reached = false;
     /// Position variance (m^2) of a point at distance d (m) from the source.
     double at(double d) const { return position + heading * d * d; }
+    /// m^2: the largest variance of the source's position in `swung`.
+    double swungPosition() const {
+        const double half = 0.5 * (swung.xx - swung.yy);
+        return 0.5 * (swung.xx + swung.yy) + std::sqrt(half * half + swung.xy * swung.xy);
+    }
 };
 
 class PathUncertainty {
@@ -70,12 +86,14 @@ class PathUncertainty {
     struct PoseCovariance {
         double xx = 0, xy = 0, yy = 0, xh = 0, yh = 0, hh = 0;
     };
-    /// `next`'s covariance and swung variance, reached from the settled `node` by `step`.
+    /// `next`'s covariance, and the source's swung covariance seen from it and the chain's
+    /// reach, reached from the settled `node` by `step`.
     void compound(std::size_t node, std::size_t next, const Step& step);
 
     std::vector<PathVariance> variance_;
     std::vector<PoseCovariance> covariance_;
     std::size_t source_ = 0;
+    double sourceCos_ = 1, sourceSin_ = 0;  // of the source's heading: turns `swung` into its frame
     std::vector<double> cost_;
     std::vector<std::uint8_t> settled_;
     std::vector<std::pair<double, std::size_t>> heap_;

@@ -168,6 +168,7 @@ struct SlamStatistics {
     std::size_t loopsUnconfirmed = 0;   ///< would correct the graph, but no support came
     std::size_t loopsContested = 0;     ///< of the gate-rejected, accepted together later
     std::size_t loopsAccepted = 0;      ///< added to the graph
+    std::size_t loopsSwungIn = 0;       ///< of those, let in by the gate's lever arm only
     std::size_t loopsWithdrawn = 0;     ///< accepted, then removed as outliers after optimising
     std::size_t globalSearches = 0;     ///< guess-free searches run
     std::size_t globalHypotheses = 0;   ///< reliable guess-free matches awaiting confirmation

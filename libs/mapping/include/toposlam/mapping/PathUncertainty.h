@@ -23,7 +23,6 @@
 // as those of a full search (from()).
 #include <toposlam/mapping/PoseGraph.h>
 
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -49,11 +48,6 @@ struct PathVariance {
     bool reached = false;
     /// Position variance (m^2) of a point at distance d (m) from the source.
     double at(double d) const { return position + heading * d * d; }
-    /// m^2: the largest variance of the source's position in `swung`.
-    double swungPosition() const {
-        const double half = 0.5 * (swung.xx - swung.yy);
-        return 0.5 * (swung.xx + swung.yy) + std::sqrt(half * half + swung.xy * swung.xy);
-    }
 };
 
 class PathUncertainty {

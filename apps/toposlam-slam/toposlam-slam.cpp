@@ -56,7 +56,8 @@ int run(int argc, char** argv) {
     const auto files = toposlam::mapping::saveMappingOutputs(result, outArg.getValue());
     const std::string summary = toposlam::mapping::formatSummary(result);
     std::fputs(summary.c_str(), stdout);
-    if (toposlam::mapping::mostlyUnregistered(result) || toposlam::mapping::weakFrontEnd(result))
+    if (toposlam::mapping::mostlyUnregistered(result) || toposlam::mapping::weakFrontEnd(result) ||
+        toposlam::mapping::openLoopAtEnd(result))
         std::fputs(("\n*** " + summary.substr(summary.find("WARNING")) + "\n").c_str(), stderr);
     for (const std::string& f : files)
         std::printf("wrote %s\n", f.c_str());

@@ -573,6 +573,7 @@ void GraphSlam::rebuildActiveSubmaps() {
 }
 
 void GraphSlam::finish() {
+    loopCloser_.finish(keyframes_, graph_, stats_);
     if (stats_.loopsAccepted > 0)
         optimize(1);
 }

@@ -463,6 +463,23 @@ LoopClosureOutcome LoopCloser::closeLoops(std::size_t current,
     return outcome;
 }
 
+void LoopCloser::finish(const std::vector<Keyframe>& keyframes, const PoseGraph& graph,
+                        SlamStatistics& stats) {
+    // A loop found in the log's last keyframes had no later keyframe to confirm it: one match
+    // cannot tell the place from a look-alike, so it stays out, and the summary says so.
+    for (const Measurement& m : pending_) {
+        ++stats.loopsUnconfirmed;
+        const auto [d, phi] = disagreement(m.pose, graph.pose(m.current) - graph.pose(m.older));
+        if (d <= options_.optimizeGlobalDistance && phi <= options_.optimizeGlobalAngle)
+            continue;
+        ++stats.loopsOpenAtEnd;
+        if (d > stats.largestOpenLoop.distance)
+            stats.largestOpenLoop = {keyframes[m.older].scanIndex, keyframes[m.current].scanIndex,
+                                     d, phi};
+    }
+    pending_.clear();
+}
+
 bool LoopCloser::withdrawWorstOutlier(PoseGraph& graph, SlamStatistics& stats) const {
     double worst = options_.loopWithdrawChi2;
     std::optional<std::size_t> worstEdge;

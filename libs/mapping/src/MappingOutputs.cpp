@@ -104,10 +104,19 @@ std::string odometryLine(const MappingResult& r, const SlamStatistics& st) {
         st.odometryScale, st.odometryCalibrationDistance, std::abs(longBy(st.odometryScale)),
         st.odometryScale < 1.0 ? "long" : "short");
 }
+
+/// The stamp of scan `scan` in trajectory.txt (0 if there is none).
+double stampOf(const MappingResult& r, std::size_t scan) {
+    return scan < r.trajectory.size() ? r.trajectory[scan].stamp : 0.0;
+}
 }  // namespace
 
 bool mostlyUnregistered(const MappingResult& result) {
     return result.statistics && result.statistics->registeredShare() < 0.5;
+}
+
+bool openLoopAtEnd(const MappingResult& result) {
+    return result.statistics && result.statistics->loopsOpenAtEnd > 0;
 }
 
 bool weakFrontEnd(const MappingResult& result) {
@@ -289,10 +298,11 @@ std::string formatSummary(const MappingResult& r) {
                            : "the gate's lever arm off";
         s += line(
             "loop closures: %s verified, %zu accepted (%s, %s, %s), %zu not matched, %zu "
-            "rejected by the consistency checks, %zu withdrawn after optimisation",
+            "rejected by the consistency checks, %zu unconfirmed, %zu withdrawn after "
+            "optimisation",
             counted(st->loopCandidates, "candidate", "candidates").c_str(), st->loopsAccepted,
             guessFree.c_str(), contested.c_str(), swungIn.c_str(), st->loopsUnmatched,
-            st->loopsGateRejected, st->loopsWithdrawn);
+            st->loopsGateRejected, st->loopsUnconfirmed, st->loopsWithdrawn);
         s += line(
             "CPU time: front end %.2f s, loop search %.2f s (%.2f s of it on worker threads), "
             "optimisation %.2f s (%s)",
@@ -312,6 +322,17 @@ std::string formatSummary(const MappingResult& r) {
             "WARNING: only %.1f %% of the scans could be registered: the trajectory is "
             "mostly raw odometry and the map is not reliable",
             100.0 * r.statistics->registeredShare());
+    if (openLoopAtEnd(r)) {
+        const SlamStatistics::OpenLoop& o = r.statistics->largestOpenLoop;
+        s += line(
+            "WARNING: the log ends with %s that would move the map: the largest, from the scan "
+            "at t = %.3f s back to the one at t = %.3f s (trajectory.txt stamps), is %.2f m and "
+            "%.1f deg off it. Either the map is open there or the scans match a look-alike "
+            "place; without a second, agreeing match nothing tells which, so the loop was left "
+            "out. A few more metres of the log past that place would settle it",
+            counted(r.statistics->loopsOpenAtEnd, "unconfirmed loop", "unconfirmed loops").c_str(),
+            stampOf(r, o.currentScan), stampOf(r, o.olderScan), o.distance, o.angle * 180.0 / M_PI);
+    }
     if (weakFrontEnd(r))
         s += line(
             "WARNING: only %.1f %% of the scans were registered by ICP against the local map: "
@@ -417,7 +438,16 @@ nlohmann::json summaryJson(const MappingResult& r) {
                       {"lever_arm_gate", r.leverArmGate},
                       {"unmatched", st->loopsUnmatched},
                       {"rejected", st->loopsGateRejected},
-                      {"withdrawn", st->loopsWithdrawn}};
+                      {"withdrawn", st->loopsWithdrawn},
+                      {"unconfirmed", st->loopsUnconfirmed},
+                      {"open_at_end", st->loopsOpenAtEnd}};
+        if (openLoopAtEnd(r)) {
+            const SlamStatistics::OpenLoop& o = st->largestOpenLoop;
+            j["loops"]["largest_open_at_end"] = {{"from_stamp", stampOf(r, o.currentScan)},
+                                                 {"to_stamp", stampOf(r, o.olderScan)},
+                                                 {"distance_m", o.distance},
+                                                 {"angle_deg", o.angle * 180.0 / M_PI}};
+        }
         j["cpu_by_stage_s"] = {{"front_end", st->frontEndSeconds},
                                {"loop_search", st->loopSeconds},
                                {"loop_search_on_workers", st->offloadedSeconds},
@@ -425,6 +455,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
         j["optimizations"] = st->optimizations;
         j["mostly_unregistered"] = mostlyUnregistered(r);
         j["weak_front_end"] = weakFrontEnd(r);
+        j["open_loop_at_end"] = openLoopAtEnd(r);
     }
     return j;
 }

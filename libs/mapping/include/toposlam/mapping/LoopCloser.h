@@ -79,6 +79,12 @@ class LoopCloser {
                                   std::size_t firstActive, const std::vector<Keyframe>& keyframes,
                                   PoseGraph& graph, SlamStatistics& stats);
 
+    /// At the end of the log: the loops still awaiting support are unconfirmed; those that
+    /// would move the graph by more than optimizeGlobalDistance or optimizeGlobalAngle are
+    /// counted as open (SlamStatistics::loopsOpenAtEnd, largestOpenLoop).
+    void finish(const std::vector<Keyframe>& keyframes, const PoseGraph& graph,
+                SlamStatistics& stats);
+
     /// After optimisation: withdraws the loop edge with the largest chi-square above
     /// loopWithdrawChi2; true when one was withdrawn (optimise again).
     bool withdrawWorstOutlier(PoseGraph& graph, SlamStatistics& stats) const;

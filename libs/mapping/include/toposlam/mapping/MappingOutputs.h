@@ -36,13 +36,21 @@ std::string formatSummary(const MappingResult& result);
 /// icp_wide_turn_starts, icp_outfitted_matcher, graph_matcher, failed, odometry_jumps,
 /// odometry_catch_ups, odometry_catch_ups_kept, registered_share}, loops {candidates, accepted,
 /// guess_free_accepted, contested_accepted, lever_arm_accepted, unmatched, rejected, withdrawn,
-/// guess_free_search, contested_rule, lever_arm_gate}, cpu_by_stage_s
+/// unconfirmed, open_at_end, largest_open_at_end {from_stamp, to_stamp, distance_m, angle_deg}
+/// (only with one), guess_free_search, contested_rule, lever_arm_gate}, cpu_by_stage_s
 /// {front_end, loop_search, loop_search_on_workers, optimization}, optimizations,
-/// mostly_unregistered, weak_front_end.
+/// mostly_unregistered, weak_front_end, open_loop_at_end.
 nlohmann::json summaryJson(const MappingResult& result);
 
 /// True when fewer than half of the scans were registered (graph engine).
 bool mostlyUnregistered(const MappingResult& result);
+
+/// True when loops found in the log's last keyframes still awaited a second, agreeing match
+/// at its end and would have moved the map by more than optimize_global_distance or
+/// optimize_global_angle (graph engine; SlamStatistics::loopsOpenAtEnd): either the map is
+/// open there or the scans fit a look-alike place. summary.txt warns (with the stamps of the
+/// largest), summary.json says open_loop_at_end.
+bool openLoopAtEnd(const MappingResult& result);
 
 /// True when, though most scans were registered, fewer than 90 % were registered by ICP
 /// against the local map (graph engine): the front end struggled (a narrow field of view,

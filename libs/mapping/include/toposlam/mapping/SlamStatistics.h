@@ -173,6 +173,15 @@ struct SlamStatistics {
     std::size_t globalSearches = 0;     ///< guess-free searches run
     std::size_t globalHypotheses = 0;   ///< reliable guess-free matches awaiting confirmation
     std::size_t globalConfirmed = 0;    ///< of those, confirmed and accepted
+    /// Of the unconfirmed, those still awaiting support when the log ended and off the graph by
+    /// more than optimize_global_distance or optimize_global_angle: the map may be open there.
+    std::size_t loopsOpenAtEnd = 0;
+    /// The largest of them: the scans (indices in the log's order) of its older and current
+    /// keyframes, and how far it is off the graph (m, rad).
+    struct OpenLoop {
+        std::size_t olderScan = 0, currentScan = 0;
+        double distance = 0, angle = 0;
+    } largestOpenLoop;
     // Back end
     std::size_t optimizations = 0;
     // CPU time (s) by stage, all threads

@@ -201,13 +201,17 @@ std::vector<LoopCloser::Measurement> LoopCloser::consistentGated(
     return out;
 }
 
+std::pair<double, double> LoopCloser::offGraph(const Measurement& m, const PoseGraph& graph) {
+    return disagreement(m.pose, graph.pose(m.current) - graph.pose(m.older));
+}
+
 bool LoopCloser::swungByTurn(const Measurement& m, const PathVariance& v,
                              const PoseGraph& graph) const {
     // A heading error along the chain moves the current keyframe by at most its turn times the
     // chain's reach; what the gate allows covers the rest. A look-alike place one door along is
     // a shift without the turn, which a long chain's covariance (heading errors that cancel)
     // may still explain.
-    const auto [shift, turn] = disagreement(m.pose, graph.pose(m.current) - graph.pose(m.older));
+    const auto [shift, turn] = offGraph(m, graph);
     return shift <= turn * v.reach + std::sqrt(options_.loopChi2 * v.at(m.pose.norm()));
 }
 
@@ -380,7 +384,7 @@ std::pair<double, double> LoopCloser::driftTolerance(const Keyframe& a, const Ke
 
 void LoopCloser::accept(const Measurement& m, PoseGraph& graph, LoopClosureOutcome& outcome,
                         SlamStatistics& stats) {
-    const auto [d, phi] = disagreement(m.pose, graph.pose(m.current) - graph.pose(m.older));
+    const auto [d, phi] = offGraph(m, graph);
     outcome.maxDistanceError = std::max(outcome.maxDistanceError, d);
     outcome.maxAngleError = std::max(outcome.maxAngleError, phi);
     graph.addEdge(m.older, m.current, m.pose, m.covariance, EdgeKind::Loop,
@@ -469,7 +473,7 @@ void LoopCloser::finish(const std::vector<Keyframe>& keyframes, const PoseGraph&
     // cannot tell the place from a look-alike, so it stays out, and the summary says so.
     for (const Measurement& m : pending_) {
         ++stats.loopsUnconfirmed;
-        const auto [d, phi] = disagreement(m.pose, graph.pose(m.current) - graph.pose(m.older));
+        const auto [d, phi] = offGraph(m, graph);
         if (d <= options_.optimizeGlobalDistance && phi <= options_.optimizeGlobalAngle)
             continue;
         ++stats.loopsOpenAtEnd;

@@ -408,17 +408,16 @@ nlohmann::json summaryJson(const MappingResult& r) {
         // (along_heading_check): the stamp is the scan's, as in trajectory.txt.
         nlohmann::json checks = nlohmann::json::array();
         for (const AlongHeadingCheck& c : st->alongHeadingChecks) {
-            checks.push_back(
-                {{"scan", c.scan},
-                 {"stamp", c.scan < r.trajectory.size() ? r.trajectory[c.scan].stamp : 0.0},
-                 {"correction_m", c.correction},
-                 {"readings", c.readings},
-                 {"on_map_at_icp", c.onMapAtIcp},
-                 {"on_map_at_odometry", c.onMapAtOdometry},
-                 {"seen_through_at_icp", c.seenThroughAtIcp},
-                 {"seen_through_at_odometry", c.seenThroughAtOdometry},
-                 {"held", c.held},
-                 {"held_for_free_space", c.heldForFreeSpace}});
+            checks.push_back({{"scan", c.scan},
+                              {"stamp", stampOf(r, c.scan)},
+                              {"correction_m", c.correction},
+                              {"readings", c.readings},
+                              {"on_map_at_icp", c.onMapAtIcp},
+                              {"on_map_at_odometry", c.onMapAtOdometry},
+                              {"seen_through_at_icp", c.seenThroughAtIcp},
+                              {"seen_through_at_odometry", c.seenThroughAtOdometry},
+                              {"held", c.held},
+                              {"held_for_free_space", c.heldForFreeSpace}});
         }
         j["registration"]["along_heading_checks"] = std::move(checks);
         j["odometry"] = {{"scans_without", st->scansWithoutOdometry},

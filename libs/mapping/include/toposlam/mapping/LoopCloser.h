@@ -127,6 +127,8 @@ class LoopCloser {
     /// ones the gate rejects go to contested_.
     std::vector<Measurement> consistentGated(const std::vector<Measurement>& matches,
                                              const PoseGraph& graph, SlamStatistics& stats);
+    /// How far (m, |rad|) `m` is off the graph's relative pose of its two keyframes.
+    static std::pair<double, double> offGraph(const Measurement& m, const PoseGraph& graph);
     /// The disagreement of `m` with the graph is a turn and the shift that turn makes across
     /// the chain's reach (PathVariance::reach), plus no more than the gate allows: what a
     /// heading error along the chain does (loop_gate_lever_arm).

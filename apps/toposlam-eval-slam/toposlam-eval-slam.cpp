@@ -186,6 +186,7 @@ int run(int argc, char** argv) {
     add(TrajectorySource::TrajectoryFile, positional.getValue(), name.getValue());
     add(TrajectorySource::TrajectoryFile, trajectories.getValue(), "");
     add(TrajectorySource::IcpSlamPath, icpSlamPaths.getValue(), "icp-slam");
+    evaluation::nameRowsApart(request.trajectories);
     request.relationsFile = relationsFile.getValue();
     request.groundTruthFile = groundTruthFile.getValue();
     request.groundTruthSeparation = separation.getValue();

@@ -107,6 +107,29 @@ TEST(EvalSlamApp, SeveralMethodsSideBySide) {
     EXPECT_TRUE(contains(r.output, "| perfect | 3 / 4 | 0.0000 ± 0.0000 |")) << r.output;
 }
 
+TEST(EvalSlamApp, RowsOfFilesWithTheSameNameAreToldApartByTheirFolders) {
+    // Two toposlam-slam outputs, each a trajectory.txt: the rows must not both read
+    // "trajectory" in the table and the JSON.
+    Fixture f;
+    std::filesystem::create_directories(f.dir.file("run1"));
+    std::filesystem::create_directories(f.dir.file("run2"));
+    std::filesystem::copy_file(f.trajectory, f.dir.file("run1/trajectory.txt"));
+    std::filesystem::copy_file(f.perfect, f.dir.file("run2/trajectory.txt"));
+    const auto r =
+        runApp("toposlam-eval-slam",
+               f.dir.file("run1/trajectory.txt") + " " + f.dir.file("run2/trajectory.txt") +
+                   " --trajectory mine=" + f.trajectory + " --trajectory mine=" + f.perfect +
+                   " --relations " + f.relations + " --json " + f.json);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(contains(r.output, "| run1/trajectory | 3 / 4 | 2.0000 ± 1.0000 |")) << r.output;
+    EXPECT_TRUE(contains(r.output, "| run2/trajectory | 3 / 4 | 0.0000 ± 0.0000 |")) << r.output;
+    EXPECT_TRUE(contains(r.output, "| mine (slam) | 3 / 4 | 2.0000 ± 1.0000 |")) << r.output;
+    EXPECT_TRUE(contains(r.output, "| mine (perfect) | 3 / 4 | 0.0000 ± 0.0000 |")) << r.output;
+    const std::string json = readFile(f.json);
+    EXPECT_TRUE(contains(json, "\"run1/trajectory\"")) << json;
+    EXPECT_TRUE(contains(json, "\"run2/trajectory\"")) << json;
+}
+
 TEST(EvalSlamApp, WorstListsTheLargestErrorsInTheTableAndTheJson) {
     Fixture f;
     const auto r = runApp("toposlam-eval-slam", "--worst 2 --trajectory mine=" + f.trajectory +

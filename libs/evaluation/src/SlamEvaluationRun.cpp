@@ -15,6 +15,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace toposlam::evaluation {
 
@@ -25,6 +26,52 @@ TrajectoryToScore trajectoryToScore(TrajectorySource source, const std::string& 
         return {source, spec.substr(0, eq), spec.substr(eq + 1)};
     return {source, defaultName.empty() ? std::filesystem::path(spec).stem().string() : defaultName,
             spec};
+}
+
+namespace {
+/// The last `parts` components of `file`'s path, the extension left out.
+std::string pathTail(const std::string& file, std::size_t parts) {
+    const std::filesystem::path path(file);
+    std::vector<std::string> names = {path.stem().string()};
+    for (auto p = path.parent_path(); names.size() < parts && !p.filename().empty();
+         p = p.parent_path())
+        names.push_back(p.filename().string());
+    std::string tail;
+    for (auto n = names.rbegin(); n != names.rend(); ++n)
+        tail += (tail.empty() ? "" : "/") + *n;
+    return tail;
+}
+}  // namespace
+
+void nameRowsApart(std::vector<TrajectoryToScore>& rows) {
+    std::map<std::string, std::vector<std::size_t>> byName;
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        byName[rows[i].name].push_back(i);
+    for (const auto& [name, group] : byName) {
+        if (group.size() < 2)
+            continue;
+        // The shortest tail (up to the whole path) that tells the group's files apart.
+        std::vector<std::string> tails(group.size());
+        for (std::size_t parts = 1;; ++parts) {
+            for (std::size_t k = 0; k < group.size(); ++k)
+                tails[k] = pathTail(rows[group[k]].file, parts);
+            const std::set<std::string> distinct(tails.begin(), tails.end());
+            const bool longer = std::any_of(group.begin(), group.end(), [&](std::size_t i) {
+                return pathTail(rows[i].file, parts + 1) != pathTail(rows[i].file, parts);
+            });
+            if (distinct.size() == group.size() || !longer)
+                break;
+        }
+        std::map<std::string, int> seen;
+        for (std::size_t k = 0; k < group.size(); ++k) {
+            TrajectoryToScore& row = rows[group[k]];
+            const bool fromFileName = name == std::filesystem::path(row.file).stem().string();
+            std::string renamed = fromFileName ? tails[k] : name + " (" + tails[k] + ")";
+            if (const int n = ++seen[renamed]; n > 1)  // the same file again
+                renamed += " #" + std::to_string(n);
+            row.name = renamed;
+        }
+    }
 }
 
 void SlamEvaluationRequest::validate() const {

@@ -30,6 +30,12 @@ struct TrajectoryToScore {
 TrajectoryToScore trajectoryToScore(TrajectorySource source, const std::string& spec,
                                     const std::string& defaultName);
 
+/// Rows that would share a name are told apart by their files: a name taken from the file
+/// name becomes the shortest tail of the path that no other of those rows has ("run1/trajectory"
+/// and "run2/trajectory" for two toposlam-slam outputs); a name given by the user keeps it,
+/// followed by that tail in parentheses. The same file given twice is numbered.
+void nameRowsApart(std::vector<TrajectoryToScore>& rows);
+
 struct SlamEvaluationRequest {
     std::vector<TrajectoryToScore> trajectories;  ///< table rows, in order
     /// The reference: exactly one of a relation file and a ground-truth trajectory.

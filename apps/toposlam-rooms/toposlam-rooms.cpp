@@ -88,18 +88,7 @@ int run(int argc, char** argv) {
         cmd,
         "Every non-free pixel is a wall (--free-threshold 0.98 unless given, occupied_threshold "
         "= 1), as toposlam-bench-rooms reads Bormann et al.'s maps.");
-    cli::NumberArg<double> resolution(
-        "", "resolution",
-        "Cell size in m of a bare input image (overrides its .yaml sidecar). "
-        "Default: the sidecar's, else 0.05",
-        0.05,
-        cli::NumberRange<double>::closed(toposlam::io::kMinCellSize, toposlam::io::kMaxCellSize),
-        "m", cmd);
-    TCLAP::ValueArg<std::string> origin(
-        "", "origin",
-        "World x,y (m) of the lower-left corner of a bare input image. Default: "
-        "the sidecar's, else 0,0",
-        false, "", "x,y", cmd);
+    const cli::MapGeometryArgs geometry(cmd);
     cli::NumberArg<int> scale("", "scale", "rooms.png pixels per grid cell. Default: 2", 2,
                               cli::NumberRange<int>::closed(1, 8), "n", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "No summary on stdout", cmd);
@@ -123,16 +112,7 @@ int run(int argc, char** argv) {
     if (freeThreshold.isSet())
         job.options.freeSpace.freeThreshold = freeThreshold.getValue();
     job.options.validate();
-    if (resolution.isSet() || origin.isSet()) {
-        job.geometry.emplace();
-        if (resolution.isSet())
-            job.geometry->resolution = resolution.getValue();
-        if (origin.isSet()) {
-            const auto xy = cli::parseNumberList(origin.getValue(), 2, "--origin");
-            job.geometry->originX = xy[0];
-            job.geometry->originY = xy[1];
-        }
-    }
+    job.geometry = geometry.geometry();
 
     cli::requireWritableOutputFolder({"-o", output.getValue()});
     const auto result = rooms::runRoomSegmentationJob(job);

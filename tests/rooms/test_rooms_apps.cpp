@@ -35,6 +35,26 @@ TEST(ToposlamRooms, SegmentsADrawnOfficeAndWritesEveryOutput) {
     EXPECT_EQ(toposlam::rooms::loadTopologicalMap(dir.file("out/rooms.graphml")).doors.size(), 6u);
 }
 
+TEST(ToposlamRooms, AnOriginOrResolutionAloneKeepsTheSidecarsOtherValues) {
+    const TempDir dir;
+    ASSERT_TRUE(cv::imwrite(dir.file("m.png"), toposlam::rooms::test::office().image));
+    toposlam::test::writeText(dir.file("m.yaml"),
+                              "image: m.png\nresolution: 0.1\norigin: [-0.7, -0.7, 0]\nnegate: "
+                              "0\noccupied_thresh: 0.65\nfree_thresh: 0.196\nmode: trinary\n");
+    auto r = runApp("toposlam-rooms",
+                    "'" + dir.file("m.png") + "' --origin 1,2 -q -o '" + dir.file("a") + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto moved = toposlam::rooms::loadTopologicalMap(dir.file("a/rooms.json"));
+    EXPECT_FLOAT_EQ(moved.frame.resolution, 0.1) << "the sidecar's, not 0.05";
+    EXPECT_FLOAT_EQ(moved.frame.xMin, 1.0);
+    r = runApp("toposlam-rooms",
+               "'" + dir.file("m.png") + "' --resolution 0.2 -q -o '" + dir.file("b") + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto scaled = toposlam::rooms::loadTopologicalMap(dir.file("b/rooms.json"));
+    EXPECT_FLOAT_EQ(scaled.frame.resolution, 0.2);
+    EXPECT_FLOAT_EQ(scaled.frame.xMin, -0.7) << "the sidecar's, not 0";
+}
+
 TEST(ToposlamRooms, AFailedWriteLeavesThePreviousRunsFilesAsTheyWere) {
     const TempDir dir;
     ASSERT_TRUE(cv::imwrite(dir.file("office.png"), toposlam::rooms::test::office().image));

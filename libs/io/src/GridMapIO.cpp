@@ -202,11 +202,13 @@ COccupancyGridMap2D loadImageMap(const std::string& path, std::optional<RosMapMe
             meta->mode = RosMapMetadata::Mode::Scale;
     }
     if (geometry) {
-        if (!(geometry->resolution > 0))
-            throw InputError(path, "resolution must be > 0");
-        meta->resolution = geometry->resolution;
-        meta->originX = geometry->originX;
-        meta->originY = geometry->originY;
+        if (geometry->resolution) {
+            if (!(*geometry->resolution > 0))
+                throw InputError(path, "resolution must be > 0");
+            meta->resolution = *geometry->resolution;
+        }
+        meta->originX = geometry->originX.value_or(meta->originX);
+        meta->originY = geometry->originY.value_or(meta->originY);
     }
     return gridFromImage(grey, *meta);
 }

@@ -199,10 +199,11 @@ int run(int argc, char** argv) {
     Arguments arguments;
     if (const auto exitCode = cli::parseCommandLine(arguments.cmd, argc, argv))
         return *exitCode;
-    cli::requireOutputsOfTheirOwn(
-        {{"", arguments.input.getValue()}},
-        {{"-o", arguments.output.getValue()},
-         {"--odometry-trajectory", arguments.odometryTrajectory.getValue()}});
+    // A map's sidecar and ROS pair count too: office.png -o office.yaml rewrote its sidecar.
+    std::vector<cli::FileArgument> outputs =
+        cli::mapFilesWritten({"-o", arguments.output.getValue()});
+    outputs.push_back({"--odometry-trajectory", arguments.odometryTrajectory.getValue()});
+    cli::requireOutputsOfTheirOwn(cli::mapFilesRead({"", arguments.input.getValue()}), outputs);
     // Rawlogs may hold TopoSLAM's own objects (scan features, ...): make them readable.
     classes::registerTopoSlamClasses();
     if (io::isGridMapPath(arguments.input.getValue()))

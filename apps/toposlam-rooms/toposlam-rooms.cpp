@@ -12,6 +12,7 @@
 #include <iostream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -94,6 +95,12 @@ int run(int argc, char** argv) {
     TCLAP::SwitchArg quiet("q", "quiet", "No summary on stdout", cmd);
     if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
         return *exitCode;
+
+    std::vector<cli::FileArgument> inputs = cli::mapFilesRead({"", input.getValue()});
+    inputs.push_back({"-t", trajectory.getValue()});
+    inputs.push_back({"-c", config.getValue()});
+    cli::requireOutputsOfTheirOwn(
+        inputs, cli::filesInFolder({"-o", output.getValue()}, rooms::roomSegmentationFileNames()));
 
     rooms::RoomSegmentationJob job;
     job.mapPath = input.getValue();

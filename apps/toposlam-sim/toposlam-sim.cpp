@@ -268,9 +268,11 @@ SimulationJob simulationJob(Arguments& a) {
     job.plotPath = a.plotArg.getValue();
     cli::requireExtension({"-o", job.rawlogPath}, {".rawlog", ".rawlog.gz"});
     cli::requireExtension({"--plot", job.plotPath}, {".png"});
+    std::vector<cli::FileArgument> inputs = cli::mapFilesRead({"", job.mapPath});
+    inputs.push_back({"--poses", job.posesPath});
+    inputs.push_back({"-c", a.configArg.getValue()});
     cli::requireOutputsOfTheirOwn(
-        {{"", job.mapPath}, {"--poses", job.posesPath}, {"-c", a.configArg.getValue()}},
-        {{"-o", job.rawlogPath}, {"--gt", job.groundTruthPath}, {"--plot", job.plotPath}});
+        inputs, {{"-o", job.rawlogPath}, {"--gt", job.groundTruthPath}, {"--plot", job.plotPath}});
     job.imageGeometry = a.geometry.geometry();
     return job;
 }

@@ -18,6 +18,7 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -355,6 +356,13 @@ TEST(LogMapper, AppWritesOutputsAndRejectsBadInput) {
     ASSERT_EQ(ok.exitCode, 0) << ok.output;
     for (const char* f : {"trajectory.txt", "map.gridmap.gz", "map.png", "map.yaml"}) {
         EXPECT_TRUE(std::ifstream(dir.file("out/") + f).good()) << f;
+    }
+    // The app checks these names against its inputs before the run: every file is one.
+    const auto names = mapping::mappingOutputFileNames();
+    for (const auto& entry : fs::directory_iterator(dir.file("out"))) {
+        EXPECT_NE(std::find(names.begin(), names.end(), entry.path().filename().string()),
+                  names.end())
+            << entry.path();
     }
 
     std::ofstream(dir.file("corrupt.rawlog")) << "this is not a rawlog";

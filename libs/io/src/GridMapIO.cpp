@@ -444,6 +444,48 @@ bool isBareMapImage(const std::string& path) {
     }
 }
 
+std::vector<std::string> gridMapFilesRead(const std::string& path) {
+    std::vector<std::string> files = {path};
+    switch (formatOf(path)) {
+        case MapFormat::RosYaml:
+            try {
+                files.push_back(resolveRosMapImage(path, readRosMapMetadata(path)));
+            } catch (const std::exception&) {
+                // loadGridMap reports a .yaml it cannot read; it reads no picture then.
+            }
+            break;
+        case MapFormat::Png:
+        case MapFormat::Pgm:
+        case MapFormat::OtherImage: {
+            // sidecarOf() reads "<stem>.yaml" to tell whether it is this picture's: it counts
+            // even when it turns out to describe another picture.
+            const std::string yaml = fs::path(path).replace_extension(".yaml").string();
+            if (fs::is_regular_file(yaml))
+                files.push_back(yaml);
+            break;
+        }
+        default:
+            break;
+    }
+    return files;
+}
+
+std::vector<std::string> gridMapFilesWritten(const std::string& path) {
+    const auto beside = [&](const char* extension) {
+        return fs::path(path).replace_extension(extension).string();
+    };
+    switch (formatOf(path)) {
+        case MapFormat::Png:
+            return {path, beside(".yaml"), beside(".pgm")};
+        case MapFormat::RosYaml:
+            return {path, beside(".pgm")};
+        case MapFormat::Pgm:
+            return {path, beside(".yaml")};
+        default:
+            return {path};
+    }
+}
+
 void saveGridMap(const COccupancyGridMap2D& map, const std::string& path) {
     const fs::path p(path);
     switch (formatOf(path)) {

@@ -39,9 +39,12 @@ std::vector<std::string> splitList(const std::string& text);
 std::vector<unsigned> parseSeedList(const std::string& text, const std::string& option);
 
 /// A file named on the command line: the option that named it ("" for a positional argument)
-/// and its path ("": not given).
+/// and its path ("": not given). `via`: for a file an app reads or writes along with one named
+/// on the command line (a map's .yaml sidecar, a file in an output folder), what it is to that
+/// one ("the sidecar of 'a.png'"), said in messages after its path.
 struct FileArgument {
     std::string option, path;
+    std::string via = {};
 };
 /// Throws UsageError unless every output given is a file of its own: not one of the inputs
 /// (toposlam-convert a.clf -o a.clf replaced the log with its conversion) and not another
@@ -49,6 +52,15 @@ struct FileArgument {
 /// "a.clf", "./a.clf" and a link to it are one file.
 void requireOutputsOfTheirOwn(const std::vector<FileArgument>& inputs,
                               const std::vector<FileArgument>& outputs);
+
+/// `map` and every file read with it (a picture's .yaml sidecar, the picture a .yaml names):
+/// the inputs to check outputs against (io::gridMapFilesRead).
+std::vector<FileArgument> mapFilesRead(const FileArgument& map);
+/// `map` and every file written with it (the ROS pair of a .png, .yaml or .pgm output).
+std::vector<FileArgument> mapFilesWritten(const FileArgument& map);
+/// The files `names` an app writes in its output folder `folder`.
+std::vector<FileArgument> filesInFolder(const FileArgument& folder,
+                                        const std::vector<std::string>& names);
 
 /// Throws UsageError unless `file` (when given) ends with one of `extensions` (".png",
 /// ".rawlog.gz"; case-insensitive): a rawlog written as "map.png", or a plot as "p.txt",

@@ -44,6 +44,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace toposlam::io {
 
@@ -92,6 +93,15 @@ bool isGridMapPath(const std::string& path);
 /// sidecar that states its geometry and how its greys are meant (see above). Such a picture
 /// may be a grid (grey = p(free)) or a drawn floor plan: see MapImageKind.h.
 bool isBareMapImage(const std::string& path);
+
+/// Every file loadGridMap(path) reads: `path`, and the "<stem>.yaml" beside a picture (read to
+/// tell whether it is the picture's sidecar) or the picture a .yaml names, so that an app can
+/// refuse to write over any of them before it starts. Does not throw (a .yaml it cannot read
+/// names no picture).
+std::vector<std::string> gridMapFilesRead(const std::string& path);
+
+/// Every file saveGridMap(map, path) writes: `path` and the ROS pair of a .png, .yaml or .pgm.
+std::vector<std::string> gridMapFilesWritten(const std::string& path);
 
 /// Saves `map`, choosing the format from the extension (.gridmap, .gridmap.gz, .png, .yaml,
 /// .yml, .pgm). Image formats also write the ROS pair (.png: "<stem>.yaml" + "<stem>.pgm";

@@ -257,6 +257,27 @@ void requireWritableOutputFolder(const FileArgument& folder) {
     }
 }
 
+void requireWritableOutputFiles(const std::vector<FileArgument>& files) {
+    namespace fs = std::filesystem;
+    for (const FileArgument& file : files) {
+        if (file.path.empty())
+            continue;
+        const auto refuse = [&](const std::string& why) {
+            throw std::runtime_error(file.path + ": cannot write the file (" + why + ")");
+        };
+        std::error_code ec;
+        if (fs::is_directory(file.path, ec))
+            refuse("it is a folder");
+        const fs::path folder = fs::absolute(file.path, ec).parent_path();
+        if (!fs::exists(folder, ec))
+            refuse("no folder " + folder.string());
+        if (!fs::is_directory(folder, ec))
+            refuse(folder.string() + " is not a folder");
+        if (::access(folder.c_str(), W_OK | X_OK) != 0)
+            refuse(folder.string() + ": " + std::strerror(errno));
+    }
+}
+
 int runReportingErrors(int (*run)(int, char**), int argc, char** argv) {
     try {
         return run(argc, argv);

@@ -73,6 +73,11 @@ void requireExtension(const FileArgument& file, const std::vector<std::string>& 
 /// empty path is a UsageError). Nothing is created, so a run that fails later leaves nothing.
 void requireWritableOutputFolder(const FileArgument& folder);
 
+/// Throws, before an app does its work, unless every output file given can be written: its
+/// folder exists and the app may create files in it, and it is no folder itself
+/// (std::runtime_error "<file>: cannot write the file (...)": exit 1). Nothing is created.
+void requireWritableOutputFiles(const std::vector<FileArgument>& files);
+
 /// An app's main(): returns run(argc, argv). An exception escaping it is printed to stderr as
 /// "error: <what>" and gives the exit status: 2 for a UsageError (bad command line), 1 for
 /// anything else (bad input names its file, see io::InputError).

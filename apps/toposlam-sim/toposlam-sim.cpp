@@ -239,6 +239,13 @@ int makeOffice(Arguments& a, const SimulatorConfig& config, bool verbose) {
     if (a.mapArg.isSet() || a.posesArg.isSet() || a.tourArg.isSet() || a.outArg.isSet()) {
         throw cli::UsageError("--make-office takes no map, --poses, --tour or -o");
     }
+    // Every file is checked before the work: none is written unless all can be.
+    const cli::FileArgument folder{"--make-office", a.makeOfficeArg.getValue()};
+    const auto files = cli::filesInFolder(folder, officeDatasetFileNames());
+    cli::requireOutputsOfTheirOwn({{"-c", a.configArg.getValue()}}, files);
+    cli::requireWritableOutputFolder(folder);
+    if (std::filesystem::is_directory(folder.path))
+        cli::requireWritableOutputFiles(files);
     io::ProgressDisplay progress("simulating office.rawlog", "scans", verbose && ::isatty(2) == 1);
     const OfficeDataset d = writeOfficeDataset(
         a.makeOfficeArg.getValue(), config,

@@ -81,6 +81,7 @@ int run(int argc, char** argv) {
     inputs.push_back({"", roomsArg.getValue()});
     cli::requireOutputsOfTheirOwn(
         inputs, cli::filesInFolder({"-o", outArg.getValue()}, planning::roomPlanFileNames()));
+    cli::requireWritableOutputFolder({"-o", outArg.getValue()});  // before planning, not after
 
     planning::RoomPlanRequest request;
     request.gridFile = mapArg.getValue();

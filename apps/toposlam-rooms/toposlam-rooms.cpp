@@ -5,13 +5,16 @@
 #include <toposlam/cli/ImageMemoryReuse.h>
 #include <toposlam/cli/MapReadingArgs.h>
 #include <toposlam/cli/NumberArg.h>
+#include <toposlam/config/ConfigError.h>
 #include <toposlam/io/GridMapIO.h>
 #include <toposlam/rooms/RoomSegmentationJob.h>
 
 #include <cstdlib>
 #include <iostream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -118,7 +121,41 @@ int run(int argc, char** argv) {
     }
     if (freeThreshold.isSet())
         job.options.freeSpace.freeThreshold = freeThreshold.getValue();
-    job.options.validate();
+    // load() checked the -c file's values on their own (exit 1, naming the file); what fails
+    // now, the command line brought in: bad usage, naming its options.
+    const auto& door = job.options.door;
+    if ((doorWidth.isSet() || doorTolerance.isSet()) &&
+        !(door.doorWidthTolerance < door.doorWidth)) {
+        std::ostringstream what;
+        if (doorWidth.isSet())
+            what << "--door-width " << door.doorWidth << (doorTolerance.isSet() ? ", " : "");
+        if (doorTolerance.isSet())
+            what << "--door-tolerance " << door.doorWidthTolerance;
+        what << ": the door width tolerance";
+        if (!doorTolerance.isSet())
+            what << " (" << door.doorWidthTolerance << " m: --door-tolerance, or -c)";
+        what << " must be below the door width";
+        if (!doorWidth.isSet())
+            what << " (" << door.doorWidth << " m: --door-width, or -c)";
+        throw cli::UsageError(what.str());
+    }
+    try {
+        job.options.validate();
+    } catch (const config::ConfigError& e) {
+        std::string given;
+        const std::pair<bool, const char*> options[] = {
+            {doorWidth.isSet(), "--door-width"},
+            {doorTolerance.isSet(), "--door-tolerance"},
+            {minRoomArea.isSet(), "--min-room-area"},
+            {freeThreshold.isSet(), "--free-threshold"}};
+        for (const auto& [set, name] : options) {
+            if (set)
+                given += (given.empty() ? "" : ", ") + std::string(name);
+        }
+        if (given.empty())
+            throw;
+        throw cli::UsageError(given + ": " + e.what());
+    }
     job.geometry = geometry.geometry();
 
     cli::requireWritableOutputFolder({"-o", output.getValue()});

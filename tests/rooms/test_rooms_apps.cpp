@@ -301,3 +301,38 @@ TEST(ToposlamBenchRooms, RejectsBadOptions) {
         EXPECT_FALSE(std::filesystem::exists(dir.file("b.json"))) << bad;
     }
 }
+
+// A door width at or below its tolerance: bad usage naming the options when the command line
+// set them, bad input naming the file when a -c file did.
+TEST(ToposlamRooms, ADoorWidthBelowItsToleranceNamesWhereItCameFrom) {
+    const TempDir dir;
+    const std::string map = toposlam::test::shareDir() + "/office/office.gridmap.gz";
+    const std::string out = dir.file("out");
+    const struct {
+        std::string options, expected;
+        int exitCode;
+    } cases[] = {
+        {"--door-width 0.4",
+         "error: --door-width 0.4: the door width tolerance (0.5 m: --door-tolerance, or -c) must "
+         "be below the door width",
+         2},
+        {"--door-tolerance 1.5", "error: --door-tolerance 1.5: the door width tolerance must", 2},
+        {"--door-width 0.4 --door-tolerance 0.4",
+         "error: --door-width 0.4, --door-tolerance 0.4: the door width tolerance must", 2},
+        {"--door-tolerance 0", "error: --door-tolerance: [RoomSegmenter] door_width_tolerance", 2},
+    };
+    for (const auto& c : cases) {
+        const auto r = runApp("toposlam-rooms", "'" + map + "' " + c.options + " -o '" + out + "'");
+        EXPECT_EQ(r.exitCode, c.exitCode) << c.options << "\n" << r.output;
+        EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.options << "\n" << r.output;
+        EXPECT_FALSE(std::filesystem::exists(out)) << c.options;
+    }
+    toposlam::test::writeText(dir.file("dw.ini"), "[RoomSegmenter]\ndoor_width = 0.4\n");
+    const auto r =
+        runApp("toposlam-rooms", "'" + map + "' -c '" + dir.file("dw.ini") + "' -o '" + out + "'");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("error: " + dir.file("dw.ini") + ": [RoomSegmenter]"),
+              std::string::npos)
+        << r.output;
+    EXPECT_FALSE(std::filesystem::exists(out));
+}

@@ -7,6 +7,7 @@
 #include <toposlam/config/IniFile.h>
 #include <toposlam/features/FeatureExtractor.h>
 #include <toposlam/features/LogAnnotation.h>
+#include <toposlam/io/AtomicFile.h>
 #include <toposlam/io/InputError.h>
 #include <toposlam/io/ProgressDisplay.h>
 #include <toposlam/io/Trajectory.h>
@@ -107,10 +108,13 @@ struct FeatureMapRequest {
         };
     }
 
-    void write(bool quiet) const {
-        map.saveMetricMapRepresentationToFile(prefix);
-        if (quiet)
-            return;
+    /// What CScanFeaturesMap::saveMetricMapRepresentationToFile(prefix) writes.
+    static std::vector<std::string> files(const std::string& prefix) {
+        return {prefix + ".png", prefix + "_segments.txt", prefix + "_corners.txt",
+                prefix + "_endpoints.txt"};
+    }
+
+    void report() const {
         const matching::FeatureMap& m = map.featureMap();
         std::printf(
             "feature map: %zu keyframes; %zu wall segments (on %zu lines), %zu corners, %zu "
@@ -132,8 +136,12 @@ int annotate(const std::string& input, const std::string& output, features::Feat
     options.progress = [&](double fraction, std::size_t scans) {
         progress.update(fraction, scans);
     };
+    io::OutputGroup outputs;  // the rawlog and the feature map's files, or none of them
     const auto s = features::annotateLog(input, output, ex, options);
     progress.finish();
+    if (featureMap)
+        featureMap->map.saveMetricMapRepresentationToFile(featureMap->prefix);
+    outputs.commit();
     if (!quiet) {
         const double n = static_cast<double>(s.scans);
         std::printf(
@@ -145,8 +153,8 @@ int annotate(const std::string& input, const std::string& output, features::Feat
             s.cornerBearingStd * 180 / M_PI, output.c_str(), io::toString(options.format),
             s.objects);
     }
-    if (featureMap)
-        featureMap->write(quiet);
+    if (featureMap && !quiet)
+        featureMap->report();
     return EXIT_SUCCESS;
 }
 
@@ -267,10 +275,16 @@ int run(int argc, char** argv) {
     if (const auto exitCode = cli::parseCommandLine(a.cmd, argc, argv))
         return *exitCode;
     cli::requireExtension({"-o", a.output.getValue()}, {".rawlog", ".rawlog.gz"});
+    std::vector<cli::FileArgument> outputs = {{"-o", a.output.getValue()}};
+    if (a.featureMap.isSet() && !a.featureMap.getValue().empty()) {
+        for (const std::string& file : FeatureMapRequest::files(a.featureMap.getValue()))
+            outputs.push_back(
+                {"", file, "written with --feature-map '" + a.featureMap.getValue() + "'"});
+    }
     cli::requireOutputsOfTheirOwn({{"", a.input.getValue()},
                                    {"--config", a.config.getValue()},
                                    {"--poses", a.poses.getValue()}},
-                                  {{"-o", a.output.getValue()}});
+                                  outputs);
 
     std::unique_ptr<mrpt::config::CConfigFile> ini;
     if (a.config.isSet()) {
@@ -308,6 +322,7 @@ int run(int argc, char** argv) {
         map->poses = io::loadTrajectory(a.poses.getValue());
         map->attachTo(options);
     }
+    cli::requireWritableOutputFiles(outputs);  // before the work, not after it
     return annotate(a.input.getValue(), a.output.getValue(), *ex, options, map.get(),
                     a.quiet.getValue());
 }

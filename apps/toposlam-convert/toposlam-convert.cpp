@@ -70,8 +70,7 @@ struct Arguments {
     TCLAP::ValueArg<std::string> laserOffset;
     cli::NumberArg<std::size_t> maxScans;
     cli::LogAlterationArgs alteration;
-    cli::NumberArg<double> resolution;
-    TCLAP::ValueArg<std::string> origin;
+    cli::MapGeometryArgs geometry;
     cli::MapReadingArgs mapReading;
     TCLAP::SwitchArg quiet;
 };
@@ -114,17 +113,7 @@ Arguments::Arguments()
                        "empty action collections.",
                        "Features stored with the scans are left out. Score a trajectory of it "
                        "with toposlam-eval-slam --mirrored-reference."}),
-      resolution(
-          "", "resolution",
-          "Maps: cell size in m for an input image (overrides its .yaml sidecar). "
-          "Default: the sidecar's, else 0.05",
-          0.05,
-          cli::NumberRange<double>::closed(toposlam::io::kMinCellSize, toposlam::io::kMaxCellSize),
-          "m", cmd),
-      origin("", "origin",
-             "Maps: world position x,y (m) of the lower-left corner of an input image "
-             "(overrides its sidecar). Default: the sidecar's, else 0,0",
-             false, "", "x,y", cmd),
+      geometry(cmd),
       mapReading(cmd,
                  "Maps: the grid written has every non-white cell occupied (p(free) 0), walls, "
                  "furniture and background alike, and the white cells as they are."),
@@ -151,17 +140,7 @@ int convertMap(Arguments& a) {
     refuseLogOptions(a);
     if (a.output.getValue().empty())
         throw cli::UsageError("-o/--output is required for grid maps");
-    std::optional<io::GridMapGeometry> geometry;
-    if (a.resolution.isSet() || a.origin.isSet()) {
-        geometry.emplace();
-        if (a.resolution.isSet())
-            geometry->resolution = a.resolution.getValue();
-        if (a.origin.isSet()) {
-            const auto xy = cli::parseNumberList(a.origin.getValue(), 2, "--origin");
-            geometry->originX = xy[0];
-            geometry->originY = xy[1];
-        }
-    }
+    const auto geometry = a.geometry.geometry();
     const bool drawn = a.mapReading.readAsDrawnPlan(a.input.getValue());
     const auto summary =
         io::convertGridMap(a.input.getValue(), a.output.getValue(), geometry, drawn);
@@ -171,7 +150,7 @@ int convertMap(Arguments& a) {
 }
 
 io::LogConversionOptions logOptions(Arguments& a) {
-    if (a.mapReading.given() || a.resolution.isSet() || a.origin.isSet()) {
+    if (a.mapReading.given() || a.geometry.given()) {
         throw cli::UsageError(
             "--drawn, --grid, --resolution and --origin are for grid maps, not laser logs");
     }
@@ -220,10 +199,11 @@ int run(int argc, char** argv) {
     Arguments arguments;
     if (const auto exitCode = cli::parseCommandLine(arguments.cmd, argc, argv))
         return *exitCode;
-    cli::requireOutputsOfTheirOwn(
-        {{"", arguments.input.getValue()}},
-        {{"-o", arguments.output.getValue()},
-         {"--odometry-trajectory", arguments.odometryTrajectory.getValue()}});
+    // A map's sidecar and ROS pair count too: office.png -o office.yaml rewrote its sidecar.
+    std::vector<cli::FileArgument> outputs =
+        cli::mapFilesWritten({"-o", arguments.output.getValue()});
+    outputs.push_back({"--odometry-trajectory", arguments.odometryTrajectory.getValue()});
+    cli::requireOutputsOfTheirOwn(cli::mapFilesRead({"", arguments.input.getValue()}), outputs);
     // Rawlogs may hold TopoSLAM's own objects (scan features, ...): make them readable.
     classes::registerTopoSlamClasses();
     if (io::isGridMapPath(arguments.input.getValue()))

@@ -77,6 +77,12 @@ int run(int argc, char** argv) {
     if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
         return *exitCode;
 
+    std::vector<cli::FileArgument> inputs = cli::mapFilesRead({"", mapArg.getValue()});
+    inputs.push_back({"", roomsArg.getValue()});
+    cli::requireOutputsOfTheirOwn(
+        inputs, cli::filesInFolder({"-o", outArg.getValue()}, planning::roomPlanFileNames()));
+    cli::requireWritableOutputFolder({"-o", outArg.getValue()});  // before planning, not after
+
     planning::RoomPlanRequest request;
     request.gridFile = mapArg.getValue();
     request.roomsFile = roomsArg.getValue();

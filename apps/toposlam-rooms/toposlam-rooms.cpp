@@ -5,13 +5,17 @@
 #include <toposlam/cli/ImageMemoryReuse.h>
 #include <toposlam/cli/MapReadingArgs.h>
 #include <toposlam/cli/NumberArg.h>
+#include <toposlam/config/ConfigError.h>
 #include <toposlam/io/GridMapIO.h>
 #include <toposlam/rooms/RoomSegmentationJob.h>
 
 #include <cstdlib>
 #include <iostream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -88,23 +92,18 @@ int run(int argc, char** argv) {
         cmd,
         "Every non-free pixel is a wall (--free-threshold 0.98 unless given, occupied_threshold "
         "= 1), as toposlam-bench-rooms reads Bormann et al.'s maps.");
-    cli::NumberArg<double> resolution(
-        "", "resolution",
-        "Cell size in m of a bare input image (overrides its .yaml sidecar). "
-        "Default: the sidecar's, else 0.05",
-        0.05,
-        cli::NumberRange<double>::closed(toposlam::io::kMinCellSize, toposlam::io::kMaxCellSize),
-        "m", cmd);
-    TCLAP::ValueArg<std::string> origin(
-        "", "origin",
-        "World x,y (m) of the lower-left corner of a bare input image. Default: "
-        "the sidecar's, else 0,0",
-        false, "", "x,y", cmd);
+    const cli::MapGeometryArgs geometry(cmd);
     cli::NumberArg<int> scale("", "scale", "rooms.png pixels per grid cell. Default: 2", 2,
                               cli::NumberRange<int>::closed(1, 8), "n", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "No summary on stdout", cmd);
     if (const auto exitCode = cli::parseCommandLine(cmd, argc, argv))
         return *exitCode;
+
+    std::vector<cli::FileArgument> inputs = cli::mapFilesRead({"", input.getValue()});
+    inputs.push_back({"-t", trajectory.getValue()});
+    inputs.push_back({"-c", config.getValue()});
+    cli::requireOutputsOfTheirOwn(
+        inputs, cli::filesInFolder({"-o", output.getValue()}, rooms::roomSegmentationFileNames()));
 
     rooms::RoomSegmentationJob job;
     job.mapPath = input.getValue();
@@ -122,17 +121,42 @@ int run(int argc, char** argv) {
     }
     if (freeThreshold.isSet())
         job.options.freeSpace.freeThreshold = freeThreshold.getValue();
-    job.options.validate();
-    if (resolution.isSet() || origin.isSet()) {
-        job.geometry.emplace();
-        if (resolution.isSet())
-            job.geometry->resolution = resolution.getValue();
-        if (origin.isSet()) {
-            const auto xy = cli::parseNumberList(origin.getValue(), 2, "--origin");
-            job.geometry->originX = xy[0];
-            job.geometry->originY = xy[1];
-        }
+    // load() checked the -c file's values on their own (exit 1, naming the file); what fails
+    // now, the command line brought in: bad usage, naming its options.
+    const auto& door = job.options.door;
+    if ((doorWidth.isSet() || doorTolerance.isSet()) &&
+        !(door.doorWidthTolerance < door.doorWidth)) {
+        std::ostringstream what;
+        if (doorWidth.isSet())
+            what << "--door-width " << door.doorWidth << (doorTolerance.isSet() ? ", " : "");
+        if (doorTolerance.isSet())
+            what << "--door-tolerance " << door.doorWidthTolerance;
+        what << ": the door width tolerance";
+        if (!doorTolerance.isSet())
+            what << " (" << door.doorWidthTolerance << " m: --door-tolerance, or -c)";
+        what << " must be below the door width";
+        if (!doorWidth.isSet())
+            what << " (" << door.doorWidth << " m: --door-width, or -c)";
+        throw cli::UsageError(what.str());
     }
+    try {
+        job.options.validate();
+    } catch (const config::ConfigError& e) {
+        std::string given;
+        const std::pair<bool, const char*> options[] = {
+            {doorWidth.isSet(), "--door-width"},
+            {doorTolerance.isSet(), "--door-tolerance"},
+            {minRoomArea.isSet(), "--min-room-area"},
+            {freeThreshold.isSet(), "--free-threshold"}};
+        for (const auto& [set, name] : options) {
+            if (set)
+                given += (given.empty() ? "" : ", ") + std::string(name);
+        }
+        if (given.empty())
+            throw;
+        throw cli::UsageError(given + ": " + e.what());
+    }
+    job.geometry = geometry.geometry();
 
     cli::requireWritableOutputFolder({"-o", output.getValue()});
     const auto result = rooms::runRoomSegmentationJob(job);

@@ -42,7 +42,8 @@ struct Arguments {
     TCLAP::UnlabeledValueArg<std::string> mapArg{
         "map",
         "Grid map: .gridmap/.gridmap.gz (MRPT), .yaml (ROS map_server), or an image (.png .pgm "
-        "...; geometry from its <stem>.yaml sidecar, else --resolution/--origin).",
+        "...; geometry from its <stem>.yaml sidecar, else 0.05 m at 0,0; --resolution and "
+        "--origin replace either value).",
         false,
         "",
         "map",
@@ -183,23 +184,7 @@ struct Arguments {
         "",
         "file.png",
         cmd};
-    cli::NumberArg<double> resolutionArg{
-        "",
-        "resolution",
-        "Image maps without metadata: metres per pixel. Default: 0.05.",
-        0.05,
-        cli::NumberRange<double>::closed(io::kMinCellSize, io::kMaxCellSize),
-        "m",
-        cmd};
-    TCLAP::ValueArg<std::string> originArg{
-        "",
-        "origin",
-        "Image maps without metadata: world x,y of the lower-left corner (m). "
-        "Default: 0,0.",
-        false,
-        "",
-        "x,y",
-        cmd};
+    const cli::MapGeometryArgs geometry{cmd};
     const cli::MapReadingArgs mapReading{
         cmd,
         "Grey furniture stops the laser and a grey background around the building is no free "
@@ -254,6 +239,13 @@ int makeOffice(Arguments& a, const SimulatorConfig& config, bool verbose) {
     if (a.mapArg.isSet() || a.posesArg.isSet() || a.tourArg.isSet() || a.outArg.isSet()) {
         throw cli::UsageError("--make-office takes no map, --poses, --tour or -o");
     }
+    // Every file is checked before the work: none is written unless all can be.
+    const cli::FileArgument folder{"--make-office", a.makeOfficeArg.getValue()};
+    const auto files = cli::filesInFolder(folder, officeDatasetFileNames());
+    cli::requireOutputsOfTheirOwn({{"-c", a.configArg.getValue()}}, files);
+    cli::requireWritableOutputFolder(folder);
+    if (std::filesystem::is_directory(folder.path))
+        cli::requireWritableOutputFiles(files);
     io::ProgressDisplay progress("simulating office.rawlog", "scans", verbose && ::isatty(2) == 1);
     const OfficeDataset d = writeOfficeDataset(
         a.makeOfficeArg.getValue(), config,
@@ -283,18 +275,12 @@ SimulationJob simulationJob(Arguments& a) {
     job.plotPath = a.plotArg.getValue();
     cli::requireExtension({"-o", job.rawlogPath}, {".rawlog", ".rawlog.gz"});
     cli::requireExtension({"--plot", job.plotPath}, {".png"});
+    std::vector<cli::FileArgument> inputs = cli::mapFilesRead({"", job.mapPath});
+    inputs.push_back({"--poses", job.posesPath});
+    inputs.push_back({"-c", a.configArg.getValue()});
     cli::requireOutputsOfTheirOwn(
-        {{"", job.mapPath}, {"--poses", job.posesPath}, {"-c", a.configArg.getValue()}},
-        {{"-o", job.rawlogPath}, {"--gt", job.groundTruthPath}, {"--plot", job.plotPath}});
-    if (a.resolutionArg.isSet() || a.originArg.isSet()) {
-        job.imageGeometry = io::GridMapGeometry{};
-        job.imageGeometry->resolution = a.resolutionArg.getValue();
-        if (a.originArg.isSet()) {
-            const auto o = cli::parseNumberList(a.originArg.getValue(), 2, "--origin");
-            job.imageGeometry->originX = o[0];
-            job.imageGeometry->originY = o[1];
-        }
-    }
+        inputs, {{"-o", job.rawlogPath}, {"--gt", job.groundTruthPath}, {"--plot", job.plotPath}});
+    job.imageGeometry = a.geometry.geometry();
     return job;
 }
 

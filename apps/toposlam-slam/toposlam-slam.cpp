@@ -40,6 +40,10 @@ int run(int argc, char** argv) {
                                         false, "slam-out", "dir", cmd);
     if (const auto exitCode = toposlam::cli::parseCommandLine(cmd, argc, argv))
         return *exitCode;
+    toposlam::cli::requireOutputsOfTheirOwn(
+        {{"", configArg.getValue()}, {"", logArg.getValue()}},
+        toposlam::cli::filesInFolder({"-o", outArg.getValue()},
+                                     toposlam::mapping::mappingOutputFileNames()));
     toposlam::classes::registerTopoSlamClasses();  // logs may hold TopoSLAM's objects
     toposlam::cli::requireWritableOutputFolder(
         {"-o", outArg.getValue()});  // before the run, not after

@@ -233,3 +233,44 @@ TEST(AnnotateFeaturesApp, BadFormatOrOdometryNoiseIsAUsageError) {
         EXPECT_FALSE(std::filesystem::exists(out)) << args;
     }
 }
+
+// --feature-map writes four files beside the rawlog: all of them or none, and a place they
+// cannot go is an error before the log is read.
+TEST(AnnotateFeaturesApp, TheRawlogAndTheFeatureMapAreWrittenAllOrNone) {
+    test::TempDir dir;
+    const std::string log = writeInputLog(dir);
+    {
+        std::ofstream poses(dir.file("poses.txt"));
+        for (int i = 0; i < kScans; ++i)
+            poses << 1000 + i << " " << -1 + 0.3 * i << " " << 0.2 * i << " " << 0.1 * i << "\n";
+    }
+    const std::string out = dir.file("af.rawlog");
+    const auto run = [&](const std::string& prefix) {
+        return test::runApp("toposlam-annotate-features",
+                            "'" + log + "' -o '" + out + "' --poses '" + dir.file("poses.txt") +
+                                "' --feature-map '" + prefix + "'");
+    };
+    // No such folder.
+    auto r = run(dir.file("nodir/fm"));
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("error: " + dir.file("nodir/fm")), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("wrote"), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(out));
+    // One of the four is a folder.
+    std::filesystem::create_directories(dir.file("fm2/o_corners.txt"));
+    r = run(dir.file("fm2/o"));
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("error: " + dir.file("fm2/o_corners.txt") + ": cannot write"),
+              std::string::npos)
+        << r.output;
+    EXPECT_FALSE(std::filesystem::exists(out));
+    for (const char* f : {"fm2/o.png", "fm2/o_segments.txt", "fm2/o_endpoints.txt"})
+        EXPECT_FALSE(std::filesystem::exists(dir.file(f))) << f;
+    // All five.
+    r = run(dir.file("fm2/p"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(std::filesystem::is_regular_file(out));
+    for (const char* f :
+         {"fm2/p.png", "fm2/p_segments.txt", "fm2/p_corners.txt", "fm2/p_endpoints.txt"})
+        EXPECT_TRUE(std::filesystem::is_regular_file(dir.file(f))) << f;
+}

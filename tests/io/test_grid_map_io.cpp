@@ -120,6 +120,33 @@ TEST(GridMapIO, PngRoundTripKeepsGeometryAndGreyLevels) {
     EXPECT_EQ(moved.getYMax(), 6.0f);
 }
 
+TEST(GridMapIO, AResolutionOrOriginAloneKeepsTheSidecarsOtherValues) {
+    toposlam::test::TempDir dir;
+    const COccupancyGridMap2D g = testGrid();
+    saveGridMap(g, dir.file("m.png"));
+    const COccupancyGridMap2D asWritten = loadGridMap(dir.file("m.png"));
+    GridMapGeometry resolutionOnly;
+    resolutionOnly.resolution = 0.1;
+    const COccupancyGridMap2D scaled = loadGridMap(dir.file("m.png"), resolutionOnly);
+    EXPECT_EQ(scaled.getResolution(), 0.1f);
+    EXPECT_EQ(scaled.getXMin(), g.getXMin()) << "the sidecar's origin, not (0,0)";
+    EXPECT_EQ(scaled.getYMin(), g.getYMin());
+    GridMapGeometry originOnly;
+    originOnly.originX = 2;
+    originOnly.originY = 3;
+    const COccupancyGridMap2D moved = loadGridMap(dir.file("m.png"), originOnly);
+    EXPECT_EQ(moved.getResolution(), g.getResolution()) << "the sidecar's, not 0.05 m";
+    EXPECT_EQ(moved.getXMin(), 2.0f);
+    EXPECT_EQ(moved.getYMin(), 3.0f);
+    // The greys are read as the sidecar says either way.
+    for (int cy = 0; cy < 30; ++cy) {
+        for (int cx = 0; cx < 40; ++cx) {
+            EXPECT_EQ(scaled.getCell(cx, cy), asWritten.getCell(cx, cy)) << cx << "," << cy;
+            EXPECT_EQ(moved.getCell(cx, cy), asWritten.getCell(cx, cy)) << cx << "," << cy;
+        }
+    }
+}
+
 TEST(GridMapIO, RosYamlPgmRoundTripIsTrinary) {
     toposlam::test::TempDir dir;
     const COccupancyGridMap2D g = testGrid();

@@ -399,6 +399,30 @@ TEST(ToposlamConvert, GridMapsBetweenFormats) {
     EXPECT_EQ(e.getYMax(), 0.0f);
 }
 
+TEST(ToposlamConvert, AResolutionOrOriginAloneKeepsTheSidecarsOtherValues) {
+    TempDir dir;
+    const std::string office = toposlam::test::shareDir() + "/office/";
+    for (const char* f : {"office.png", "office.yaml", "office.pgm"})
+        fs::copy_file(office + f, dir.file(f));
+    const auto asItIs = toposlam::io::loadGridMap(dir.file("office.png"));
+    auto r = runApp("toposlam-convert", "'" + dir.file("office.png") + "' --resolution 0.1 -o '" +
+                                            dir.file("scaled.gridmap") + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto scaled = toposlam::io::loadGridMap(dir.file("scaled.gridmap"));
+    EXPECT_EQ(scaled.getResolution(), 0.1f);
+    EXPECT_FLOAT_EQ(scaled.getXMin(), -0.7f) << "the sidecar's origin, not (0,0)";
+    EXPECT_FLOAT_EQ(scaled.getYMin(), -0.7f);
+    EXPECT_EQ(toposlam::io::countFreeCells(scaled), toposlam::io::countFreeCells(asItIs))
+        << "read as the sidecar says (a grid), not as a drawn plan";
+    r = runApp("toposlam-convert", "'" + dir.file("office.png") + "' --origin 1,2 -o '" +
+                                       dir.file("moved.gridmap") + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto moved = toposlam::io::loadGridMap(dir.file("moved.gridmap"));
+    EXPECT_EQ(moved.getResolution(), asItIs.getResolution());
+    EXPECT_FLOAT_EQ(moved.getXMin(), 1.0f);
+    EXPECT_FLOAT_EQ(moved.getYMin(), 2.0f);
+}
+
 TEST(ToposlamConvert, ABarePlanPictureBecomesAGridWithItsGreyWallsOccupied) {
     // A white room behind light-grey walls (211, p(free) 0.83) in a grey background (180):
     // read as the drawn plan it is, the walls and the background are written occupied; read

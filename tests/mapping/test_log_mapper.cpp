@@ -18,6 +18,7 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -346,6 +347,35 @@ TEST(LogMapper, TheIcpEngineWithoutItsLibraryIsAnErrorNamingIt) {
     EXPECT_FALSE(fs::exists(dir.file("out")));
 }
 
+// engine = icp without MRPT's map definitions: MRPT's builder failed on the first scan with an
+// assertion and a backtrace. Now a config error naming the file and the sections it needs.
+TEST(LogMapper, TheIcpEngineWithoutAMapToMatchAgainstIsAConfigError) {
+    test::TempDir dir;
+    writeLog(dir.file("sim.rawlog"));
+    test::writeText(dir.file("icp.ini"), "[Slam]\nengine = icp\n");
+    const auto run =
+        test::runApp("toposlam-slam", "'" + dir.file("icp.ini") + "' '" + dir.file("sim.rawlog") +
+                                          "' -o '" + dir.file("out") + "'");
+    EXPECT_EQ(run.exitCode, 1) << run.output;
+    EXPECT_TRUE(test::contains(run.output, "error: " + dir.file("icp.ini") +
+                                               ": [MappingApplication]: engine = icp has no map "
+                                               "to match scans against"))
+        << run.output;
+    EXPECT_TRUE(test::contains(run.output, "[MappingApplication_pointsMap_00_insertOpts]"))
+        << run.output;
+    EXPECT_FALSE(test::contains(run.output, "backtrace")) << run.output;
+    EXPECT_FALSE(test::contains(run.output, "====")) << run.output;
+    EXPECT_FALSE(fs::exists(dir.file("out")));
+    // A grid alone is not matched against unless matchAgainstTheGrid says so.
+    test::writeText(dir.file("grid.ini"),
+                    "[Slam]\nengine = icp\n[MappingApplication]\noccupancyGrid_count = 1\n"
+                    "[MappingApplication_occupancyGrid_00_creationOpts]\nresolution = 0.05\n");
+    const mrpt::config::CConfigFile grid(dir.file("grid.ini"));
+    EXPECT_TRUE(test::contains(
+        test::errorOf<config::ConfigError>([&] { mapping::mapLog(dir.file("sim.rawlog"), grid); }),
+        "(an occupancy grid, but matchAgainstTheGrid = 0)"));
+}
+
 TEST(LogMapper, AppWritesOutputsAndRejectsBadInput) {
     test::TempDir dir;
     writeLog(dir.file("sim.rawlog"));
@@ -355,6 +385,13 @@ TEST(LogMapper, AppWritesOutputsAndRejectsBadInput) {
     ASSERT_EQ(ok.exitCode, 0) << ok.output;
     for (const char* f : {"trajectory.txt", "map.gridmap.gz", "map.png", "map.yaml"}) {
         EXPECT_TRUE(std::ifstream(dir.file("out/") + f).good()) << f;
+    }
+    // The app checks these names against its inputs before the run: every file is one.
+    const auto names = mapping::mappingOutputFileNames();
+    for (const auto& entry : fs::directory_iterator(dir.file("out"))) {
+        EXPECT_NE(std::find(names.begin(), names.end(), entry.path().filename().string()),
+                  names.end())
+            << entry.path();
     }
 
     std::ofstream(dir.file("corrupt.rawlog")) << "this is not a rawlog";

@@ -153,3 +153,21 @@ TEST(PlanApp, ABarePlanPictureIsReadAsTheRoomsWereAndThePathKeepsToWhite) {
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_FALSE(std::filesystem::exists(dir.file("both")));
 }
+
+// An output folder that cannot be made is an error before planning (no route printed), said
+// as toposlam-slam and toposlam-rooms say it.
+TEST(PlanApp, AnOutputFolderThatCannotBeMadeIsAnErrorBeforePlanning) {
+    const TempDir dir;
+    toposlam::test::writeText(dir.file("afile"), "x");
+    for (const std::string& out : {dir.file("afile"), dir.file("afile/plan")}) {
+        const auto r =
+            runApp("toposlam-plan", quoted(kMap) + " " + quoted(roomsDir() + "/rooms.json") +
+                                        " --from 1 --to 3 -o " + quoted(out));
+        EXPECT_EQ(r.exitCode, 1) << r.output;
+        EXPECT_NE(r.output.find("error: " + out + ": cannot create the output folder"),
+                  std::string::npos)
+            << r.output;
+        EXPECT_EQ(r.output.find("length:"), std::string::npos) << "planned first\n" << r.output;
+        EXPECT_EQ(r.output.find("filesystem error"), std::string::npos) << r.output;
+    }
+}

@@ -35,6 +35,26 @@ TEST(ToposlamRooms, SegmentsADrawnOfficeAndWritesEveryOutput) {
     EXPECT_EQ(toposlam::rooms::loadTopologicalMap(dir.file("out/rooms.graphml")).doors.size(), 6u);
 }
 
+TEST(ToposlamRooms, AnOriginOrResolutionAloneKeepsTheSidecarsOtherValues) {
+    const TempDir dir;
+    ASSERT_TRUE(cv::imwrite(dir.file("m.png"), toposlam::rooms::test::office().image));
+    toposlam::test::writeText(dir.file("m.yaml"),
+                              "image: m.png\nresolution: 0.1\norigin: [-0.7, -0.7, 0]\nnegate: "
+                              "0\noccupied_thresh: 0.65\nfree_thresh: 0.196\nmode: trinary\n");
+    auto r = runApp("toposlam-rooms",
+                    "'" + dir.file("m.png") + "' --origin 1,2 -q -o '" + dir.file("a") + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto moved = toposlam::rooms::loadTopologicalMap(dir.file("a/rooms.json"));
+    EXPECT_FLOAT_EQ(moved.frame.resolution, 0.1) << "the sidecar's, not 0.05";
+    EXPECT_FLOAT_EQ(moved.frame.xMin, 1.0);
+    r = runApp("toposlam-rooms",
+               "'" + dir.file("m.png") + "' --resolution 0.2 -q -o '" + dir.file("b") + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto scaled = toposlam::rooms::loadTopologicalMap(dir.file("b/rooms.json"));
+    EXPECT_FLOAT_EQ(scaled.frame.resolution, 0.2);
+    EXPECT_FLOAT_EQ(scaled.frame.xMin, -0.7) << "the sidecar's, not 0";
+}
+
 TEST(ToposlamRooms, AFailedWriteLeavesThePreviousRunsFilesAsTheyWere) {
     const TempDir dir;
     ASSERT_TRUE(cv::imwrite(dir.file("office.png"), toposlam::rooms::test::office().image));
@@ -280,4 +300,39 @@ TEST(ToposlamBenchRooms, RejectsBadOptions) {
         EXPECT_NE(r.output.find("error: "), std::string::npos) << bad << "\n" << r.output;
         EXPECT_FALSE(std::filesystem::exists(dir.file("b.json"))) << bad;
     }
+}
+
+// A door width at or below its tolerance: bad usage naming the options when the command line
+// set them, bad input naming the file when a -c file did.
+TEST(ToposlamRooms, ADoorWidthBelowItsToleranceNamesWhereItCameFrom) {
+    const TempDir dir;
+    const std::string map = toposlam::test::shareDir() + "/office/office.gridmap.gz";
+    const std::string out = dir.file("out");
+    const struct {
+        std::string options, expected;
+        int exitCode;
+    } cases[] = {
+        {"--door-width 0.4",
+         "error: --door-width 0.4: the door width tolerance (0.5 m: --door-tolerance, or -c) must "
+         "be below the door width",
+         2},
+        {"--door-tolerance 1.5", "error: --door-tolerance 1.5: the door width tolerance must", 2},
+        {"--door-width 0.4 --door-tolerance 0.4",
+         "error: --door-width 0.4, --door-tolerance 0.4: the door width tolerance must", 2},
+        {"--door-tolerance 0", "error: --door-tolerance: [RoomSegmenter] door_width_tolerance", 2},
+    };
+    for (const auto& c : cases) {
+        const auto r = runApp("toposlam-rooms", "'" + map + "' " + c.options + " -o '" + out + "'");
+        EXPECT_EQ(r.exitCode, c.exitCode) << c.options << "\n" << r.output;
+        EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.options << "\n" << r.output;
+        EXPECT_FALSE(std::filesystem::exists(out)) << c.options;
+    }
+    toposlam::test::writeText(dir.file("dw.ini"), "[RoomSegmenter]\ndoor_width = 0.4\n");
+    const auto r =
+        runApp("toposlam-rooms", "'" + map + "' -c '" + dir.file("dw.ini") + "' -o '" + out + "'");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("error: " + dir.file("dw.ini") + ": [RoomSegmenter]"),
+              std::string::npos)
+        << r.output;
+    EXPECT_FALSE(std::filesystem::exists(out));
 }

@@ -307,3 +307,27 @@ TEST(ShareOffice, IsReproducedBitForBitByMakeOffice) {
     }
     EXPECT_EQ(compared, 9u);
 }
+
+// --make-office writes nine files: all of them or none. One that cannot be written (a folder
+// has its name) is an error before anything is made.
+TEST(ShareOffice, MakeOfficeWritesEveryFileOrNone) {
+    TempDir dir;
+    fs::create_directories(dir.file("mo/office_tour.png"));
+    const auto r = runApp("toposlam-sim", "--make-office " + quoted(dir.file("mo")) + " -q -c " +
+                                              quoted(toposlam::test::configIni("sim-office.ini")));
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("error: " + dir.file("mo/office_tour.png") + ": cannot write"),
+              std::string::npos)
+        << r.output;
+    std::size_t entries = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir.file("mo")))
+        ++entries;
+    EXPECT_EQ(entries, 1u) << "only the folder that was there";
+    // The same file as the -c file it reads.
+    fs::remove(dir.file("mo/office_tour.png"));
+    fs::copy_file(toposlam::test::configIni("sim-office.ini"), dir.file("mo/office_gt.txt"));
+    const auto same = runApp("toposlam-sim", "--make-office " + quoted(dir.file("mo")) + " -q -c " +
+                                                 quoted(dir.file("mo/office_gt.txt")));
+    EXPECT_EQ(same.exitCode, 2) << same.output;
+    EXPECT_NE(same.output.find("the same file as the input -c"), std::string::npos) << same.output;
+}

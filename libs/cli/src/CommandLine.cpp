@@ -1,6 +1,7 @@
 #include <toposlam/cli/CommandLine.h>
 #include <toposlam/cli/UsageError.h>
 #include <toposlam/io/FileExtension.h>
+#include <toposlam/io/GridMapIO.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -167,7 +168,17 @@ bool sameFile(const std::string& a, const std::string& b) {
 }
 
 std::string named(const FileArgument& f) {
-    return (f.option.empty() ? std::string("'") : f.option + " '") + f.path + "'";
+    return (f.option.empty() ? std::string("'") : f.option + " '") + f.path + "'" +
+           (f.via.empty() ? "" : " (" + f.via + ")");
+}
+
+// The files after the first of `paths`, which `first` names, as files that go with it.
+std::vector<FileArgument> alongWith(const FileArgument& first,
+                                    const std::vector<std::string>& paths, const char* how) {
+    std::vector<FileArgument> files = {first};
+    for (std::size_t i = 1; i < paths.size(); ++i)
+        files.push_back({"", paths[i], how + named(first)});
+    return files;
 }
 
 }  // namespace
@@ -190,6 +201,27 @@ void requireOutputsOfTheirOwn(const std::vector<FileArgument>& inputs,
             }
         }
     }
+}
+
+std::vector<FileArgument> mapFilesRead(const FileArgument& map) {
+    if (map.path.empty())
+        return {map};
+    return alongWith(map, io::gridMapFilesRead(map.path), "read with ");
+}
+
+std::vector<FileArgument> mapFilesWritten(const FileArgument& map) {
+    if (map.path.empty())
+        return {map};
+    return alongWith(map, io::gridMapFilesWritten(map.path), "written with ");
+}
+
+std::vector<FileArgument> filesInFolder(const FileArgument& folder,
+                                        const std::vector<std::string>& names) {
+    std::vector<FileArgument> files;
+    for (const std::string& name : names)
+        files.push_back(
+            {"", (std::filesystem::path(folder.path) / name).string(), "in " + named(folder)});
+    return files;
 }
 
 void requireExtension(const FileArgument& file, const std::vector<std::string>& extensions) {
@@ -222,6 +254,27 @@ void requireWritableOutputFolder(const FileArgument& folder) {
     if (::access(existing.c_str(), W_OK | X_OK) != 0) {
         throw std::runtime_error(folder.path + ": cannot create the output folder (" +
                                  existing.string() + ": " + std::strerror(errno) + ")");
+    }
+}
+
+void requireWritableOutputFiles(const std::vector<FileArgument>& files) {
+    namespace fs = std::filesystem;
+    for (const FileArgument& file : files) {
+        if (file.path.empty())
+            continue;
+        const auto refuse = [&](const std::string& why) {
+            throw std::runtime_error(file.path + ": cannot write the file (" + why + ")");
+        };
+        std::error_code ec;
+        if (fs::is_directory(file.path, ec))
+            refuse("it is a folder");
+        const fs::path folder = fs::absolute(file.path, ec).parent_path();
+        if (!fs::exists(folder, ec))
+            refuse("no folder " + folder.string());
+        if (!fs::is_directory(folder, ec))
+            refuse(folder.string() + " is not a folder");
+        if (::access(folder.c_str(), W_OK | X_OK) != 0)
+            refuse(folder.string() + ": " + std::strerror(errno));
     }
 }
 

@@ -1,3 +1,4 @@
+#include <toposlam/cli/CommandLine.h>
 #include <toposlam/cli/MapReadingArgs.h>
 #include <toposlam/cli/UsageError.h>
 #include <toposlam/io/GridMapIO.h>
@@ -37,6 +38,32 @@ bool MapReadingArgs::readAsDrawnPlan(const std::string& mapPath) const {
               << ": " << guess.reason() << "; " << (drawn ? "--grid" : "--drawn")
               << " reads it the other way\n";
     return drawn;
+}
+
+MapGeometryArgs::MapGeometryArgs(TCLAP::CmdLine& cmd)
+    : resolution_("", "resolution",
+                  "Cell size in m of a map picture. Replaces its .yaml sidecar's resolution and "
+                  "only that: the sidecar's origin and reading of the greys are kept. Default: "
+                  "the sidecar's, else 0.05",
+                  0.05, NumberRange<double>::closed(io::kMinCellSize, io::kMaxCellSize), "m", cmd),
+      origin_("", "origin",
+              "World x,y (m) of the lower-left corner of a map picture. Replaces its .yaml "
+              "sidecar's origin and only that: the sidecar's resolution and reading of the "
+              "greys are kept. Default: the sidecar's, else 0,0",
+              false, "", "x,y", cmd) {}
+
+std::optional<io::GridMapGeometry> MapGeometryArgs::geometry() const {
+    if (!given())
+        return std::nullopt;
+    io::GridMapGeometry g;
+    if (resolution_.isSet())
+        g.resolution = resolution_.getValue();
+    if (origin_.isSet()) {
+        const auto xy = parseNumberList(origin_.getValue(), 2, "--origin");
+        g.originX = xy[0];
+        g.originY = xy[1];
+    }
+    return g;
 }
 
 }  // namespace toposlam::cli

@@ -202,11 +202,13 @@ COccupancyGridMap2D loadImageMap(const std::string& path, std::optional<RosMapMe
             meta->mode = RosMapMetadata::Mode::Scale;
     }
     if (geometry) {
-        if (!(geometry->resolution > 0))
-            throw InputError(path, "resolution must be > 0");
-        meta->resolution = geometry->resolution;
-        meta->originX = geometry->originX;
-        meta->originY = geometry->originY;
+        if (geometry->resolution) {
+            if (!(*geometry->resolution > 0))
+                throw InputError(path, "resolution must be > 0");
+            meta->resolution = *geometry->resolution;
+        }
+        meta->originX = geometry->originX.value_or(meta->originX);
+        meta->originY = geometry->originY.value_or(meta->originY);
     }
     return gridFromImage(grey, *meta);
 }
@@ -439,6 +441,48 @@ bool isBareMapImage(const std::string& path) {
             return !sidecarOf(path);
         default:
             return false;
+    }
+}
+
+std::vector<std::string> gridMapFilesRead(const std::string& path) {
+    std::vector<std::string> files = {path};
+    switch (formatOf(path)) {
+        case MapFormat::RosYaml:
+            try {
+                files.push_back(resolveRosMapImage(path, readRosMapMetadata(path)));
+            } catch (const std::exception&) {
+                // loadGridMap reports a .yaml it cannot read; it reads no picture then.
+            }
+            break;
+        case MapFormat::Png:
+        case MapFormat::Pgm:
+        case MapFormat::OtherImage: {
+            // sidecarOf() reads "<stem>.yaml" to tell whether it is this picture's: it counts
+            // even when it turns out to describe another picture.
+            const std::string yaml = fs::path(path).replace_extension(".yaml").string();
+            if (fs::is_regular_file(yaml))
+                files.push_back(yaml);
+            break;
+        }
+        default:
+            break;
+    }
+    return files;
+}
+
+std::vector<std::string> gridMapFilesWritten(const std::string& path) {
+    const auto beside = [&](const char* extension) {
+        return fs::path(path).replace_extension(extension).string();
+    };
+    switch (formatOf(path)) {
+        case MapFormat::Png:
+            return {path, beside(".yaml"), beside(".pgm")};
+        case MapFormat::RosYaml:
+            return {path, beside(".pgm")};
+        case MapFormat::Pgm:
+            return {path, beside(".yaml")};
+        default:
+            return {path};
     }
 }
 

@@ -459,6 +459,11 @@ nlohmann::json summaryJson(const MappingResult& r) {
     return j;
 }
 
+std::vector<std::string> mappingOutputFileNames() {
+    return {"trajectory.txt",  "map.gridmap.gz",      "map.png",     "map.yaml",    "map.pgm",
+            "keyframes.graph", "keyframes.simplemap", "summary.txt", "summary.json"};
+}
+
 std::vector<std::string> saveMappingOutputs(const MappingResult& result,
                                             const std::string& directory) {
     namespace fs = std::filesystem;

@@ -76,6 +76,29 @@ void checkIcpKeys(const mrpt::config::CConfigFileBase& ini, const std::string& m
     mapping.inRange("minICPgoodnessToAccept", o.minICPgoodnessToAccept, 0, 1, false);
 }
 
+// Without the map it matches scans against, MRPT's builder fails on the first scan with an
+// assertion and a backtrace: said here instead, naming the sections it reads.
+void requireMatchingMap(const mrpt::config::CConfigFileBase& ini, const std::string& mappingSection,
+                        const mrpt::slam::CMetricMapBuilderICP::TConfigParams& options) {
+    bool points = false, grid = false;
+    for (const auto& map : options.mapInitializers) {
+        const std::string name = map->getMetricMapClassType()->className;
+        points = points || name == "mrpt::maps::CSimplePointsMap";
+        grid = grid || name == "mrpt::maps::COccupancyGridMap2D";
+    }
+    if (points || (grid && options.matchAgainstTheGrid))
+        return;
+    const std::string s = "[" + mappingSection;
+    throw config::ConfigError(
+        config::configFileName(ini), mappingSection, "", "",
+        std::string("engine = icp has no map to match scans against") +
+            (grid ? " (an occupancy grid, but matchAgainstTheGrid = 0)" : "") +
+            ": MRPT's map definitions need pointsMap_count = 1 here and a " + s +
+            "_pointsMap_00_insertOpts] section (or occupancyGrid_count = 1, " + s +
+            "_occupancyGrid_00_creationOpts] and matchAgainstTheGrid = 1), as in "
+            "config_ini/toposlam-slam.ini");
+}
+
 }  // namespace
 
 IcpSlam::IcpSlam(const mrpt::config::CConfigFileBase& ini, const std::string& mappingSection,
@@ -86,6 +109,7 @@ IcpSlam::IcpSlam(const mrpt::config::CConfigFileBase& ini, const std::string& ma
     builder_.ICP_options.loadFromConfigFile(ini, mappingSection);
     builder_.ICP_params.loadFromConfigFile(ini, icpSection);
     checkIcpKeys(ini, mappingSection, icpSection, builder_);
+    requireMatchingMap(ini, mappingSection, builder_.ICP_options);
     builder_.initialize();  // builds the maps listed in the ini; throws if there is none usable
 }
 

@@ -142,10 +142,15 @@ std::string describeRoomPlan(const RoomPlan& plan) {
     return out + buf;
 }
 
+std::vector<std::string> roomPlanFileNames() {
+    return {"path.txt", "path.png"};
+}
+
 std::vector<std::string> saveRoomPlan(const RoomPlan& plan, const std::string& folder) {
     const std::filesystem::path out(folder);
     std::filesystem::create_directories(out);
-    const std::string text = (out / "path.txt").string(), png = (out / "path.png").string();
+    const std::vector<std::string> names = roomPlanFileNames();
+    const std::string text = (out / names[0]).string(), png = (out / names[1]).string();
     io::OutputGroup files;  // both or neither
     savePath(plan.path, text);
     saveRoomPathPng(plan.map, plan.path, png);

@@ -36,6 +36,10 @@ RoomSegmenter::Result runRoomSegmentationJob(const RoomSegmentationJob& job) {
     return result;
 }
 
+std::vector<std::string> roomSegmentationFileNames() {
+    return {"rooms.json", "rooms.graphml", "rooms.png", "rooms-steps.png", "rooms.topomap.gz"};
+}
+
 std::vector<std::string> writeRoomSegmentationFiles(const RoomSegmenter::Result& result,
                                                     const std::string& dir, int scale) {
     if (scale < 1 || scale > 8)
@@ -43,10 +47,9 @@ std::vector<std::string> writeRoomSegmentationFiles(const RoomSegmenter::Result&
                                     std::to_string(scale));
     const std::filesystem::path folder(dir);
     std::filesystem::create_directories(folder);
-    auto path = [&](const char* name) { return (folder / name).string(); };
-    const std::vector<std::string> files = {path("rooms.json"), path("rooms.graphml"),
-                                            path("rooms.png"), path("rooms-steps.png"),
-                                            path("rooms.topomap.gz")};
+    std::vector<std::string> files;
+    for (const std::string& name : roomSegmentationFileNames())
+        files.push_back((folder / name).string());
     io::OutputGroup outputs;  // all five files, or none (a folder never mixes two runs)
     saveTopologicalMapJson(result.map, files[0]);
     saveTopologicalMapGraphML(result.map, files[1]);

@@ -15,12 +15,19 @@ namespace toposlam::simulation {
 
 namespace fs = std::filesystem;
 
+std::vector<std::string> officeDatasetFileNames() {
+    return {"office.gridmap.gz", "office.png",       "office.yaml",
+            "office.pgm",        "office_rooms.png", "office_rooms.json",
+            "office.rawlog",     "office_gt.txt",    "office_tour.png"};
+}
+
 OfficeDataset writeOfficeDataset(const std::string& dir, const SimulatorConfig& config,
                                  const io::ProgressCallback& progress) {
     validate(config);
     fs::create_directories(dir);
     const auto file = [&](const std::string& name) { return (fs::path(dir) / name).string(); };
     OfficeDataset out;
+    io::OutputGroup files;  // renamed together at the end: a failure leaves `dir` as it was
 
     const FloorPlan plan = makeOfficeFloorPlan();
     const auto grid = plan.rasterise(OfficeDataset::kResolution, OfficeDataset::kMargin);
@@ -60,6 +67,7 @@ OfficeDataset writeOfficeDataset(const std::string& dir, const SimulatorConfig& 
     out.files.push_back(file("office.rawlog"));
     out.files.push_back(file("office_gt.txt"));
     out.files.push_back(file("office_tour.png"));
+    files.commit();
 
     out.scans = tour.poses.size();
     out.tourLength = tour.length;

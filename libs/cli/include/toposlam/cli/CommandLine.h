@@ -39,9 +39,12 @@ std::vector<std::string> splitList(const std::string& text);
 std::vector<unsigned> parseSeedList(const std::string& text, const std::string& option);
 
 /// A file named on the command line: the option that named it ("" for a positional argument)
-/// and its path ("": not given).
+/// and its path ("": not given). `via`: for a file an app reads or writes along with one named
+/// on the command line (a map's .yaml sidecar, a file in an output folder), what it is to that
+/// one ("the sidecar of 'a.png'"), said in messages after its path.
 struct FileArgument {
     std::string option, path;
+    std::string via = {};
 };
 /// Throws UsageError unless every output given is a file of its own: not one of the inputs
 /// (toposlam-convert a.clf -o a.clf replaced the log with its conversion) and not another
@@ -49,6 +52,15 @@ struct FileArgument {
 /// "a.clf", "./a.clf" and a link to it are one file.
 void requireOutputsOfTheirOwn(const std::vector<FileArgument>& inputs,
                               const std::vector<FileArgument>& outputs);
+
+/// `map` and every file read with it (a picture's .yaml sidecar, the picture a .yaml names):
+/// the inputs to check outputs against (io::gridMapFilesRead).
+std::vector<FileArgument> mapFilesRead(const FileArgument& map);
+/// `map` and every file written with it (the ROS pair of a .png, .yaml or .pgm output).
+std::vector<FileArgument> mapFilesWritten(const FileArgument& map);
+/// The files `names` an app writes in its output folder `folder`.
+std::vector<FileArgument> filesInFolder(const FileArgument& folder,
+                                        const std::vector<std::string>& names);
 
 /// Throws UsageError unless `file` (when given) ends with one of `extensions` (".png",
 /// ".rawlog.gz"; case-insensitive): a rawlog written as "map.png", or a plot as "p.txt",
@@ -60,6 +72,11 @@ void requireExtension(const FileArgument& file, const std::vector<std::string>& 
 /// files in (std::runtime_error "<folder>: cannot create the output folder (...)": exit 1; an
 /// empty path is a UsageError). Nothing is created, so a run that fails later leaves nothing.
 void requireWritableOutputFolder(const FileArgument& folder);
+
+/// Throws, before an app does its work, unless every output file given can be written: its
+/// folder exists and the app may create files in it, and it is no folder itself
+/// (std::runtime_error "<file>: cannot write the file (...)": exit 1). Nothing is created.
+void requireWritableOutputFiles(const std::vector<FileArgument>& files);
 
 /// An app's main(): returns run(argc, argv). An exception escaping it is printed to stderr as
 /// "error: <what>" and gives the exit status: 2 for a UsageError (bad command line), 1 for

@@ -6,7 +6,10 @@
 // read as a grid whose light-grey walls are free space. Maps that state their reading (.gridmap,
 // .yaml, a picture with its .yaml sidecar) are grids unless --drawn is given.
 #include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <toposlam/cli/NumberArg.h>
+#include <toposlam/io/GridMapIO.h>
 
+#include <optional>
 #include <string>
 
 namespace toposlam::cli {
@@ -27,6 +30,25 @@ class MapReadingArgs {
 
   private:
     mutable TCLAP::SwitchArg drawn_, grid_;  // MRPT's TCLAP: getValue() is not const
+};
+
+/// The --resolution / --origin pair of the apps that read a map picture (toposlam-convert,
+/// toposlam-rooms, toposlam-sim). Each replaces that one value of the picture's .yaml sidecar
+/// (or of a .yaml map): the rest of the sidecar, and how it reads the greys, is kept, so that
+/// --resolution alone does not move the map to (0,0) nor --origin alone rescale it.
+class MapGeometryArgs {
+  public:
+    explicit MapGeometryArgs(TCLAP::CmdLine& cmd);
+
+    /// What was given, for io::loadGridMap; nullopt when neither. Throws UsageError for a
+    /// malformed --origin.
+    std::optional<io::GridMapGeometry> geometry() const;
+    /// --resolution or --origin was given (an app whose input is no map refuses them then).
+    bool given() const { return resolution_.isSet() || origin_.isSet(); }
+
+  private:
+    NumberArg<double> resolution_;
+    mutable TCLAP::ValueArg<std::string> origin_;  // MRPT's TCLAP: getValue() is not const
 };
 
 }  // namespace toposlam::cli

@@ -44,6 +44,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace toposlam::io {
 
@@ -68,16 +69,17 @@ constexpr unsigned char kMapSaverOccupiedGrey = 0;
 constexpr unsigned char kMapSaverUnknownGrey = 205;
 constexpr unsigned char kMapSaverFreeGrey = 254;
 
-/// Geometry for image maps that carry none themselves.
+/// What a caller states of an image map's geometry. Each value given replaces the sidecar's
+/// (or .yaml's) and only that one: the rest, and how the greys are read, stay the sidecar's.
 struct GridMapGeometry {
-    double resolution = 0.05;  ///< m per cell
-    double originX = 0.0;      ///< world x (m) of the lower-left corner of the image
-    double originY = 0.0;      ///< world y (m) of the lower-left corner of the image
+    std::optional<double> resolution;  ///< m per cell
+    std::optional<double> originX;     ///< world x (m) of the lower-left corner of the image
+    std::optional<double> originY;     ///< world y (m) of the lower-left corner of the image
 };
 
-/// Loads a grid map, choosing the format from the extension. For images, `geometry`
-/// overrides the resolution and origin of any sidecar; without either, 0.05 m/cell and origin
-/// (0,0) are used. Throws InputError naming the file for a missing, unreadable or corrupt
+/// Loads a grid map, choosing the format from the extension. For images, what `geometry`
+/// gives overrides that value of the sidecar; what neither gives is 0.05 m/cell and origin
+/// (0,0). Throws InputError naming the file for a missing, unreadable or corrupt
 /// file, an unknown extension, bad metadata, or a map with no free cell (p(free) > 0.5)
 /// ("map has no free cells").
 mrpt::maps::COccupancyGridMap2D loadGridMap(
@@ -91,6 +93,15 @@ bool isGridMapPath(const std::string& path);
 /// sidecar that states its geometry and how its greys are meant (see above). Such a picture
 /// may be a grid (grey = p(free)) or a drawn floor plan: see MapImageKind.h.
 bool isBareMapImage(const std::string& path);
+
+/// Every file loadGridMap(path) reads: `path`, and the "<stem>.yaml" beside a picture (read to
+/// tell whether it is the picture's sidecar) or the picture a .yaml names, so that an app can
+/// refuse to write over any of them before it starts. Does not throw (a .yaml it cannot read
+/// names no picture).
+std::vector<std::string> gridMapFilesRead(const std::string& path);
+
+/// Every file saveGridMap(map, path) writes: `path` and the ROS pair of a .png, .yaml or .pgm.
+std::vector<std::string> gridMapFilesWritten(const std::string& path);
 
 /// Saves `map`, choosing the format from the extension (.gridmap, .gridmap.gz, .png, .yaml,
 /// .yml, .pgm). Image formats also write the ROS pair (.png: "<stem>.yaml" + "<stem>.pgm";

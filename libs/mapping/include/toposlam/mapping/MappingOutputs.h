@@ -59,6 +59,10 @@ bool openLoopAtEnd(const MappingResult& result);
 /// than its odometry (benchmarks.md, B3).
 bool weakFrontEnd(const MappingResult& result);
 
+/// The names of every file above, those only the graph engine writes too (an app checks
+/// them against its inputs before the run).
+std::vector<std::string> mappingOutputFileNames();
+
 /// Writes the files above into `directory` (created); returns their paths in that order.
 std::vector<std::string> saveMappingOutputs(const MappingResult& result,
                                             const std::string& directory);

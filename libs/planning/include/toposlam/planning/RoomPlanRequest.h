@@ -71,6 +71,9 @@ RoomPlan planRoomToRoom(const RoomPlanRequest& request);
 /// 7.8 ms (rrtconnect)\n" for a solved plan.
 std::string describeRoomPlan(const RoomPlan& plan);
 
+/// The names of the files saveRoomPlan writes: path.txt, path.png.
+std::vector<std::string> roomPlanFileNames();
+
 /// Writes path.txt (RoomPath.h) and path.png (PathRendering.h) into `folder` (created);
 /// returns the two paths.
 std::vector<std::string> saveRoomPlan(const RoomPlan& plan, const std::string& folder);

@@ -26,6 +26,10 @@ struct RoomSegmentationJob {
 /// frame or wrong file).
 RoomSegmenter::Result runRoomSegmentationJob(const RoomSegmentationJob& job);
 
+/// The names of the files writeRoomSegmentationFiles writes, in that order (an app checks
+/// them against its inputs before it starts).
+std::vector<std::string> roomSegmentationFileNames();
+
 /// Writes into `dir` (created if needed), each file atomically: rooms.json, rooms.graphml,
 /// rooms.png (rooms coloured, doors with ids, `scale` pixels per cell, 1-8), rooms-steps.png
 /// (what each step found) and rooms.topomap.gz (CTopologicalMap in an MRPT archive). Returns

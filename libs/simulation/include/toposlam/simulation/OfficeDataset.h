@@ -23,7 +23,10 @@ struct OfficeDataset {
     std::size_t rooms = 0;
 };
 
-/// Writes into `dir` (created if needed):
+/// The names of the files writeOfficeDataset writes, in the order listed below.
+std::vector<std::string> officeDatasetFileNames();
+
+/// Writes into `dir` (created if needed), all of the files or none:
 ///   office.gridmap.gz        the map (MRPT serialization)
 ///   office.png               the same map as a picture (grey p(free))
 ///   office.yaml, office.pgm  the same map as a ROS map_server pair (trinary)

@@ -208,9 +208,12 @@ int run(int argc, char** argv) {
                                              {"--scan-stamps", request.scanStamps}};
     for (const auto& t : request.trajectories)
         inputs.push_back({"", t.file});
-    cli::requireOutputsOfTheirOwn(inputs, {{"--write-relations", writeRelations.getValue()},
-                                           {"--plot", plot.getValue()},
-                                           {"--json", json.getValue()}});
+    const std::vector<cli::FileArgument> outputs = {
+        {"--write-relations", writeRelations.getValue()},
+        {"--plot", plot.getValue()},
+        {"--json", json.getValue()}};
+    cli::requireOutputsOfTheirOwn(inputs, outputs);
+    cli::requireWritableOutputFiles(outputs);  // before the scoring, not after its tables
     return evaluate(request, {writeRelations.getValue(), plot.getValue(), json.getValue()});
 }
 

@@ -130,6 +130,18 @@ TEST(EvalSlamApp, RowsOfFilesWithTheSameNameAreToldApartByTheirFolders) {
     EXPECT_TRUE(contains(json, "\"run2/trajectory\"")) << json;
 }
 
+TEST(EvalSlamApp, AnOutputThatCannotBeWrittenIsAnErrorBeforeTheTables) {
+    // A --json into a folder that does not exist: said before anything is scored, not after
+    // every table was printed.
+    Fixture f;
+    const auto r = runApp("toposlam-eval-slam", f.trajectory + " --relations " + f.relations +
+                                                    " --json " + f.dir.file("nodir/out.json"));
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_TRUE(contains(r.output, "nodir/out.json: cannot write the file")) << r.output;
+    EXPECT_FALSE(contains(r.output, "| slam |")) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(f.dir.file("nodir")));
+}
+
 TEST(EvalSlamApp, WorstListsTheLargestErrorsInTheTableAndTheJson) {
     Fixture f;
     const auto r = runApp("toposlam-eval-slam", "--worst 2 --trajectory mine=" + f.trajectory +

@@ -1,6 +1,8 @@
 // Small objects close to the laser, in front of what lies behind (ForegroundObjects.h).
 #include <gtest/gtest.h>
 #include <toposlam/mapping/ForegroundObjects.h>
+#include <toposlam/mapping/GraphSlamOptions.h>
+#include <toposlam/mapping/ScanRegistration.h>
 
 #include <cmath>
 #include <vector>
@@ -54,6 +56,31 @@ TEST(ForegroundObjects, APersonJustAheadIsLeftOutAndTheWallBehindKept) {
             EXPECT_EQ(out.range(b), scan.range(b));
         }
     }
+}
+
+TEST(ForegroundObjects, APersonCloseByMakesTheKeyframesEdgesLessCertain) {
+    // The variance added to a keyframe's registration edges (foreground_edge_sigma_factor k):
+    // (k^2 - 1) times the edge floor's, so an edge at the floor has k times its sigmas; none
+    // for a scan of the bare wall or of a person beyond foreground_max_range, and none with
+    // k = 1 (the default).
+    GraphSlamOptions options;
+    EXPECT_EQ(options.foregroundEdgeSigmaFactor, 1);
+    options.foregroundEdgeSigmaFactor = 5;
+    const matching::GraphMatcherOptions matcher;
+    const ScanRegistration registration(options, matcher);
+    const matching::PolarScan person = scanOf(3.0, {{0.8, 0.0, 0.25}});
+    const mrpt::math::CMatrixDouble33 added = registration.foregroundEdgeVariance(person);
+    const double xy = options.edgeMinSigmaXY, phi = options.edgeMinSigmaPhi;
+    EXPECT_NEAR(std::sqrt(xy * xy + added(0, 0)), 5 * xy, 1e-12);
+    EXPECT_NEAR(std::sqrt(xy * xy + added(1, 1)), 5 * xy, 1e-12);
+    EXPECT_NEAR(std::sqrt(phi * phi + added(2, 2)), 5 * phi, 1e-12);
+    EXPECT_EQ(added(0, 1), 0);
+    EXPECT_EQ(added(0, 2), 0);
+    EXPECT_EQ(registration.foregroundEdgeVariance(scanOf(3.0, {})).norm(), 0);
+    EXPECT_EQ(registration.foregroundEdgeVariance(scanOf(3.0, {{2.2, 0.0, 0.25}})).norm(), 0);
+    options.foregroundEdgeSigmaFactor = 1;
+    const ScanRegistration off(options, matcher);
+    EXPECT_EQ(off.foregroundEdgeVariance(person).norm(), 0);
 }
 
 TEST(ForegroundObjects, FarWideOrBarelyProtrudingObjectsStay) {

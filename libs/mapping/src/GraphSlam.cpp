@@ -483,11 +483,17 @@ void GraphSlam::addKeyframeEdges(const Registration& r, Keyframe& kf) {
             ? submap.partHolding(polar_, r.pose + kf.sensorOnRobot, options_.mapConfirmDistance)
             : submap.anchor();
     const Keyframe& tiedTo = keyframes_[holder];
+    // People close by can pull a registration off by more than ICP's covariance says, and least
+    // squares would then spread a loop's correction evenly along the chain instead of over the
+    // edges they bent (foreground_edge_sigma_factor, opt-in: GraphSlamOptions.h).
+    const mrpt::math::CMatrixDouble33 foreground = registration_.foregroundEdgeVariance(polar_);
+    mrpt::math::CMatrixDouble33 toHolder = registration_.edgeCovariance(
+        r.rawCovariance, kf.travelled - tiedTo.travelled, kf.turned - tiedTo.turned);
+    toHolder += foreground;
+    stats_.keyframesSeeingForeground += foreground(0, 0) > 0;
     graph_.addEdge(tiedTo.id, kf.id,
                    holder == r.reference ? r.pose : graph_.pose(kf.id) - graph_.pose(tiedTo.id),
-                   registration_.edgeCovariance(r.rawCovariance, kf.travelled - tiedTo.travelled,
-                                                kf.turned - tiedTo.turned),
-                   EdgeKind::Registration);
+                   toHolder, EdgeKind::Registration);
     // (Tied to an anchor that lies in a later part, the keyframe counts in none: taken into the
     // anchor's part, fr079 at a third of its scans came out at 0.095 m instead of 0.062 m.)
     if (holder != r.reference) {
@@ -500,7 +506,7 @@ void GraphSlam::addKeyframeEdges(const Registration& r, Keyframe& kf) {
     // (Left out there, fr079 at a third of its scans broke: 0.063 -> 0.874 m.)
     if (previous.id == tiedTo.id)
         return;
-    mrpt::math::CMatrixDouble33 covariance = r.covariance;
+    mrpt::math::CMatrixDouble33 covariance = r.covariance + foreground;
     if (previous.part != kf.part)
         for (const std::size_t start : {previous.part, kf.part})
             if (start != Keyframe::kNoPart)

@@ -247,6 +247,10 @@ void GraphSlamOptions::declareFrontEnd(config::OptionsSchema& s) {
            "registration edges: smallest position sigma (ICP's own is too confident)")
         .above(0);
     s.angle("edge_min_sigma_phi", edgeMinSigmaPhi, "... and heading sigma").above(0);
+    s.real("foreground_edge_sigma_factor", foregroundEdgeSigmaFactor, "",
+           "registration edges of keyframes whose scan sees foreground objects: this many times "
+           "the edge floor's sigmas (1 = off)")
+        .atLeast(1);
     s.flag("smooth_scans", smoothScans,
            "output: positions between keyframes from registration and odometry together");
     s.flag("odometry_calibration", odometryCalibration.enabled,

@@ -188,6 +188,11 @@ std::string formatSummary(const MappingResult& r) {
                  deferred.c_str(), counted(st->submaps, "submap", "submaps").c_str(), parts.c_str(),
                  r.smoothedScans ? "registration and odometry together"
                                  : "registration alone (smooth_scans off)");
+        if (st->keyframesSeeingForeground > 0)
+            s += line(
+                "keyframes that saw people or other objects close by: %zu (their "
+                "registration edges less certain, foreground_edge_sigma_factor)",
+                st->keyframesSeeingForeground);
         // The three outcomes on one line; below it, one line each for ICP, the graph matcher,
         // the failures and the odometry's steps, with the rarer cases that occurred in this log
         // (summary.json's "registration" has every count, zeros too).
@@ -361,6 +366,7 @@ nlohmann::json summaryJson(const MappingResult& r) {
         j["submaps"] = st->submaps;
         j["keyframes_tied_to_later_part"] = st->tiedToLaterPart;
         j["keyframes_deferred_in_stall"] = st->keyframesDeferredInStall;
+        j["keyframes_seeing_foreground"] = st->keyframesSeeingForeground;
         j["smoothed_scans"] = r.smoothedScans;
         j["registration"] = {
             {"icp", st->registeredByIcp},

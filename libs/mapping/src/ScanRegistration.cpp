@@ -173,6 +173,18 @@ bool ScanRegistration::seesForegroundObjects(const matching::PolarScan& scan) co
     return ForegroundObjects::any(scan, foregroundOptions_);
 }
 
+CMatrixDouble33 ScanRegistration::foregroundEdgeVariance(const matching::PolarScan& scan) const {
+    CMatrixDouble33 extra;
+    extra.setZero();
+    const double factor = options_.foregroundEdgeSigmaFactor;
+    if (factor > 1 && seesForegroundObjects(scan)) {
+        const double k = factor * factor - 1;
+        extra(0, 0) = extra(1, 1) = k * options_.edgeMinSigmaXY * options_.edgeMinSigmaXY;
+        extra(2, 2) = k * options_.edgeMinSigmaPhi * options_.edgeMinSigmaPhi;
+    }
+    return extra;
+}
+
 void ScanRegistration::checkAlongHeading(const matching::PolarScan& scan,
                                          const CPose2D& sensorOnRobot, const Prediction& prediction,
                                          const CPose2D& from, IcpAttempt& icp, Registration& out) {

@@ -301,6 +301,15 @@ struct GraphSlamOptions : public config::Options {
     /// confident (it ignores the map's errors).
     double edgeMinSigmaXY = 0.01;     ///< m
     double edgeMinSigmaPhi = 0.0035;  ///< rad (0.2 deg)
+    /// Opt-in, for crowded places: a keyframe whose scan sees foreground objects
+    /// (foregroundMaxRange, foregroundMaxWidth: people close by, mostly) has registration edges
+    /// this many times as uncertain as the edge floor ((factor^2 - 1) times the floor's
+    /// variances added). A person can pull ICP off by centimetres where its covariance says
+    /// millimetres; the graph then corrects a loop's error mostly there, not evenly along the
+    /// path. Off by default: the wider edges widen the loop gate too, and a short laser that
+    /// sees furniture close by at half its keyframes let wrong loops in (benchmarks.md, B3,
+    /// "Edges among people"). 1 = off.
+    double foregroundEdgeSigmaFactor = 1;
     /// Output: re-estimate the positions of the scans between keyframes from their
     /// registration and the odometry together, each by its noise model above
     /// (TrajectorySmoother.h); keyframes and headings stay as the graph has them.

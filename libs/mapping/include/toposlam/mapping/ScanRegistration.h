@@ -315,6 +315,11 @@ class ScanRegistration {
     /// True when `scan` has objects close to the laser that stand in front of what lies behind
     /// them (people, mostly; ForegroundObjects.h with foreground_max_range and _width).
     bool seesForegroundObjects(const matching::PolarScan& scan) const;
+    /// What a keyframe's registration edges add to their covariance (m^2, rad^2) when its scan
+    /// sees foreground objects (seesForegroundObjects): (foreground_edge_sigma_factor^2 - 1)
+    /// times the edge floor's variances, so that an edge at the floor is that factor less
+    /// certain; zero otherwise, and with the factor at 1 (off, the default).
+    mrpt::math::CMatrixDouble33 foregroundEdgeVariance(const matching::PolarScan& scan) const;
 
     /// The chi-square (3 dof) of the odometry model for the predicted step (odometryCovariance)
     /// by which `pose` (robot, in the prediction's submap frame) corrects that step.

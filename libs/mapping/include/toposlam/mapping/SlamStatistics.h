@@ -35,6 +35,9 @@ struct SlamStatistics {
     /// Scans that would have been keyframes but were in an odometry stall that nothing placed
     /// (defer_keyframe_in_stall).
     std::size_t keyframesDeferredInStall = 0;
+    /// Keyframes registered by ICP whose scan saw foreground objects (people close by, mostly):
+    /// their registration edges were made less certain (foreground_edge_sigma_factor).
+    std::size_t keyframesSeeingForeground = 0;
     // Registration of each scan (the first scan is the origin and counts in none of them).
     std::size_t registeredByIcp = 0;  ///< point-to-line ICP against the local submap
     /// Of those, not settled (ScanRegistration.h; with second_opinion on), and how many of

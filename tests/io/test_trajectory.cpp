@@ -50,6 +50,24 @@ TEST(Trajectory, RoundTripIsExact) {
     EXPECT_EQ(first, "976052857.337284 0 0 -0.002458");
 }
 
+TEST(Trajectory, StampsAreWrittenWithoutAnExponent) {
+    // A whole second is the stamp as printed by a logger (1700000000), not 1.7e+09 among the
+    // 1700000000.25 of the next line; positions keep the shortest form, exponent and all.
+    toposlam::test::TempDir dir;
+    Trajectory2D t = {{1700000000.0, {1e-20, 0, 0}}, {1700000000.25, {2, 0, 0}}, {1e40, {}}};
+    saveTrajectory(t, dir.file("t.txt"));
+    std::ifstream in(dir.file("t.txt"));
+    std::string header, first, second;
+    std::getline(in, header);
+    std::getline(in, first);
+    std::getline(in, second);
+    EXPECT_EQ(first, "1700000000 1e-20 0 0");
+    EXPECT_EQ(second, "1700000000.25 2 0 0");
+    const Trajectory2D back = loadTrajectory(dir.file("t.txt"));
+    ASSERT_EQ(back.size(), 3u);
+    EXPECT_EQ(back[2].stamp, 1e40);  // too long without an exponent: written with one
+}
+
 TEST(Trajectory, CommentsBlankLinesAndTabsAreAccepted) {
     toposlam::test::TempDir dir;
     writeText(dir.file("t.txt"), "# header\n\n1 2 3 0.5\n  # indented comment\n2\t3\t4\t-0.5\r\n");

@@ -22,6 +22,17 @@ void appendShortest(std::string& out, double v) {
     out.append(buf.data(), res.ptr);
 }
 
+// The same without an exponent where it fits: a time stamp of 1700000000 s reads as such, not
+// as 1.7e+09 among the 1700000000.75 of the lines after it.
+void appendShortestFixed(std::string& out, double v) {
+    std::array<char, 32> buf{};
+    const auto res =
+        std::to_chars(buf.data(), buf.data() + buf.size(), v, std::chars_format::fixed);
+    if (res.ec != std::errc())
+        return appendShortest(out, v);
+    out.append(buf.data(), res.ptr);
+}
+
 bool isBlankOrComment(const std::string& line) {
     const auto first = line.find_first_not_of(" \t\r");
     return first == std::string::npos || line[first] == '#';
@@ -84,7 +95,7 @@ void saveTrajectory(const Trajectory2D& trajectory, const std::string& path) {
             throw std::runtime_error(path + ": cannot create the trajectory file");
         std::string text = "# timestamp x y yaw\n";
         for (const TimedPose2D& p : trajectory) {
-            appendShortest(text, p.stamp);
+            appendShortestFixed(text, p.stamp);
             text += ' ';
             appendShortest(text, p.pose.x);
             text += ' ';

@@ -20,7 +20,8 @@ using Trajectory2D = std::vector<TimedPose2D>;
 /// numeric fields, or non-finite values.
 Trajectory2D loadTrajectory(const std::string& path);
 /// Atomic write. Every number is printed in the shortest form that reads back to the same
-/// double, so save/load round-trips exactly and CARMEN stamps keep their printed digits.
+/// double, so save/load round-trips exactly and CARMEN stamps keep their printed digits;
+/// stamps without an exponent (1700000000, not 1.7e+09).
 /// Starts with a "# timestamp x y yaw" comment line.
 void saveTrajectory(const Trajectory2D& trajectory, const std::string& path);
 

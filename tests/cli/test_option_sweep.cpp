@@ -204,6 +204,27 @@ TEST_P(EveryApp, UnknownOptionsAreBadUsage) {
     expectBadUsage(GetParam(), "--no-such-option", "--no-such-option");
 }
 
+TEST_P(EveryApp, AnOptionWrittenWithAnEqualsSignSaysHowToWriteIt) {
+    // TCLAP takes "--seed=3" for an option named "seed=3", or for a positional argument's
+    // value and then misses a required one; the error says to write "--seed 3". Each app's
+    // first numeric option; an unknown one with "=" stays an unknown option.
+    const std::string app = GetParam();
+    for (const NumericOption& o : kNumericOptions) {
+        if (o.app != app || std::string(o.option).compare(0, 2, "--") != 0)
+            continue;
+        const auto r = runApp(app, std::string(o.option) + "=3");
+        EXPECT_EQ(r.exitCode, 2) << r.output;
+        EXPECT_NE(r.output.find("options take their value after a space: write '" +
+                                std::string(o.option) + " 3'"),
+                  std::string::npos)
+            << r.output;
+        break;
+    }
+    const auto unknown = runApp(app, "--no-such-option=3");
+    EXPECT_EQ(unknown.exitCode, 2) << unknown.output;
+    EXPECT_EQ(unknown.output.find("after a space"), std::string::npos) << unknown.output;
+}
+
 TEST_P(EveryApp, HelpShowsTheRangesAndTheTableHasEveryNumericOption) {
     const std::string app = GetParam();
     const auto r = runApp(app, "--help");

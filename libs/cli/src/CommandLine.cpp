@@ -75,9 +75,31 @@ std::optional<std::string> optionTakenAsPositional(TCLAP::CmdLine& cmd, int argc
     return std::nullopt;
 }
 
+// "--seed=3" where --seed is an option of `cmd` (before "--"): TCLAP takes it for an option
+// named "seed=3", or a positional argument's value, and says something else went wrong.
+std::optional<std::string> optionWithEqualsSign(TCLAP::CmdLine& cmd, int argc, char** argv) {
+    for (int i = 1; i < argc && std::string(argv[i]) != "--"; ++i) {
+        const std::string word = argv[i];
+        const auto eq = word.find('=');
+        if (word.compare(0, 2, "--") != 0 || eq == std::string::npos)
+            continue;
+        for (TCLAP::Arg* arg : cmd.getArgList()) {
+            if (!arg->getName().empty() && word.compare(0, eq, "--" + arg->getName()) == 0 &&
+                eq == arg->getName().size() + 2)
+                return word.substr(0, eq) + " " + word.substr(eq + 1);
+        }
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<int> parseCommandLine(TCLAP::CmdLine& cmd, int argc, char** argv) {
+    if (const auto spaced = optionWithEqualsSign(cmd, argc, argv)) {
+        std::cerr << "error: options take their value after a space: write '" << *spaced
+                  << "' (see --help)\n";
+        return kBadUsage;
+    }
     // Outlives `cmd` (which keeps a pointer to it); apps parse one command line.
     static ErrorReportingOutput output;
     output.failed = false;

@@ -8,16 +8,13 @@
 #include <filesystem>
 #include <string>
 
+using toposlam::test::quoted;
 using toposlam::test::readFile;
 using toposlam::test::runApp;
 using toposlam::test::TempDir;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string quoted(const std::string& path) {
-    return "'" + path + "'";
-}
 
 std::string office(const std::string& file) {
     return toposlam::test::shareDir() + "/office/" + file;

@@ -140,19 +140,19 @@ std::string thirdOfTheScans(const test::TempDir& dir, const GeneratedTour& tour)
     return third.rawlogPath;
 }
 
-/// `log` mapped with the shipped configuration and the [GraphSlam] flag `key` set to `on`: its
+/// `log` mapped with the shipped configuration and one [GraphSlam] setting changed: its
 /// position ATE against `truth` (m) and the run's statistics.
 struct FlaggedRun {
     double ate = 0;
     mapping::SlamStatistics statistics;
 };
-/// Maps `log` with the shipped configuration and [GraphSlam] `key` set to `on`, and each of
-/// `alsoOff` set to false (another rule that mends the same tour, left out to test this one).
-FlaggedRun mapWithFlag(const std::string& log, const io::Trajectory2D& truth,
-                       const std::string& key, bool on,
-                       std::initializer_list<const char*> alsoOff = {}) {
+/// Maps `log` with the shipped configuration and [GraphSlam] `key` set to `value`, and each
+/// of `alsoOff` set to false (another rule that mends the same tour, left out to test this one).
+FlaggedRun mapWithSetting(const std::string& log, const io::Trajectory2D& truth,
+                          const std::string& key, const std::string& value,
+                          std::initializer_list<const char*> alsoOff = {}) {
     mrpt::config::CConfigFileMemory ini(test::readFile(test::configIni("toposlam-slam.ini")));
-    ini.write("GraphSlam", key, on ? "true" : "false");
+    ini.write("GraphSlam", key, value);
     for (const char* other : alsoOff)
         ini.write("GraphSlam", other, "false");
     const mapping::MappingResult result = mapping::mapLog(log, ini);
@@ -164,6 +164,12 @@ FlaggedRun mapWithFlag(const std::string& log, const io::Trajectory2D& truth,
     EXPECT_EQ(ate.matchedPoses, result.trajectory.size());
     run.ate = ate.position.rms;
     return run;
+}
+/// The same with the flag `key` set to `on`.
+FlaggedRun mapWithFlag(const std::string& log, const io::Trajectory2D& truth,
+                       const std::string& key, bool on,
+                       std::initializer_list<const char*> alsoOff = {}) {
+    return mapWithSetting(log, truth, key, on ? "true" : "false", alsoOff);
 }
 
 /// Generated building 60 toured by B3-sim's stalling robot, seed 1, one scan in three kept (the
@@ -1382,10 +1388,7 @@ TEST(GraphSlam, EdgesAmongPeopleTakeTheLoopsCorrection) {
     ASSERT_EQ(tour.sim.exitCode, 0) << tour.sim.output;
     const io::Trajectory2D truth = io::loadTrajectory(tour.groundTruth);
     const auto ateWithFactor = [&](const char* factor) {
-        mrpt::config::CConfigFileMemory ini(test::readFile(test::configIni("toposlam-slam.ini")));
-        ini.write("GraphSlam", "foreground_edge_sigma_factor", factor);
-        const mapping::MappingResult result = mapping::mapLog(tour.log, ini);
-        return evaluation::evaluateAbsoluteTrajectoryError(result.trajectory, truth).position.rms;
+        return mapWithSetting(tour.log, truth, "foreground_edge_sigma_factor", factor).ate;
     };
     EXPECT_GT(ateWithFactor("1"), 0.5) << "the tour no longer shows the bent ring";
     EXPECT_LT(ateWithFactor("5"), 0.2);

@@ -14,16 +14,13 @@
 #include <sstream>
 #include <string>
 
+using toposlam::test::quoted;
 using toposlam::test::runApp;
 using toposlam::test::TempDir;
 
 namespace {
 
 const std::string kMap = toposlam::test::shareDir() + "/office/office.gridmap.gz";
-
-std::string quoted(const std::string& s) {
-    return "'" + s + "'";
-}
 
 using toposlam::test::readFile;
 

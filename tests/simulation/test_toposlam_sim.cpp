@@ -19,15 +19,12 @@
 
 using namespace toposlam;
 using namespace toposlam::simulation;
+using toposlam::test::quoted;
 using toposlam::test::runApp;
 using toposlam::test::TempDir;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string quoted(const std::string& s) {
-    return "'" + s + "'";
-}
 
 using toposlam::test::writeText;
 

@@ -81,6 +81,10 @@ CommandResult runApp(const std::string& app, const std::string& args) {
     return runCommand("'" + binDir() + "/" + app + "' " + args);
 }
 
+std::string quoted(const std::string& path) {
+    return "'" + path + "'";
+}
+
 std::string readFile(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};

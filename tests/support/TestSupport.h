@@ -44,6 +44,8 @@ struct CommandResult {
 CommandResult runCommand(const std::string& command);
 /// Runs bin/<app> with `args`.
 CommandResult runApp(const std::string& app, const std::string& args);
+/// `path` in single quotes, one word of runApp's `args` whatever blanks it holds.
+std::string quoted(const std::string& path);
 
 /// The whole content of the file at `path` ("" when it cannot be read).
 std::string readFile(const std::string& path);
